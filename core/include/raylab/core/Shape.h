@@ -1,0 +1,98 @@
+#pragma once
+
+#include "raylab/core/Bounds3.h"
+#include "raylab/core/Exception.h"
+#include "raylab/core/Ray.h"
+#include "raylab/core/Types.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+/// First phase of an intersection: where along the ray, and which primitive.
+/// Cheap to produce; `Shape::surfaceAt` turns the nearest one into geometry.
+struct Hit {
+  double t = kInfinity;  ///< Ray parameter of the hit (world units along a unit ray).
+  int primitive = -1;    ///< Face / triangle index inside the shape, -1 when not meaningful.
+  Vec2 uv{0.0};          ///< Surface parameters; barycentrics (b1, b2) for triangles.
+};
+
+/// Second phase: the local geometry at the nearest hit, computed once.
+struct SurfaceInteraction {
+  double t = kInfinity;  ///< Ray parameter of the hit.
+  Point3 p{0.0};         ///< Hit point, world space.
+  Normal3 n{0.0};        ///< Unit geometric normal, world space, pointing outward.
+  bool frontFace = true; ///< True when the ray arrives from the side `n` points to.
+  Vec2 uv{0.0};          ///< Surface parameters; barycentrics (b1, b2) for triangles.
+  int primitive = -1;    ///< Face / triangle index, -1 when not meaningful.
+
+  /// The normal turned against the ray (what shading uses).
+  Normal3 facingNormal() const { return frontFace ? n : -n; }
+  std::string toString() const;
+};
+
+/// One boundary crossing along a ray, for inside/outside teaching.
+struct Crossing {
+  double t = 0.0;         ///< Ray parameter.
+  bool entering = true;   ///< True when the ray goes from outside to inside here
+                          ///< (for open surfaces: arrives on the front side).
+  int primitive = -1;     ///< Face / triangle index.
+};
+
+/// What a shape is, for drawing and for files.
+enum class ShapeKind { Sphere, Box, Plane, Quad, Triangle, TriangleMesh };
+const char* toString(ShapeKind kind);
+
+/**
+ * \brief A geometric primitive a ray can hit: the interface every shape implements.
+ *
+ * Intersection has two phases (pbrt's `BasicIntersect` / `InteractionFromIntersection`):
+ * `intersect` finds the nearest t in [ray.tMin, ray.tMax] and returns ids only;
+ * `surfaceAt` computes point, normal and parameters for that one hit. `intersectAll`
+ * returns every crossing along the ray, sorted by t, to show entering and leaving.
+ *
+ * All positions, directions and normals in this interface are in world space.
+ * `apply(M)` transforms the shape by an affine matrix M in world space
+ * (rotate / translate / uniform and non-uniform scale), i.e. new = M * old.
+ */
+class Shape {
+ public:
+  /// Thrown by constructors and apply() for geometry that cannot exist: a negative or
+  /// NaN radius, a zero-length axis or edge, a singular matrix.
+  class InvalidGeometry : public Exception {
+   public:
+    using Exception::Exception;
+  };
+
+  virtual ~Shape() = default;
+
+  virtual ShapeKind kind() const = 0;
+
+  /// Nearest hit with t in [ray.tMin, ray.tMax], or nothing.
+  virtual std::optional<Hit> intersect(const Ray& ray) const = 0;
+  /// Geometry of a hit returned by `intersect` for the same ray.
+  virtual SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const = 0;
+  /// Every crossing of the surface with t in [ray.tMin, ray.tMax], sorted by t.
+  virtual std::vector<Crossing> intersectAll(const Ray& ray) const = 0;
+
+  /// Outward unit normal at a point known to be on the surface (world space).
+  virtual Normal3 normal(const Point3& p) const = 0;
+  /// Whether a point is inside the solid. Plane: the half-space behind the normal.
+  /// Open surfaces (Quad, Triangle) have no inside and answer false.
+  virtual bool inside(const Point3& p) const = 0;
+  /// Transforms the shape in world space: new = M * old. M must be affine and invertible.
+  virtual void apply(const Mat4& m) = 0;
+  /// World-space bounding box. Infinite for a plane.
+  virtual Bounds3 bounds() const = 0;
+
+  virtual std::unique_ptr<Shape> clone() const = 0;
+  virtual std::string toString() const = 0;
+
+  /// Both phases at once: nearest hit and its geometry.
+  std::optional<SurfaceInteraction> closestHit(const Ray& ray) const;
+};
+
+}  // namespace raylab

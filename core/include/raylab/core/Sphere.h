@@ -1,0 +1,59 @@
+#pragma once
+
+#include "raylab/core/Shape.h"
+#include "raylab/core/Transform.h"
+
+namespace raylab {
+
+/**
+ * \brief A sphere (centre, radius), optionally mapped by an affine transform into an
+ * ellipsoid.
+ *
+ * The seed's Sphere, with its tessellation hints for drawing: `m` slices along the
+ * polar (z) direction and `n` around the axis. `apply` with a similarity (rotation,
+ * translation, uniform scale) updates centre and radius directly, so textbook rays stay
+ * exact; any other affine map (non-uniform scale) is kept as `worldFromObject`, and rays
+ * are intersected in object space. Intersection uses the numerically careful quadratic
+ * of Haines et al., "Precision Improvements for Ray/Sphere Intersection" (Ray Tracing
+ * Gems, ch. 7).
+ */
+class Sphere final : public Shape {
+ public:
+  Sphere(const Point3& centre, double radius, int m = 24, int n = 24);
+
+  ShapeKind kind() const override { return ShapeKind::Sphere; }
+  std::optional<Hit> intersect(const Ray& ray) const override;
+  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
+  std::vector<Crossing> intersectAll(const Ray& ray) const override;
+  Normal3 normal(const Point3& p) const override;
+  bool inside(const Point3& p) const override;
+  void apply(const Mat4& m) override;
+  Bounds3 bounds() const override;
+  std::unique_ptr<Shape> clone() const override { return std::make_unique<Sphere>(*this); }
+  std::string toString() const override;
+
+  /// Centre in object space (equals world space while worldFromObject is the identity).
+  const Point3& centre() const { return m_centre; }
+  /// Radius in object space.
+  double radius() const { return m_radius; }
+  /// Tessellation hint: slices along the polar direction.
+  int m() const { return m_m; }
+  /// Tessellation hint: slices around the axis.
+  int n() const { return m_n; }
+  void setTessellation(int m, int n);
+  /// Affine map from object space (where the sphere is round) to world space.
+  const Transform& worldFromObject() const { return m_worldFromObject; }
+
+ private:
+  /// Both roots of the ray in object space, t0 <= t1; nothing when the ray misses.
+  std::optional<std::pair<double, double>> roots(const Ray& objectRay) const;
+
+  Point3 m_centre;
+  double m_radius;
+  int m_m;
+  int m_n;
+  Transform m_worldFromObject;
+  bool m_hasTransform = false;
+};
+
+}  // namespace raylab

@@ -1,0 +1,56 @@
+#include "raylab/core/Box.h"
+#include "raylab/core/Quad.h"
+#include "raylab/core/Scene.h"
+#include "raylab/core/Sphere.h"
+#include "raylab/core/Transform.h"
+
+namespace raylab {
+
+Scene defaultScene() {
+  Scene scene;
+  scene.name = "RayLab default scene";
+
+  // Materials: the seed's red sphere, blue cube and flesh-coloured light, grey walls.
+  const Vec3 flesh(1.0, 0.8, 0.65);
+  scene.materials = {
+      {"red", {0.80, 0.10, 0.10}, Vec3(0.0), 1.0},
+      {"blue", {0.10, 0.20, 0.80}, Vec3(0.0), 1.0},
+      {"light", flesh, 8.0 * flesh, 1.0},
+      {"wall", {0.75, 0.75, 0.75}, Vec3(0.0), 1.0},
+  };
+  const int red = 0, blue = 1, light = 2, wall = 3;
+
+  // The room: x in [-5, 5], y in [0, 6], z in [-6, 4], open towards +z. Quad normals
+  // (edgeU x edgeV) point into the room.
+  auto add = [&scene](std::string name, std::unique_ptr<Shape> shape, int material) {
+    scene.objects.emplace_back(std::move(name), std::move(shape), material);
+  };
+  add("floor", std::make_unique<Quad>(Point3(-5, 0, 4), Vec3(10, 0, 0), Vec3(0, 0, -10)), wall);
+  add("ceiling", std::make_unique<Quad>(Point3(-5, 6, -6), Vec3(10, 0, 0), Vec3(0, 0, 10)), wall);
+  add("back wall", std::make_unique<Quad>(Point3(-5, 0, -6), Vec3(10, 0, 0), Vec3(0, 6, 0)),
+      wall);
+  add("left wall", std::make_unique<Quad>(Point3(-5, 0, 4), Vec3(0, 0, -10), Vec3(0, 6, 0)),
+      wall);
+  add("right wall", std::make_unique<Quad>(Point3(5, 0, -6), Vec3(0, 0, 10), Vec3(0, 6, 0)),
+      wall);
+
+  // The seed's objects.
+  add("red sphere", std::make_unique<Sphere>(Point3(-1.6, 1.2, -2.2), 1.2, 24, 32), red);
+  auto cube = std::make_unique<Box>(Point3(0.0), Vec3(2.0));
+  // Turn the cube 30 degrees about y, then lift it onto the floor (rotation first).
+  cube->apply((Transform::translate({1.7, 1.0, -1.5}) * Transform::rotate(radians(30.0), {0, 1, 0}))
+                  .matrix());
+  add("blue cube", std::move(cube), blue);
+  add("light", std::make_unique<Box>(Point3(0.0, 5.2, -2.0), Vec3(1.2, 0.4, 1.2)), light);
+
+  // A camera inside the room's open front, looking at the objects.
+  scene.camera.position = {0.0, 2.4, 3.5};
+  scene.camera.lookAt = {0.0, 1.4, -2.0};
+  scene.camera.up = {0.0, 1.0, 0.0};
+  scene.camera.verticalFov = 50.0;
+  scene.camera.width = 320;
+  scene.camera.height = 240;
+  return scene;
+}
+
+}  // namespace raylab

@@ -1,0 +1,157 @@
+#include "raylab/core/Sphere.h"
+
+#include "raylab/core/Check.h"
+
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+bool isFinite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// Spherical parameters of a unit vector about the z axis: u = azimuth / 2pi, v = polar / pi.
+Vec2 sphericalUv(const Vec3& unit) {
+  double phi = std::atan2(unit.y, unit.x);
+  if (phi < 0.0) phi += 2.0 * kPi;
+  const double theta = std::acos(glm::clamp(unit.z, -1.0, 1.0));
+  return {phi / (2.0 * kPi), theta / kPi};
+}
+
+}  // namespace
+
+Sphere::Sphere(const Point3& centre, double radius, int m, int n)
+    : m_centre(centre), m_radius(radius), m_m(m), m_n(n) {
+  if (!isFinite(centre))
+    throw InvalidGeometry("sphere centre must be finite, got " + raylab::toString(centre));
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    throw InvalidGeometry("sphere radius must be positive and finite, got " +
+                          std::to_string(radius));
+  setTessellation(m, n);
+}
+
+void Sphere::setTessellation(int m, int n) {
+  if (m < 2 || n < 3)
+    throw InvalidGeometry("sphere tessellation needs m >= 2 and n >= 3, got m=" +
+                          std::to_string(m) + ", n=" + std::to_string(n));
+  m_m = m;
+  m_n = n;
+}
+
+std::optional<std::pair<double, double>> Sphere::roots(const Ray& r) const {
+  // Solve |o + t d - c|^2 = radius^2 for t, with d not necessarily unit length.
+  const Vec3 f = r.origin - m_centre;
+  const double a = glm::dot(r.direction, r.direction);
+  const double halfB = glm::dot(f, r.direction);
+  // Compute the discriminant from the distance between the centre and the line, which
+  // loses far less precision than halfB^2 - a c when the sphere is small or far away.
+  const Vec3 l = f - (halfB / a) * r.direction;
+  const double lineDistance = glm::length(l);
+  const double discriminant = a * (m_radius - lineDistance) * (m_radius + lineDistance);
+  if (discriminant < 0.0) return std::nullopt;
+
+  // Stable roots: q has the sign of -halfB, so no cancellation happens in either root.
+  const double c = glm::dot(f, f) - m_radius * m_radius;
+  const double q = -(halfB + std::copysign(std::sqrt(discriminant), halfB));
+  double t0, t1;
+  if (q == 0.0) {
+    t0 = t1 = 0.0;
+  } else {
+    t0 = q / a;
+    t1 = c / q;
+  }
+  if (t0 > t1) std::swap(t0, t1);
+  return std::make_pair(t0, t1);
+}
+
+std::optional<Hit> Sphere::intersect(const Ray& ray) const {
+  const Ray r = m_hasTransform ? m_worldFromObject.inverseTransformRay(ray) : ray;
+  const auto t = roots(r);
+  if (!t) return std::nullopt;
+  // Pick the nearest root in [tMin, tMax].
+  if (t->first >= ray.tMin && t->first <= ray.tMax) return Hit{t->first, 0, {}};
+  if (t->second >= ray.tMin && t->second <= ray.tMax) return Hit{t->second, 0, {}};
+  return std::nullopt;
+}
+
+SurfaceInteraction Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
+  const Transform& m = m_worldFromObject;
+  const Point3 world = ray.at(hit.t);
+  // Project the hit back onto the surface in object space: ray.at(t) is off by the
+  // rounding of t, and secondary rays start from this point.
+  const Point3 object = m_hasTransform ? m.inverseTransformPoint(world) : world;
+  Vec3 radial = object - m_centre;
+  const double length = glm::length(radial);
+  radial = length > 0.0 ? radial / length : Vec3(0.0, 0.0, 1.0);
+
+  SurfaceInteraction si;
+  si.t = hit.t;
+  const Point3 onSurface = m_centre + m_radius * radial;
+  si.p = m_hasTransform ? m.transformPoint(onSurface) : onSurface;
+  si.n = m_hasTransform ? m.transformNormal(radial) : radial;
+  si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
+  si.uv = sphericalUv(radial);
+  si.primitive = 0;
+  return si;
+}
+
+std::vector<Crossing> Sphere::intersectAll(const Ray& ray) const {
+  const Ray r = m_hasTransform ? m_worldFromObject.inverseTransformRay(ray) : ray;
+  std::vector<Crossing> out;
+  const auto t = roots(r);
+  if (!t) return out;
+  // The line enters at the smaller root and leaves at the larger one; a tangent ray
+  // enters and leaves at the same point.
+  if (t->first >= ray.tMin && t->first <= ray.tMax) out.push_back({t->first, true, 0});
+  if (t->second >= ray.tMin && t->second <= ray.tMax) out.push_back({t->second, false, 0});
+  return out;
+}
+
+Normal3 Sphere::normal(const Point3& p) const {
+  const Point3 object = m_hasTransform ? m_worldFromObject.inverseTransformPoint(p) : p;
+  const Vec3 radial = glm::normalize(object - m_centre);
+  return m_hasTransform ? m_worldFromObject.transformNormal(radial) : radial;
+}
+
+bool Sphere::inside(const Point3& p) const {
+  const Point3 object = m_hasTransform ? m_worldFromObject.inverseTransformPoint(p) : p;
+  const Vec3 f = object - m_centre;
+  return glm::dot(f, f) < m_radius * m_radius;
+}
+
+void Sphere::apply(const Mat4& matrix) {
+  if (!isAffine(matrix) || glm::determinant(Mat3(matrix)) == 0.0)
+    throw InvalidGeometry("sphere: apply() needs an invertible affine matrix");
+  const Transform t(matrix);
+  if (!m_hasTransform && t.isSimilarity()) {
+    // Rotation, translation and uniform scale keep a sphere a sphere.
+    m_centre = t.transformPoint(m_centre);
+    m_radius *= t.uniformScale();
+    return;
+  }
+  m_worldFromObject = t * m_worldFromObject;
+  m_hasTransform = !m_worldFromObject.isIdentity();
+}
+
+Bounds3 Sphere::bounds() const {
+  if (!m_hasTransform) return {m_centre - Vec3(m_radius), m_centre + Vec3(m_radius)};
+  // An ellipsoid's half-extent along world axis i is radius * |row i of the linear part|.
+  const Mat3 l(m_worldFromObject.matrix());
+  const Point3 c = m_worldFromObject.transformPoint(m_centre);
+  Vec3 half;
+  for (int i = 0; i < 3; ++i)
+    half[i] = m_radius * glm::length(Vec3(l[0][i], l[1][i], l[2][i]));
+  return {c - half, c + half};
+}
+
+std::string Sphere::toString() const {
+  std::string s = "Sphere[centre=" + raylab::toString(m_centre) +
+                  ", radius=" + std::to_string(m_radius) + ", m=" + std::to_string(m_m) +
+                  ", n=" + std::to_string(m_n);
+  if (m_hasTransform) s += ", worldFromObject=" + m_worldFromObject.toString();
+  return s + "]";
+}
+
+}  // namespace raylab
