@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace raylab {
 namespace {
@@ -169,6 +170,23 @@ TEST(SceneIO, 06_LoadMinimal) {
   ASSERT_EQ(s.objects.size(), 1u);
   EXPECT_EQ(s.objects[0].shape->kind(), ShapeKind::Sphere);
   EXPECT_EQ(s.materials[0].colour, Vec3(0.8, 0.1, 0.1));
+}
+
+}  // namespace
+}  // namespace raylab
+
+namespace raylab {
+namespace {
+
+TEST(SceneIO, 07_ShippedDefaultSceneFileMatchesTheBuiltIn) {
+  // lessons/scenes/default.json is the built-in scene as a file; regenerate it with
+  // SceneIO::serialize(defaultScene()) when the built-in scene changes.
+  const std::string path = std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/default.json";
+  std::ifstream in(path);
+  ASSERT_TRUE(in) << path;
+  std::ostringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), SceneIO::serialize(defaultScene()));
 }
 
 }  // namespace

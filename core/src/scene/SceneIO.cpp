@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -233,20 +234,61 @@ class Reader {
   std::string m_origin;
 };
 
-json toJson(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+using ojson = nlohmann::ordered_json;
 
-json toJson(const Mat4& m) {
-  json rows = json::array();
-  for (int r = 0; r < 4; ++r) rows.push_back(json::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
+ojson toJson(const Vec3& v) { return ojson::array({v.x, v.y, v.z}); }
+
+ojson toJson(const Mat4& m) {
+  ojson rows = ojson::array();
+  for (int r = 0; r < 4; ++r) rows.push_back(ojson::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
   return rows;
 }
 
-json shapeToJson(const Shape& shape, json& transform) {
+/// Pretty JSON for people: objects one member per line, arrays of scalars on one line.
+void prettyPrint(const ojson& j, int indent, std::string& out) {
+  const auto scalarArray = [](const ojson& a) {
+    for (const ojson& e : a)
+      if (e.is_structured() && !(e.is_array() && e.size() <= 4 &&
+                                 std::all_of(e.begin(), e.end(), [](const ojson& x) { return x.is_primitive(); })))
+        return false;
+    return true;
+  };
+  const std::string pad(indent + 2, ' ');
+  if (j.is_object() && !j.empty()) {
+    out += "{\n";
+    std::size_t i = 0;
+    for (auto it = j.begin(); it != j.end(); ++it, ++i) {
+      out += pad + ojson(it.key()).dump() + ": ";
+      prettyPrint(it.value(), indent + 2, out);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(indent, ' ') + "}";
+  } else if (j.is_array() && !j.empty() && !scalarArray(j)) {
+    out += "[\n";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      out += pad;
+      prettyPrint(j[i], indent + 2, out);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(indent, ' ') + "]";
+  } else if (j.is_array()) {
+    out += "[";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      out += i ? ", " : "";
+      prettyPrint(j[i], indent, out);
+    }
+    out += "]";
+  } else {
+    out += j.dump();
+  }
+}
+
+ojson shapeToJson(const Shape& shape, ojson& transform) {
   switch (shape.kind()) {
     case ShapeKind::Sphere: {
       const auto& s = static_cast<const Sphere&>(shape);
       if (!s.worldFromObject().isIdentity())
-        transform = json::array({json{{"matrix", toJson(s.worldFromObject().matrix())}}});
+        transform = ojson::array({ojson{{"matrix", toJson(s.worldFromObject().matrix())}}});
       return {{"type", "sphere"}, {"centre", toJson(s.centre())}, {"radius", s.radius()},
               {"m", s.m()}, {"n", s.n()}};
     }
@@ -255,9 +297,12 @@ json shapeToJson(const Shape& shape, json& transform) {
       const Box readable(b.centre(), b.size(), b.axis(0), b.axis(1), b.axis(2));
       // Prefer centre/size/axes; fall back to the exact matrix when they do not
       // reproduce the box bit for bit.
-      if (readable.worldFromBox().matrix() == b.worldFromBox().matrix())
-        return {{"type", "box"}, {"centre", toJson(b.centre())}, {"size", toJson(b.size())},
-                {"axes", json::array({toJson(b.axis(0)), toJson(b.axis(1)), toJson(b.axis(2))})}};
+      if (readable.worldFromBox().matrix() == b.worldFromBox().matrix()) {
+        ojson box = {{"type", "box"}, {"centre", toJson(b.centre())}, {"size", toJson(b.size())}};
+        if (b.axis(0) != Vec3(1, 0, 0) || b.axis(1) != Vec3(0, 1, 0) || b.axis(2) != Vec3(0, 0, 1))
+          box["axes"] = ojson::array({toJson(b.axis(0)), toJson(b.axis(1)), toJson(b.axis(2))});
+        return box;
+      }
       return {{"type", "box"}, {"matrix", toJson(b.worldFromBox().matrix())}};
     }
     case ShapeKind::Plane: {
@@ -272,7 +317,7 @@ json shapeToJson(const Shape& shape, json& transform) {
     case ShapeKind::Triangle: {
       const auto& t = static_cast<const Triangle&>(shape);
       return {{"type", "triangle"},
-              {"vertices", json::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))})}};
+              {"vertices", ojson::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))})}};
     }
     case ShapeKind::TriangleMesh:
       break;
@@ -323,20 +368,20 @@ Scene SceneIO::load(const std::string& path) {
 }
 
 std::string SceneIO::serialize(const Scene& scene) {
-  json root;
+  ojson root;
   root["raylab_scene"] = kVersion;
   root["name"] = scene.name;
-  root["materials"] = json::array();
+  root["materials"] = ojson::array();
   for (const Material& m : scene.materials)
     root["materials"].push_back({{"name", m.name}, {"colour", toJson(m.colour)},
                                  {"emission", toJson(m.emission)}, {"opacity", m.opacity}});
-  root["objects"] = json::array();
+  root["objects"] = ojson::array();
   for (const SceneObject& o : scene.objects) {
     if (!o.shape) throw SaveError("object \"" + o.name + "\" has no shape");
     if (o.material < 0 || o.material >= static_cast<int>(scene.materials.size()))
       throw SaveError("object \"" + o.name + "\" refers to a missing material");
-    json transform;
-    json object = {{"name", o.name}, {"material", scene.materials[o.material].name},
+    ojson transform;
+    ojson object = {{"name", o.name}, {"material", scene.materials[o.material].name},
                    {"shape", shapeToJson(*o.shape, transform)}};
     if (!transform.is_null()) object["transform"] = transform;
     root["objects"].push_back(object);
@@ -346,7 +391,9 @@ std::string SceneIO::serialize(const Scene& scene) {
                     {"up", toJson(c.up)}, {"vertical_fov", c.verticalFov},
                     {"width", c.width}, {"height", c.height}};
   // nlohmann prints doubles with enough digits to round-trip exactly.
-  return root.dump(2) + "\n";
+  std::string text;
+  prettyPrint(root, 0, text);
+  return text + "\n";
 }
 
 void SceneIO::save(const Scene& scene, const std::string& path) {

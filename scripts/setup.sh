@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Installs what RayLab needs on Debian 12 (only what is missing), then configures and
+# builds it. Used by scripts/demo.sh and scripts/test.sh; safe to run again.
+#
+#   scripts/setup.sh [preset] [targets...]     preset: release (default), dev, asan, ci
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+preset="${1:-release}"
+shift || true
+
+packages=(
+  build-essential cmake ninja-build pkg-config git    # compiler and build tools
+  xvfb xauth libgl1-mesa-dri                          # an X server + software OpenGL for VTK
+  libvtk9-dev libvtk9-qt-dev                          # VTK 9.1 with its Qt widget
+  qtbase5-dev libqt5opengl5-dev                       # Qt 5 widgets
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev     # CGAL exact kernels
+  libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev  # maths, scene files, CLI, threads
+  libgtest-dev libgmock-dev libbenchmark-dev          # tests and benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "raylab setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  if [[ $(id -u) -eq 0 ]]; then
+    apt_get=(apt-get)
+  elif command -v sudo >/dev/null && sudo -n true 2>/dev/null; then
+    apt_get=(sudo apt-get)
+  else
+    echo "raylab setup: not root. Run this once, then run the command again:" >&2
+    echo "  sudo apt-get update && sudo apt-get install -y --no-install-recommends ${missing[*]}" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${apt_get[@]}" update -qq
+  "${apt_get[@]}" install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cd "$here"
+cmake --preset "$preset" >/dev/null
+if (($#)); then
+  cmake --build --preset "$preset" --target "$@"
+else
+  cmake --build --preset "$preset"
+fi

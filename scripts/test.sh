@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Sets RayLab up, builds everything and runs the whole test suite. Tests that need
+# OpenGL run inside a virtual X server (xvfb-run), so no display is needed.
+#
+#   scripts/test.sh [ctest arguments...]     e.g. scripts/test.sh -L core
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$here/scripts/setup.sh" ci
+cd "$here"
+exec xvfb-run -a -s "-screen 0 1280x1024x24" \
+  ctest --preset ci --output-on-failure -j "$(nproc)" "$@"
