@@ -1,0 +1,140 @@
+#pragma once
+
+#include "raylab/core/Bounds3.h"
+#include "raylab/core/Ray.h"
+#include "raylab/core/Shape.h"
+#include "raylab/core/Types.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+/// Build parameters of a Bvh. The defaults are the tuned ones; the median split is the
+/// simple textbook variant, kept for comparison (tests and lessons).
+struct BvhSettings {
+  enum class Split {
+    Sah,    ///< Binned surface-area heuristic (default).
+    Median  ///< Split the centroids at their median on the longest axis (simple variant).
+  };
+  Split split = Split::Sah;       ///< How interior nodes choose their split.
+  int binCount = 16;              ///< SAH bins per axis over the centroid bounds (2..64).
+  int maxLeafSize = 4;            ///< A node with this many triangles or fewer is a leaf.
+  int maxSahLeafSize = 8;         ///< SAH may keep a leaf up to this size when splitting
+                                  ///< costs more; bigger nodes are always split.
+  double traversalCost = 1.0;     ///< Cost of visiting an interior node, in triangle tests.
+  double intersectionCost = 1.0;  ///< Cost of one ray/triangle test (the unit).
+  bool parallel = true;           ///< Build large subtrees on oneTBB tasks.
+
+  std::string toString() const;
+};
+
+/// Figures of a built Bvh, for tests, benchmarks and the lessons on acceleration.
+struct BvhStats {
+  int triangleCount = 0;       ///< Triangles in the hierarchy.
+  int nodeCount = 0;           ///< Interior nodes + leaves.
+  int leafCount = 0;           ///< Leaves.
+  int depth = 0;               ///< Longest root-to-leaf path in edges (a lone root leaf: 0).
+  int maxLeafSize = 0;         ///< Most triangles in one leaf.
+  double averageLeafSize = 0;  ///< Triangles per leaf.
+  /// SAH cost of the whole tree: sum over interior nodes of traversalCost * area(node) and
+  /// over leaves of intersectionCost * count * area(leaf), divided by the root's area.
+  /// This is the expected cost of a random ray that hits the root box (MacDonald & Booth).
+  double sahCost = 0.0;
+
+  std::string toString() const;
+};
+
+/// One node of the hierarchy as seen from outside (32 bytes of data): its box, rounded
+/// outwards to float so it always encloses the double-precision triangles it stands for,
+/// and either its two children (first, first + 1) or its run of triangle slots.
+struct BvhNode {
+  float box[6];         ///< lower x, y, z then upper x, y, z (world space, rounded outwards).
+  std::int32_t offset;  ///< Interior: index of the first child. Leaf: first triangle slot.
+  std::uint16_t count;  ///< Triangles in a leaf; 0 for an interior node.
+  std::uint8_t axis;    ///< Split axis of an interior node (0 = x, 1 = y, 2 = z).
+  std::uint8_t pad = 0;
+};
+static_assert(sizeof(BvhNode) == 32, "BvhNode must stay 32 bytes");
+
+/// How nodes are stored: the two children of an interior node side by side in one 64-byte
+/// cache line, their fields interleaved plane by plane, so that a single 8-byte load gives
+/// the same slab plane of both boxes and both are tested at once (two SIMD lanes).
+/// Node i is lane i % 2 of pair i / 2.
+struct alignas(64) BvhNodePair {
+  float box[6][2];         ///< box[plane][lane], planes as in BvhNode::box.
+  std::int32_t offset[2];  ///< As BvhNode::offset.
+  std::uint16_t count[2];  ///< As BvhNode::count.
+  std::uint8_t axis[2];    ///< As BvhNode::axis.
+  std::uint8_t pad[2] = {0, 0};
+};
+static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
+
+/**
+ * \brief A bounding volume hierarchy over triangles, built with the binned surface-area
+ * heuristic, for closest-hit, any-hit, all-hits and nearest-triangle queries.
+ *
+ * Build (Wald, "On fast construction of SAH-based bounding volume hierarchies", 2007;
+ * pbrt 4th ed., section 7.3): triangle centroids are binned along each axis into
+ * `binCount` bins of the centroid bounds; the split plane with the lowest SAH cost
+ * `traversalCost + (A_left * N_left + A_right * N_right) / A_node * intersectionCost`
+ * wins, unless keeping a leaf is cheaper. The tree is flattened into an array of 32-byte
+ * nodes laid out depth first (sibling pairs interleaved in one cache line, see
+ * BvhNodePair), and the triangles' vertices are copied in leaf order so a leaf reads them
+ * contiguously.
+ *
+ * Traversal is iterative with a small stack: both children's boxes are tested with a
+ * robust slab test (pbrt section 6.1.2: far distances scaled by 1 + 2 gamma(3), NaN-safe
+ * min/max so zero direction components are harmless), the near child (by the sign of the
+ * direction on the split axis) is visited first, and boxes beyond the current best t are
+ * skipped. Leaves use the watertight ray/triangle test of Triangle.h with the ray's shear
+ * computed once per ray; the result is bit-for-bit that of `intersectTriangle`.
+ *
+ * All positions and directions are in world space. Hit::primitive is the caller's
+ * triangle index (its position in the `triangles` vector given to the constructor).
+ */
+class Bvh {
+ public:
+  using Index3 = std::array<int, 3>;
+
+  /// Builds the hierarchy. Indices must be valid (TriangleMesh checks them).
+  Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangles,
+      const BvhSettings& settings = {});
+
+  /// Nearest hit with t in [ray.tMin, ray.tMax]; uv = barycentrics (b1, b2). On an exact tie
+  /// in t the lowest triangle index wins, so the answer does not depend on the tree.
+  std::optional<Hit> intersect(const Ray& ray) const;
+  /// Any hit with t in [ray.tMin, ray.tMax] (shadow rays): stops at the first one found.
+  bool occluded(const Ray& ray) const;
+  /// Every hit with t in [ray.tMin, ray.tMax], sorted by t (then triangle index).
+  std::vector<Hit> intersectAll(const Ray& ray) const;
+  /// Index of the triangle nearest to the world-space point p (Euclidean distance);
+  /// -1 for an empty hierarchy.
+  int closestTriangle(const Point3& p) const;
+
+  /// World-space bounds of all triangles (exact, in double).
+  const Bounds3& bounds() const { return m_bounds; }
+  const BvhStats& stats() const { return m_stats; }
+  const BvhSettings& settings() const { return m_settings; }
+  /// Number of node slots (2 per stored pair); slot 0 is the root, slot 1 unused padding.
+  int nodeSlots() const { return 2 * static_cast<int>(m_pairs.size()); }
+  /// Node `index` (0 = root), unpacked from its pair.
+  BvhNode node(int index) const;
+  std::size_t triangleCount() const { return m_primIds.size(); }
+
+ private:
+  struct Builder;
+
+  BvhSettings m_settings;
+  std::vector<BvhNodePair> m_pairs;  ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
+  std::vector<std::array<double, 9>> m_triVerts;  ///< Vertices per triangle slot, leaf order.
+  std::vector<int> m_primIds;                     ///< Triangle slot -> caller's index.
+  Bounds3 m_bounds;
+  BvhStats m_stats;
+};
+
+}  // namespace raylab

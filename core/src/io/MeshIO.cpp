@@ -1,0 +1,344 @@
+#include "raylab/core/MeshIO.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+namespace raylab {
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalPoint = Kernel::Point_3;
+using Polygon = std::vector<std::size_t>;
+
+/// Redirects std::cerr and std::cout into a string while alive, to collect what CGAL's
+/// readers report (they print their errors instead of returning them).
+class CaptureStreams {
+ public:
+  CaptureStreams()
+      : m_err(std::cerr.rdbuf(m_buffer.rdbuf())), m_out(std::cout.rdbuf(m_sink.rdbuf())) {}
+  ~CaptureStreams() {
+    std::cerr.rdbuf(m_err);
+    std::cout.rdbuf(m_out);
+  }
+  CaptureStreams(const CaptureStreams&) = delete;
+  CaptureStreams& operator=(const CaptureStreams&) = delete;
+
+  /// The captured error lines, repeated lines dropped, joined with "; ".
+  std::string errors() const {
+    std::istringstream in(m_buffer.str());
+    std::vector<std::string> lines;
+    std::string line;
+    while (std::getline(in, line)) {
+      while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back())))
+        line.pop_back();
+      if (!line.empty() && std::find(lines.begin(), lines.end(), line) == lines.end())
+        lines.push_back(line);
+    }
+    std::string joined;
+    for (const std::string& l : lines) joined += (joined.empty() ? "" : "; ") + l;
+    return joined;
+  }
+
+ private:
+  std::ostringstream m_buffer;
+  std::ostringstream m_sink;
+  std::streambuf* m_err;
+  std::streambuf* m_out;
+};
+
+/// A problem located in a text file: 1-based line and description.
+struct Located {
+  int line;
+  std::string what;
+};
+
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+/// Finds the first line of an OBJ file that CGAL's reader rejects: an unknown statement,
+/// a vertex without three numbers, or a face index that is not an existing vertex.
+std::optional<Located> locateObjError(const std::string& path) {
+  static const char* const kKnown[] = {
+      "v",        "vt",       "vn",     "f",     "vp",       "bevel",    "lod",        "ctech",
+      "c_interp", "usemap",   "usemtl", "stech", "d_interp", "mtllib",   "shadow_obj", "trace_obj",
+      "o",        "g",        "s",      "p",     "cstype",   "deg",      "step",       "bmat",
+      "con",      "curv",     "curv2",  "surf",  "parm",     "trim",     "hole",       "scrv",
+      "sp",       "end",      "surf_1", "q0_1",  "q1_1",     "curv2d_1", "surf_2",     "q0_2",
+      "q1_2",     "curv2d_2", "bsp",    "bzp",   "cdc",      "cdp",      "res"};
+  std::ifstream in(path);
+  std::string line;
+  int lineNo = 0;
+  long long vertexCount = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    std::istringstream iss(line);
+    std::string key;
+    if (!(iss >> key) || key[0] == '#') continue;
+    if (std::find(std::begin(kKnown), std::end(kKnown), key) == std::end(kKnown))
+      return Located{lineNo, "unrecognised statement '" + trimmed(line) + "'"};
+    if (key == "v") {
+      double x, y, z;
+      if (!(iss >> x >> y >> z))
+        return Located{lineNo, "vertex needs three numbers: '" + trimmed(line) + "'"};
+      ++vertexCount;
+    } else if (key == "f") {
+      std::string token;
+      int corners = 0;
+      while (iss >> token) {
+        std::istringstream ts(token);
+        long long i;
+        if (!(ts >> i)) return Located{lineNo, "face index '" + token + "' is not a number"};
+        const long long resolved = i < 0 ? vertexCount + i : i - 1;
+        if (i == 0 || resolved < 0 || resolved >= vertexCount)
+          return Located{lineNo, "face index " + std::to_string(i) + " refers to no vertex (" +
+                                     std::to_string(vertexCount) + " defined so far)"};
+        ++corners;
+      }
+      if (corners < 3)
+        return Located{lineNo, "face needs at least three vertices: '" + trimmed(line) + "'"};
+    }
+  }
+  return std::nullopt;
+}
+
+/// Finds the first malformed line of an ASCII OFF file (header, counts, vertex or face).
+std::optional<Located> locateOffError(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  int lineNo = 0;
+  // The significant lines, with comments and blank lines skipped.
+  auto next = [&](std::string& out) {
+    while (std::getline(in, line)) {
+      ++lineNo;
+      const std::string t = trimmed(line.substr(0, line.find('#')));
+      if (!t.empty()) {
+        out = t;
+        return true;
+      }
+    }
+    return false;
+  };
+  std::string s;
+  if (!next(s)) return Located{lineNo, "no OFF header"};
+  std::istringstream header(s);
+  std::string keyword;
+  header >> keyword;
+  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+    return Located{lineNo, "header must start with OFF, found '" + keyword + "'"};
+  std::string rest;
+  if (header >> rest && rest == "BINARY") return std::nullopt;  // binary body: not scanned
+  long long nv = -1, nf = -1;
+  std::istringstream counts(rest.empty() ? std::string() : s.substr(s.find(rest)));
+  if (!(counts >> nv >> nf)) {
+    if (!next(s)) return Located{lineNo, "missing vertex and face counts"};
+    std::istringstream c2(s);
+    if (!(c2 >> nv >> nf) || nv < 0 || nf < 0)
+      return Located{lineNo, "expected vertex and face counts, found '" + s + "'"};
+  }
+  for (long long i = 0; i < nv; ++i) {
+    if (!next(s))
+      return Located{lineNo, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
+                                 " vertices"};
+    std::istringstream v(s);
+    double x, y, z;
+    if (!(v >> x >> y >> z)) return Located{lineNo, "vertex needs three numbers: '" + s + "'"};
+  }
+  for (long long i = 0; i < nf; ++i) {
+    if (!next(s))
+      return Located{
+          lineNo, "file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces"};
+    std::istringstream f(s);
+    long long k;
+    if (!(f >> k) || k < 1)
+      return Located{lineNo, "face must start with its vertex count: '" + s + "'"};
+    for (long long j = 0; j < k; ++j) {
+      long long index;
+      if (!(f >> index))
+        return Located{lineNo,
+                       "face lists fewer than " + std::to_string(k) + " indices: '" + s + "'"};
+      if (index < 0 || index >= nv)
+        return Located{lineNo, "face index " + std::to_string(index) + " out of range [0, " +
+                                   std::to_string(nv) + ")"};
+    }
+  }
+  return std::nullopt;
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+/// A closed mesh (every edge shared by exactly two triangles) whose signed volume is
+/// negative has its normals pointing inward: flip every triangle. Open meshes are left as
+/// orient_polygon_soup made them.
+void orientOutward(const std::vector<Point3>& vertices,
+                   std::vector<TriangleMesh::Index3>& triangles) {
+  std::map<std::pair<int, int>, int> edgeUse;
+  double volume6 = 0.0;
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      edgeUse[{std::min(a, b), std::max(a, b)}]++;
+    }
+    volume6 += glm::dot(vertices[t[0]], glm::cross(vertices[t[1]], vertices[t[2]]));
+  }
+  const bool closed =
+      std::all_of(edgeUse.begin(), edgeUse.end(), [](const auto& e) { return e.second == 2; });
+  if (closed && volume6 < 0.0)
+    for (auto& t : triangles) std::swap(t[1], t[2]);
+}
+
+}  // namespace
+
+std::vector<std::string> MeshIO::supportedExtensions() { return {".obj", ".off", ".ply", ".stl"}; }
+
+TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
+  auto fail = [&path](const std::string& what, int line = 0) -> ReadError {
+    return ReadError(path + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + what);
+  };
+
+  // Step 1: the file must exist, be readable and have a known extension.
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw fail("file not found");
+  if (!std::filesystem::is_regular_file(path, ec)) throw fail("not a regular file");
+  const std::string ext = lowerExtension(path);
+  const auto known = supportedExtensions();
+  if (std::find(known.begin(), known.end(), ext) == known.end())
+    throw fail("unknown mesh extension '" + ext + "' (supported: .obj, .off, .ply, .stl)");
+  if (!std::ifstream(path).good()) throw fail("cannot open the file for reading");
+  if (std::filesystem::file_size(path, ec) == 0) throw fail("file is empty (no faces)");
+
+  // Step 2: read the polygon soup with CGAL, collecting what it reports.
+  std::vector<CgalPoint> points;
+  std::vector<Polygon> polygons;
+  bool ok = false;
+  std::string report;
+  {
+    CaptureStreams capture;
+    try {
+      ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(true));
+    } catch (const std::exception& e) {
+      ok = false;
+      report = e.what();
+    }
+    const std::string printed = capture.errors();
+    report = report.empty() ? printed : report + " " + printed;
+  }
+  const std::string format = ext.substr(1);
+  std::string upperFormat = format;
+  std::transform(upperFormat.begin(), upperFormat.end(), upperFormat.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+
+  // Step 3: classify failures: locate the bad line in text formats, else say "no faces"
+  // when nothing was wrong but faces are missing.
+  auto locate = [&]() -> std::optional<Located> {
+    if (ext == ".obj") return locateObjError(path);
+    if (ext == ".off") return locateOffError(path);
+    return std::nullopt;
+  };
+  auto throwLocated = [&](const std::optional<Located>& located) {
+    if (located)
+      throw fail("cannot parse " + upperFormat + " file: " + located->what +
+                     (report.empty() ? std::string() : " (CGAL: " + report + ")"),
+                 located->line);
+  };
+  if (!ok) {
+    throwLocated(locate());
+    if (polygons.empty() && (report.empty() || report.find("empty") != std::string::npos))
+      throw fail("no faces in the file (empty mesh)");
+    throw fail("cannot parse " + upperFormat + " file" +
+               (report.empty() ? std::string(": the reader gave no reason") : ": " + report));
+  }
+  if (polygons.empty()) throw fail("no faces in the file (empty mesh)");
+  for (std::size_t f = 0; f < polygons.size(); ++f) {
+    const bool bad =
+        polygons[f].size() < 3 || std::any_of(polygons[f].begin(), polygons[f].end(),
+                                              [&](std::size_t i) { return i >= points.size(); });
+    if (bad) throwLocated(locate());
+    for (std::size_t index : polygons[f])
+      if (index >= points.size())
+        throw fail("corrupt " + upperFormat + " file: face " + std::to_string(f) +
+                   " refers to vertex " + std::to_string(index) + " but there are only " +
+                   std::to_string(points.size()) + " vertices");
+    if (polygons[f].size() < 3)
+      throw fail("corrupt " + upperFormat + " file: face " + std::to_string(f) + " has only " +
+                 std::to_string(polygons[f].size()) + " vertices");
+  }
+
+  // Step 4: repair (merge duplicate points, drop degenerate / duplicate faces), orient.
+  PMP::repair_polygon_soup(points, polygons);
+  if (polygons.empty()) throw fail("no faces left after removing degenerate faces");
+  const std::size_t pointsBefore = points.size();
+  const bool oriented = PMP::orient_polygon_soup(points, polygons);
+  if (!options.allowNonManifold && !oriented)
+    throw fail("non-manifold mesh beyond repair: orienting it needed " +
+               std::to_string(points.size() - pointsBefore) +
+               " duplicated vertices (an edge shared by more than two faces, faces touching "
+               "only at a vertex, or a non-orientable surface)");
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw fail("non-manifold mesh beyond repair: not a polygon mesh after repair and orientation");
+
+  // Step 5: triangulate faces with more than three vertices, then copy out.
+  std::vector<Point3> vertices;
+  std::vector<TriangleMesh::Index3> triangles;
+  const bool allTriangles =
+      std::all_of(polygons.begin(), polygons.end(), [](const Polygon& p) { return p.size() == 3; });
+  if (allTriangles) {
+    vertices.reserve(points.size());
+    for (const CgalPoint& p : points) vertices.emplace_back(p.x(), p.y(), p.z());
+    triangles.reserve(polygons.size());
+    for (const Polygon& p : polygons)
+      triangles.push_back({static_cast<int>(p[0]), static_cast<int>(p[1]), static_cast<int>(p[2])});
+  } else {
+    CGAL::Surface_mesh<CgalPoint> mesh;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    if (!PMP::triangulate_faces(mesh)) throw fail("could not triangulate a polygonal face");
+    vertices.reserve(mesh.number_of_vertices());
+    for (auto v : mesh.vertices()) {
+      const CgalPoint& p = mesh.point(v);
+      vertices.emplace_back(p.x(), p.y(), p.z());
+    }
+    for (auto f : mesh.faces()) {
+      TriangleMesh::Index3 tri{};
+      int k = 0;
+      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+        if (k < 3) tri[k] = static_cast<int>(static_cast<std::size_t>(v));
+        ++k;
+      }
+      if (k != 3) throw fail("could not triangulate a polygonal face");
+      triangles.push_back(tri);
+    }
+  }
+  orientOutward(vertices, triangles);
+  try {
+    return TriangleMesh(std::move(vertices), std::move(triangles));
+  } catch (const Exception& e) {
+    throw fail(e.what());
+  }
+}
+
+}  // namespace raylab

@@ -1,0 +1,485 @@
+// Tests of the SAH BVH (Bvh.h), TriangleMesh and MeshFactory: the BVH against brute force,
+// build statistics, the mesh's Shape interface, and watertightness on shared edges.
+
+#include "raylab/core/Bvh.h"
+#include "raylab/core/MeshFactory.h"
+#include "raylab/core/Triangle.h"
+#include "raylab/core/TriangleMesh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <random>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+using Index3 = TriangleMesh::Index3;
+
+struct Soup {
+  std::vector<Point3> vertices;
+  std::vector<Index3> triangles;
+};
+
+/// Random triangles of mixed sizes in [-1, 1]^3; a share of them clustered, and some
+/// sharing vertices with their predecessor so edges and vertices are hit.
+Soup randomSoup(std::mt19937_64& rng, int count) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Soup s;
+  const Point3 cluster(u(rng), u(rng), u(rng));
+  for (int i = 0; i < count; ++i) {
+    const double size = (i % 3 == 0) ? 0.5 : 0.05;
+    const Point3 c = (i % 4 == 0) ? cluster + 0.1 * Vec3(u(rng), u(rng), u(rng))
+                                  : Point3(u(rng), u(rng), u(rng));
+    const int base = static_cast<int>(s.vertices.size());
+    if (i % 5 == 1 && base >= 3) {
+      // Share an edge with the previous triangle.
+      s.vertices.push_back(c + size * Vec3(u(rng), u(rng), u(rng)));
+      s.triangles.push_back({base - 1, base - 2, base});
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) s.vertices.push_back(c + size * Vec3(u(rng), u(rng), u(rng)));
+    s.triangles.push_back({base, base + 1, base + 2});
+  }
+  return s;
+}
+
+/// A random ray: origin in [-2, 2]^3, direction uniform on the sphere, sometimes with
+/// zero components or a limited [tMin, tMax].
+Ray randomRay(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Vec3 d;
+  do {
+    d = Vec3(u(rng), u(rng), u(rng));
+  } while (glm::dot(d, d) > 1.0 || glm::dot(d, d) < 1e-6);
+  const int kind = static_cast<int>(rng() % 8);
+  if (kind == 0) d.x = 0.0;
+  if (kind == 1) d = Vec3(0.0, 0.0, d.z < 0 ? -1.0 : 1.0);
+  Ray r = Ray::make(2.0 * Point3(u(rng), u(rng), u(rng)), d);
+  if (kind == 2) r.tMax = 1.0 + u(rng);
+  if (kind == 3) r.tMin = 0.5 + 0.5 * u(rng);
+  return r;
+}
+
+struct Brute {
+  bool hit = false;
+  double t = kInfinity;
+  int id = -1;
+  Vec2 uv{0.0};
+};
+
+Brute bruteForce(const Soup& s, const Ray& ray) {
+  Brute best;
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const Index3& t = s.triangles[i];
+    const auto h = intersectTriangle(ray, s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+    if (h && h->t < best.t) best = Brute{true, h->t, static_cast<int>(i), Vec2(h->b1, h->b2)};
+  }
+  return best;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+double signedVolume(const TriangleMesh& m) {
+  double v6 = 0.0;
+  for (const Index3& t : m.triangles())
+    v6 += glm::dot(m.vertices()[t[0]], glm::cross(m.vertices()[t[1]], m.vertices()[t[2]]));
+  return v6 / 6.0;
+}
+
+TEST(Bvh, 01_EmptyHierarchyNeverHits) {
+  const Bvh bvh({}, {});
+  const Ray r = Ray::make(Point3(0.0), Vec3(0, 0, 1));
+  EXPECT_FALSE(bvh.intersect(r).has_value());
+  EXPECT_FALSE(bvh.occluded(r));
+  EXPECT_TRUE(bvh.intersectAll(r).empty());
+  EXPECT_EQ(bvh.closestTriangle(Point3(0.0)), -1);
+  EXPECT_EQ(bvh.stats().triangleCount, 0);
+  EXPECT_EQ(bvh.stats().leafCount, 1);
+}
+
+TEST(Bvh, 02_ClosestHitEqualsBruteForceBitForBit) {
+  // 5 random meshes x 24,000 rays = 120,000 rays; t, triangle and barycentrics must be
+  // the same bits as the brute-force loop over intersectTriangle.
+  const std::uint64_t seed = 20240611;
+  std::mt19937_64 rng(seed);
+  int rays = 0, hits = 0, mismatches = 0;
+  for (int m = 0; m < 5; ++m) {
+    const Soup s = randomSoup(rng, 400 + 300 * m);
+    const Bvh bvh(s.vertices, s.triangles);
+    for (int i = 0; i < 24000; ++i, ++rays) {
+      const Ray r = randomRay(rng);
+      const Brute expect = bruteForce(s, r);
+      const auto got = bvh.intersect(r);
+      const bool same =
+          got.has_value() == expect.hit &&
+          (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id &&
+                           sameBits(got->uv.x, expect.uv.x) && sameBits(got->uv.y, expect.uv.y)));
+      hits += expect.hit;
+      if (!same && ++mismatches <= 5)
+        ADD_FAILURE() << "seed " << seed << " mesh " << m << " ray " << r.toString()
+                      << ": brute force t=" << expect.t << " id=" << expect.id << ", bvh "
+                      << (got ? std::to_string(got->t) + " id=" + std::to_string(got->primitive)
+                              : std::string("miss"));
+    }
+  }
+  std::printf("closest hit: %d rays, %d hits, %d mismatches\n", rays, hits, mismatches);
+  EXPECT_EQ(mismatches, 0);
+  EXPECT_GT(hits, rays / 10);  // the rays do exercise the tree
+}
+
+TEST(Bvh, 03_AnyHitAndAllHitsAgreeWithBruteForce) {
+  const std::uint64_t seed = 77;
+  std::mt19937_64 rng(seed);
+  const Soup s = randomSoup(rng, 1500);
+  const Bvh bvh(s.vertices, s.triangles);
+  int bad = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Ray r = randomRay(rng);
+    std::vector<std::pair<double, int>> expect;
+    for (std::size_t k = 0; k < s.triangles.size(); ++k) {
+      const Index3& t = s.triangles[k];
+      if (auto h = intersectTriangle(r, s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]))
+        expect.emplace_back(h->t, static_cast<int>(k));
+    }
+    std::sort(expect.begin(), expect.end());
+    std::vector<std::pair<double, int>> got;
+    for (const Hit& h : bvh.intersectAll(r)) got.emplace_back(h.t, h.primitive);
+    if (bvh.occluded(r) != !expect.empty() || got != expect) ++bad;
+  }
+  EXPECT_EQ(bad, 0) << "seed " << seed;
+}
+
+TEST(Bvh, 04_StatisticsAreConsistent) {
+  const TriangleMesh sphere = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 4);  // 5120 tris
+  const Bvh& bvh = sphere.bvh();
+  const BvhStats& st = bvh.stats();
+  std::printf("%s\n", st.toString().c_str());
+  EXPECT_EQ(st.triangleCount, 5120);
+  EXPECT_EQ(st.nodeCount, 2 * st.leafCount - 1);  // a full binary tree
+  EXPECT_LE(st.maxLeafSize, bvh.settings().maxSahLeafSize);
+  EXPECT_GE(st.depth, 10);  // at least log2(5120 / 8)
+  EXPECT_LE(st.depth, 40);
+  EXPECT_GT(st.sahCost, 1.0);
+  EXPECT_LT(st.sahCost, 100.0);
+  // Leaves cover every triangle slot exactly once; children lie inside their parent.
+  std::vector<int> covered(5120, 0);
+  int leaves = 0;
+  std::vector<BvhNode> nodes;
+  for (int i = 0; i < bvh.nodeSlots(); ++i) nodes.push_back(bvh.node(i));
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (i == 1) continue;  // padding
+    const BvhNode& n = nodes[i];
+    if (n.count > 0) {
+      ++leaves;
+      for (int k = n.offset; k < n.offset + n.count; ++k) covered[k]++;
+      continue;
+    }
+    for (int c = n.offset; c < n.offset + 2; ++c)
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_LE(n.box[a], nodes[c].box[a]);
+        EXPECT_GE(n.box[3 + a], nodes[c].box[3 + a]);
+      }
+  }
+  EXPECT_EQ(leaves, st.leafCount);
+  EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int c) { return c == 1; }));
+  // The float boxes enclose the double-precision bounds.
+  const Bounds3& b = bvh.bounds();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_LE(double(nodes[0].box[a]), b.lower[a]);
+    EXPECT_GE(double(nodes[0].box[3 + a]), b.upper[a]);
+  }
+}
+
+TEST(Bvh, 05_SahCostBeatsMedianSplitOnSkewedMesh) {
+  // 4000 tiny triangles in one corner and 200 large ones spread out: the median split
+  // cuts the cluster instead of isolating it.
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Soup s;
+  for (int i = 0; i < 4200; ++i) {
+    const bool tiny = i < 4000;
+    const Point3 c = tiny ? Point3(0.05 * u(rng), 0.05 * u(rng), 0.05 * u(rng))
+                          : Point3(10 * u(rng), 10 * u(rng), 10 * u(rng));
+    const double size = tiny ? 0.002 : 0.5;
+    const int base = static_cast<int>(s.vertices.size());
+    for (int k = 0; k < 3; ++k) s.vertices.push_back(c + size * Vec3(u(rng), u(rng), u(rng)));
+    s.triangles.push_back({base, base + 1, base + 2});
+  }
+  BvhSettings median;
+  median.split = BvhSettings::Split::Median;
+  const Bvh sah(s.vertices, s.triangles);
+  const Bvh med(s.vertices, s.triangles, median);
+  std::printf("SAH:    %s\nmedian: %s\n", sah.stats().toString().c_str(),
+              med.stats().toString().c_str());
+  EXPECT_LT(sah.stats().sahCost, 0.8 * med.stats().sahCost);
+  // Both trees answer the same.
+  std::mt19937_64 rays(6);
+  for (int i = 0; i < 2000; ++i) {
+    Ray r = randomRay(rays);
+    r.origin = 5.0 * r.origin;
+    const auto a = sah.intersect(r), b = med.intersect(r);
+    ASSERT_EQ(a.has_value(), b.has_value());
+    if (a) {
+      EXPECT_EQ(a->t, b->t);
+      EXPECT_EQ(a->primitive, b->primitive);
+    }
+  }
+}
+
+TEST(Bvh, 06_AxisAlignedRaysThroughSlabPlanes) {
+  // Rays with two zero direction components whose origins lie exactly on box planes of
+  // a subdivided cube: the NaN-safe slab test must not lose them.
+  const TriangleMesh cube = MeshFactory::makeSubdividedCube(Point3(0.0), 2.0, 8);
+  Soup s{cube.vertices(), cube.triangles()};
+  int misses = 0, mismatches = 0;
+  for (int i = 0; i <= 16; ++i)
+    for (int j = 0; j <= 16; ++j) {
+      const Point3 o(-1.0 + i * 0.125, -1.0 + j * 0.125, 5.0);
+      const Ray r = Ray::make(o, Vec3(0.0, 0.0, -1.0));
+      const auto got = cube.intersect(r);
+      const Brute expect = bruteForce(s, r);
+      if (!got) ++misses;
+      if (!got || got->t != expect.t || got->primitive != expect.id) ++mismatches;
+    }
+  EXPECT_EQ(misses, 0);
+  EXPECT_EQ(mismatches, 0);
+}
+
+/// Distance from p to triangle (a, b, c), computed independently of the BVH's Voronoi-region
+/// method: the plane distance when the projection falls inside, else the nearest edge.
+double triangleDistance(const Point3& p, const Point3& a, const Point3& b, const Point3& c) {
+  auto segment = [&p](const Point3& s0, const Point3& s1) {
+    const Vec3 d = s1 - s0;
+    const double t = std::clamp(glm::dot(p - s0, d) / glm::dot(d, d), 0.0, 1.0);
+    return glm::length(p - (s0 + t * d));
+  };
+  const Vec3 n = glm::cross(b - a, c - a);
+  const Point3 q = p - (glm::dot(p - a, n) / glm::dot(n, n)) * n;
+  const bool inside = glm::dot(glm::cross(b - a, q - a), n) >= 0 &&
+                      glm::dot(glm::cross(c - b, q - b), n) >= 0 &&
+                      glm::dot(glm::cross(a - c, q - c), n) >= 0;
+  if (inside) return std::abs(glm::dot(p - a, n)) / glm::length(n);
+  return std::min({segment(a, b), segment(b, c), segment(c, a)});
+}
+
+TEST(Bvh, 07_ClosestTriangleMatchesBruteForceDistance) {
+  std::mt19937_64 rng(8);
+  const Soup s = randomSoup(rng, 800);
+  const Bvh bvh(s.vertices, s.triangles);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  auto dist = [&](const Point3& p, int id) {
+    const Index3& t = s.triangles[id];
+    return triangleDistance(p, s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+  };
+  for (int i = 0; i < 2000; ++i) {
+    const Point3 p(u(rng), u(rng), u(rng));
+    const int id = bvh.closestTriangle(p);
+    ASSERT_GE(id, 0);
+    double best = kInfinity;
+    for (std::size_t k = 0; k < s.triangles.size(); ++k)
+      best = std::min(best, dist(p, static_cast<int>(k)));
+    ASSERT_NEAR(dist(p, id), best, 1e-12) << "point " << toString(p);
+  }
+}
+
+TEST(TriangleMesh, 01_ValidatesIndicesAndVertices) {
+  const std::vector<Point3> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_NO_THROW(TriangleMesh(v, {{0, 1, 2}}));
+  try {
+    TriangleMesh(v, {{0, 1, 2}, {0, 3, 1}});
+    FAIL() << "no exception for an index out of range";
+  } catch (const Shape::InvalidGeometry& e) {
+    EXPECT_NE(std::string(e.what()).find("triangle 1 has vertex index 3 out of range [0, 3)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(TriangleMesh(v, {{-1, 1, 2}}), Exception);
+  EXPECT_THROW(TriangleMesh({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}, {{0, 1, 2}}),
+               Shape::InvalidGeometry);
+}
+
+TEST(TriangleMesh, 02_SurfaceAtGivesOutwardNormalAndBarycentrics) {
+  const TriangleMesh sphere = MeshFactory::makeIcosphere(Point3(1, 2, 3), 2.0, 3);
+  const Ray r = Ray::make(Point3(1, 2, 10), Vec3(0, 0, -1));
+  const auto si = sphere.closestHit(r);
+  ASSERT_TRUE(si.has_value());
+  EXPECT_NEAR(si->t, 5.0, 0.02);  // the tessellation lies inside the true sphere
+  EXPECT_GT(si->n.z, 0.99);
+  EXPECT_TRUE(si->frontFace);
+  EXPECT_GE(si->uv.x, 0.0);
+  EXPECT_GE(si->uv.y, 0.0);
+  EXPECT_LE(si->uv.x + si->uv.y, 1.0);
+  EXPECT_NEAR(glm::length(si->p - r.at(si->t)), 0.0, 1e-12);
+  // From inside, the far wall is hit on its back face.
+  const auto in = sphere.closestHit(Ray::make(Point3(1, 2, 3), Vec3(0, 0, 1)));
+  ASSERT_TRUE(in.has_value());
+  EXPECT_FALSE(in->frontFace);
+  EXPECT_GT(in->n.z, 0.99);
+  EXPECT_GT(sphere.normal(Point3(1, 2, 5)).z, 0.99);
+  EXPECT_LT(sphere.normal(Point3(-1, 2, 3)).x, -0.99);
+}
+
+TEST(TriangleMesh, 03_IntersectAllAlternatesEnteringAndLeaving) {
+  const TriangleMesh cube = MeshFactory::makeSubdividedCube(Point3(0.0), 2.0, 3);
+  const Ray r = Ray::make(Point3(-5.0, 0.1, 0.2), Vec3(1.0, 0.0, 0.0));
+  const auto c = cube.intersectAll(r);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_DOUBLE_EQ(c[0].t, 4.0);
+  EXPECT_TRUE(c[0].entering);
+  EXPECT_DOUBLE_EQ(c[1].t, 6.0);
+  EXPECT_FALSE(c[1].entering);
+  // A limited ray sees only the crossings inside [tMin, tMax].
+  Ray part = r;
+  part.tMin = 5.0;
+  ASSERT_EQ(cube.intersectAll(part).size(), 1u);
+  EXPECT_FALSE(cube.intersectAll(part)[0].entering);
+}
+
+TEST(TriangleMesh, 04_InsideByParity) {
+  const TriangleMesh cube = MeshFactory::makeSubdividedCube(Point3(0.5), 1.0, 4);
+  const TriangleMesh sphere = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 3);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  int wrong = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const Point3 p(u(rng), u(rng), u(rng));
+    const bool inCube = p.x > 0 && p.x < 1 && p.y > 0 && p.y < 1 && p.z > 0 && p.z < 1;
+    if (cube.inside(p) != inCube) ++wrong;
+    const double r = glm::length(p);
+    if (r < 0.98 && !sphere.inside(p)) ++wrong;
+    if (r > 1.0 && sphere.inside(p)) ++wrong;
+  }
+  // Grid points at lattice positions of the cube's own vertices (edge-prone).
+  for (int i = 1; i < 8; ++i)
+    if (!cube.inside(Point3(i / 8.0, 0.5, 0.25))) ++wrong;
+  EXPECT_EQ(wrong, 0);
+}
+
+TEST(TriangleMesh, 05_ApplyTransformsAndKeepsNormalsOutward) {
+  TriangleMesh cube = MeshFactory::makeSubdividedCube(Point3(0.0), 2.0, 2);
+  EXPECT_NEAR(signedVolume(cube), 8.0, 1e-12);
+  Mat4 m(1.0);
+  m[0][0] = 2.0;                   // scale x by 2
+  m[3] = glm::dvec4(10, 0, 0, 1);  // then translate by +10 x
+  cube.apply(m);
+  EXPECT_EQ(cube.bounds().lower, Point3(8, -1, -1));
+  EXPECT_EQ(cube.bounds().upper, Point3(12, 1, 1));
+  EXPECT_TRUE(cube.inside(Point3(11.5, 0.0, 0.0)));
+  const auto h = cube.intersect(Ray::make(Point3(0, 0.3, 0.3), Vec3(1, 0, 0)));
+  ASSERT_TRUE(h.has_value());
+  EXPECT_DOUBLE_EQ(h->t, 8.0);
+  // A mirror keeps the outward orientation (indices swapped).
+  Mat4 mirror(1.0);
+  mirror[1][1] = -1.0;
+  cube.apply(mirror);
+  EXPECT_NEAR(signedVolume(cube), 16.0, 1e-9);
+  EXPECT_GT(cube.normal(Point3(10, 1, 0)).y, 0.99);
+  Mat4 singular(1.0);
+  singular[2][2] = 0.0;
+  EXPECT_THROW(cube.apply(singular), Shape::InvalidGeometry);
+}
+
+TEST(TriangleMesh, 06_CopiesAndClonesAnswerTheSame) {
+  const TriangleMesh a = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 2);
+  const std::unique_ptr<Shape> b = a.clone();
+  TriangleMesh c = MeshFactory::makeIcosphere(Point3(5.0), 1.0, 0);
+  c = a;
+  std::mt19937_64 rng(10);
+  for (int i = 0; i < 500; ++i) {
+    const Ray r = randomRay(rng);
+    const auto ha = a.intersect(r), hb = b->intersect(r), hc = c.intersect(r);
+    ASSERT_EQ(ha.has_value(), hb.has_value());
+    ASSERT_EQ(ha.has_value(), hc.has_value());
+    if (ha) {
+      EXPECT_TRUE(ha->t == hb->t && ha->t == hc->t);
+    }
+  }
+  EXPECT_EQ(b->kind(), ShapeKind::TriangleMesh);
+  EXPECT_NE(a.toString().find("triangles=320"), std::string::npos) << a.toString();
+}
+
+TEST(MeshFactory, 01_MeshesAreClosedAndSized) {
+  const TriangleMesh ico = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 3);
+  const TriangleMesh uv = MeshFactory::makeUvSphere(Point3(0.0), 1.0, 20, 30);
+  const TriangleMesh cube = MeshFactory::makeSubdividedCube(Point3(0.0), 1.0, 5);
+  EXPECT_EQ(ico.triangleCount(), 20u * 64u);
+  EXPECT_EQ(uv.triangleCount(), 2u * 30u * 19u);
+  EXPECT_EQ(cube.triangleCount(), 12u * 25u);
+  for (const TriangleMesh* m : {&ico, &uv, &cube}) {
+    std::map<std::pair<int, int>, int> directed;
+    for (const Index3& t : m->triangles())
+      for (int k = 0; k < 3; ++k) directed[{t[k], t[(k + 1) % 3]}]++;
+    // Closed and consistently oriented: each directed edge once, its reverse once.
+    for (const auto& [edge, n] : directed) {
+      EXPECT_EQ(n, 1);
+      EXPECT_EQ(directed.count({edge.second, edge.first}), 1u);
+    }
+  }
+  EXPECT_NEAR(signedVolume(ico), 4.0 / 3.0 * kPi, 0.05);
+  EXPECT_NEAR(signedVolume(uv), 4.0 / 3.0 * kPi, 0.1);
+  EXPECT_NEAR(signedVolume(cube), 1.0, 1e-12);
+}
+
+/// Shoots rays from outside a closed convex mesh at points exactly on its shared edges
+/// (midpoints and random lerps) and at its vertices. A leak is a ray that misses, or
+/// that first hits beyond its target (it slipped through the surface).
+int countLeaks(const TriangleMesh& mesh, const Point3& centre, int rays, std::uint64_t seed) {
+  std::map<std::pair<int, int>, int> edgeSet;
+  for (const Index3& t : mesh.triangles())
+    for (int k = 0; k < 3; ++k)
+      edgeSet[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}] = 1;
+  const std::vector<std::pair<std::pair<int, int>, int>> edges(edgeSet.begin(), edgeSet.end());
+  const auto& v = mesh.vertices();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), s01(0.0, 1.0);
+  int leaks = 0;
+  for (int i = 0; i < rays; ++i) {
+    // Target: a vertex (1 in 4), an edge midpoint (1 in 4) or a random point on an edge.
+    Point3 target;
+    const auto& e = edges[rng() % edges.size()].first;
+    switch (i % 4) {
+      case 0:
+        target = v[e.first];
+        break;
+      case 1:
+        target = 0.5 * (v[e.first] + v[e.second]);
+        break;
+      default: {
+        const double s = s01(rng);
+        target = (1.0 - s) * v[e.first] + s * v[e.second];
+      }
+    }
+    // Origin: outside, in a cone around the outward direction at the target.
+    Vec3 jitter;
+    do {
+      jitter = Vec3(u(rng), u(rng), u(rng));
+    } while (glm::dot(jitter, jitter) > 1.0);
+    const Vec3 out = glm::normalize(target - centre) + 0.5 * jitter;
+    const Point3 origin = target + 3.0 * out;
+    const double dist = glm::length(target - origin);
+    const auto h = mesh.intersect(Ray::make(origin, target - origin));
+    if (!h || h->t > dist * (1.0 + 1e-9)) ++leaks;
+  }
+  return leaks;
+}
+
+TEST(TriangleMesh, 07_WatertightOnSharedEdgesAndVertices) {
+  const TriangleMesh ico = MeshFactory::makeIcosphere(Point3(0.1, -0.2, 0.3), 1.0, 4);
+  const TriangleMesh cube = MeshFactory::makeSubdividedCube(Point3(0.25, 0.5, -0.75), 2.0, 16);
+  const int rays = 120000;
+  const int icoLeaks = countLeaks(ico, Point3(0.1, -0.2, 0.3), rays, 11);
+  const int cubeLeaks = countLeaks(cube, Point3(0.25, 0.5, -0.75), rays, 12);
+  std::printf("watertight: icosphere %d leaks / %d rays, subdivided cube %d leaks / %d rays\n",
+              icoLeaks, rays, cubeLeaks, rays);
+  EXPECT_EQ(icoLeaks, 0);
+  EXPECT_EQ(cubeLeaks, 0);
+}
+
+}  // namespace
+}  // namespace raylab
