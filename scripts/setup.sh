@@ -17,6 +17,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev     # CGAL exact kernels
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev  # maths, scene files, CLI, threads
   libgtest-dev libgmock-dev libbenchmark-dev          # tests and benchmarks
+  clang-format                                        # the style check in the test suite
 )
 
 missing=()
