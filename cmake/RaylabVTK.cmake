@@ -7,10 +7,11 @@
 macro(raylab_find_vtk)
   set(_raylab_vtk_modules
     CommonCore CommonDataModel CommonMath CommonTransforms
-    FiltersCore FiltersGeneral FiltersSources
+    FiltersCore FiltersGeneral FiltersHybrid FiltersSources
     ImagingCore IOImage
     InteractionStyle RenderingCore RenderingOpenGL2)
-  if("GUI" IN_LIST ARGN)
+  set(_raylab_vtk_args ${ARGN})  # a macro's ARGN is not a variable IN_LIST can read
+  if("GUI" IN_LIST _raylab_vtk_args)
     list(APPEND _raylab_vtk_modules GUISupportQt)
   endif()
   find_package(VTK 9 COMPONENTS ${_raylab_vtk_modules} QUIET)

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+
+namespace raylab::app {
+
+/// Options of the window (`raylab` with no subcommand).
+struct WindowOptions {
+  std::string scene;       ///< Scene file; empty for the built-in default scene.
+  int quitAfterMs = -1;    ///< Close by itself this long after showing; -1 stays open.
+  std::string screenshot;  ///< When set: grab the window into this PNG, then quit.
+  std::string select;      ///< Object to select at start (by name); empty selects none.
+};
+
+/**
+ * \brief Opens the main window and runs Qt's event loop until it closes.
+ *
+ * For tests, `quitAfterMs` and/or `screenshot` make the window leave by itself after it
+ * has been shown and painted (a screenshot alone waits 1500 ms). The scene is loaded
+ * before any window appears, so a bad file (or an unknown `select` name) fails like in
+ * the headless commands, with a raylab::Exception.
+ * \return kExitOk, or kExitRuntimeError when the screenshot cannot be written.
+ */
+int runWindow(int argc, char** argv, const WindowOptions& options);
+
+}  // namespace raylab::app

@@ -1,0 +1,197 @@
+// The 3D view of a scene rendered offscreen: what is drawn, where, in which colour.
+// Needs an X server (Debian's VTK renders offscreen through GLX): run under xvfb-run -a.
+#include "BaselineTest.h"
+#include "ImageChecks.h"
+
+#include "raylab/core/Scene.h"
+#include "raylab/core/Sphere.h"
+#include "raylab/core/Transform.h"
+#include "raylab/vis/ImageIO.h"
+#include "raylab/vis/SceneView.h"
+
+#include <vtkRenderer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace raylab {
+namespace {
+
+using testing::fractionNear;
+using testing::fractionOf;
+using testing::isBlue;
+using testing::isFlesh;
+using testing::isRed;
+using testing::isYellow;
+
+constexpr int kSize = 300;  // the style's 300x300 test window
+
+/// Background colour of the view in 8 bits, (0.12, 0.13, 0.16) * 255 rounded.
+const Rgb8 kBackground = {31, 33, 41};
+
+int objectNamed(const Scene& scene, const std::string& name) {
+  const int index = scene.findObject(name);
+  EXPECT_GE(index, 0) << "the default scene has no object named '" << name << "'";
+  return index;
+}
+
+/// Where object `name` appears in a kSize x kSize rendering of `view`.
+Vec2 whereIs(const SceneView& view, const std::string& name) {
+  const int index = objectNamed(view.scene(), name);
+  const auto p = view.worldToImage(view.objectCentre(index), kSize, kSize);
+  EXPECT_TRUE(p.has_value()) << name << " is behind the view camera";
+  return p.value_or(Vec2(-1.0));
+}
+
+/// Pixel bounding box (width, height) of the pixels of one colour class.
+Vec2 extentOf(const Image& image, const testing::ColourClass& colourClass) {
+  int x0 = image.width, x1 = -1, y0 = image.height, y1 = -1;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (!colourClass(image.at(x, y))) continue;
+      x0 = std::min(x0, x);
+      x1 = std::max(x1, x);
+      y0 = std::min(y0, y);
+      y1 = std::max(y1, y);
+    }
+  }
+  return x1 < 0 ? Vec2(0.0) : Vec2(x1 - x0 + 1, y1 - y0 + 1);
+}
+
+TEST(SceneView, 01_DrawsTheDefaultScene) {
+  SceneView view(defaultScene());
+  const Image image = view.renderOffscreen(kSize, kSize);
+  ASSERT_EQ(image.width, kSize);
+  ASSERT_EQ(image.height, kSize);
+
+  // Shaded geometry gives many colours; the room covers a good part of the picture.
+  EXPECT_GE(image.distinctColours(), 50);
+  const double background = fractionOf(image, [](const Rgb8& c) { return c == kBackground; });
+  EXPECT_GT(background, 0.2) << "the room should not fill the whole view";
+  EXPECT_LT(background, 0.8) << "the room should fill a good part of the view";
+}
+
+TEST(SceneView, 02_ObjectsShowTheirColoursWhereTheyAre) {
+  SceneView view(defaultScene());
+  const Image image = view.renderOffscreen(kSize, kSize);
+  ImageIO::writePng(image, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_02.png");
+
+  // Project each object's world centre with the view camera; the 7x7 pixels there must
+  // be (nearly all) of the object's colour. The light is visible only because the ceiling
+  // is culled from above (one-sided walls).
+  struct Expectation {
+    const char* object;
+    testing::ColourClass colour;
+    const char* colourName;
+  };
+  const Expectation expectations[] = {
+      {"red sphere", isRed, "red"}, {"blue cube", isBlue, "blue"}, {"light", isFlesh, "flesh"}};
+  for (const Expectation& e : expectations) {
+    const Vec2 p = whereIs(view, e.object);
+    EXPECT_GE(fractionNear(image, p, 3, e.colour), 0.9)
+        << e.object << " should be " << e.colourName << " around pixel (" << p.x << ", " << p.y
+        << ")";
+  }
+
+  // And the colours do not leak: each is a small part of the picture, not everywhere.
+  EXPECT_GT(fractionOf(image, isRed), 0.01);
+  EXPECT_LT(fractionOf(image, isRed), 0.15);
+  EXPECT_GT(fractionOf(image, isBlue), 0.01);
+  EXPECT_LT(fractionOf(image, isBlue), 0.15);
+  EXPECT_GT(fractionOf(image, isFlesh), 0.002);
+  EXPECT_LT(fractionOf(image, isFlesh), 0.05);
+  // The grey walls are none of these colours.
+  EXPECT_FALSE(isRed(kBackground) || isBlue(kBackground) || isFlesh(kBackground));
+}
+
+TEST(SceneView, 03_EmitterIsDrawnUnlitInItsHue) {
+  SceneView view(defaultScene());
+  const Image image = view.renderOffscreen(kSize, kSize);
+  // Emission 8 * (1.0, 0.8, 0.65), scaled to a peak of 1, unlit: exactly that colour.
+  const Vec2 p = whereIs(view, "light");
+  const Rgb8 c = image.at(static_cast<int>(p.x), static_cast<int>(p.y));
+  EXPECT_NEAR(c[0], 255, 2);
+  EXPECT_NEAR(c[1], 204, 2);
+  EXPECT_NEAR(c[2], 166, 2);
+}
+
+TEST(SceneView, 04_ProjectionAgreesWithVtkWorldToDisplay) {
+  SceneView view(defaultScene());
+  view.renderOffscreen(kSize, kSize);  // puts the renderer in a kSize x kSize window
+  vtkRenderer* renderer = view.renderer();
+  for (int i = 0; i < view.objectCount(); ++i) {
+    const Point3 c = view.objectCentre(i);
+    renderer->SetWorldPoint(c.x, c.y, c.z, 1.0);
+    renderer->WorldToDisplay();
+    double display[3];
+    renderer->GetDisplayPoint(display);
+    const auto p = view.worldToImage(c, kSize, kSize);
+    ASSERT_TRUE(p.has_value());
+    // Display coordinates count rows from the bottom, image coordinates from the top.
+    EXPECT_NEAR(p->x, display[0], 1e-6) << view.scene().objects[i].name;
+    EXPECT_NEAR(p->y, kSize - display[1], 1e-6) << view.scene().objects[i].name;
+  }
+}
+
+TEST(SceneView, 05_SelectionDrawsAYellowOutline) {
+  SceneView view(defaultScene());
+  const Image plain = view.renderOffscreen(kSize, kSize);
+  EXPECT_EQ(fractionOf(plain, isYellow), 0.0);
+
+  // The sphere's radius in pixels: project its rim seen from the view camera.
+  const int sphere = view.scene().findObject("red sphere");
+  const Point3 centre = view.objectCentre(sphere);
+  const Vec2 c = whereIs(view, "red sphere");
+  const auto rim = view.worldToImage(centre + 1.2 * view.viewCamera().up, kSize, kSize);
+  ASSERT_TRUE(rim.has_value());
+  const int radius = static_cast<int>(glm::length(*rim - c));
+  ASSERT_GT(radius, 8);
+
+  // Selected: a yellow ring around the sphere, whose middle stays red.
+  view.setHighlighted(sphere);
+  EXPECT_EQ(view.highlighted(), sphere);
+  const Image selected = view.renderOffscreen(kSize, kSize);
+  ImageIO::writePng(selected, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_05.png");
+  EXPECT_GT(fractionNear(selected, c, radius + 3, isYellow), 0.05);
+  EXPECT_EQ(fractionNear(selected, c, radius / 2, isYellow), 0.0);
+  EXPECT_GE(fractionNear(selected, c, 3, isRed), 0.9);
+  // Nowhere else: the yellow stays within the ring's box.
+  const double ringBox = std::pow(2.0 * (radius + 3) + 1.0, 2.0) / (kSize * kSize);
+  EXPECT_LE(fractionOf(selected, isYellow), ringBox);
+
+  // Cleared: the picture is the plain one again.
+  view.setHighlighted(-1);
+  EXPECT_EQ(view.highlighted(), -1);
+  EXPECT_EQ(view.renderOffscreen(kSize, kSize).rgb, plain.rgb);
+}
+
+TEST(SceneView, 06_EllipsoidFollowsItsTransform) {
+  // A unit sphere stretched 3x along x, seen straight down -z: 3 times wider than tall.
+  Scene scene;
+  scene.name = "ellipsoid";
+  scene.materials = {{"red", {0.8, 0.1, 0.1}, Vec3(0.0), 1.0}};
+  auto sphere = std::make_unique<Sphere>(Point3(0.0), 1.0, 32, 48);
+  sphere->apply(Transform::scale({3.0, 1.0, 1.0}).matrix());
+  scene.objects.emplace_back("ellipsoid", std::move(sphere), 0);
+  scene.camera.position = {0.0, 0.0, 30.0};  // the scene camera, far behind the view
+  scene.camera.lookAt = {0.0, 0.0, 0.0};
+
+  SceneView view(scene);
+  ViewCamera straight;
+  straight.eye = {0.0, 0.0, 20.0};
+  straight.focalPoint = {0.0, 0.0, 0.0};
+  view.setViewCamera(straight);
+  const Vec2 extent = extentOf(view.renderOffscreen(kSize, kSize), isRed);
+  ASSERT_GT(extent.y, 10.0);
+  EXPECT_NEAR(extent.x / extent.y, 3.0, 0.25) << extent.x << " x " << extent.y;
+}
+
+TEST(SceneView, 07_MatchesBaseline) {
+  SceneView view(defaultScene());
+  testing::expectMatchesBaseline(view.renderOffscreen(kSize, kSize), "TestSceneView");
+}
+
+}  // namespace
+}  // namespace raylab

@@ -1,0 +1,92 @@
+#pragma once
+
+#include "raylab/core/Scene.h"
+#include "raylab/core/Types.h"
+#include "raylab/vis/Image.h"
+#include "raylab/vis/ViewCamera.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+class vtkRenderer;
+
+namespace raylab {
+
+/**
+ * \brief The 3D view of a scene: one VTK renderer holding an actor per scene object, the
+ * scene camera's glyph (translucent body and frustum lines) and a view camera.
+ *
+ * This is the picture the teacher turns around in the window and that tests render
+ * offscreen. Drawing rules:
+ *  - each object takes its material's colour (linear RGB shown as is), lit by a headlight
+ *    with some ambient light; emitters are drawn unlit in their emission colour scaled so
+ *    its largest channel is 1 (the flesh-coloured light cube shows as ~(1.0, 0.8, 0.65));
+ *  - boxes are flat-shaded hexahedra; spheres use the shape's m x n tessellation;
+ *  - open surfaces (planes, quads, triangles) face the room and are drawn one-sided
+ *    (back faces culled), so from outside one looks through the near walls into the room
+ *    (a dollhouse cut-away); an infinite plane is drawn as a large finite square;
+ *  - the selected object gets a yellow outline: its silhouette as seen from the view
+ *    camera, its border edges and its sharp creases, drawn over it in thick lines.
+ *
+ * The renderer can be shown in one render window at a time: either the app's widget
+ * (take `renderer()`), or this class's own offscreen window (`renderOffscreen`).
+ */
+class SceneView {
+ public:
+  /// Builds the actors for `scene` and the default view camera (see defaultViewCamera).
+  explicit SceneView(const Scene& scene);
+  ~SceneView();
+  SceneView(const SceneView&) = delete;
+  SceneView& operator=(const SceneView&) = delete;
+
+  /// Replaces every actor with those of `scene`, clears the selection, resets the view.
+  void setScene(const Scene& scene);
+  /// The scene as last given to the view.
+  const Scene& scene() const { return m_scene; }
+
+  /// Number of scene objects; object i is Scene::objects[i].
+  int objectCount() const { return static_cast<int>(m_scene.objects.size()); }
+  /// World-space centre of object i (the centre of its bounds; a plane's reference point).
+  Point3 objectCentre(int index) const;
+
+  /// Highlights object `index` with a yellow outline; -1 (or any index out of range) clears.
+  void setHighlighted(int index);
+  /// The highlighted object, or -1.
+  int highlighted() const { return m_highlighted; }
+
+  /// The view camera now (it moves when the user drags in the window).
+  ViewCamera viewCamera() const;
+  /// Moves the view camera.
+  void setViewCamera(const ViewCamera& camera);
+  /// Back to the default view for a picture of aspect ratio `aspect` (width / height).
+  void resetViewCamera(double aspect = 1.0);
+
+  /// The VTK renderer, for a window to show (at most one window at a time).
+  vtkRenderer* renderer() const;
+
+  /**
+   * \brief Renders the view offscreen into a width x height image.
+   *
+   * Uses this view's own vtkRenderWindow with OffScreenRenderingOn and no multisampling,
+   * so pictures are repeatable for baselines. Needs an X server (Debian's VTK opens its
+   * GL context through GLX even offscreen; use xvfb-run). Must not be called while the
+   * renderer is shown in another window (checked).
+   */
+  Image renderOffscreen(int width, int height);
+  /// renderOffscreen, then ImageIO::writePng (throws ImageIO::Error naming the file).
+  void renderToPng(const std::string& path, int width, int height);
+
+  /// Where a world point appears in a width x height rendering of the current view, in
+  /// image coordinates (x right, y down, pixels); nothing when it is behind the eye.
+  std::optional<Vec2> worldToImage(const Point3& world, int width, int height) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+  Scene m_scene;
+  int m_highlighted = -1;
+};
+
+}  // namespace raylab

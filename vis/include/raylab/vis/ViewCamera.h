@@ -1,0 +1,62 @@
+#pragma once
+
+#include "raylab/core/Bounds3.h"
+#include "raylab/core/Scene.h"
+#include "raylab/core/Types.h"
+
+#include <optional>
+#include <string>
+
+namespace raylab {
+
+/**
+ * \brief The camera of the 3D view (the teacher's eye on the scene), not the scene's own
+ * camera: it looks at the scene, the scene camera's body and its frustum from outside.
+ *
+ * A pinhole looking from `eye` at `focalPoint` with vertical field of view `viewAngle`,
+ * the same model as VTK's vtkCamera (perspective, view angle in degrees).
+ */
+struct ViewCamera {
+  Point3 eye{0.0, 0.0, 10.0};  ///< Eye position, world space.
+  Point3 focalPoint{0.0};      ///< Point looked at, world space.
+  Vec3 up{0.0, 1.0, 0.0};      ///< View-up direction, world space.
+  double viewAngle = 30.0;     ///< Full vertical field of view, degrees.
+
+  /// Unit direction from the eye to the focal point, world space.
+  Vec3 direction() const;
+  std::string toString() const;
+};
+
+/// Edge length of the scene camera's body glyph, world units: 6% of the diagonal of the
+/// bounded objects, so the glyph scales with the room.
+double cameraGlyphSize(const Scene& scene);
+
+/// World-space box around everything the 3D view draws with a finite size: every bounded
+/// shape (planes are unbounded and left out), the scene camera's body and frustum. Never
+/// empty: a scene of planes only gives a box of size 2 around the camera's look-at point.
+Bounds3 drawnBounds(const Scene& scene);
+
+/**
+ * \brief The default 3D view: from behind and above the scene camera, turned 25 degrees
+ * about the world up axis and looking 28 degrees down, at the centre of `drawnBounds`,
+ * and just far enough back that all 8 corners of `drawnBounds` fit in the picture of
+ * aspect ratio `aspect` (width / height) with a 5% margin.
+ *
+ * The room's walls are drawn one-sided, facing the room (see SceneView), so the walls
+ * between this eye and the room do not hide its contents.
+ */
+ViewCamera defaultViewCamera(const Scene& scene, double aspect = 1.0);
+
+/**
+ * \brief Where a world point appears in a width x height picture taken by `camera`.
+ *
+ * Uses VTK's projection of the same camera (vtkCamera's composite projection matrix with
+ * aspect width / height, as vtkRenderer::WorldToDisplay does), then flips to image
+ * coordinates: x to the right and y down from the top-left corner, in pixels, so pixel
+ * (i, j) covers [i, i + 1) x [j, j + 1). Returns nothing for a point behind the eye.
+ * Needs no window or OpenGL context.
+ */
+std::optional<Vec2> projectToImage(const ViewCamera& camera, const Point3& world, int width,
+                                   int height);
+
+}  // namespace raylab

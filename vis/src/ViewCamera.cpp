@@ -1,0 +1,167 @@
+#include "raylab/vis/ViewCamera.h"
+
+#include "raylab/core/Shape.h"
+
+#include "ShapeGeometry.h"
+
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace raylab {
+
+namespace {
+
+/// Turn of the default view about the world up axis, away from straight behind the
+/// scene camera, so the camera body does not sit in front of the room's centre.
+constexpr double kAzimuthDegrees = 25.0;
+/// How far the default view looks down.
+constexpr double kElevationDegrees = 28.0;
+/// Fraction of the half-picture kept free around the framed box.
+constexpr double kMargin = 0.05;
+
+/// Unit "up" of the scene camera, falling back to +y when it is degenerate.
+Vec3 worldUp(const CameraSpec& camera) {
+  const double length = glm::length(camera.up);
+  return length > 0.0 ? camera.up / length : Vec3(0.0, 1.0, 0.0);
+}
+
+/// Unit viewing direction of the scene camera (its local -z), falling back to -z.
+Vec3 cameraForward(const CameraSpec& camera) {
+  const Vec3 d = camera.lookAt - camera.position;
+  const double length = glm::length(d);
+  return length > 0.0 ? d / length : Vec3(0.0, 0.0, -1.0);
+}
+
+/// A unit vector perpendicular to n.
+Vec3 anyPerpendicular(const Vec3& n) {
+  const Vec3 a = std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  return glm::normalize(glm::cross(n, a));
+}
+
+Bounds3 boundedShapes(const Scene& scene) {
+  Bounds3 box;
+  for (const SceneObject& object : scene.objects) {
+    if (!object.shape) continue;
+    const Bounds3 b = object.shape->bounds();
+    if (b.empty()) continue;
+    const Vec3 e = b.extent();
+    if (!std::isfinite(e.x) || !std::isfinite(e.y) || !std::isfinite(e.z)) continue;
+    box.extend(b);
+  }
+  return box;
+}
+
+}  // namespace
+
+Vec3 ViewCamera::direction() const {
+  const Vec3 d = focalPoint - eye;
+  const double length = glm::length(d);
+  return length > 0.0 ? d / length : Vec3(0.0, 0.0, -1.0);
+}
+
+std::string ViewCamera::toString() const {
+  std::ostringstream out;
+  out << "ViewCamera(eye " << raylab::toString(eye) << ", focal point "
+      << raylab::toString(focalPoint) << ", up " << raylab::toString(up) << ", view angle "
+      << viewAngle << ")";
+  return out.str();
+}
+
+double cameraGlyphSize(const Scene& scene) {
+  Bounds3 box = boundedShapes(scene);
+  if (box.empty()) box = Bounds3(scene.camera.lookAt - Vec3(1.0), scene.camera.lookAt + Vec3(1.0));
+  return std::max(0.06 * glm::length(box.extent()), 1e-3);
+}
+
+Bounds3 drawnBounds(const Scene& scene) {
+  Bounds3 box = boundedShapes(scene);
+  if (box.empty()) box = Bounds3(scene.camera.lookAt - Vec3(1.0), scene.camera.lookAt + Vec3(1.0));
+  // The camera glyph: its body behind the eye and its frustum in front.
+  const double size = cameraGlyphSize(scene);
+  const vtkSmartPointer<vtkPolyData> glyphs[2] = {
+      cameraBodyGeometry(scene.camera, size),
+      cameraFrustumGeometry(scene.camera, kFrustumLengthInGlyphs * size)};
+  for (const vtkSmartPointer<vtkPolyData>& glyph : glyphs) {
+    double b[6];
+    glyph->GetBounds(b);
+    box.extend(Bounds3(Point3(b[0], b[2], b[4]), Point3(b[1], b[3], b[5])));
+  }
+  return box;
+}
+
+ViewCamera defaultViewCamera(const Scene& scene, double aspect) {
+  ViewCamera view;
+  const Bounds3 box = drawnBounds(scene);
+  const Vec3 up = worldUp(scene.camera);
+
+  // Step 1: the scene camera's forward direction, flattened onto the ground.
+  Vec3 ahead = cameraForward(scene.camera);
+  ahead -= glm::dot(ahead, up) * up;
+  ahead = glm::length(ahead) > 1e-9 ? glm::normalize(ahead) : anyPerpendicular(up);
+
+  // Step 2: turn it about the up axis and tilt it down: the view direction.
+  const Mat4 turn = glm::rotate(Mat4(1.0), radians(kAzimuthDegrees), up);
+  ahead = glm::normalize(Vec3(turn * glm::dvec4(ahead, 0.0)));
+  const double elevation = radians(kElevationDegrees);
+  const Vec3 d = std::cos(elevation) * ahead - std::sin(elevation) * up;
+  const Vec3 right = glm::normalize(glm::cross(d, up));
+  const Vec3 viewUp = glm::cross(right, d);
+
+  // Step 3: back off from the box centre until every corner fits the frustum:
+  //   |x| <= (D + z) tan(h/2) (1 - margin) and the same for y, with z the corner's
+  //   offset along the view direction and D the eye's distance to the centre.
+  const Point3 centre = box.centre();
+  const double tanV = std::tan(radians(view.viewAngle) / 2.0) * (1.0 - kMargin);
+  const double tanH = tanV * std::max(aspect, 1e-3);
+  double distance = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    const Point3 corner((k & 1) ? box.upper.x : box.lower.x, (k & 2) ? box.upper.y : box.lower.y,
+                        (k & 4) ? box.upper.z : box.lower.z);
+    const Vec3 q = corner - centre;
+    const double z = glm::dot(q, d);
+    distance = std::max(distance, std::abs(glm::dot(q, right)) / tanH - z);
+    distance = std::max(distance, std::abs(glm::dot(q, viewUp)) / tanV - z);
+  }
+  distance = std::max(distance, 1e-3);
+
+  view.focalPoint = centre;
+  view.eye = centre - distance * d;
+  view.up = viewUp;
+  return view;
+}
+
+std::optional<Vec2> projectToImage(const ViewCamera& camera, const Point3& world, int width,
+                                   int height) {
+  if (width <= 0 || height <= 0) return std::nullopt;
+  if (glm::dot(world - camera.eye, camera.direction()) <= 0.0) return std::nullopt;
+
+  // Step 1: world -> normalised view coordinates in [-1, 1], with VTK's own matrices.
+  vtkNew<vtkCamera> vtk;
+  vtk->SetPosition(camera.eye.x, camera.eye.y, camera.eye.z);
+  vtk->SetFocalPoint(camera.focalPoint.x, camera.focalPoint.y, camera.focalPoint.z);
+  vtk->SetViewUp(camera.up.x, camera.up.y, camera.up.z);
+  vtk->SetViewAngle(camera.viewAngle);
+  vtkMatrix4x4* m =
+      vtk->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0);
+  const double in[4] = {world.x, world.y, world.z, 1.0};
+  double out[4];
+  m->MultiplyPoint(in, out);
+  if (out[3] == 0.0) return std::nullopt;
+  const double vx = out[0] / out[3];
+  const double vy = out[1] / out[3];
+
+  // Step 2: view -> display (origin bottom-left, as vtkViewport::ViewToDisplay), then
+  // flip y so that rows count from the top.
+  const double dx = (vx + 1.0) * width / 2.0;
+  const double dy = (vy + 1.0) * height / 2.0;
+  return Vec2(dx, height - dy);
+}
+
+}  // namespace raylab
