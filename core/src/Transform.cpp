@@ -41,9 +41,7 @@ Transform Transform::operator*(const Transform& rhs) const {
 
 Mat3 Transform::normalMatrix() const { return glm::transpose(Mat3(m_inv)); }
 
-Point3 Transform::transformPoint(const Point3& p) const {
-  return Point3(m_m * glm::dvec4(p, 1.0));
-}
+Point3 Transform::transformPoint(const Point3& p) const { return Point3(m_m * glm::dvec4(p, 1.0)); }
 
 Vec3 Transform::transformVector(const Vec3& v) const { return Mat3(m_m) * v; }
 

@@ -105,29 +105,35 @@ TEST(SceneIO, 03_ErrorsNameThePlaceAndTheProblem) {
   const std::string head = R"({"raylab_scene": 1, "materials": [{"name": "m"}], "objects": [)";
   const ErrorCase cases[] = {
       {"syntax", "{\n  \"raylab_scene\": 1,\n  \"materials\": [,]\n}", "test.json:3:"},
-      {"version", R"({"raylab_scene": 7, "materials": [], "objects": []})", "unsupported version 7"},
+      {"version", R"({"raylab_scene": 7, "materials": [], "objects": []})",
+       "unsupported version 7"},
       {"no version", R"({"materials": [], "objects": []})", "raylab_scene"},
       {"negative radius",
-       head + R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,0,0], "radius": -1}}]})",
+       head +
+           R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,0,0], "radius": -1}}]})",
        "/objects/0/shape/radius: radius must be positive"},
       {"unknown material",
-       head + R"({"name": "b", "material": "gold", "shape": {"type": "sphere", "centre": [0,0,0], "radius": 1}}]})",
+       head +
+           R"({"name": "b", "material": "gold", "shape": {"type": "sphere", "centre": [0,0,0], "radius": 1}}]})",
        "/objects/0/material: unknown material \"gold\""},
       {"zero axis",
-       head + R"({"name": "b", "material": "m", "shape": {"type": "box", "centre": [0,0,0], "size": [1,1,1], "axes": [[1,0,0],[0,0,0],[0,0,1]]}}]})",
+       head +
+           R"({"name": "b", "material": "m", "shape": {"type": "box", "centre": [0,0,0], "size": [1,1,1], "axes": [[1,0,0],[0,0,0],[0,0,1]]}}]})",
        "/objects/0/shape/axes/1: vector must not be zero"},
       {"nan-like string",
-       head + R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,"NaN",0], "radius": 1}}]})",
+       head +
+           R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,"NaN",0], "radius": 1}}]})",
        "/objects/0/shape/centre/1: expected a number"},
-      {"unknown shape",
-       head + R"({"name": "b", "material": "m", "shape": {"type": "torus"}}]})",
+      {"unknown shape", head + R"({"name": "b", "material": "m", "shape": {"type": "torus"}}]})",
        "unknown shape type \"torus\""},
       {"duplicate",
-       head + R"({"name": "b", "material": "m", "shape": {"type": "plane", "point": [0,0,0], "normal": [0,1,0]}},
+       head +
+           R"({"name": "b", "material": "m", "shape": {"type": "plane", "point": [0,0,0], "normal": [0,1,0]}},
                  {"name": "b", "material": "m", "shape": {"type": "plane", "point": [0,0,0], "normal": [0,1,0]}}]})",
        "/objects/1/name: duplicate object \"b\""},
       {"degenerate triangle",
-       head + R"({"name": "t", "material": "m", "shape": {"type": "triangle", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}}]})",
+       head +
+           R"({"name": "t", "material": "m", "shape": {"type": "triangle", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}}]})",
        "/objects/0/shape: triangle is degenerate"},
   };
   for (const ErrorCase& c : cases) {

@@ -28,7 +28,8 @@ Ray ray(const Point3& o, const Vec3& d, double tMin = 0.0, double tMax = kInfini
 // --- Sphere -------------------------------------------------------------------------
 
 TEST(Sphere, 01_ThroughCentreHitsAtFourAndSix) {
-  // From z = -5 along +z through the unit sphere: enters at z = -1 (t = 4), leaves at z = 1 (t = 6).
+  // From z = -5 along +z through the unit sphere: enters at z = -1 (t = 4), leaves at z = 1 (t =
+  // 6).
   const Sphere s({0, 0, 0}, 1.0);
   const Ray r = ray({0, 0, -5}, {0, 0, 1});
   const auto hit = s.intersect(r);
@@ -221,9 +222,11 @@ TEST(Box, 06_NonUniformScaleAfterRotationShearsTheBox) {
   box.apply(Transform::rotate(radians(45.0), {0, 0, 1}).matrix());
   box.apply(Transform::scale({2, 1, 1}).matrix());
   // The result is a parallelogram prism; every vertex is the scaled rotated cube corner.
-  const Mat4 m = Transform::scale({2, 1, 1}).matrix() * Transform::rotate(radians(45.0), {0, 0, 1}).matrix();
+  const Mat4 m =
+      Transform::scale({2, 1, 1}).matrix() * Transform::rotate(radians(45.0), {0, 0, 1}).matrix();
   const auto v = box.vertices();
-  for (int k = 0; k < 8; ++k) expectNear(v[k], Point3(m * glm::dvec4(Box::canonicalVertex(k), 1.0)));
+  for (int k = 0; k < 8; ++k)
+    expectNear(v[k], Point3(m * glm::dvec4(Box::canonicalVertex(k), 1.0)));
   // Along +x through the centre: the rotated square's corner at x = sqrt2, scaled by 2.
   EXPECT_NEAR(box.intersect(ray({-10, 0, 0}, {1, 0, 0}))->t, 10.0 - 2.0 * std::sqrt(2.0), 1e-12);
   // Normals of sheared faces stay perpendicular to the face edges.
@@ -333,7 +336,7 @@ TEST(Triangle, 04_BackFaceCoplanarAndBehind) {
   const auto back = tri.closestHit(ray({0.2, 0.2, -1}, {0, 0, 1}));
   ASSERT_TRUE(back);
   EXPECT_FALSE(back->frontFace);
-  EXPECT_FALSE(tri.intersect(ray({-1, 0.2, 0}, {1, 0, 0})));  // in the plane
+  EXPECT_FALSE(tri.intersect(ray({-1, 0.2, 0}, {1, 0, 0})));   // in the plane
   EXPECT_FALSE(tri.intersect(ray({0.2, 0.2, 1}, {0, 0, 1})));  // behind the origin
   EXPECT_THROW(Triangle({0, 0, 0}, {1, 1, 1}, {2, 2, 2}), Shape::InvalidGeometry);
 }

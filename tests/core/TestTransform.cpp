@@ -26,7 +26,8 @@ TEST(Transform, 02_RotationIsCounterClockwiseAboutAxis) {
   const Transform r = Transform::rotate(radians(90.0), {0, 0, 1});
   expectNear(r.transformVector({1, 0, 0}), {0, 1, 0});
   // Rotate then translate, as "translate * rotate".
-  const Transform rt = Transform::translate({10, 0, 0}) * Transform::rotate(radians(90.0), {0, 0, 1});
+  const Transform rt =
+      Transform::translate({10, 0, 0}) * Transform::rotate(radians(90.0), {0, 0, 1});
   expectNear(rt.transformPoint({1, 0, 0}), {10, 1, 0});
 }
 
@@ -71,8 +72,8 @@ TEST(Transform, 06_RayTransformPreservesParameter) {
 TEST(Transform, 07_SimilarityDetection) {
   EXPECT_TRUE((Transform::rotate(0.3, {1, 2, 3}) * Transform::scale({2, 2, 2})).isSimilarity());
   EXPECT_FALSE(Transform::scale({2, 1, 1}).isSimilarity());
-  EXPECT_NEAR((Transform::rotate(0.3, {1, 2, 3}) * Transform::scale({2, 2, 2})).uniformScale(),
-              2.0, 1e-12);
+  EXPECT_NEAR((Transform::rotate(0.3, {1, 2, 3}) * Transform::scale({2, 2, 2})).uniformScale(), 2.0,
+              1e-12);
   EXPECT_TRUE(Transform().isIdentity());
 }
 

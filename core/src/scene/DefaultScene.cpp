@@ -27,12 +27,9 @@ Scene defaultScene() {
   };
   add("floor", std::make_unique<Quad>(Point3(-5, 0, 4), Vec3(10, 0, 0), Vec3(0, 0, -10)), wall);
   add("ceiling", std::make_unique<Quad>(Point3(-5, 6, -6), Vec3(10, 0, 0), Vec3(0, 0, 10)), wall);
-  add("back wall", std::make_unique<Quad>(Point3(-5, 0, -6), Vec3(10, 0, 0), Vec3(0, 6, 0)),
-      wall);
-  add("left wall", std::make_unique<Quad>(Point3(-5, 0, 4), Vec3(0, 0, -10), Vec3(0, 6, 0)),
-      wall);
-  add("right wall", std::make_unique<Quad>(Point3(5, 0, -6), Vec3(0, 0, 10), Vec3(0, 6, 0)),
-      wall);
+  add("back wall", std::make_unique<Quad>(Point3(-5, 0, -6), Vec3(10, 0, 0), Vec3(0, 6, 0)), wall);
+  add("left wall", std::make_unique<Quad>(Point3(-5, 0, 4), Vec3(0, 0, -10), Vec3(0, 6, 0)), wall);
+  add("right wall", std::make_unique<Quad>(Point3(5, 0, -6), Vec3(0, 0, 10), Vec3(0, 6, 0)), wall);
 
   // The seed's objects.
   add("red sphere", std::make_unique<Sphere>(Point3(-1.6, 1.2, -2.2), 1.2, 24, 32), red);

@@ -17,8 +17,7 @@ std::string SceneObject::toString() const {
 
 std::string Material::toString() const {
   return "Material[" + name + ", colour=" + raylab::toString(colour) +
-         ", emission=" + raylab::toString(emission) + ", opacity=" + std::to_string(opacity) +
-         "]";
+         ", emission=" + raylab::toString(emission) + ", opacity=" + std::to_string(opacity) + "]";
 }
 
 std::string CameraSpec::toString() const {

@@ -86,7 +86,8 @@ class Reader {
     try {
       if (type == "sphere") {
         const double radius = number(member(j, path, "radius"), path + "/radius");
-        if (radius <= 0.0) fail(path + "/radius", "radius must be positive, got " + j["radius"].dump());
+        if (radius <= 0.0)
+          fail(path + "/radius", "radius must be positive, got " + j["radius"].dump());
         const int m = j.contains("m") ? integer(j["m"], path + "/m") : 24;
         const int n = j.contains("n") ? integer(j["n"], path + "/n") : 24;
         if (m < 2) fail(path + "/m", "m (polar slices) must be at least 2");
@@ -95,14 +96,17 @@ class Reader {
                                         m, n);
       }
       if (type == "box") {
-        if (j.contains("matrix")) return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
+        if (j.contains("matrix"))
+          return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
         const Vec3 centre = vec3(member(j, path, "centre"), path + "/centre");
         const Vec3 size = vec3(member(j, path, "size"), path + "/size");
         for (int i = 0; i < 3; ++i)
-          if (size[i] <= 0.0) fail(path + "/size/" + std::to_string(i), "box size must be positive");
+          if (size[i] <= 0.0)
+            fail(path + "/size/" + std::to_string(i), "box size must be positive");
         if (!j.contains("axes")) return std::make_unique<Box>(centre, size);
         const json& axes = j["axes"];
-        if (!axes.is_array() || axes.size() != 3) fail(path + "/axes", "expected three axes [x, y, z]");
+        if (!axes.is_array() || axes.size() != 3)
+          fail(path + "/axes", "expected three axes [x, y, z]");
         Vec3 a[3];
         for (int i = 0; i < 3; ++i) a[i] = nonZero(axes[i], path + "/axes/" + std::to_string(i));
         return std::make_unique<Box>(centre, size, a[0], a[1], a[2]);
@@ -124,8 +128,8 @@ class Reader {
     } catch (const Shape::InvalidGeometry& e) {
       fail(path, e.what());
     }
-    fail(path + "/type", "unknown shape type \"" + type +
-                             "\" (expected sphere, box, plane, quad or triangle)");
+    fail(path + "/type",
+         "unknown shape type \"" + type + "\" (expected sphere, box, plane, quad or triangle)");
   }
 
   Mat4 transform(const json& steps, const std::string& path) const {
@@ -134,13 +138,15 @@ class Reader {
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const std::string sp = path + "/" + std::to_string(i);
       const json& s = steps[i];
-      if (!s.is_object() || s.size() != 1) fail(sp, "a step is one of translate, scale, rotate, matrix");
+      if (!s.is_object() || s.size() != 1)
+        fail(sp, "a step is one of translate, scale, rotate, matrix");
       Mat4 step(1.0);
       if (s.contains("translate")) {
         step = Transform::translate(vec3(s["translate"], sp + "/translate")).matrix();
       } else if (s.contains("scale")) {
         const Vec3 f = vec3(s["scale"], sp + "/scale");
-        if (f.x == 0.0 || f.y == 0.0 || f.z == 0.0) fail(sp + "/scale", "scale factors must not be zero");
+        if (f.x == 0.0 || f.y == 0.0 || f.z == 0.0)
+          fail(sp + "/scale", "scale factors must not be zero");
         step = Transform::scale(f).matrix();
       } else if (s.contains("rotate")) {
         const json& r = s["rotate"];
@@ -150,7 +156,8 @@ class Reader {
       } else if (s.contains("matrix")) {
         step = matrix(s["matrix"], sp + "/matrix");
       } else {
-        fail(sp, "unknown step " + s.begin().key() + " (expected translate, scale, rotate, matrix)");
+        fail(sp,
+             "unknown step " + s.begin().key() + " (expected translate, scale, rotate, matrix)");
       }
       m = step * m;  // later steps apply after earlier ones
     }
@@ -164,8 +171,8 @@ class Reader {
     const int version = integer(root["raylab_scene"], "/raylab_scene");
     if (version != SceneIO::kVersion)
       fail("/raylab_scene", "unsupported version " + std::to_string(version) +
-                                " (this RayLab reads version " +
-                                std::to_string(SceneIO::kVersion) + ")");
+                                " (this RayLab reads version " + std::to_string(SceneIO::kVersion) +
+                                ")");
     Scene scene;
     scene.name = root.contains("name") ? string(root["name"], "/name") : "untitled";
 
@@ -176,12 +183,14 @@ class Reader {
       const json& j = materials[i];
       Material m;
       m.name = string(member(j, p, "name"), p + "/name");
-      if (scene.findMaterial(m.name) >= 0) fail(p + "/name", "duplicate material \"" + m.name + "\"");
+      if (scene.findMaterial(m.name) >= 0)
+        fail(p + "/name", "duplicate material \"" + m.name + "\"");
       if (j.contains("colour")) m.colour = vec3(j["colour"], p + "/colour");
       if (j.contains("emission")) m.emission = vec3(j["emission"], p + "/emission");
       if (j.contains("opacity")) m.opacity = number(j["opacity"], p + "/opacity");
       for (int c = 0; c < 3; ++c) {
-        if (m.colour[c] < 0.0 || m.colour[c] > 1.0) fail(p + "/colour", "colour components must be in [0, 1]");
+        if (m.colour[c] < 0.0 || m.colour[c] > 1.0)
+          fail(p + "/colour", "colour components must be in [0, 1]");
         if (m.emission[c] < 0.0) fail(p + "/emission", "emission must not be negative");
       }
       if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");
@@ -216,7 +225,8 @@ class Reader {
       if (c.contains("position")) cam.position = vec3(c["position"], "/camera/position");
       if (c.contains("look_at")) cam.lookAt = vec3(c["look_at"], "/camera/look_at");
       if (c.contains("up")) cam.up = nonZero(c["up"], "/camera/up");
-      if (c.contains("vertical_fov")) cam.verticalFov = number(c["vertical_fov"], "/camera/vertical_fov");
+      if (c.contains("vertical_fov"))
+        cam.verticalFov = number(c["vertical_fov"], "/camera/vertical_fov");
       if (c.contains("width")) cam.width = integer(c["width"], "/camera/width");
       if (c.contains("height")) cam.height = integer(c["height"], "/camera/height");
       if (cam.position == cam.lookAt) fail("/camera/look_at", "camera looks at its own position");
@@ -248,8 +258,9 @@ ojson toJson(const Mat4& m) {
 void prettyPrint(const ojson& j, int indent, std::string& out) {
   const auto scalarArray = [](const ojson& a) {
     for (const ojson& e : a)
-      if (e.is_structured() && !(e.is_array() && e.size() <= 4 &&
-                                 std::all_of(e.begin(), e.end(), [](const ojson& x) { return x.is_primitive(); })))
+      if (e.is_structured() &&
+          !(e.is_array() && e.size() <= 4 &&
+            std::all_of(e.begin(), e.end(), [](const ojson& x) { return x.is_primitive(); })))
         return false;
     return true;
   };
@@ -289,8 +300,11 @@ ojson shapeToJson(const Shape& shape, ojson& transform) {
       const auto& s = static_cast<const Sphere&>(shape);
       if (!s.worldFromObject().isIdentity())
         transform = ojson::array({ojson{{"matrix", toJson(s.worldFromObject().matrix())}}});
-      return {{"type", "sphere"}, {"centre", toJson(s.centre())}, {"radius", s.radius()},
-              {"m", s.m()}, {"n", s.n()}};
+      return {{"type", "sphere"},
+              {"centre", toJson(s.centre())},
+              {"radius", s.radius()},
+              {"m", s.m()},
+              {"n", s.n()}};
     }
     case ShapeKind::Box: {
       const auto& b = static_cast<const Box&>(shape);
@@ -311,13 +325,16 @@ ojson shapeToJson(const Shape& shape, ojson& transform) {
     }
     case ShapeKind::Quad: {
       const auto& q = static_cast<const Quad&>(shape);
-      return {{"type", "quad"}, {"corner", toJson(q.corner())}, {"u", toJson(q.edgeU())},
+      return {{"type", "quad"},
+              {"corner", toJson(q.corner())},
+              {"u", toJson(q.edgeU())},
               {"v", toJson(q.edgeV())}};
     }
     case ShapeKind::Triangle: {
       const auto& t = static_cast<const Triangle&>(shape);
       return {{"type", "triangle"},
-              {"vertices", ojson::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))})}};
+              {"vertices",
+               ojson::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))})}};
     }
     case ShapeKind::TriangleMesh:
       break;
@@ -373,23 +390,29 @@ std::string SceneIO::serialize(const Scene& scene) {
   root["name"] = scene.name;
   root["materials"] = ojson::array();
   for (const Material& m : scene.materials)
-    root["materials"].push_back({{"name", m.name}, {"colour", toJson(m.colour)},
-                                 {"emission", toJson(m.emission)}, {"opacity", m.opacity}});
+    root["materials"].push_back({{"name", m.name},
+                                 {"colour", toJson(m.colour)},
+                                 {"emission", toJson(m.emission)},
+                                 {"opacity", m.opacity}});
   root["objects"] = ojson::array();
   for (const SceneObject& o : scene.objects) {
     if (!o.shape) throw SaveError("object \"" + o.name + "\" has no shape");
     if (o.material < 0 || o.material >= static_cast<int>(scene.materials.size()))
       throw SaveError("object \"" + o.name + "\" refers to a missing material");
     ojson transform;
-    ojson object = {{"name", o.name}, {"material", scene.materials[o.material].name},
-                   {"shape", shapeToJson(*o.shape, transform)}};
+    ojson object = {{"name", o.name},
+                    {"material", scene.materials[o.material].name},
+                    {"shape", shapeToJson(*o.shape, transform)}};
     if (!transform.is_null()) object["transform"] = transform;
     root["objects"].push_back(object);
   }
   const CameraSpec& c = scene.camera;
-  root["camera"] = {{"position", toJson(c.position)}, {"look_at", toJson(c.lookAt)},
-                    {"up", toJson(c.up)}, {"vertical_fov", c.verticalFov},
-                    {"width", c.width}, {"height", c.height}};
+  root["camera"] = {{"position", toJson(c.position)},
+                    {"look_at", toJson(c.lookAt)},
+                    {"up", toJson(c.up)},
+                    {"vertical_fov", c.verticalFov},
+                    {"width", c.width},
+                    {"height", c.height}};
   // nlohmann prints doubles with enough digits to round-trip exactly.
   std::string text;
   prettyPrint(root, 0, text);

@@ -4,12 +4,18 @@ namespace raylab {
 
 const char* toString(ShapeKind kind) {
   switch (kind) {
-    case ShapeKind::Sphere: return "sphere";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Plane: return "plane";
-    case ShapeKind::Quad: return "quad";
-    case ShapeKind::Triangle: return "triangle";
-    case ShapeKind::TriangleMesh: return "mesh";
+    case ShapeKind::Sphere:
+      return "sphere";
+    case ShapeKind::Box:
+      return "box";
+    case ShapeKind::Plane:
+      return "plane";
+    case ShapeKind::Quad:
+      return "quad";
+    case ShapeKind::Triangle:
+      return "triangle";
+    case ShapeKind::TriangleMesh:
+      return "mesh";
   }
   return "unknown";
 }

@@ -141,8 +141,7 @@ Bounds3 Sphere::bounds() const {
   const Mat3 l(m_worldFromObject.matrix());
   const Point3 c = m_worldFromObject.transformPoint(m_centre);
   Vec3 half;
-  for (int i = 0; i < 3; ++i)
-    half[i] = m_radius * glm::length(Vec3(l[0][i], l[1][i], l[2][i]));
+  for (int i = 0; i < 3; ++i) half[i] = m_radius * glm::length(Vec3(l[0][i], l[1][i], l[2][i]));
   return {c - half, c + half};
 }
 

@@ -8,9 +8,7 @@ namespace raylab {
 
 namespace {
 
-int maxDimension(const Vec3& v) {
-  return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2);
-}
+int maxDimension(const Vec3& v) { return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }
 
 }  // namespace
 
@@ -69,9 +67,9 @@ std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Point3& p0, c
 Triangle::Triangle(const Point3& p0, const Point3& p1, const Point3& p2) : m_p{p0, p1, p2} {
   const double area2 = glm::length(glm::cross(p1 - p0, p2 - p0));
   if (!(area2 > 0.0) || !std::isfinite(area2))
-    throw InvalidGeometry("triangle is degenerate (zero area or non-finite vertex): " +
-                          raylab::toString(p0) + " " + raylab::toString(p1) + " " +
-                          raylab::toString(p2));
+    throw InvalidGeometry(
+        "triangle is degenerate (zero area or non-finite vertex): " + raylab::toString(p0) + " " +
+        raylab::toString(p1) + " " + raylab::toString(p2));
 }
 
 std::optional<Hit> Triangle::intersect(const Ray& ray) const {

@@ -41,8 +41,8 @@ struct Bounds3 {
     return d.x > d.y ? (d.x > d.z ? 0 : 2) : (d.y > d.z ? 1 : 2);
   }
   bool contains(const Point3& p) const {
-    return p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y &&
-           p.z >= lower.z && p.z <= upper.z;
+    return p.x >= lower.x && p.x <= upper.x && p.y >= lower.y && p.y <= upper.y && p.z >= lower.z &&
+           p.z <= upper.z;
   }
   std::string toString() const;
 };

@@ -19,18 +19,19 @@ std::string checkValues(const char* expr, const A& a, const B& b) {
 }
 }  // namespace raylab::detail
 
-#define RAYLAB_CHECK(cond)                                             \
-  do {                                                                 \
+#define RAYLAB_CHECK(cond)                                                 \
+  do {                                                                     \
     if (!(cond)) ::raylab::detail::checkFailed(__FILE__, __LINE__, #cond); \
   } while (false)
 
-#define RAYLAB_CHECK_OP(a, op, b)                                                      \
-  do {                                                                                 \
-    const auto& raylabA_ = (a);                                                        \
-    const auto& raylabB_ = (b);                                                        \
-    if (!(raylabA_ op raylabB_))                                                       \
-      ::raylab::detail::checkFailed(                                                   \
-          __FILE__, __LINE__, ::raylab::detail::checkValues(#a " " #op " " #b, raylabA_, raylabB_)); \
+#define RAYLAB_CHECK_OP(a, op, b)                                                \
+  do {                                                                           \
+    const auto& raylabA_ = (a);                                                  \
+    const auto& raylabB_ = (b);                                                  \
+    if (!(raylabA_ op raylabB_))                                                 \
+      ::raylab::detail::checkFailed(                                             \
+          __FILE__, __LINE__,                                                    \
+          ::raylab::detail::checkValues(#a " " #op " " #b, raylabA_, raylabB_)); \
   } while (false)
 
 #define RAYLAB_CHECK_EQ(a, b) RAYLAB_CHECK_OP(a, ==, b)

@@ -15,11 +15,11 @@ namespace raylab {
  * `time` is the instant within the shutter interval, for motion blur.
  */
 struct Ray {
-  Point3 origin{0.0};        ///< Start point, world space.
+  Point3 origin{0.0};              ///< Start point, world space.
   Vec3 direction{0.0, 0.0, -1.0};  ///< Direction, world space; unit length from make().
-  double tMin = 0.0;         ///< Nearest accepted parameter (inclusive).
-  double tMax = kInfinity;   ///< Farthest accepted parameter (inclusive).
-  double time = 0.0;         ///< Shutter time in [0, 1].
+  double tMin = 0.0;               ///< Nearest accepted parameter (inclusive).
+  double tMax = kInfinity;         ///< Farthest accepted parameter (inclusive).
+  double time = 0.0;               ///< Shutter time in [0, 1].
 
   /// A ray with its direction normalised. `direction` must not be zero.
   static Ray make(const Point3& origin, const Vec3& direction, double tMin = 0.0,

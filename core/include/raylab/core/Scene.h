@@ -12,10 +12,10 @@ namespace raylab {
 /// Surface appearance. This issue only needs colour and emission for drawing; the light
 /// transport issue extends it to the full material models.
 struct Material {
-  std::string name;           ///< Unique name, referenced by objects.
-  Vec3 colour{0.8};           ///< Reflectance (albedo), linear RGB in [0, 1].
-  Vec3 emission{0.0};         ///< Emitted radiance, linear RGB (non-zero for lights).
-  double opacity = 1.0;       ///< For drawing only: 1 opaque, 0 invisible.
+  std::string name;      ///< Unique name, referenced by objects.
+  Vec3 colour{0.8};      ///< Reflectance (albedo), linear RGB in [0, 1].
+  Vec3 emission{0.0};    ///< Emitted radiance, linear RGB (non-zero for lights).
+  double opacity = 1.0;  ///< For drawing only: 1 opaque, 0 invisible.
 
   bool isEmitter() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
   std::string toString() const;

@@ -22,12 +22,12 @@ struct Hit {
 
 /// Second phase: the local geometry at the nearest hit, computed once.
 struct SurfaceInteraction {
-  double t = kInfinity;  ///< Ray parameter of the hit.
-  Point3 p{0.0};         ///< Hit point, world space.
-  Normal3 n{0.0};        ///< Unit geometric normal, world space, pointing outward.
-  bool frontFace = true; ///< True when the ray arrives from the side `n` points to.
-  Vec2 uv{0.0};          ///< Surface parameters; barycentrics (b1, b2) for triangles.
-  int primitive = -1;    ///< Face / triangle index, -1 when not meaningful.
+  double t = kInfinity;   ///< Ray parameter of the hit.
+  Point3 p{0.0};          ///< Hit point, world space.
+  Normal3 n{0.0};         ///< Unit geometric normal, world space, pointing outward.
+  bool frontFace = true;  ///< True when the ray arrives from the side `n` points to.
+  Vec2 uv{0.0};           ///< Surface parameters; barycentrics (b1, b2) for triangles.
+  int primitive = -1;     ///< Face / triangle index, -1 when not meaningful.
 
   /// The normal turned against the ray (what shading uses).
   Normal3 facingNormal() const { return frontFace ? n : -n; }
@@ -36,10 +36,10 @@ struct SurfaceInteraction {
 
 /// One boundary crossing along a ray, for inside/outside teaching.
 struct Crossing {
-  double t = 0.0;         ///< Ray parameter.
-  bool entering = true;   ///< True when the ray goes from outside to inside here
-                          ///< (for open surfaces: arrives on the front side).
-  int primitive = -1;     ///< Face / triangle index.
+  double t = 0.0;        ///< Ray parameter.
+  bool entering = true;  ///< True when the ray goes from outside to inside here
+                         ///< (for open surfaces: arrives on the front side).
+  int primitive = -1;    ///< Face / triangle index.
 };
 
 /// What a shape is, for drawing and for files.

@@ -25,8 +25,8 @@ struct TriangleHit {
  * facing either way are hit. Returns nothing for a miss, a degenerate triangle, a ray
  * in the triangle's plane, or t outside [ray.tMin, ray.tMax].
  */
-std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Point3& p0,
-                                             const Point3& p1, const Point3& p2);
+std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Point3& p0, const Point3& p1,
+                                             const Point3& p2);
 
 /**
  * \brief A single triangle with vertices p0, p1, p2 (counter-clockwise seen from the
