@@ -12,11 +12,18 @@ Scene defaultScene() {
 
   // Materials: the seed's red sphere, blue cube and flesh-coloured light, grey walls.
   const Vec3 flesh(1.0, 0.8, 0.65);
+  auto material = [](std::string name, const Vec3& colour, const Vec3& emission) {
+    Material m;
+    m.name = std::move(name);
+    m.colour = colour;
+    m.emission = emission;
+    return m;
+  };
   scene.materials = {
-      {"red", {0.80, 0.10, 0.10}, Vec3(0.0), 1.0},
-      {"blue", {0.10, 0.20, 0.80}, Vec3(0.0), 1.0},
-      {"light", flesh, 8.0 * flesh, 1.0},
-      {"wall", {0.75, 0.75, 0.75}, Vec3(0.0), 1.0},
+      material("red", {0.80, 0.10, 0.10}, Vec3(0.0)),
+      material("blue", {0.10, 0.20, 0.80}, Vec3(0.0)),
+      material("light", flesh, 8.0 * flesh),
+      material("wall", {0.75, 0.75, 0.75}, Vec3(0.0)),
   };
   const int red = 0, blue = 1, light = 2, wall = 3;
 

@@ -15,9 +15,64 @@ std::string SceneObject::toString() const {
          ", material=" + std::to_string(material) + "]";
 }
 
+const char* toString(MaterialType type) {
+  switch (type) {
+    case MaterialType::Diffuse:
+      return "diffuse";
+    case MaterialType::Mirror:
+      return "mirror";
+    case MaterialType::Dielectric:
+      return "dielectric";
+    case MaterialType::Glossy:
+      return "glossy";
+  }
+  return "unknown";
+}
+
 std::string Material::toString() const {
-  return "Material[" + name + ", colour=" + raylab::toString(colour) +
-         ", emission=" + raylab::toString(emission) + ", opacity=" + std::to_string(opacity) + "]";
+  return "Material[" + name + ", " + raylab::toString(type) +
+         ", colour=" + raylab::toString(colour) + ", emission=" + raylab::toString(emission) +
+         ", reflectionRate=" + std::to_string(reflectionRate) +
+         ", refractionRate=" + std::to_string(refractionRate) + ", ior=" + std::to_string(ior) +
+         ", exponent=" + std::to_string(exponent) + ", specular=" + std::to_string(specular) +
+         ", opacity=" + std::to_string(opacity) + "]";
+}
+
+std::string PointLight::toString() const {
+  return "PointLight[" + name + ", position=" + raylab::toString(position) +
+         ", intensity=" + raylab::toString(intensity) + "]";
+}
+
+const char* toString(Algorithm algorithm) {
+  switch (algorithm) {
+    case Algorithm::RayCasting:
+      return "raycast";
+    case Algorithm::Whitted:
+      return "whitted";
+    case Algorithm::Distributed:
+      return "distributed";
+    case Algorithm::PathTracing:
+      return "path";
+  }
+  return "unknown";
+}
+
+std::optional<Algorithm> parseAlgorithm(const std::string& name) {
+  for (Algorithm a :
+       {Algorithm::RayCasting, Algorithm::Whitted, Algorithm::Distributed, Algorithm::PathTracing})
+    if (name == toString(a)) return a;
+  return std::nullopt;
+}
+
+std::string RenderSettings::toString() const {
+  return std::string("RenderSettings[") + raylab::toString(algorithm) +
+         ", spp=" + std::to_string(samplesPerPixel) + ", maxDepth=" + std::to_string(maxDepth) +
+         ", seed=" + std::to_string(seed) + ", shadowSamples=" + std::to_string(shadowSamples) +
+         ", glossySamples=" + std::to_string(glossySamples) +
+         ", rrDepth=" + std::to_string(russianRouletteDepth) +
+         ", nee=" + (nextEventEstimation ? "on" : "off") +
+         ", mis=" + (multipleImportance ? "on" : "off") +
+         ", background=" + raylab::toString(background) + "]";
 }
 
 std::string CameraSpec::toString() const {

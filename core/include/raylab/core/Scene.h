@@ -1,5 +1,7 @@
 #pragma once
 
+#include "raylab/core/Material.h"
+#include "raylab/core/RenderSettings.h"
 #include "raylab/core/Shape.h"
 #include "raylab/core/Types.h"
 
@@ -9,23 +11,13 @@
 
 namespace raylab {
 
-/// Surface appearance. This issue only needs colour and emission for drawing; the light
-/// transport issue extends it to the full material models.
-struct Material {
-  std::string name;      ///< Unique name, referenced by objects.
-  Vec3 colour{0.8};      ///< Reflectance (albedo), linear RGB in [0, 1].
-  Vec3 emission{0.0};    ///< Emitted radiance, linear RGB (non-zero for lights).
-  double opacity = 1.0;  ///< For drawing only: 1 opaque, 0 invisible.
-
-  bool isEmitter() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
-  std::string toString() const;
-};
-
 /// A named shape with a material.
 struct SceneObject {
   std::string name;              ///< Unique name, shown in the object list.
   std::unique_ptr<Shape> shape;  ///< Geometry, world space.
   int material = 0;              ///< Index into Scene::materials.
+  Vec3 velocity{0.0};            ///< Linear motion over the shutter interval: at ray time
+                                 ///< tau in [0, 1] the shape is displaced by tau * velocity.
 
   SceneObject() = default;
   SceneObject(std::string objectName, std::unique_ptr<Shape> objectShape, int materialIndex)
@@ -45,15 +37,29 @@ struct CameraSpec {
   double verticalFov = 40.0;       ///< Full vertical field of view, degrees.
   int width = 320;                 ///< Rays across (image width, pixels).
   int height = 240;                ///< Rays down (image height, pixels).
+  double aperture = 0.0;           ///< Thin lens: lens radius, world units; 0 = pinhole.
+  double focusDistance = 0.0;      ///< Thin lens: distance to the plane in focus; 0 means
+                                   ///< the distance from position to lookAt.
   std::string toString() const;
 };
 
-/// Everything that makes a scene: named objects, materials, the camera.
+/// A point light for the classic algorithms (ray casting, Whitted): radiant intensity
+/// `intensity` (W sr^-1) from `position`, falling off with the squared distance.
+struct PointLight {
+  std::string name;      ///< Unique name.
+  Point3 position{0.0};  ///< World space.
+  Vec3 intensity{10.0};  ///< Linear RGB radiant intensity.
+  std::string toString() const;
+};
+
+/// Everything that makes a scene: named objects, materials, lights, camera, settings.
 struct Scene {
   std::string name;                 ///< Title shown in the window.
   std::vector<Material> materials;  ///< Referenced by index from objects.
   std::vector<SceneObject> objects;
+  std::vector<PointLight> pointLights;  ///< Area lights are objects with emissive materials.
   CameraSpec camera;
+  RenderSettings render;  ///< Default settings for rendering this scene.
 
   /// Index of the object with this name, or -1.
   int findObject(const std::string& name) const;

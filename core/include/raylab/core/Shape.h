@@ -42,6 +42,13 @@ struct Crossing {
   int primitive = -1;    ///< Face / triangle index.
 };
 
+/// A point sampled on a shape's surface (area lights).
+struct ShapeSample {
+  Point3 p{0.0};       ///< World space.
+  Normal3 n{0.0};      ///< Outward unit normal, world space.
+  double pdfArea = 0;  ///< Density per unit world area.
+};
+
 /// What a shape is, for drawing and for files.
 enum class ShapeKind { Sphere, Box, Plane, Quad, Triangle, TriangleMesh };
 const char* toString(ShapeKind kind);
@@ -90,6 +97,13 @@ class Shape {
 
   virtual std::unique_ptr<Shape> clone() const = 0;
   virtual std::string toString() const = 0;
+
+  /// Surface area, world units squared (infinite for a plane).
+  virtual double area() const;
+  /// A point on the surface for u in [0,1)^2, for area lights.
+  virtual ShapeSample sampleArea(const Vec2& u) const;
+  /// Density per unit area with which sampleArea picks the surface point p.
+  virtual double pdfArea(const Point3& p) const;
 
   /// Both phases at once: nearest hit and its geometry.
   std::optional<SurfaceInteraction> closestHit(const Ray& ray) const;

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "raylab/core/Material.h"
+#include "raylab/core/RayTree.h"
+#include "raylab/core/Shape.h"
+
+#include <optional>
+
+namespace raylab {
+
+class Sampler;
+
+/// A direction sampled from a material at a hit.
+struct BsdfSample {
+  Vec3 wi{0.0};           ///< Unit direction away from the surface, world space.
+  Vec3 weight{0.0};       ///< f(wo, wi) |cos theta_i| / pdf; for specular lobes the lobe's
+                          ///< weight (reflectance R, transmittance T, or the seed's rates).
+  double pdf = 0.0;       ///< Solid-angle density of wi; 0 for specular (delta) lobes.
+  bool specular = false;  ///< True for a discrete (delta) direction.
+  RayKind kind = RayKind::Diffuse;  ///< Reflection, Refraction, Diffuse or Glossy.
+};
+
+/// Up to two deterministic children of a specular hit (reflection, refraction).
+struct SpecularLobes {
+  BsdfSample lobe[2];
+  int count = 0;
+};
+
+/**
+ * \brief Scattering of the materials of Material.h at a surface interaction.
+ *
+ * Conventions: `wo` points from the hit back towards where the ray came from (-ray.d),
+ * `wi` away from the surface; both unit, world space. `si.n` is the outward geometric
+ * normal and `si.frontFace` says whether wo is on its side (outside for solids).
+ * The refractive index is `material.ior` inside over 1 outside.
+ */
+namespace bsdf {
+
+/// f(wo, wi) |cos theta_i| of the non-specular part (diffuse + Phong lobe); 0 for Mirror
+/// and Dielectric.
+Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi);
+/// Density with which sample() picks wi (non-specular materials), per steradian.
+double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi);
+/// One sampled continuation (path tracing and distributed gloss): for specular materials
+/// one lobe picked in proportion to its weight, with weight / probability.
+std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si, const Vec3& wo,
+                                 Sampler& sampler);
+/// All specular children of a Mirror or Dielectric hit with their weights (Whitted).
+SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, const Vec3& wo);
+
+/// Perfect mirror direction of wo about n (both unit, same side or not).
+Vec3 reflect(const Vec3& wo, const Normal3& n);
+/// Refracted direction of wo through a surface with normal n facing wo, for the ratio
+/// eta = eta_incident / eta_transmitted; nothing on total internal reflection.
+std::optional<Vec3> refract(const Vec3& wo, const Normal3& n, double eta);
+/// Unpolarised Fresnel reflectance of a dielectric interface for cos theta_i (of the
+/// incident side) and eta = eta_incident / eta_transmitted; 1 on total internal reflection.
+double fresnelDielectric(double cosThetaI, double eta);
+
+}  // namespace bsdf
+}  // namespace raylab

@@ -1,0 +1,81 @@
+#pragma once
+
+#include "raylab/core/Types.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+/// Why a ray was spawned (the colour-by-kind legend of the ray-tree view).
+enum class RayKind { Camera, Reflection, Refraction, Diffuse, Glossy, Shadow };
+constexpr int kRayKindCount = 6;
+const char* toString(RayKind kind);
+
+/// Why a ray spawned no further rays.
+enum class EndReason {
+  Pending,          ///< Still in the queue (stepping) or not processed yet.
+  Escaped,          ///< Left the scene: gets the background radiance.
+  HitLight,         ///< Hit an emitter; the algorithm does not continue from lights.
+  MaxDepth,         ///< Hit a surface at the maximum depth.
+  RussianRoulette,  ///< Path tracing stopped it at random (survivors are reweighted).
+  Absorbed,         ///< The material scatters nothing here (black, or no lobe applies).
+  Occluded,         ///< Shadow ray blocked before reaching its light.
+  ReachedLight,     ///< Shadow ray reached its light unblocked.
+  Spawned,          ///< Ended by spawning children (an inner node of the tree).
+};
+const char* toString(EndReason reason);
+
+/**
+ * \brief One ray of a recorded tree: where it went, what it hit, what it carried.
+ *
+ * Energy bookkeeping (the seed's propagation to parents): a ray's `radiance` is what it
+ * brings back along itself, `emitted + sum over children of child.weight * child.radiance`;
+ * the camera ray's radiance is the sample's estimate. `throughput` is the product of the
+ * weights from the camera ray down to this one (beta), so `throughput * emitted` is this
+ * ray's own contribution to the pixel. Children of one ray have consecutive ids.
+ */
+struct RaySegment {
+  int id = 0;           ///< Index in RayTree::segments; processing order of the engine.
+  int parent = -1;      ///< Parent id, -1 for the camera ray.
+  int firstChild = -1;  ///< Id of the first child, -1 when none.
+  int childCount = 0;   ///< Number of children (ids firstChild ...).
+  RayKind kind = RayKind::Camera;
+  int depth = 0;         ///< Bounces from the camera ray (which has depth 0).
+  Point3 origin{0.0};    ///< World space.
+  Vec3 direction{0.0};   ///< Unit, world space.
+  double time = 0.0;     ///< Shutter time in [0, 1].
+  bool hit = false;      ///< True when the ray ended on a surface.
+  Point3 endPoint{0.0};  ///< Hit point, or the far end of a shadow ray; for escaped
+                         ///< rays origin + escapeLength * direction (for drawing).
+  int object = -1;       ///< Index of the object hit (Scene::objects), -1 if none.
+  Normal3 normal{0.0};   ///< Unit geometric normal at the hit, world space.
+  Vec3 weight{1.0};      ///< Factor of this ray's radiance in its parent's estimate
+                         ///< (f |cos| / pdf, a Fresnel or rate weight, 1 / N ...).
+  double pdf = 0.0;      ///< Solid-angle density the direction was sampled with
+                         ///< (0 for deterministic directions).
+  Vec3 throughput{1.0};  ///< Product of weights from the camera ray to this one.
+  Vec3 emitted{0.0};     ///< Radiance found at this ray's end itself: an emitter seen
+                         ///< (MIS-weighted) or a shadow ray's light contribution.
+  Vec3 radiance{0.0};    ///< After propagation: emitted + sum of weighted children.
+  EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
+};
+
+/// The rays of one (pixel, sample), in the engine's processing order.
+struct RayTree {
+  int pixelX = 0, pixelY = 0, sample = 0;  ///< Which sample this is.
+  std::vector<RaySegment> segments;        ///< segments[0] is the camera ray.
+  bool truncated = false;                  ///< Recording stopped at the memory budget.
+  std::string message;                     ///< Why recording stopped, for the user.
+
+  /// Recomputes every `radiance` bottom-up from `emitted` and children's weights.
+  void propagate();
+  /// The sample's estimate: the camera ray's weight times its radiance.
+  Vec3 estimate() const;
+  /// Approximate memory used by the segments, bytes.
+  std::size_t memoryBytes() const { return segments.capacity() * sizeof(RaySegment); }
+  std::string toString() const;
+};
+
+}  // namespace raylab

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "raylab/core/Image.h"
+#include "raylab/core/Tracer.h"
+
+#include <atomic>
+#include <functional>
+
+namespace raylab {
+
+/// Figures of a finished (or cancelled) render.
+struct RenderStats {
+  RayCounts rays;           ///< Rays traced by kind.
+  int samplesPerPixel = 0;  ///< Samples completed in every pixel.
+  double seconds = 0.0;     ///< Wall-clock time of render().
+  bool cancelled = false;
+};
+
+/**
+ * \brief Renders whole images with any algorithm: progressive (passes of samples over
+ * the whole image), multi-threaded over tiles, cancellable, with progress reports.
+ *
+ * Deterministic: pixel (x, y) is the mean of Tracer::trace(x, y, s) for s = 0 .. spp-1,
+ * summed in sample order, so the image depends on scene, settings and seed — never on
+ * the thread count or the scheduling.
+ */
+class Renderer {
+ public:
+  /// Called after each pass with the fraction done and the image so far.
+  using Progress = std::function<void(double fraction, const Image& image)>;
+
+  Renderer(const Scene& scene, const RenderSettings& settings);
+
+  /// Worker threads; 0 = all hardware threads.
+  void setThreads(int threads) { m_threads = threads; }
+  void setProgress(Progress progress) { m_progress = std::move(progress); }
+  /// Safe from any thread: stops at the next tile; render() returns what is done.
+  void cancel() { m_cancel = true; }
+
+  /// Renders at the scene camera's width x height.
+  Image render();
+  const RenderStats& stats() const { return m_stats; }
+  const Tracer& tracer() const { return m_tracer; }
+
+ private:
+  Tracer m_tracer;
+  int m_threads = 0;
+  Progress m_progress;
+  std::atomic<bool> m_cancel{false};
+  RenderStats m_stats;
+};
+
+}  // namespace raylab

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "raylab/core/Scene.h"
+#include "raylab/core/Shape.h"
+
+#include <optional>
+#include <vector>
+
+namespace raylab {
+
+/// The nearest hit of a ray in a scene.
+struct SceneHit {
+  int object = -1;        ///< Index in Scene::objects.
+  SurfaceInteraction si;  ///< World-space geometry of the hit (moved objects included).
+};
+
+/// A point sampled on an area light, seen from a reference point.
+struct LightSample {
+  int object = -1;        ///< The emitter's index in Scene::objects.
+  Point3 p{0.0};          ///< Point on the light, world space.
+  Normal3 n{0.0};         ///< Light's outward unit normal at p.
+  Vec3 wi{0.0};           ///< Unit direction from the reference point to p.
+  double distance = 0.0;  ///< From the reference point to p.
+  Vec3 Le{0.0};           ///< Radiance emitted from p towards the reference point.
+  double pdf = 0.0;       ///< Solid-angle density at the reference point, including the
+                          ///< probability of choosing this light.
+};
+
+/**
+ * \brief The scene as the tracers see it: nearest-hit and occlusion queries over all
+ * objects (moving objects at the ray's time), and the list of area lights with their
+ * sampling (lights chosen in proportion to their emitted power).
+ */
+class SceneIntersector {
+ public:
+  explicit SceneIntersector(const Scene& scene);
+
+  /// Nearest hit with t in [ray.tMin, ray.tMax], over every object.
+  std::optional<SceneHit> intersect(const Ray& ray) const;
+  /// True when anything blocks the ray within [ray.tMin, ray.tMax].
+  bool occluded(const Ray& ray) const;
+
+  /// Emitter objects (indices into Scene::objects).
+  const std::vector<int>& areaLights() const { return m_lights; }
+  /// Samples a point on an area light for shading point `ref`. Nothing when the scene
+  /// has no area light or the sample faces away.
+  std::optional<LightSample> sampleLight(const Point3& ref, const Vec2& uLight, double uPick) const;
+  /// Solid-angle density with which sampleLight would pick the point `hit` (on emitter
+  /// `object`) from `ref`: used to MIS-weight emitters hit by BSDF sampling.
+  double lightPdf(const Point3& ref, int object, const SurfaceInteraction& hit) const;
+  /// Radiance an emitter sends from a hit towards the direction -rayDirection
+  /// (front side only), 0 for non-emitters.
+  Vec3 emitted(int object, const SurfaceInteraction& hit, const Vec3& rayDirection) const;
+
+  const Scene& scene() const { return *m_scene; }
+
+ private:
+  const Scene* m_scene;
+  std::vector<int> m_lights;
+  std::vector<double> m_lightCdf;  ///< Cumulative pick probabilities (by power).
+};
+
+}  // namespace raylab

@@ -1,0 +1,124 @@
+#pragma once
+
+#include "raylab/core/Camera.h"
+#include "raylab/core/RayTree.h"
+#include "raylab/core/RenderSettings.h"
+#include "raylab/core/Sampler.h"
+#include "raylab/core/SceneIntersector.h"
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+
+namespace raylab {
+
+/// Rays traced, by kind (the cost figures of a comparison).
+struct RayCounts {
+  std::array<std::uint64_t, kRayKindCount> byKind{};  ///< Indexed by RayKind.
+  std::uint64_t total() const;
+  RayCounts& operator+=(const RayCounts& other);
+};
+
+/// A ray waiting in the engine's queue, with what its parent decided about it.
+struct QueuedRay {
+  Ray ray;  ///< World space, unit direction.
+  RayKind kind = RayKind::Camera;
+  int depth = 0;              ///< Camera ray: 0.
+  int parent = -1;            ///< Recorded id of the parent (-1 for the camera ray).
+  int id = -1;                ///< Recorded id of this ray (-1 when not recording).
+  Vec3 weight{1.0};           ///< Factor of its radiance in the parent's estimate.
+  Vec3 throughput{1.0};       ///< Product of weights from the camera ray (beta).
+  double pdf = 0.0;           ///< Solid-angle pdf it was sampled with (0: deterministic).
+  bool specularChain = true;  ///< Only specular bounces so far (emitters count fully).
+  Vec3 shadowLe{0.0};         ///< Shadow rays: radiance delivered when unoccluded.
+  double previousPdf = 0.0;   ///< Path tracing MIS: BSDF pdf of this direction.
+};
+
+/// What the last step of the engine did, for the front end's narration.
+struct StepEvent {
+  int ray = -1;  ///< Recorded id of the ray processed.
+  EndReason end = EndReason::Pending;
+  int spawned = 0;   ///< Children appended to the queue.
+  std::string text;  ///< One sentence, e.g. "reflection ray hit 'red sphere'".
+};
+
+class SpawnRule;
+
+/**
+ * \brief The one engine of the four algorithms (the seed's renderer): a queue of rays;
+ * take the first, intersect it, ask the algorithm which child rays the hit spawns
+ * (the seed's BRDF(intersection) factory), append them; a ray that ends adds its
+ * radiance, weighted by its throughput, to the estimate — which equals propagating the
+ * energy up the recorded tree to the camera ray (RayTree::propagate).
+ *
+ * `trace` renders one (pixel, sample) with no recording (the image renderer's path);
+ * `Stepper` runs the same loop one ray at a time and records the tree.
+ */
+class Tracer {
+ public:
+  Tracer(const Scene& scene, const RenderSettings& settings);
+  ~Tracer();
+  Tracer(const Tracer&) = delete;
+  Tracer& operator=(const Tracer&) = delete;
+
+  /// Estimate of sample `sample` of pixel (x, y): radiance, linear RGB. Adds the rays
+  /// traced to `counts` when given. Thread-safe (const).
+  Vec3 trace(int x, int y, int sample, RayCounts* counts = nullptr) const;
+
+  const Scene& scene() const { return m_intersector.scene(); }
+  const SceneIntersector& intersector() const { return m_intersector; }
+  const RenderSettings& settings() const { return m_settings; }
+  const Camera& camera() const { return m_camera; }
+  const SpawnRule& rule() const { return *m_rule; }
+
+ private:
+  friend class Stepper;
+  SceneIntersector m_intersector;
+  RenderSettings m_settings;
+  Camera m_camera;
+  std::unique_ptr<SpawnRule> m_rule;
+};
+
+/**
+ * \brief Advances the real algorithm for one (pixel, sample) one ray at a time,
+ * recording the tree: what the window animates and the lessons narrate.
+ *
+ * Recording stops at `memoryBudget` bytes with a message in RayTree::message (the
+ * estimate is still computed to the end); it never crashes on a bushy distributed tree.
+ */
+class Stepper {
+ public:
+  Stepper(const Tracer& tracer, int x, int y, int sample,
+          std::size_t memoryBudget = std::size_t(256) << 20);
+
+  /// Processes the first ray of the queue. Returns false when the queue was empty.
+  bool step();
+  /// Steps until the queue is empty; the tree is then propagated.
+  void runToEnd();
+  /// Back to the state before the first step (same pixel, sample and seed).
+  void reset();
+  bool done() const { return m_queue.empty(); }
+
+  const std::deque<QueuedRay>& queue() const { return m_queue; }
+  /// The tree so far; radiance fields are final once done().
+  const RayTree& tree() const { return m_tree; }
+  const StepEvent& lastEvent() const { return m_event; }
+  /// The sample's estimate so far (final once done()); equals Tracer::trace when done.
+  Vec3 estimate() const { return m_estimate; }
+  const RayCounts& counts() const { return m_counts; }
+
+ private:
+  const Tracer* m_tracer;
+  int m_x, m_y, m_sample;
+  std::size_t m_budget;
+  Sampler m_sampler;
+  std::deque<QueuedRay> m_queue;
+  RayTree m_tree;
+  StepEvent m_event;
+  Vec3 m_estimate{0.0};
+  RayCounts m_counts;
+};
+
+}  // namespace raylab
