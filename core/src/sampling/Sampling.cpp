@@ -1,0 +1,92 @@
+#include "raylab/core/Sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+Frame::Frame(const Normal3& normal) : n(normal) {
+  // Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017): branch-free
+  // except for the sign of n.z, and continuous everywhere else.
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z);
+  const double b = n.x * n.y * a;
+  s = Vec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  t = Vec3(b, sign + n.y * n.y * a, -n.y);
+}
+
+Vec2 sampleUniformDisk(const Vec2& u) {
+  // Map u to [-1, 1]^2, then squares to circles (concentric mapping): the larger
+  // coordinate becomes the radius, the ratio of the two the angle within an octant.
+  const double ox = 2.0 * u.x - 1.0;
+  const double oy = 2.0 * u.y - 1.0;
+  if (ox == 0.0 && oy == 0.0) return {0.0, 0.0};
+  double r, theta;
+  if (std::abs(ox) > std::abs(oy)) {
+    r = ox;
+    theta = (kPi / 4.0) * (oy / ox);
+  } else {
+    r = oy;
+    theta = kPi / 2.0 - (kPi / 4.0) * (ox / oy);
+  }
+  return {r * std::cos(theta), r * std::sin(theta)};
+}
+
+double uniformDiskPdf() { return 1.0 / kPi; }
+
+Vec3 sampleCosineHemisphere(const Vec2& u) {
+  // Malley's method: a uniform point on the disk, lifted to the hemisphere above it,
+  // has density cos(theta) / pi per steradian.
+  const Vec2 d = sampleUniformDisk(u);
+  const double z = std::sqrt(std::max(0.0, 1.0 - d.x * d.x - d.y * d.y));
+  return {d.x, d.y, z};
+}
+
+double cosineHemispherePdf(double cosTheta) { return cosTheta > 0.0 ? cosTheta / kPi : 0.0; }
+
+Vec3 sampleUniformSphere(const Vec2& u) {
+  // Archimedes: z uniform in [-1, 1] gives equal areas; phi uniform around the axis.
+  const double z = 1.0 - 2.0 * u.x;
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const double phi = 2.0 * kPi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+double uniformSpherePdf() { return 1.0 / (4.0 * kPi); }
+
+Vec3 samplePhongLobe(const Vec2& u, double exponent) {
+  // Invert the CDF of cos(alpha): P(cos alpha > c) = 1 - c^(n + 1) over the hemisphere
+  // around the lobe axis, so cos alpha = u^(1 / (n + 1)); phi is uniform.
+  const double cosAlpha = std::pow(u.x, 1.0 / (exponent + 1.0));
+  const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
+  const double phi = 2.0 * kPi * u.y;
+  return {sinAlpha * std::cos(phi), sinAlpha * std::sin(phi), cosAlpha};
+}
+
+double phongLobePdf(double cosAlpha, double exponent) {
+  // Normalised over the hemisphere around the axis: the integral of cos^n over it is
+  // 2 pi / (n + 1).
+  if (cosAlpha <= 0.0) return 0.0;
+  return (exponent + 1.0) / (2.0 * kPi) * std::pow(cosAlpha, exponent);
+}
+
+Vec2 sampleUniformTriangle(const Vec2& u) {
+  // Square-root warp (PBR book 13.6.5): b0 = 1 - sqrt(u0) makes the area below each
+  // line b0 = const proportional to its length; b1 splits the remaining segment.
+  const double su0 = std::sqrt(u.x);
+  const double b1 = u.y * su0;
+  const double b2 = 1.0 - su0;
+  return {b1, b2};
+}
+
+double powerHeuristic(double pdfA, double pdfB) {
+  // w = pdfA^2 / (pdfA^2 + pdfB^2); an infinite pdfA (a delta) takes all the weight.
+  if (std::isinf(pdfA)) return 1.0;
+  const double a2 = pdfA * pdfA;
+  const double b2 = pdfB * pdfB;
+  if (a2 + b2 == 0.0) return 0.0;
+  if (std::isinf(b2)) return 0.0;
+  return a2 / (a2 + b2);
+}
+
+}  // namespace raylab
