@@ -3,10 +3,13 @@
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Transform.h"
+#include "raylab/core/TriangleMesh.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -193,6 +196,381 @@ TEST(SceneIO, 07_ShippedDefaultSceneFileMatchesTheBuiltIn) {
   std::ostringstream text;
   text << in.rdbuf();
   EXPECT_EQ(text.str(), SceneIO::serialize(defaultScene()));
+}
+
+}  // namespace
+}  // namespace raylab
+
+namespace raylab {
+namespace {
+
+const char* kEverything = R"({
+  "raylab_scene": 2,
+  "name": "everything",
+  "materials": [
+    {"name": "white", "type": "diffuse", "colour": [0.7, 0.7, 0.7]},
+    {"name": "chrome", "type": "mirror", "colour": [0.9, 0.9, 0.9],
+     "reflection_rate": 0.6, "refraction_rate": 0.3, "ior": 1.33},
+    {"name": "glass", "type": "dielectric", "colour": [1, 1, 1], "ior": 1.5},
+    {"name": "plastic", "type": "glossy", "colour": [0.2, 0.5, 0.2],
+     "exponent": 200, "specular": 0.25},
+    {"name": "lamp", "emission": [4, 4, 3]}
+  ],
+  "objects": [
+    {"name": "ball", "material": "chrome",
+     "shape": {"type": "sphere", "centre": [0, 1, 0], "radius": 1}, "velocity": [0, 0.5, 0]},
+    {"name": "panel", "material": "lamp",
+     "shape": {"type": "quad", "corner": [-1, 3, -1], "u": [2, 0, 0], "v": [0, 0, 2]}}
+  ],
+  "point_lights": [{"name": "key", "position": [2, 5, 2], "intensity": [20, 10, 5]}],
+  "camera": {"position": [0, 2, 5], "look_at": [0, 1, 0], "up": [0, 1, 0],
+             "vertical_fov": 45, "width": 64, "height": 48,
+             "aperture": 0.1, "focus_distance": 4.5},
+  "render": {"algorithm": "distributed", "spp": 9, "max_depth": 7, "seed": 12345678901234,
+             "shadow_samples": 3, "glossy_samples": 5, "russian_roulette_depth": 2,
+             "next_event_estimation": false, "multiple_importance": false,
+             "background": [0.1, 0.2, 0.3]}
+})";
+
+TEST(SceneIO, 08_ReadsMaterialsLightsCameraAndRenderSettings) {
+  const Scene s = SceneIO::parse(kEverything, "everything.json");
+  ASSERT_EQ(s.materials.size(), 5u);
+  const Material& chrome = s.materials[s.findMaterial("chrome")];
+  EXPECT_EQ(chrome.type, MaterialType::Mirror);
+  EXPECT_EQ(chrome.reflectionRate, 0.6);
+  EXPECT_EQ(chrome.refractionRate, 0.3);
+  EXPECT_EQ(chrome.ior, 1.33);
+  EXPECT_EQ(s.materials[s.findMaterial("glass")].type, MaterialType::Dielectric);
+  const Material& plastic = s.materials[s.findMaterial("plastic")];
+  EXPECT_EQ(plastic.type, MaterialType::Glossy);
+  EXPECT_EQ(plastic.exponent, 200.0);
+  EXPECT_EQ(plastic.specular, 0.25);
+  // No "type": diffuse, as in version 1.
+  EXPECT_EQ(s.materials[s.findMaterial("lamp")].type, MaterialType::Diffuse);
+  EXPECT_TRUE(s.materials[s.findMaterial("lamp")].isEmitter());
+
+  EXPECT_EQ(s.objects[0].velocity, Vec3(0, 0.5, 0));
+  EXPECT_EQ(s.objects[1].velocity, Vec3(0.0));
+  ASSERT_EQ(s.pointLights.size(), 1u);
+  EXPECT_EQ(s.pointLights[0].name, "key");
+  EXPECT_EQ(s.pointLights[0].position, Point3(2, 5, 2));
+  EXPECT_EQ(s.pointLights[0].intensity, Vec3(20, 10, 5));
+  EXPECT_EQ(s.camera.aperture, 0.1);
+  EXPECT_EQ(s.camera.focusDistance, 4.5);
+
+  const RenderSettings& r = s.render;
+  EXPECT_EQ(r.algorithm, Algorithm::Distributed);
+  EXPECT_EQ(r.samplesPerPixel, 9);
+  EXPECT_EQ(r.maxDepth, 7);
+  EXPECT_EQ(r.seed, 12345678901234u);
+  EXPECT_EQ(r.shadowSamples, 3);
+  EXPECT_EQ(r.glossySamples, 5);
+  EXPECT_EQ(r.russianRouletteDepth, 2);
+  EXPECT_FALSE(r.nextEventEstimation);
+  EXPECT_FALSE(r.multipleImportance);
+  EXPECT_EQ(r.background, Vec3(0.1, 0.2, 0.3));
+}
+
+TEST(SceneIO, 09_NewFieldsRoundTripExactly) {
+  Scene s = SceneIO::parse(kEverything, "everything.json");
+  // Parameters a type does not use, and values with long expansions, survive too.
+  s.materials[0].ior = 1.0 / 3.0;
+  s.materials[3].exponent = std::sqrt(2.0) * 100.0;
+  s.pointLights.push_back({"fill", Point3(-1.0 / 7.0, 2, 3), Vec3(0.1, 0.2, 0.3)});
+  s.objects[1].velocity = Vec3(1e-17, -3.25, 0.0);
+  s.render.seed = 18446744073709551615u;  // the largest seed
+  s.render.algorithm = Algorithm::RayCasting;
+
+  const std::string text = SceneIO::serialize(s);
+  const Scene back = SceneIO::parse(text, "roundtrip");
+  EXPECT_EQ(SceneIO::serialize(back), text);
+  ASSERT_EQ(back.materials.size(), s.materials.size());
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    SCOPED_TRACE(s.materials[i].name);
+    EXPECT_EQ(back.materials[i].type, s.materials[i].type);
+    EXPECT_EQ(back.materials[i].colour, s.materials[i].colour);
+    EXPECT_EQ(back.materials[i].emission, s.materials[i].emission);
+    EXPECT_EQ(back.materials[i].reflectionRate, s.materials[i].reflectionRate);
+    EXPECT_EQ(back.materials[i].refractionRate, s.materials[i].refractionRate);
+    EXPECT_EQ(back.materials[i].ior, s.materials[i].ior);
+    EXPECT_EQ(back.materials[i].exponent, s.materials[i].exponent);
+    EXPECT_EQ(back.materials[i].specular, s.materials[i].specular);
+  }
+  EXPECT_EQ(back.objects[1].velocity, s.objects[1].velocity);
+  ASSERT_EQ(back.pointLights.size(), 2u);
+  EXPECT_EQ(back.pointLights[1].position, s.pointLights[1].position);
+  EXPECT_EQ(back.render.seed, s.render.seed);
+  EXPECT_EQ(back.render.algorithm, Algorithm::RayCasting);
+  EXPECT_EQ(back.render.toString(), s.render.toString());
+  EXPECT_EQ(back.camera.aperture, s.camera.aperture);
+  EXPECT_EQ(back.camera.focusDistance, s.camera.focusDistance);
+  // The file says which version it is.
+  EXPECT_THAT(text, HasSubstr("\"raylab_scene\": " + std::to_string(SceneIO::kVersion)));
+}
+
+TEST(SceneIO, 10_Version1FilesLoadWithDefaults) {
+  // kMinimal is a version-1 file: nothing of version 2 in it.
+  const Scene s = SceneIO::parse(kMinimal, "minimal");
+  const RenderSettings defaults;
+  EXPECT_EQ(s.materials[0].type, MaterialType::Diffuse);
+  EXPECT_TRUE(s.pointLights.empty());
+  EXPECT_EQ(s.objects[0].velocity, Vec3(0.0));
+  EXPECT_EQ(s.camera.aperture, 0.0);
+  EXPECT_EQ(s.render.toString(), defaults.toString());
+}
+
+TEST(SceneIO, 11_NewErrorsNameThePlaceAndTheProblem) {
+  const auto withMaterial = [](const std::string& material) {
+    return R"({"raylab_scene": 2, "materials": [)" + material + R"(], "objects": []})";
+  };
+  const std::string one = R"({"raylab_scene": 2, "materials": [{"name": "m"}], "objects": [)";
+  const std::string ball =
+      R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,0,0], "radius": 1}})";
+  const ErrorCase cases[] = {
+      {"unknown material type", withMaterial(R"({"name": "x", "type": "velvet"})"),
+       "/materials/0/type: unknown material type \"velvet\" (expected diffuse, mirror"},
+      {"ior zero", withMaterial(R"({"name": "x", "type": "dielectric", "ior": 0})"),
+       "/materials/0/ior: ior (index of refraction) must be positive"},
+      {"ior negative", withMaterial(R"({"name": "x", "type": "mirror", "ior": -1.5})"),
+       "/materials/0/ior: ior"},
+      {"negative reflection rate",
+       withMaterial(R"({"name": "x", "type": "mirror", "reflection_rate": -0.1})"),
+       "/materials/0/reflection_rate: reflection_rate must be in [0, 1]"},
+      {"negative refraction rate",
+       withMaterial(R"({"name": "x", "type": "mirror", "refraction_rate": -0.5})"),
+       "/materials/0/refraction_rate: refraction_rate must be in [0, 1]"},
+      {"rates above one",
+       withMaterial(
+           R"({"name": "x", "type": "mirror", "reflection_rate": 0.7, "refraction_rate": 0.4})"),
+       "/materials/0: reflection_rate + refraction_rate must not exceed 1"},
+      {"exponent zero", withMaterial(R"({"name": "x", "type": "glossy", "exponent": 0})"),
+       "/materials/0/exponent: exponent (Phong) must be positive"},
+      {"specular above one", withMaterial(R"({"name": "x", "type": "glossy", "specular": 1.5})"),
+       "/materials/0/specular: specular must be in [0, 1]"},
+      {"misspelt key", withMaterial(R"({"name": "x", "refraction_rat": 0.5})"),
+       "/materials/0/refraction_rat: unknown key \"refraction_rat\""},
+      {"emitter on a plane",
+       R"({"raylab_scene": 2, "materials": [{"name": "sun", "emission": [1, 1, 1]}], "objects": [
+          {"name": "sky", "material": "sun", "shape": {"type": "plane", "point": [0,9,0], "normal": [0,-1,0]}}]})",
+       "/objects/0/material: emitting material \"sun\" on a plane"},
+      {"velocity not a vector", one + R"({"name": "b", "material": "m", "velocity": [1, 2],
+                 "shape": {"type": "sphere", "centre": [0,0,0], "radius": 1}}]})",
+       "/objects/0/velocity: expected [x, y, z]"},
+      {"point light without position", one + ball + R"(], "point_lights": [{"name": "p"}]})",
+       "/point_lights/0: missing \"position\""},
+      {"negative intensity",
+       one + ball +
+           R"(], "point_lights": [{"name": "p", "position": [0,1,0], "intensity": [1,-1,1]}]})",
+       "/point_lights/0/intensity: intensity must not be negative"},
+      {"duplicate point light",
+       one + ball +
+           R"(], "point_lights": [{"name": "p", "position": [0,1,0]}, {"name": "p", "position": [0,2,0]}]})",
+       "/point_lights/1/name: duplicate point light \"p\""},
+      {"negative aperture", one + ball + R"(], "camera": {"aperture": -1}})",
+       "/camera/aperture: aperture (lens radius) must not be negative"},
+      {"negative focus distance", one + ball + R"(], "camera": {"focus_distance": -2}})",
+       "/camera/focus_distance: focus_distance must not be negative"},
+      {"unknown algorithm", one + ball + R"(], "render": {"algorithm": "photon"}})",
+       "/render/algorithm: unknown algorithm \"photon\" (expected raycast, whitted, distributed"},
+      {"zero spp", one + ball + R"(], "render": {"spp": 0}})",
+       "/render/spp: must be at least 1, got 0"},
+      {"negative depth", one + ball + R"(], "render": {"max_depth": -1}})",
+       "/render/max_depth: must be at least 0"},
+      {"negative seed", one + ball + R"(], "render": {"seed": -3}})",
+       "/render/seed: expected a non-negative integer"},
+      {"nee not a boolean", one + ball + R"(], "render": {"next_event_estimation": 1}})",
+       "/render/next_event_estimation: expected true or false"},
+      {"negative background", one + ball + R"(], "render": {"background": [0, -1, 0]}})",
+       "/render/background: background radiance must not be negative"},
+      {"future version", R"({"raylab_scene": 3, "materials": [], "objects": []})",
+       "unsupported version 3 (this RayLab reads versions 1 to 2)"},
+  };
+  for (const ErrorCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string message = loadError(c.text);
+    EXPECT_THAT(message, HasSubstr("test.json: at ")) << message;
+    EXPECT_THAT(message, HasSubstr(c.expected)) << message;
+  }
+}
+
+/// A fresh folder under the build's temporary directory.
+std::filesystem::path freshDir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(RAYLAB_TEMP_DIR) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+}
+
+const char* kMeshScene = R"({
+  "raylab_scene": 2,
+  "materials": [{"name": "m"}],
+  "objects": [{"name": "cube", "material": "m",
+               "shape": {"type": "mesh", "file": "meshes/cube.obj"},
+               "transform": [{"scale": [2, 2, 2]}, {"translate": [10, 0, 0]}]}]
+})";
+
+TEST(SceneIO, 12_MeshesAreLoadedRelativeToTheSceneFileAndSavedByReference) {
+  const std::filesystem::path dir = freshDir("sceneio_mesh");
+  std::filesystem::create_directories(dir / "scenes" / "meshes");
+  std::filesystem::copy_file(std::string(RAYLAB_TEST_DATA_DIR) + "/meshes/cube.obj",
+                             dir / "scenes" / "meshes" / "cube.obj");
+  writeText(dir / "scenes" / "mesh.json", kMeshScene);
+
+  // The unit cube [0, 1]^3, scaled by 2, moved by 10 along x.
+  const Scene s = SceneIO::load((dir / "scenes" / "mesh.json").string());
+  ASSERT_EQ(s.objects.size(), 1u);
+  const SceneObject& cube = s.objects[0];
+  ASSERT_EQ(cube.shape->kind(), ShapeKind::TriangleMesh);
+  EXPECT_EQ(static_cast<const TriangleMesh&>(*cube.shape).triangleCount(), 12u);
+  EXPECT_EQ(cube.shape->bounds().lower, Point3(10, 0, 0));
+  EXPECT_EQ(cube.shape->bounds().upper, Point3(12, 2, 2));
+  EXPECT_EQ(cube.source, (dir / "scenes" / "meshes" / "cube.obj").lexically_normal().string());
+  EXPECT_EQ(cube.worldFromSource * glm::dvec4(1, 1, 1, 1), glm::dvec4(12, 2, 2, 1));
+
+  // Saved beside the original: the same relative path, and the transform as a matrix.
+  const std::string text = SceneIO::serialize(s, (dir / "scenes").string());
+  EXPECT_THAT(text, HasSubstr("\"file\": \"meshes/cube.obj\""));
+  EXPECT_THAT(text, HasSubstr("\"matrix\""));
+  const Scene back = SceneIO::parse(text, (dir / "scenes" / "copy.json").string());
+  EXPECT_EQ(SceneIO::serialize(back, (dir / "scenes").string()), text);
+  EXPECT_EQ(back.objects[0].shape->bounds().upper, Point3(12, 2, 2));
+
+  // Saved into another folder: the path is rewritten relative to the new file.
+  std::filesystem::create_directories(dir / "elsewhere");
+  SceneIO::save(s, (dir / "elsewhere" / "moved.json").string());
+  const Scene moved = SceneIO::load((dir / "elsewhere" / "moved.json").string());
+  EXPECT_EQ(moved.objects[0].shape->bounds().upper, Point3(12, 2, 2));
+  std::ifstream in(dir / "elsewhere" / "moved.json");
+  std::ostringstream movedText;
+  movedText << in.rdbuf();
+  EXPECT_THAT(movedText.str(), HasSubstr("\"file\": \"../scenes/meshes/cube.obj\""));
+
+  // Moving the object keeps the saved transform in step with the vertices.
+  Scene turned = s;
+  turned.objects[0].apply(Transform::translate({0, 5, 0}).matrix());
+  const Scene turnedBack = SceneIO::parse(SceneIO::serialize(turned, (dir / "scenes").string()),
+                                          (dir / "scenes" / "x.json").string());
+  EXPECT_EQ(turnedBack.objects[0].shape->bounds().lower, Point3(10, 5, 0));
+}
+
+TEST(SceneIO, 13_MissingOrBadMeshNamesSceneFilePlaceAndMesh) {
+  const std::filesystem::path dir = freshDir("sceneio_missing_mesh");
+  const std::string scenePath = (dir / "scene.json").string();
+  writeText(dir / "scene.json", kMeshScene);
+  try {
+    SceneIO::load(scenePath);
+    FAIL() << "no error";
+  } catch (const SceneIO::LoadError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(scenePath));
+    EXPECT_THAT(e.what(), HasSubstr("/objects/0/shape/file"));
+    EXPECT_THAT(e.what(), HasSubstr("meshes/cube.obj"));
+    EXPECT_THAT(e.what(), HasSubstr("not found"));
+  }
+  // A file that is there but is no mesh: MeshIO's reason is included.
+  std::filesystem::create_directories(dir / "meshes");
+  std::filesystem::copy_file(std::string(RAYLAB_TEST_DATA_DIR) + "/meshes/empty.obj",
+                             dir / "meshes" / "cube.obj");
+  try {
+    SceneIO::load(scenePath);
+    FAIL() << "no error";
+  } catch (const SceneIO::LoadError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(scenePath + ": at /objects/0/shape/file: cannot load mesh"));
+    EXPECT_THAT(e.what(), HasSubstr("no faces"));
+  }
+  // A mesh object without a file cannot be saved.
+  Scene s = defaultScene();
+  s.objects.emplace_back(
+      "orphan",
+      std::make_unique<TriangleMesh>(std::vector<Point3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                     std::vector<TriangleMesh::Index3>{{0, 1, 2}}),
+      0);
+  EXPECT_THROW(SceneIO::serialize(s), SceneIO::SaveError);
+}
+
+TEST(SceneIO, 14_CopiedObjectsKeepVelocityAndSource) {
+  SceneObject a("a", std::make_unique<Sphere>(Point3(0.0), 1.0), 0);
+  a.velocity = Vec3(1, 2, 3);
+  a.source = "meshes/a.obj";
+  a.worldFromSource = Transform::translate({4, 5, 6}).matrix();
+  const SceneObject b = a;
+  EXPECT_EQ(b.velocity, a.velocity);
+  EXPECT_EQ(b.source, a.source);
+  EXPECT_EQ(b.worldFromSource, a.worldFromSource);
+  SceneObject c;
+  c = a;
+  EXPECT_EQ(c.velocity, a.velocity);
+  EXPECT_EQ(c.source, a.source);
+}
+
+/// Every scene file shipped in lessons/scenes.
+std::vector<std::filesystem::path> shippedScenes() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes"))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(ShippedScenes, 01_EveryFileLoadsAndHasALight) {
+  const auto files = shippedScenes();
+  // default, cornell, smallpt, materials at least.
+  EXPECT_GE(files.size(), 4u);
+  for (const auto& file : files) {
+    SCOPED_TRACE(file.string());
+    const Scene s = SceneIO::load(file.string());
+    int lights = static_cast<int>(s.pointLights.size());
+    for (const SceneObject& o : s.objects) lights += s.materials[o.material].isEmitter();
+    EXPECT_GE(lights, 1);
+    // Saving and loading again changes nothing.
+    const std::string text = SceneIO::serialize(s, file.parent_path().string());
+    EXPECT_EQ(SceneIO::serialize(SceneIO::parse(text, file.string()), file.parent_path().string()),
+              text);
+  }
+}
+
+TEST(ShippedScenes, 02_SmallptIsTheNineSphereCornellBox) {
+  const Scene s = SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/smallpt.json");
+  ASSERT_EQ(s.objects.size(), 9u);
+  for (const SceneObject& o : s.objects) EXPECT_EQ(o.shape->kind(), ShapeKind::Sphere) << o.name;
+  // smallpt: cx = w * 0.5135 / h, so the vertical field of view is 2 atan(0.5135).
+  EXPECT_NEAR(s.camera.verticalFov, 2.0 * std::atan(0.5135) * 180.0 / kPi, 1e-12);
+  EXPECT_EQ(s.camera.position, Point3(50, 52, 295.6));
+  const Vec3 dir = glm::normalize(s.camera.lookAt - s.camera.position);
+  const Vec3 expected = glm::normalize(Vec3(0, -0.042612, -1));
+  EXPECT_NEAR(glm::length(dir - expected), 0.0, 1e-12);
+  EXPECT_EQ(s.camera.width, 1024);
+  EXPECT_EQ(s.camera.height, 768);
+
+  const auto sphere = [&](const char* name) -> const Sphere& {
+    const int i = s.findObject(name);
+    EXPECT_GE(i, 0) << name;
+    return static_cast<const Sphere&>(*s.objects[std::max(i, 0)].shape);
+  };
+  const auto material = [&](const char* name) -> const Material& {
+    return s.materials[s.objects[std::max(s.findObject(name), 0)].material];
+  };
+  EXPECT_EQ(sphere("light").radius(), 600.0);
+  EXPECT_EQ(sphere("light").centre(), Point3(50, 681.33, 81.6));
+  EXPECT_EQ(material("light").emission, Vec3(12.0));
+  EXPECT_EQ(sphere("left").centre(), Point3(1e5 + 1, 40.8, 81.6));
+  EXPECT_EQ(material("left").colour, Vec3(0.75, 0.25, 0.25));
+  EXPECT_EQ(material("right").colour, Vec3(0.25, 0.25, 0.75));
+  EXPECT_EQ(material("front").colour, Vec3(0.0));
+  EXPECT_EQ(material("mirror").type, MaterialType::Mirror);
+  EXPECT_EQ(material("mirror").reflectionRate, 1.0);
+  EXPECT_EQ(material("mirror").refractionRate, 0.0);
+  EXPECT_EQ(material("mirror").colour, Vec3(0.999));
+  EXPECT_EQ(sphere("mirror").centre(), Point3(27, 16.5, 47));
+  EXPECT_EQ(material("glass").type, MaterialType::Dielectric);
+  EXPECT_EQ(material("glass").ior, 1.5);
+  EXPECT_EQ(sphere("glass").radius(), 16.5);
+  EXPECT_EQ(sphere("glass").centre(), Point3(73, 16.5, 78));
 }
 
 }  // namespace

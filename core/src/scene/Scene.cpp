@@ -3,11 +3,21 @@
 namespace raylab {
 
 SceneObject::SceneObject(const SceneObject& o)
-    : name(o.name), shape(o.shape ? o.shape->clone() : nullptr), material(o.material) {}
+    : name(o.name),
+      shape(o.shape ? o.shape->clone() : nullptr),
+      material(o.material),
+      velocity(o.velocity),
+      source(o.source),
+      worldFromSource(o.worldFromSource) {}
 
 SceneObject& SceneObject::operator=(const SceneObject& o) {
   if (this != &o) *this = SceneObject(o);
   return *this;
+}
+
+void SceneObject::apply(const Mat4& m) {
+  if (shape) shape->apply(m);
+  worldFromSource = m * worldFromSource;
 }
 
 std::string SceneObject::toString() const {

@@ -1,6 +1,7 @@
 #include "raylab/core/SceneIO.h"
 
 #include "raylab/core/Box.h"
+#include "raylab/core/MeshIO.h"
 #include "raylab/core/Plane.h"
 #include "raylab/core/Quad.h"
 #include "raylab/core/Sphere.h"
@@ -12,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 
 #include <sys/stat.h>
@@ -27,7 +30,9 @@ using nlohmann::json;
 /// Reads one scene document and remembers the file name for every message.
 class Reader {
  public:
-  explicit Reader(std::string origin) : m_origin(std::move(origin)) {}
+  explicit Reader(std::string origin)
+      : m_origin(std::move(origin)),
+        m_baseDir(std::filesystem::path(m_origin).parent_path().string()) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw SceneIO::LoadError(m_origin + ": at " + (path.empty() ? "/" : path) + ": " + what);
@@ -50,6 +55,33 @@ class Reader {
   int integer(const json& j, const std::string& path) const {
     if (!j.is_number_integer()) fail(path, "expected an integer, got " + j.dump());
     return j.get<int>();
+  }
+
+  int integerAtLeast(const json& j, const std::string& path, int minimum) const {
+    const int v = integer(j, path);
+    if (v < minimum)
+      fail(path, "must be at least " + std::to_string(minimum) + ", got " + j.dump());
+    return v;
+  }
+
+  bool boolean(const json& j, const std::string& path) const {
+    if (!j.is_boolean()) fail(path, "expected true or false, got " + j.dump());
+    return j.get<bool>();
+  }
+
+  /// Rejects members not in `known`: a misspelt key would otherwise be ignored silently.
+  void onlyKeys(const json& j, const std::string& path,
+                std::initializer_list<const char*> known) const {
+    if (!j.is_object()) fail(path, "expected an object");
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }) !=
+          known.end())
+        continue;
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      fail(path + "/" + it.key(),
+           "unknown key \"" + it.key() + "\" (expected one of " + list + ")");
+    }
   }
 
   std::string string(const json& j, const std::string& path) const {
@@ -81,10 +113,30 @@ class Reader {
     return m;
   }
 
-  std::unique_ptr<Shape> shape(const json& j, const std::string& path) const {
+  /// A shape; for a mesh, `source` receives the mesh file's path (see SceneObject::source).
+  std::unique_ptr<Shape> shape(const json& j, const std::string& path, std::string& source) const {
     const std::string type = string(member(j, path, "type"), path + "/type");
     try {
+      if (type == "mesh") {
+        onlyKeys(j, path, {"type", "file"});
+        const std::string file = string(member(j, path, "file"), path + "/file");
+        if (file.empty()) fail(path + "/file", "mesh file name is empty");
+        // Mesh paths are relative to the scene file's folder.
+        const std::filesystem::path filePath(file);
+        source = (filePath.is_absolute() ? filePath : std::filesystem::path(m_baseDir) / filePath)
+                     .lexically_normal()
+                     .string();
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(source, ec))
+          fail(path + "/file", "mesh file \"" + file + "\" not found (looked for " + source + ")");
+        try {
+          return std::make_unique<TriangleMesh>(MeshIO::load(source));
+        } catch (const MeshIO::ReadError& e) {
+          fail(path + "/file", "cannot load mesh \"" + file + "\": " + e.what());
+        }
+      }
       if (type == "sphere") {
+        onlyKeys(j, path, {"type", "centre", "radius", "m", "n"});
         const double radius = number(member(j, path, "radius"), path + "/radius");
         if (radius <= 0.0)
           fail(path + "/radius", "radius must be positive, got " + j["radius"].dump());
@@ -96,6 +148,7 @@ class Reader {
                                         m, n);
       }
       if (type == "box") {
+        onlyKeys(j, path, {"type", "centre", "size", "axes", "matrix"});
         if (j.contains("matrix"))
           return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
         const Vec3 centre = vec3(member(j, path, "centre"), path + "/centre");
@@ -111,14 +164,19 @@ class Reader {
         for (int i = 0; i < 3; ++i) a[i] = nonZero(axes[i], path + "/axes/" + std::to_string(i));
         return std::make_unique<Box>(centre, size, a[0], a[1], a[2]);
       }
-      if (type == "plane")
+      if (type == "plane") {
+        onlyKeys(j, path, {"type", "point", "normal"});
         return std::make_unique<Plane>(vec3(member(j, path, "point"), path + "/point"),
                                        nonZero(member(j, path, "normal"), path + "/normal"));
-      if (type == "quad")
+      }
+      if (type == "quad") {
+        onlyKeys(j, path, {"type", "corner", "u", "v"});
         return std::make_unique<Quad>(vec3(member(j, path, "corner"), path + "/corner"),
                                       nonZero(member(j, path, "u"), path + "/u"),
                                       nonZero(member(j, path, "v"), path + "/v"));
+      }
       if (type == "triangle") {
+        onlyKeys(j, path, {"type", "vertices"});
         const json& v = member(j, path, "vertices");
         if (!v.is_array() || v.size() != 3) fail(path + "/vertices", "expected three points");
         return std::make_unique<Triangle>(vec3(v[0], path + "/vertices/0"),
@@ -128,8 +186,8 @@ class Reader {
     } catch (const Shape::InvalidGeometry& e) {
       fail(path, e.what());
     }
-    fail(path + "/type",
-         "unknown shape type \"" + type + "\" (expected sphere, box, plane, quad or triangle)");
+    fail(path + "/type", "unknown shape type \"" + type +
+                             "\" (expected sphere, box, plane, quad, triangle or mesh)");
   }
 
   Mat4 transform(const json& steps, const std::string& path) const {
@@ -164,37 +222,143 @@ class Reader {
     return m;
   }
 
+  Material material(const json& j, const std::string& p) const {
+    onlyKeys(j, p,
+             {"name", "type", "colour", "emission", "reflection_rate", "refraction_rate", "ior",
+              "exponent", "specular", "opacity"});
+    Material m;
+    m.name = string(member(j, p, "name"), p + "/name");
+    if (j.contains("type")) {
+      const std::string type = string(j["type"], p + "/type");
+      bool known = false;
+      for (MaterialType t : {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Dielectric,
+                             MaterialType::Glossy})
+        if (type == toString(t)) {
+          m.type = t;
+          known = true;
+        }
+      if (!known)
+        fail(p + "/type", "unknown material type \"" + type +
+                              "\" (expected diffuse, mirror, dielectric or glossy)");
+    }
+    if (j.contains("colour")) m.colour = vec3(j["colour"], p + "/colour");
+    if (j.contains("emission")) m.emission = vec3(j["emission"], p + "/emission");
+    if (j.contains("reflection_rate"))
+      m.reflectionRate = number(j["reflection_rate"], p + "/reflection_rate");
+    if (j.contains("refraction_rate"))
+      m.refractionRate = number(j["refraction_rate"], p + "/refraction_rate");
+    if (j.contains("ior")) m.ior = number(j["ior"], p + "/ior");
+    if (j.contains("exponent")) m.exponent = number(j["exponent"], p + "/exponent");
+    if (j.contains("specular")) m.specular = number(j["specular"], p + "/specular");
+    if (j.contains("opacity")) m.opacity = number(j["opacity"], p + "/opacity");
+    for (int c = 0; c < 3; ++c) {
+      if (m.colour[c] < 0.0 || m.colour[c] > 1.0)
+        fail(p + "/colour", "colour components must be in [0, 1]");
+      if (m.emission[c] < 0.0) fail(p + "/emission", "emission must not be negative");
+    }
+    if (m.reflectionRate < 0.0 || m.reflectionRate > 1.0)
+      fail(p + "/reflection_rate", "reflection_rate must be in [0, 1]");
+    if (m.refractionRate < 0.0 || m.refractionRate > 1.0)
+      fail(p + "/refraction_rate", "refraction_rate must be in [0, 1]");
+    if (m.reflectionRate + m.refractionRate > 1.0)
+      fail(p, "reflection_rate + refraction_rate must not exceed 1 (energy would be created)");
+    if (!(m.ior > 0.0)) fail(p + "/ior", "ior (index of refraction) must be positive");
+    if (!(m.exponent > 0.0)) fail(p + "/exponent", "exponent (Phong) must be positive");
+    if (m.specular < 0.0 || m.specular > 1.0) fail(p + "/specular", "specular must be in [0, 1]");
+    if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");
+    return m;
+  }
+
+  void camera(const json& c, CameraSpec& cam) const {
+    onlyKeys(c, "/camera",
+             {"position", "look_at", "up", "vertical_fov", "width", "height", "aperture",
+              "focus_distance"});
+    if (c.contains("position")) cam.position = vec3(c["position"], "/camera/position");
+    if (c.contains("look_at")) cam.lookAt = vec3(c["look_at"], "/camera/look_at");
+    if (c.contains("up")) cam.up = nonZero(c["up"], "/camera/up");
+    if (c.contains("vertical_fov"))
+      cam.verticalFov = number(c["vertical_fov"], "/camera/vertical_fov");
+    if (c.contains("width")) cam.width = integer(c["width"], "/camera/width");
+    if (c.contains("height")) cam.height = integer(c["height"], "/camera/height");
+    if (c.contains("aperture")) cam.aperture = number(c["aperture"], "/camera/aperture");
+    if (c.contains("focus_distance"))
+      cam.focusDistance = number(c["focus_distance"], "/camera/focus_distance");
+    if (cam.position == cam.lookAt) fail("/camera/look_at", "camera looks at its own position");
+    if (glm::length(glm::cross(cam.lookAt - cam.position, cam.up)) == 0.0)
+      fail("/camera/up", "up is parallel to the viewing direction");
+    if (!(cam.verticalFov > 0.0 && cam.verticalFov < 180.0))
+      fail("/camera/vertical_fov", "vertical_fov must be in (0, 180) degrees");
+    if (cam.width < 1 || cam.height < 1 || cam.width > 16384 || cam.height > 16384)
+      fail("/camera", "width and height must be in [1, 16384]");
+    if (cam.aperture < 0.0) fail("/camera/aperture", "aperture (lens radius) must not be negative");
+    if (cam.focusDistance < 0.0)
+      fail("/camera/focus_distance",
+           "focus_distance must not be negative (0: distance to look_at)");
+  }
+
+  void render(const json& r, RenderSettings& s) const {
+    const std::string p = "/render";
+    onlyKeys(
+        r, p,
+        {"algorithm", "spp", "max_depth", "seed", "shadow_samples", "glossy_samples",
+         "russian_roulette_depth", "next_event_estimation", "multiple_importance", "background"});
+    if (r.contains("algorithm")) {
+      const std::string name = string(r["algorithm"], p + "/algorithm");
+      const auto algorithm = parseAlgorithm(name);
+      if (!algorithm)
+        fail(p + "/algorithm",
+             "unknown algorithm \"" + name + "\" (expected raycast, whitted, distributed or path)");
+      s.algorithm = *algorithm;
+    }
+    if (r.contains("spp")) s.samplesPerPixel = integerAtLeast(r["spp"], p + "/spp", 1);
+    if (r.contains("max_depth")) s.maxDepth = integerAtLeast(r["max_depth"], p + "/max_depth", 0);
+    if (r.contains("seed")) {
+      if (!r["seed"].is_number_unsigned())
+        fail(p + "/seed", "expected a non-negative integer, got " + r["seed"].dump());
+      s.seed = r["seed"].get<std::uint64_t>();
+    }
+    if (r.contains("shadow_samples"))
+      s.shadowSamples = integerAtLeast(r["shadow_samples"], p + "/shadow_samples", 1);
+    if (r.contains("glossy_samples"))
+      s.glossySamples = integerAtLeast(r["glossy_samples"], p + "/glossy_samples", 1);
+    if (r.contains("russian_roulette_depth"))
+      s.russianRouletteDepth =
+          integerAtLeast(r["russian_roulette_depth"], p + "/russian_roulette_depth", 0);
+    if (r.contains("next_event_estimation"))
+      s.nextEventEstimation = boolean(r["next_event_estimation"], p + "/next_event_estimation");
+    if (r.contains("multiple_importance"))
+      s.multipleImportance = boolean(r["multiple_importance"], p + "/multiple_importance");
+    if (r.contains("background")) {
+      s.background = vec3(r["background"], p + "/background");
+      if (s.background.x < 0.0 || s.background.y < 0.0 || s.background.z < 0.0)
+        fail(p + "/background", "background radiance must not be negative");
+    }
+  }
+
   Scene scene(const json& root) const {
     if (!root.is_object()) fail("", "a scene file is a JSON object");
     if (!root.contains("raylab_scene"))
       fail("", "missing \"raylab_scene\": <version> (is this a RayLab scene file?)");
     const int version = integer(root["raylab_scene"], "/raylab_scene");
-    if (version != SceneIO::kVersion)
+    if (version < SceneIO::kFirstVersion || version > SceneIO::kVersion)
       fail("/raylab_scene", "unsupported version " + std::to_string(version) +
-                                " (this RayLab reads version " + std::to_string(SceneIO::kVersion) +
-                                ")");
+                                " (this RayLab reads versions " +
+                                std::to_string(SceneIO::kFirstVersion) + " to " +
+                                std::to_string(SceneIO::kVersion) + ")");
+    onlyKeys(root, "",
+             {"raylab_scene", "name", "materials", "objects", "point_lights", "camera", "render"});
     Scene scene;
     scene.name = root.contains("name") ? string(root["name"], "/name") : "untitled";
 
+    // Materials first: objects refer to them by name.
     const json& materials = member(root, "", "materials");
     if (!materials.is_array()) fail("/materials", "expected a list");
     for (std::size_t i = 0; i < materials.size(); ++i) {
       const std::string p = "/materials/" + std::to_string(i);
-      const json& j = materials[i];
-      Material m;
-      m.name = string(member(j, p, "name"), p + "/name");
+      Material m = material(materials[i], p);
       if (scene.findMaterial(m.name) >= 0)
         fail(p + "/name", "duplicate material \"" + m.name + "\"");
-      if (j.contains("colour")) m.colour = vec3(j["colour"], p + "/colour");
-      if (j.contains("emission")) m.emission = vec3(j["emission"], p + "/emission");
-      if (j.contains("opacity")) m.opacity = number(j["opacity"], p + "/opacity");
-      for (int c = 0; c < 3; ++c) {
-        if (m.colour[c] < 0.0 || m.colour[c] > 1.0)
-          fail(p + "/colour", "colour components must be in [0, 1]");
-        if (m.emission[c] < 0.0) fail(p + "/emission", "emission must not be negative");
-      }
-      if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");
-      scene.materials.push_back(m);
+      scene.materials.push_back(std::move(m));
     }
 
     const json& objects = member(root, "", "objects");
@@ -202,46 +366,59 @@ class Reader {
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const std::string p = "/objects/" + std::to_string(i);
       const json& j = objects[i];
+      onlyKeys(j, p, {"name", "material", "shape", "transform", "velocity"});
       SceneObject o;
       o.name = string(member(j, p, "name"), p + "/name");
       if (scene.findObject(o.name) >= 0) fail(p + "/name", "duplicate object \"" + o.name + "\"");
       const std::string material = string(member(j, p, "material"), p + "/material");
       o.material = scene.findMaterial(material);
       if (o.material < 0) fail(p + "/material", "unknown material \"" + material + "\"");
-      o.shape = shape(member(j, p, "shape"), p + "/shape");
+      o.shape = shape(member(j, p, "shape"), p + "/shape", o.source);
       if (j.contains("transform")) {
+        const Mat4 m = transform(j["transform"], p + "/transform");
         try {
-          o.shape->apply(transform(j["transform"], p + "/transform"));
+          o.apply(m);
         } catch (const Shape::InvalidGeometry& e) {
           fail(p + "/transform", e.what());
         }
       }
+      if (j.contains("velocity")) o.velocity = vec3(j["velocity"], p + "/velocity");
+      // An area light must have a finite area to sample.
+      if (scene.materials[o.material].isEmitter() && o.shape->kind() == ShapeKind::Plane)
+        fail(p + "/material", "emitting material \"" + material +
+                                  "\" on a plane: an area light needs a finite shape "
+                                  "(use a quad)");
       scene.objects.push_back(std::move(o));
     }
 
-    if (root.contains("camera")) {
-      const json& c = root["camera"];
-      CameraSpec& cam = scene.camera;
-      if (c.contains("position")) cam.position = vec3(c["position"], "/camera/position");
-      if (c.contains("look_at")) cam.lookAt = vec3(c["look_at"], "/camera/look_at");
-      if (c.contains("up")) cam.up = nonZero(c["up"], "/camera/up");
-      if (c.contains("vertical_fov"))
-        cam.verticalFov = number(c["vertical_fov"], "/camera/vertical_fov");
-      if (c.contains("width")) cam.width = integer(c["width"], "/camera/width");
-      if (c.contains("height")) cam.height = integer(c["height"], "/camera/height");
-      if (cam.position == cam.lookAt) fail("/camera/look_at", "camera looks at its own position");
-      if (glm::length(glm::cross(cam.lookAt - cam.position, cam.up)) == 0.0)
-        fail("/camera/up", "up is parallel to the viewing direction");
-      if (!(cam.verticalFov > 0.0 && cam.verticalFov < 180.0))
-        fail("/camera/vertical_fov", "vertical_fov must be in (0, 180) degrees");
-      if (cam.width < 1 || cam.height < 1 || cam.width > 16384 || cam.height > 16384)
-        fail("/camera", "width and height must be in [1, 16384]");
+    if (root.contains("point_lights")) {
+      const json& lights = root["point_lights"];
+      if (!lights.is_array()) fail("/point_lights", "expected a list");
+      for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::string p = "/point_lights/" + std::to_string(i);
+        const json& j = lights[i];
+        onlyKeys(j, p, {"name", "position", "intensity"});
+        PointLight light;
+        light.name = string(member(j, p, "name"), p + "/name");
+        for (const PointLight& other : scene.pointLights)
+          if (other.name == light.name)
+            fail(p + "/name", "duplicate point light \"" + light.name + "\"");
+        light.position = vec3(member(j, p, "position"), p + "/position");
+        if (j.contains("intensity")) light.intensity = vec3(j["intensity"], p + "/intensity");
+        for (int c = 0; c < 3; ++c)
+          if (light.intensity[c] < 0.0) fail(p + "/intensity", "intensity must not be negative");
+        scene.pointLights.push_back(light);
+      }
     }
+
+    if (root.contains("camera")) camera(root["camera"], scene.camera);
+    if (root.contains("render")) render(root["render"], scene.render);
     return scene;
   }
 
  private:
   std::string m_origin;
+  std::string m_baseDir;  ///< Folder of the scene file: mesh paths are relative to it.
 };
 
 using ojson = nlohmann::ordered_json;
@@ -342,6 +519,44 @@ ojson shapeToJson(const Shape& shape, ojson& transform) {
   throw SceneIO::SaveError(std::string("cannot save shape of kind ") + toString(shape.kind()));
 }
 
+/// A material as JSON: always name, type, colour, emission and opacity; the parameters
+/// the type uses; and any other parameter that differs from its default (so nothing is
+/// lost in a round trip).
+ojson materialToJson(const Material& m) {
+  const Material defaults;
+  const bool mirror = m.type == MaterialType::Mirror;
+  const bool dielectric = m.type == MaterialType::Dielectric;
+  const bool glossy = m.type == MaterialType::Glossy;
+  ojson j = {{"name", m.name},
+             {"type", toString(m.type)},
+             {"colour", toJson(m.colour)},
+             {"emission", toJson(m.emission)}};
+  if (mirror || m.reflectionRate != defaults.reflectionRate)
+    j["reflection_rate"] = m.reflectionRate;
+  if (mirror || m.refractionRate != defaults.refractionRate)
+    j["refraction_rate"] = m.refractionRate;
+  if (mirror || dielectric || m.ior != defaults.ior) j["ior"] = m.ior;
+  if (glossy || m.exponent != defaults.exponent) j["exponent"] = m.exponent;
+  if (glossy || m.specular != defaults.specular) j["specular"] = m.specular;
+  j["opacity"] = m.opacity;
+  return j;
+}
+
+/// The path to write for a mesh file `source` (see SceneObject::source) in a scene file
+/// in folder `sceneDir` ("" = the current directory): relative to that folder, as the
+/// format says.
+std::string meshPathFrom(const std::string& source, const std::string& sceneDir) {
+  namespace fs = std::filesystem;
+  fs::path file = fs::path(source).lexically_normal();
+  fs::path base = fs::path(sceneDir.empty() ? "." : sceneDir).lexically_normal();
+  if (file.is_absolute() || base.is_absolute()) {
+    file = fs::absolute(file).lexically_normal();
+    base = fs::absolute(base).lexically_normal();
+  }
+  const fs::path relative = file.lexically_relative(base);
+  return relative.empty() ? file.generic_string() : relative.generic_string();
+}
+
 /// 1-based line and column of a byte offset.
 std::pair<int, int> lineColumn(const std::string& text, std::size_t offset) {
   int line = 1, column = 1;
@@ -384,35 +599,60 @@ Scene SceneIO::load(const std::string& path) {
   return parse(text.str(), path);
 }
 
-std::string SceneIO::serialize(const Scene& scene) {
+std::string SceneIO::serialize(const Scene& scene, const std::string& sceneDir) {
   ojson root;
   root["raylab_scene"] = kVersion;
   root["name"] = scene.name;
   root["materials"] = ojson::array();
-  for (const Material& m : scene.materials)
-    root["materials"].push_back({{"name", m.name},
-                                 {"colour", toJson(m.colour)},
-                                 {"emission", toJson(m.emission)},
-                                 {"opacity", m.opacity}});
+  for (const Material& m : scene.materials) root["materials"].push_back(materialToJson(m));
   root["objects"] = ojson::array();
   for (const SceneObject& o : scene.objects) {
     if (!o.shape) throw SaveError("object \"" + o.name + "\" has no shape");
     if (o.material < 0 || o.material >= static_cast<int>(scene.materials.size()))
       throw SaveError("object \"" + o.name + "\" refers to a missing material");
     ojson transform;
-    ojson object = {{"name", o.name},
-                    {"material", scene.materials[o.material].name},
-                    {"shape", shapeToJson(*o.shape, transform)}};
+    ojson shape;
+    if (o.shape->kind() == ShapeKind::TriangleMesh) {
+      // Meshes are saved by reference: the file and the transform applied to it.
+      if (o.source.empty())
+        throw SaveError("mesh object \"" + o.name +
+                        "\" has no source file (meshes are saved as a path to their file)");
+      shape = {{"type", "mesh"}, {"file", meshPathFrom(o.source, sceneDir)}};
+      if (o.worldFromSource != Mat4(1.0))
+        transform = ojson::array({ojson{{"matrix", toJson(o.worldFromSource)}}});
+    } else {
+      shape = shapeToJson(*o.shape, transform);
+    }
+    ojson object = {
+        {"name", o.name}, {"material", scene.materials[o.material].name}, {"shape", shape}};
     if (!transform.is_null()) object["transform"] = transform;
+    if (o.velocity != Vec3(0.0)) object["velocity"] = toJson(o.velocity);
     root["objects"].push_back(object);
   }
+  root["point_lights"] = ojson::array();
+  for (const PointLight& l : scene.pointLights)
+    root["point_lights"].push_back(
+        {{"name", l.name}, {"position", toJson(l.position)}, {"intensity", toJson(l.intensity)}});
   const CameraSpec& c = scene.camera;
   root["camera"] = {{"position", toJson(c.position)},
                     {"look_at", toJson(c.lookAt)},
                     {"up", toJson(c.up)},
                     {"vertical_fov", c.verticalFov},
                     {"width", c.width},
-                    {"height", c.height}};
+                    {"height", c.height},
+                    {"aperture", c.aperture},
+                    {"focus_distance", c.focusDistance}};
+  const RenderSettings& r = scene.render;
+  root["render"] = {{"algorithm", toString(r.algorithm)},
+                    {"spp", r.samplesPerPixel},
+                    {"max_depth", r.maxDepth},
+                    {"seed", r.seed},
+                    {"shadow_samples", r.shadowSamples},
+                    {"glossy_samples", r.glossySamples},
+                    {"russian_roulette_depth", r.russianRouletteDepth},
+                    {"next_event_estimation", r.nextEventEstimation},
+                    {"multiple_importance", r.multipleImportance},
+                    {"background", toJson(r.background)}};
   // nlohmann prints doubles with enough digits to round-trip exactly.
   std::string text;
   prettyPrint(root, 0, text);
@@ -420,7 +660,8 @@ std::string SceneIO::serialize(const Scene& scene) {
 }
 
 void SceneIO::save(const Scene& scene, const std::string& path) {
-  const std::string text = serialize(scene);
+  // Mesh paths are written relative to the folder of the new file.
+  const std::string text = serialize(scene, std::filesystem::path(path).parent_path().string());
   // Write a temporary file beside the target, then rename: the target is either the old
   // file or the complete new one, never half written.
   std::string temp = path + ".XXXXXX";

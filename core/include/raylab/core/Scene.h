@@ -18,6 +18,14 @@ struct SceneObject {
   int material = 0;              ///< Index into Scene::materials.
   Vec3 velocity{0.0};            ///< Linear motion over the shutter interval: at ray time
                                  ///< tau in [0, 1] the shape is displaced by tau * velocity.
+  /// Mesh objects: the file the mesh was loaded from, as a path usable from the current
+  /// directory (the scene file's folder joined with the path written in it); empty for
+  /// shapes written out in the scene file. SceneIO saves it relative to the new file.
+  std::string source;
+  /// Mesh objects: world space from the mesh file's space, the transform applied to the
+  /// file's vertices (SceneIO saves it as the object's "transform"). Keep it in step by
+  /// moving objects with apply().
+  Mat4 worldFromSource{1.0};
 
   SceneObject() = default;
   SceneObject(std::string objectName, std::unique_ptr<Shape> objectShape, int materialIndex)
@@ -26,6 +34,8 @@ struct SceneObject {
   SceneObject& operator=(const SceneObject& o);
   SceneObject(SceneObject&&) noexcept = default;
   SceneObject& operator=(SceneObject&&) noexcept = default;
+  /// Transforms the shape in world space (new = m * old) and worldFromSource with it.
+  void apply(const Mat4& m);
   std::string toString() const;
 };
 
