@@ -33,6 +33,17 @@ struct SpecularLobes {
  * `wi` away from the surface; both unit, world space. `si.n` is the outward geometric
  * normal and `si.frontFace` says whether wo is on its side (outside for solids).
  * The refractive index is `material.ior` inside over 1 outside.
+ *
+ * Materials (details and hand-checked values in Bsdf.cpp and TestBsdf.cpp):
+ * Diffuse is Lambert, colour / pi. Glossy is the modified Phong model (Lafortune and
+ * Willems 1994): (1 - specular) colour / pi + specular (n + 2) / (2 pi) cos^n(alpha), alpha
+ * the angle to the mirror direction; sampled as a mixture of the normalised Phong lobe and
+ * the cosine hemisphere. Mirror splits into reflectionRate * colour and refractionRate *
+ * colour (the refracted share is reflected on total internal reflection); Dielectric into
+ * R * colour and (1 - R) * colour with the Fresnel reflectance R.
+ * Radiance is NOT scaled by eta^2 when refracting (as in smallpt): a refracted ray carries
+ * the transmittance only. Paths from the camera leave a glass object before they can reach
+ * a light, so the factors would cancel; weights stay <= 1.
  */
 namespace bsdf {
 
