@@ -4,16 +4,20 @@
 #include "raylab/core/Tracer.h"
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 
 namespace raylab {
 
 /// Figures of a finished (or cancelled) render.
 struct RenderStats {
-  RayCounts rays;           ///< Rays traced by kind.
-  int samplesPerPixel = 0;  ///< Samples completed in every pixel.
-  double seconds = 0.0;     ///< Wall-clock time of render().
-  bool cancelled = false;
+  RayCounts rays;                      ///< Rays traced by kind.
+  int samplesPerPixel = 0;             ///< Samples completed in every pixel.
+  double seconds = 0.0;                ///< Wall-clock time of render().
+  bool cancelled = false;              ///< True when cancel() stopped the render before the end.
+  std::uint64_t nonFiniteSamples = 0;  ///< NaN / Inf estimates from the tracer, counted
+                                       ///< as black so they never reach the image (a
+                                       ///< tracer bug when non-zero).
 };
 
 /**
@@ -23,11 +27,16 @@ struct RenderStats {
  * Deterministic: pixel (x, y) is the mean of Tracer::trace(x, y, s) for s = 0 .. spp-1,
  * summed in sample order, so the image depends on scene, settings and seed — never on
  * the thread count or the scheduling.
+ *
+ * Passes add 1, 1, 2, 4, 8, ... samples per pixel (doubling the total each time) until
+ * samplesPerPixel; each pass cuts the image into 16 x 16 tiles that the worker threads
+ * take from a shared counter. A cancelled render returns the image of the last complete
+ * pass. The scene passed in must outlive the renderer.
  */
 class Renderer {
  public:
   /// Called after each pass with the fraction done and the image so far.
-  using Progress = std::function<void(double fraction, const Image& image)>;
+  using Progress = std::function<void(double fraction, const FloatImage& image)>;
 
   Renderer(const Scene& scene, const RenderSettings& settings);
 
@@ -38,7 +47,7 @@ class Renderer {
   void cancel() { m_cancel = true; }
 
   /// Renders at the scene camera's width x height.
-  Image render();
+  FloatImage render();
   const RenderStats& stats() const { return m_stats; }
   const Tracer& tracer() const { return m_tracer; }
 

@@ -1,0 +1,161 @@
+#include "raylab/core/Image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace raylab::imageio {
+
+namespace {
+
+/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: the
+/// target is either unchanged or complete.
+void writeAtomically(const std::string& path, const std::string& bytes) {
+  std::string temp = path + ".XXXXXX";
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) throw WriteError(path + ": cannot create a temporary file next to it");
+  ::fchmod(fd, 0644);  // mkstemp makes the file private; an image is an ordinary file
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n <= 0) {
+      ::close(fd);
+      ::unlink(temp.c_str());
+      throw WriteError(path + ": write failed (disk full?); the file was not changed");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0) {
+    ::unlink(temp.c_str());
+    throw WriteError(path + ": could not flush the file; the file was not changed");
+  }
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    ::unlink(temp.c_str());
+    throw WriteError(path + ": could not replace the file; it was not changed");
+  }
+}
+
+void checkSize(const FloatImage& image, const std::string& path) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.pixels.size() != std::size_t(image.width) * image.height)
+    throw WriteError(path + ": image is empty or its pixel count does not match " +
+                     std::to_string(image.width) + "x" + std::to_string(image.height));
+}
+
+bool hostIsLittleEndian() {
+  const std::uint32_t one = 1;
+  unsigned char first = 0;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+float byteSwapped(float v) {
+  unsigned char b[4];
+  std::memcpy(b, &v, 4);
+  std::swap(b[0], b[3]);
+  std::swap(b[1], b[2]);
+  std::memcpy(&v, b, 4);
+  return v;
+}
+
+}  // namespace
+
+void writePfm(const FloatImage& image, const std::string& path) {
+  checkSize(image, path);
+  // Header: "PF" (colour), size, and a negative scale for little-endian data.
+  std::string bytes =
+      "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
+  const std::size_t header = bytes.size();
+  bytes.resize(header + std::size_t(image.width) * image.height * 12);
+  char* out = bytes.data() + header;
+  const bool swap = !hostIsLittleEndian();
+  // PFM stores the bottom row first.
+  for (int y = image.height - 1; y >= 0; --y)
+    for (int x = 0; x < image.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v = swap ? byteSwapped(image.at(x, y)[c]) : image.at(x, y)[c];
+        std::memcpy(out, &v, 4);
+        out += 4;
+      }
+  writeAtomically(path, bytes);
+}
+
+FloatImage readPfm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ReadError(path + ": cannot open image file");
+  std::string magic;
+  int width = 0, height = 0;
+  double scale = 0.0;
+  in >> magic >> width >> height >> scale;
+  if (!in || magic != "PF")
+    throw ReadError(path + ": not a colour PFM file (expected the \"PF\" header)");
+  if (width <= 0 || height <= 0 || width > 65536 || height > 65536 || scale == 0.0)
+    throw ReadError(path + ": bad PFM header (size " + std::to_string(width) + "x" +
+                    std::to_string(height) + ", scale " + std::to_string(scale) + ")");
+  in.get();  // the single whitespace character after the scale
+  FloatImage image(width, height);
+  std::vector<float> row(std::size_t(width) * 3);
+  const bool swap = (scale < 0.0) != hostIsLittleEndian();
+  for (int y = height - 1; y >= 0; --y) {
+    in.read(reinterpret_cast<char*>(row.data()), std::streamsize(row.size() * 4));
+    if (!in) throw ReadError(path + ": truncated PFM data");
+    for (int x = 0; x < width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float v = row[std::size_t(x) * 3 + c];
+        image.at(x, y)[c] = swap ? byteSwapped(v) : v;
+      }
+  }
+  return image;
+}
+
+double srgbFromLinear(double linear) {
+  if (!(linear > 0.0)) return 0.0;  // also NaN
+  if (linear >= 1.0) return 1.0;
+  // The curve's linear toe below 0.0031308, then the 1/2.4 power segment.
+  if (linear <= 0.0031308) return 12.92 * linear;
+  return 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+std::uint8_t toSrgb8(double linear) {
+  return static_cast<std::uint8_t>(std::lround(255.0 * srgbFromLinear(linear)));
+}
+
+std::vector<std::uint8_t> toSrgb8(const FloatImage& image) {
+  std::vector<std::uint8_t> bytes;
+  bytes.reserve(image.pixels.size() * 3);
+  for (const glm::vec3& p : image.pixels)
+    for (int c = 0; c < 3; ++c) bytes.push_back(toSrgb8(p[c]));
+  return bytes;
+}
+
+void writePpm(const FloatImage& image, const std::string& path) {
+  checkSize(image, path);
+  const std::vector<std::uint8_t> rgb = toSrgb8(image);
+  std::string bytes =
+      "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
+  bytes.append(reinterpret_cast<const char*>(rgb.data()), rgb.size());
+  writeAtomically(path, bytes);
+}
+
+double rmse(const FloatImage& a, const FloatImage& b) {
+  if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size())
+    throw std::invalid_argument("rmse: images differ in size (" + std::to_string(a.width) + "x" +
+                                std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
+                                std::to_string(b.height) + ")");
+  if (a.pixels.empty()) return 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double d = double(a.pixels[i][c]) - double(b.pixels[i][c]);
+      sum += d * d;
+    }
+  return std::sqrt(sum / (3.0 * double(a.pixels.size())));
+}
+
+}  // namespace raylab::imageio
