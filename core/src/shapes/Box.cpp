@@ -1,5 +1,6 @@
 #include "raylab/core/Box.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raylab {
@@ -197,6 +198,51 @@ std::array<Point3, 8> Box::vertices() const {
   for (int k = 0; k < 8; ++k) v[k] = m_worldFromBox.transformPoint(canonicalVertex(k));
   return v;
 }
+
+Vec3 Box::faceAreas() const {
+  // Face pair i spans columns j and k of worldFromBox over [-1, 1]^2: the parallelogram
+  // of edges 2 col_j and 2 col_k.
+  const Mat4& m = m_worldFromBox.matrix();
+  Vec3 areas;
+  for (int i = 0; i < 3; ++i)
+    areas[i] = 4.0 * glm::length(glm::cross(Vec3(m[(i + 1) % 3]), Vec3(m[(i + 2) % 3])));
+  return areas;
+}
+
+double Box::area() const {
+  const Vec3 a = faceAreas();
+  return 2.0 * (a.x + a.y + a.z);
+}
+
+ShapeSample Box::sampleArea(const Vec2& u) const {
+  // Pick one of the six faces in proportion to its area, reusing u.x for the position
+  // within the face after rescaling it to [0, 1).
+  const Vec3 a = faceAreas();
+  const double total = 2.0 * (a.x + a.y + a.z);
+  double target = u.x * total;
+  int face = 5;
+  for (int f = 0; f < 6; ++f) {
+    if (target < a[f / 2]) {
+      face = f;
+      break;
+    }
+    target -= a[f / 2];
+  }
+  const double s = std::clamp(target / a[face / 2], 0.0, 1.0);
+  // Place the point on the face in box coordinates, then map it to the world.
+  const int axis = face / 2, a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+  Point3 b;
+  b[axis] = (face % 2) ? 1.0 : -1.0;
+  b[a1] = 2.0 * s - 1.0;
+  b[a2] = 2.0 * u.y - 1.0;
+  ShapeSample sample;
+  sample.p = m_worldFromBox.transformPoint(b);
+  sample.n = faceNormal(face);
+  sample.pdfArea = 1.0 / total;
+  return sample;
+}
+
+double Box::pdfArea(const Point3&) const { return 1.0 / area(); }
 
 std::string Box::toString() const {
   return "Box[centre=" + raylab::toString(centre()) + ", size=" + raylab::toString(size()) +

@@ -86,6 +86,15 @@ Bounds3 Plane::bounds() const {
   return b;
 }
 
+double Plane::area() const { return kInfinity; }
+
+ShapeSample Plane::sampleArea(const Vec2&) const {
+  throw InvalidGeometry("a plane cannot be a light: its area is infinite (" + toString() +
+                        "); use a quad for an area light");
+}
+
+double Plane::pdfArea(const Point3&) const { return 0.0; }
+
 std::string Plane::toString() const {
   return "Plane[point=" + raylab::toString(m_point) + ", normal=" + raylab::toString(m_normal) +
          "]";

@@ -75,6 +75,17 @@ Bounds3 Quad::bounds() const {
 
 double Quad::area() const { return glm::length(glm::cross(m_u, m_v)); }
 
+ShapeSample Quad::sampleArea(const Vec2& u) const {
+  // (s, t) uniform in [0, 1]^2 is uniform on a parallelogram (the map is linear).
+  ShapeSample s;
+  s.p = m_corner + u.x * m_u + u.y * m_v;
+  s.n = m_normal;
+  s.pdfArea = 1.0 / area();
+  return s;
+}
+
+double Quad::pdfArea(const Point3&) const { return 1.0 / area(); }
+
 std::string Quad::toString() const {
   return "Quad[corner=" + raylab::toString(m_corner) + ", u=" + raylab::toString(m_u) +
          ", v=" + raylab::toString(m_v) + "]";

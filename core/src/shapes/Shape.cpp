@@ -20,18 +20,6 @@ const char* toString(ShapeKind kind) {
   return "unknown";
 }
 
-double Shape::area() const {
-  throw NotImplemented(std::string(raylab::toString(kind())) + "::area");
-}
-
-ShapeSample Shape::sampleArea(const Vec2&) const {
-  throw NotImplemented(std::string(raylab::toString(kind())) + "::sampleArea");
-}
-
-double Shape::pdfArea(const Point3&) const {
-  throw NotImplemented(std::string(raylab::toString(kind())) + "::pdfArea");
-}
-
 std::optional<SurfaceInteraction> Shape::closestHit(const Ray& ray) const {
   const std::optional<Hit> hit = intersect(ray);
   if (!hit) return std::nullopt;

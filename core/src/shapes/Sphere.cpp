@@ -1,7 +1,9 @@
 #include "raylab/core/Sphere.h"
 
 #include "raylab/core/Check.h"
+#include "raylab/core/Sampling.h"
 
+#include <array>
 #include <cmath>
 
 namespace raylab {
@@ -20,6 +22,35 @@ Vec2 sphericalUv(const Vec3& unit) {
   return {phi / (2.0 * kPi), theta / kPi};
 }
 
+/// Nodes and weights of the N-point Gauss-Legendre rule on [-1, 1] (exact for
+/// polynomials of degree 2N - 1), found by Newton's method on P_N (Numerical Recipes 4.6).
+template <int N>
+struct GaussLegendre {
+  std::array<double, N> x{}, w{};
+  GaussLegendre() {
+    for (int i = 0; i < N; ++i) {
+      // Start from the Chebyshev-like estimate of root i, then polish with Newton.
+      double z = std::cos(kPi * (i + 0.75) / (N + 0.5));
+      double dp = 1.0;
+      for (int iteration = 0; iteration < 100; ++iteration) {
+        // P_N(z) and its derivative by the three-term recurrence.
+        double p0 = 1.0, p1 = 0.0;
+        for (int k = 1; k <= N; ++k) {
+          const double p2 = p1;
+          p1 = p0;
+          p0 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p2) / k;
+        }
+        dp = N * (z * p0 - p1) / (z * z - 1.0);
+        const double step = p0 / dp;
+        z -= step;
+        if (std::abs(step) < 1e-16) break;
+      }
+      x[i] = z;
+      w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+    }
+  }
+};
+
 }  // namespace
 
 Sphere::Sphere(const Point3& centre, double radius, int m, int n)
@@ -30,6 +61,7 @@ Sphere::Sphere(const Point3& centre, double radius, int m, int n)
     throw InvalidGeometry("sphere radius must be positive and finite, got " +
                           std::to_string(radius));
   setTessellation(m, n);
+  updateArea();
 }
 
 void Sphere::setTessellation(int m, int n) {
@@ -129,10 +161,65 @@ void Sphere::apply(const Mat4& matrix) {
     // Rotation, translation and uniform scale keep a sphere a sphere.
     m_centre = t.transformPoint(m_centre);
     m_radius *= t.uniformScale();
+    updateArea();
     return;
   }
   m_worldFromObject = t * m_worldFromObject;
   m_hasTransform = !m_worldFromObject.isIdentity();
+  updateArea();
+}
+
+double Sphere::areaScale(const Vec3& objectNormal) const {
+  if (!m_hasTransform) return 1.0;
+  // A small patch dA with normal n maps to |det L| |L^-T n| dA (Nanson's formula).
+  const Mat3 linear(m_worldFromObject.matrix());
+  return std::abs(glm::determinant(linear)) *
+         glm::length(m_worldFromObject.normalMatrix() * objectNormal);
+}
+
+void Sphere::updateArea() {
+  const double sphereArea = 4.0 * kPi * m_radius * m_radius;
+  if (!m_hasTransform) {
+    m_area = sphereArea;
+    return;
+  }
+  // The ellipsoid's area is the sphere's area weighted by areaScale: integrate over the
+  // unit sphere, Gauss-Legendre in z = cos(theta) and the trapezoid rule in phi (exact
+  // to rounding for smooth periodic integrands).
+  static const GaussLegendre<64> rule;
+  constexpr int kPhiSteps = 128;
+  double sum = 0.0;
+  for (int i = 0; i < 64; ++i) {
+    const double z = rule.x[i];
+    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+    double ring = 0.0;
+    for (int j = 0; j < kPhiSteps; ++j) {
+      const double phi = 2.0 * kPi * j / kPhiSteps;
+      ring += areaScale(Vec3(s * std::cos(phi), s * std::sin(phi), z));
+    }
+    sum += rule.w[i] * ring * (2.0 * kPi / kPhiSteps);
+  }
+  m_area = m_radius * m_radius * sum;
+}
+
+double Sphere::area() const { return m_area; }
+
+ShapeSample Sphere::sampleArea(const Vec2& u) const {
+  // Uniform on the round sphere in object space; the transform stretches the density by
+  // 1 / areaScale at each point, which pdfArea reports.
+  const Vec3 radial = sampleUniformSphere(u);
+  const Point3 object = m_centre + m_radius * radial;
+  ShapeSample s;
+  s.p = m_hasTransform ? m_worldFromObject.transformPoint(object) : object;
+  s.n = m_hasTransform ? m_worldFromObject.transformNormal(radial) : radial;
+  s.pdfArea = 1.0 / (4.0 * kPi * m_radius * m_radius * areaScale(radial));
+  return s;
+}
+
+double Sphere::pdfArea(const Point3& p) const {
+  if (!m_hasTransform) return 1.0 / m_area;
+  const Vec3 radial = glm::normalize(m_worldFromObject.inverseTransformPoint(p) - m_centre);
+  return 1.0 / (4.0 * kPi * m_radius * m_radius * areaScale(radial));
 }
 
 Bounds3 Sphere::bounds() const {

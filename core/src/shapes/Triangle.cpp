@@ -1,5 +1,6 @@
 #include "raylab/core/Triangle.h"
 
+#include "raylab/core/Sampling.h"
 #include "raylab/core/Transform.h"
 
 #include <cmath>
@@ -115,6 +116,21 @@ Bounds3 Triangle::bounds() const {
   b.extend(m_p[2]);
   return b;
 }
+
+double Triangle::area() const {
+  return 0.5 * glm::length(glm::cross(m_p[1] - m_p[0], m_p[2] - m_p[0]));
+}
+
+ShapeSample Triangle::sampleArea(const Vec2& u) const {
+  const Vec2 b = sampleUniformTriangle(u);
+  ShapeSample s;
+  s.p = (1.0 - b.x - b.y) * m_p[0] + b.x * m_p[1] + b.y * m_p[2];
+  s.n = normal(s.p);
+  s.pdfArea = 1.0 / area();
+  return s;
+}
+
+double Triangle::pdfArea(const Point3&) const { return 1.0 / area(); }
 
 std::string Triangle::toString() const {
   return "Triangle[" + raylab::toString(m_p[0]) + ", " + raylab::toString(m_p[1]) + ", " +

@@ -1,8 +1,10 @@
 #include "raylab/core/TriangleMesh.h"
 
 #include "raylab/core/Bvh.h"
+#include "raylab/core/Sampling.h"
 #include "raylab/core/Transform.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -47,13 +49,17 @@ TriangleMesh::TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> tri
 TriangleMesh::TriangleMesh(const TriangleMesh& other)
     : m_vertices(other.m_vertices),
       m_triangles(other.m_triangles),
-      m_bvh(std::make_unique<Bvh>(*other.m_bvh)) {}
+      m_bvh(std::make_unique<Bvh>(*other.m_bvh)),
+      m_areaCdf(other.m_areaCdf),
+      m_area(other.m_area) {}
 
 TriangleMesh& TriangleMesh::operator=(const TriangleMesh& other) {
   if (this != &other) {
     m_vertices = other.m_vertices;
     m_triangles = other.m_triangles;
     m_bvh = std::make_unique<Bvh>(*other.m_bvh);
+    m_areaCdf = other.m_areaCdf;
+    m_area = other.m_area;
   }
   return *this;
 }
@@ -62,7 +68,47 @@ TriangleMesh::TriangleMesh(TriangleMesh&&) noexcept = default;
 TriangleMesh& TriangleMesh::operator=(TriangleMesh&&) noexcept = default;
 TriangleMesh::~TriangleMesh() = default;
 
-void TriangleMesh::rebuild() { m_bvh = std::make_unique<Bvh>(m_vertices, m_triangles); }
+void TriangleMesh::rebuild() {
+  m_bvh = std::make_unique<Bvh>(m_vertices, m_triangles);
+  // The running sum of triangle areas: the CDF that area sampling inverts.
+  m_areaCdf.resize(m_triangles.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < m_triangles.size(); ++i) {
+    const Index3& tri = m_triangles[i];
+    const Point3& p0 = m_vertices[tri[0]];
+    sum += 0.5 * glm::length(glm::cross(m_vertices[tri[1]] - p0, m_vertices[tri[2]] - p0));
+    m_areaCdf[i] = sum;
+  }
+  m_area = sum;
+}
+
+double TriangleMesh::area() const { return m_area; }
+
+ShapeSample TriangleMesh::sampleArea(const Vec2& u) const {
+  if (!(m_area > 0.0))
+    throw InvalidGeometry("triangle mesh has no area to sample (" + toString() + ")");
+  // Pick triangle i with probability area_i / area: the first running sum above
+  // u.x * area (zero-area triangles are never picked).
+  const double target = u.x * m_area;
+  auto it = std::upper_bound(m_areaCdf.begin(), m_areaCdf.end(), target);
+  if (it == m_areaCdf.end()) it = std::lower_bound(m_areaCdf.begin(), m_areaCdf.end(), m_area);
+  const std::size_t i = static_cast<std::size_t>(it - m_areaCdf.begin());
+  const double before = i == 0 ? 0.0 : m_areaCdf[i - 1];
+  // Reuse u.x, rescaled to [0, 1) within the chosen triangle's interval.
+  const double reused = std::clamp((target - before) / (m_areaCdf[i] - before), 0.0, 1.0);
+  const Vec2 b = sampleUniformTriangle({reused, u.y});
+  const Index3& tri = m_triangles[i];
+  const Point3& p0 = m_vertices[tri[0]];
+  const Point3& p1 = m_vertices[tri[1]];
+  const Point3& p2 = m_vertices[tri[2]];
+  ShapeSample s;
+  s.p = (1.0 - b.x - b.y) * p0 + b.x * p1 + b.y * p2;
+  s.n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  s.pdfArea = 1.0 / m_area;
+  return s;
+}
+
+double TriangleMesh::pdfArea(const Point3&) const { return m_area > 0.0 ? 1.0 / m_area : 0.0; }
 
 std::optional<Hit> TriangleMesh::intersect(const Ray& ray) const { return m_bvh->intersect(ray); }
 

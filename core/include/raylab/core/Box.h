@@ -39,6 +39,10 @@ class Box final : public Shape {
   Bounds3 bounds() const override;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Box>(*this); }
   std::string toString() const override;
+  /// Uniform over the six faces (a parallelepiped's faces are parallelograms).
+  double area() const override;
+  ShapeSample sampleArea(const Vec2& u) const override;
+  double pdfArea(const Point3& p) const override;
 
   Point3 centre() const;
   /// Unit direction of box axis i (0, 1, 2), world space.
@@ -65,6 +69,8 @@ class Box final : public Shape {
   std::optional<Span> span(const Ray& ray) const;
   /// Recomputes the slab planes from worldFromBox.
   void updateSlabs();
+  /// Area of one face of each pair (faces 2i and 2i + 1 are congruent), world units^2.
+  Vec3 faceAreas() const;
 
   Transform m_worldFromBox;
   /// Slab i is {x : |dot(m_slabNormal[i], x) - m_slabCentre[i]| <= m_slabHalf[i]}.

@@ -25,6 +25,11 @@ class Plane final : public Shape {
   Bounds3 bounds() const override;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Plane>(*this); }
   std::string toString() const override;
+  /// Infinite; a plane cannot be an area light: sampleArea throws InvalidGeometry and
+  /// pdfArea is 0.
+  double area() const override;
+  ShapeSample sampleArea(const Vec2& u) const override;
+  double pdfArea(const Point3& p) const override;
 
   const Point3& point() const { return m_point; }
   const Normal3& planeNormal() const { return m_normal; }

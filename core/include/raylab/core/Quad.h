@@ -29,7 +29,10 @@ class Quad final : public Shape {
   const Point3& corner() const { return m_corner; }
   const Vec3& edgeU() const { return m_u; }
   const Vec3& edgeV() const { return m_v; }
-  double area() const;
+  /// |edgeU x edgeV|; sampled uniformly in (s, t).
+  double area() const override;
+  ShapeSample sampleArea(const Vec2& u) const override;
+  double pdfArea(const Point3& p) const override;
 
  private:
   void update();

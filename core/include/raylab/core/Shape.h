@@ -99,11 +99,13 @@ class Shape {
   virtual std::string toString() const = 0;
 
   /// Surface area, world units squared (infinite for a plane).
-  virtual double area() const;
-  /// A point on the surface for u in [0,1)^2, for area lights.
-  virtual ShapeSample sampleArea(const Vec2& u) const;
-  /// Density per unit area with which sampleArea picks the surface point p.
-  virtual double pdfArea(const Point3& p) const;
+  virtual double area() const = 0;
+  /// A point on the surface for u in [0,1)^2, for area lights (world space). Throws
+  /// InvalidGeometry for shapes that cannot be sampled (a plane, a mesh without area).
+  virtual ShapeSample sampleArea(const Vec2& u) const = 0;
+  /// Density per unit world area with which sampleArea picks the surface point p (p must
+  /// lie on the surface; world space).
+  virtual double pdfArea(const Point3& p) const = 0;
 
   /// Both phases at once: nearest hit and its geometry.
   std::optional<SurfaceInteraction> closestHit(const Ray& ray) const;

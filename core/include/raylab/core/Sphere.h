@@ -31,6 +31,11 @@ class Sphere final : public Shape {
   Bounds3 bounds() const override;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Sphere>(*this); }
   std::string toString() const override;
+  /// Exact for a sphere; for an ellipsoid by Gauss-Legendre quadrature (no closed form),
+  /// computed once per apply().
+  double area() const override;
+  ShapeSample sampleArea(const Vec2& u) const override;
+  double pdfArea(const Point3& p) const override;
 
   /// Centre in object space (equals world space while worldFromObject is the identity).
   const Point3& centre() const { return m_centre; }
@@ -47,6 +52,11 @@ class Sphere final : public Shape {
  private:
   /// Both roots of the ray in object space, t0 <= t1; nothing when the ray misses.
   std::optional<std::pair<double, double>> roots(const Ray& objectRay) const;
+  /// Ratio of world to object area at the object-space unit normal n of the sphere:
+  /// |det L| |L^-T n| for the linear part L of worldFromObject (1 without a transform).
+  double areaScale(const Vec3& objectNormal) const;
+  /// Recomputes m_area after a change of radius or transform.
+  void updateArea();
 
   Point3 m_centre;
   double m_radius;
@@ -54,6 +64,7 @@ class Sphere final : public Shape {
   int m_n;
   Transform m_worldFromObject;
   bool m_hasTransform = false;
+  double m_area = 0.0;  ///< World-space surface area.
 };
 
 }  // namespace raylab

@@ -46,6 +46,10 @@ class Triangle final : public Shape {
   Bounds3 bounds() const override;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Triangle>(*this); }
   std::string toString() const override;
+  /// Half |(p1 - p0) x (p2 - p0)|; sampled uniformly (square-root warp).
+  double area() const override;
+  ShapeSample sampleArea(const Vec2& u) const override;
+  double pdfArea(const Point3& p) const override;
 
   const Point3& vertex(int i) const { return m_p[i]; }
 

@@ -40,6 +40,11 @@ class TriangleMesh final : public Shape {
   Bounds3 bounds() const override;
   std::unique_ptr<Shape> clone() const override;
   std::string toString() const override;
+  /// Sum of the triangles' areas; sampled by picking a triangle from the area CDF, then
+  /// a uniform point on it. sampleArea throws InvalidGeometry for a mesh of zero area.
+  double area() const override;
+  ShapeSample sampleArea(const Vec2& u) const override;
+  double pdfArea(const Point3& p) const override;
 
   const std::vector<Point3>& vertices() const { return m_vertices; }
   const std::vector<Index3>& triangles() const { return m_triangles; }
@@ -52,6 +57,8 @@ class TriangleMesh final : public Shape {
   std::vector<Point3> m_vertices;
   std::vector<Index3> m_triangles;
   std::unique_ptr<Bvh> m_bvh;
+  std::vector<double> m_areaCdf;  ///< Running sum of triangle areas (unnormalised).
+  double m_area = 0.0;            ///< Total area, world units^2.
 };
 
 }  // namespace raylab

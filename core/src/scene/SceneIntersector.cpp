@@ -1,0 +1,156 @@
+#include "raylab/core/SceneIntersector.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+/// Rec. 709 luminance: lights are picked by the luminance of their power.
+double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+/// The ray in the frame of an object moving with `velocity`: at ray time tau the object
+/// is displaced by tau * velocity, which is the same as moving the ray origin back.
+Ray toObjectFrame(const Ray& ray, const Vec3& velocity) {
+  Ray r = ray;
+  r.origin -= ray.time * velocity;
+  return r;
+}
+
+bool isMoving(const SceneObject& object) {
+  return object.velocity.x != 0.0 || object.velocity.y != 0.0 || object.velocity.z != 0.0;
+}
+
+}  // namespace
+
+SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(&scene) {
+  // Every object with an emissive material is an area light; it is picked with
+  // probability proportional to its power, luminance(emission) * area (the radiance is
+  // uniform, so power = pi * L * area for one-sided emission; the pi cancels).
+  double total = 0.0;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& object = scene.objects[i];
+    if (object.material < 0 || object.material >= static_cast<int>(scene.materials.size()))
+      continue;
+    const Material& material = scene.materials[static_cast<std::size_t>(object.material)];
+    if (!material.isEmitter() || !object.shape) continue;
+    const double area = object.shape->area();
+    if (!(area > 0.0) || !std::isfinite(area))
+      throw Shape::InvalidGeometry("object '" + object.name + "' has emissive material '" +
+                                   material.name + "' but its area (" + std::to_string(area) +
+                                   ") cannot be sampled: a plane cannot be a light, use a quad");
+    m_lights.push_back(static_cast<int>(i));
+    total += luminance(material.emission) * area;
+    m_lightCdf.push_back(total);
+  }
+  for (double& c : m_lightCdf) c /= total;
+  if (!m_lightCdf.empty()) m_lightCdf.back() = 1.0;
+}
+
+std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
+  // Nearest hit over all objects: each accepted hit shortens the ray, so later objects
+  // only report closer hits.
+  Ray r = ray;
+  int nearest = -1;
+  Hit nearestHit;
+  const auto& objects = m_scene->objects;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const SceneObject& object = objects[i];
+    const bool moving = isMoving(object);
+    const std::optional<Hit> hit =
+        object.shape->intersect(moving ? toObjectFrame(r, object.velocity) : r);
+    if (hit) {
+      nearest = static_cast<int>(i);
+      nearestHit = *hit;
+      r.tMax = hit->t;
+    }
+  }
+  if (nearest < 0) return std::nullopt;
+
+  // Surface geometry of the nearest hit only, moved back to where the object is at the
+  // ray's time.
+  const SceneObject& object = objects[static_cast<std::size_t>(nearest)];
+  const bool moving = isMoving(object);
+  SceneHit out;
+  out.object = nearest;
+  out.si = object.shape->surfaceAt(moving ? toObjectFrame(ray, object.velocity) : ray, nearestHit);
+  if (moving) out.si.p += ray.time * object.velocity;
+  return out;
+}
+
+bool SceneIntersector::occluded(const Ray& ray) const {
+  // Any hit in range blocks: stop at the first one.
+  for (const SceneObject& object : m_scene->objects) {
+    const Ray r = isMoving(object) ? toObjectFrame(ray, object.velocity) : ray;
+    if (object.shape->intersect(r)) return true;
+  }
+  return false;
+}
+
+std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight,
+                                                         double uPick) const {
+  if (m_lights.empty()) return std::nullopt;
+  // Pick a light by power: the first CDF entry above uPick.
+  const auto it = std::upper_bound(m_lightCdf.begin(), m_lightCdf.end(), uPick);
+  const std::size_t k =
+      std::min<std::size_t>(static_cast<std::size_t>(it - m_lightCdf.begin()), m_lights.size() - 1);
+  const double pick = m_lightCdf[k] - (k == 0 ? 0.0 : m_lightCdf[k - 1]);
+  const int index = m_lights[k];
+  const SceneObject& object = m_scene->objects[static_cast<std::size_t>(index)];
+
+  // A point on its surface, uniform in area (lights are sampled at rest: time 0).
+  const ShapeSample s = object.shape->sampleArea(uLight);
+  const Vec3 toLight = s.p - ref;
+  const double distance2 = glm::dot(toLight, toLight);
+  if (!(distance2 > 0.0)) return std::nullopt;
+  const double distance = std::sqrt(distance2);
+  const Vec3 wi = toLight / distance;
+
+  // Only the front side emits: the outward normal must face the reference point.
+  const double cosLight = -glm::dot(s.n, wi);
+  if (!(cosLight > 0.0)) return std::nullopt;
+
+  // Convert the area density to solid angle at ref: d omega = cos_light dA / d^2.
+  LightSample ls;
+  ls.object = index;
+  ls.p = s.p;
+  ls.n = s.n;
+  ls.wi = wi;
+  ls.distance = distance;
+  ls.Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
+  ls.pdf = s.pdfArea * distance2 / cosLight * pick;
+  if (!(ls.pdf > 0.0) || !std::isfinite(ls.pdf)) return std::nullopt;
+  return ls;
+}
+
+double SceneIntersector::lightPdf(const Point3& ref, int object,
+                                  const SurfaceInteraction& hit) const {
+  // The probability of picking this light (0 if it is not one).
+  const auto it = std::lower_bound(m_lights.begin(), m_lights.end(), object);
+  if (it == m_lights.end() || *it != object) return 0.0;
+  const std::size_t k = static_cast<std::size_t>(it - m_lights.begin());
+  const double pick = m_lightCdf[k] - (k == 0 ? 0.0 : m_lightCdf[k - 1]);
+
+  // The same conversion as sampleLight, and the same rule: back faces are never sampled.
+  const Vec3 toLight = hit.p - ref;
+  const double distance2 = glm::dot(toLight, toLight);
+  if (!(distance2 > 0.0)) return 0.0;
+  const double cosLight = -glm::dot(hit.n, toLight) / std::sqrt(distance2);
+  if (!(cosLight > 0.0)) return 0.0;
+  const Shape& shape = *m_scene->objects[static_cast<std::size_t>(object)].shape;
+  return shape.pdfArea(hit.p) * distance2 / cosLight * pick;
+}
+
+Vec3 SceneIntersector::emitted(int object, const SurfaceInteraction& hit,
+                               const Vec3& rayDirection) const {
+  if (object < 0 || object >= static_cast<int>(m_scene->objects.size())) return Vec3(0.0);
+  const int m = m_scene->objects[static_cast<std::size_t>(object)].material;
+  if (m < 0 || m >= static_cast<int>(m_scene->materials.size())) return Vec3(0.0);
+  const Material& material = m_scene->materials[static_cast<std::size_t>(m)];
+  // Emission leaves the front side only: the ray must arrive against the outward normal.
+  if (!material.isEmitter() || !(glm::dot(hit.n, rayDirection) < 0.0)) return Vec3(0.0);
+  return material.emission;
+}
+
+}  // namespace raylab
