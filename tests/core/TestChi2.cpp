@@ -1,0 +1,518 @@
+// Chi-square goodness-of-fit tests of every sampler against its density, in the manner of
+// Nori's chi2test and Mitsuba's ChiSquareTest: draw N samples, histogram them on a 2D grid,
+// integrate the claimed density over each cell numerically to get the expected counts,
+// pool cells expecting fewer than 5 samples, and compute the p-value of the chi-square
+// statistic. A sampler fails when p < alpha, where alpha is 1% Sidak-corrected over the
+// kPositiveTests tests of this file (so the whole file has a 1% false-alarm rate).
+// Each family also has a negative control — a sampler checked against a wrong density —
+// which must be rejected, so we know the test has teeth.
+//
+// Directions are binned in spherical coordinates (theta or cos theta, phi) around a chosen
+// axis; points on a disk in (r^2, phi). Where a density has a feature, the grid is chosen
+// to resolve it: theta bins for sharp Phong lobes, and for a sphere light a cone around
+// it with cells uniform in sqrt(cos theta - cos theta_max), so that the 1/cos singularity
+// of area sampling at the silhouette becomes smooth.
+#include "raylab/core/Bsdf.h"
+#include "raylab/core/Camera.h"
+#include "raylab/core/Quad.h"
+#include "raylab/core/Sampler.h"
+#include "raylab/core/Sampling.h"
+#include "raylab/core/SceneIntersector.h"
+#include "raylab/core/Sphere.h"
+
+#include <gtest/gtest.h>
+#include <boost/math/special_functions/gamma.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+/// Number of chi-square tests below that must pass (the Sidak correction's m).
+constexpr int kPositiveTests = 16;
+/// Overall significance level of the file.
+constexpr double kSignificance = 0.01;
+/// Per-test level: 1 - (1 - 0.01)^(1/16) = 6.28e-4.
+const double kAlpha = 1.0 - std::pow(1.0 - kSignificance, 1.0 / kPositiveTests);
+/// Cells expecting fewer samples than this are pooled (the usual rule for chi-square).
+constexpr double kMinExpected = 5.0;
+
+/// Where samples fell on a grid over [0, 1)^2.
+struct Histogram {
+  int nx = 0, ny = 0;
+  std::vector<double> counts;  ///< Row-major, nx * ny.
+  long long outside = 0;       ///< Samples outside the domain, where the density is 0.
+  long long rejected = 0;      ///< Sampler returned nothing (lost mass, allowed).
+};
+
+/// A sample's grid coordinates, nothing for a rejected sample; coordinates outside
+/// [0, 1]^2 mean "outside the domain".
+using SampleFn = std::function<std::optional<Vec2>()>;
+/// The claimed density with respect to grid coordinates (density x Jacobian).
+using DensityFn = std::function<double(double x, double y)>;
+
+Histogram histogram(int nx, int ny, long long n, const SampleFn& sample) {
+  Histogram h;
+  h.nx = nx;
+  h.ny = ny;
+  h.counts.assign(std::size_t(nx) * ny, 0.0);
+  for (long long i = 0; i < n; ++i) {
+    const std::optional<Vec2> g = sample();
+    if (!g) {
+      ++h.rejected;
+      continue;
+    }
+    if (!(g->x >= 0.0 && g->x <= 1.0 && g->y >= 0.0 && g->y <= 1.0)) {
+      ++h.outside;
+      continue;
+    }
+    const int ix = std::min(int(g->x * nx), nx - 1);
+    const int iy = std::min(int(g->y * ny), ny - 1);
+    h.counts[std::size_t(iy) * nx + ix] += 1.0;
+  }
+  return h;
+}
+
+/// Probability of each cell: the density integrated by a composite Gauss-Legendre rule,
+/// `sub` x `sub` sub-cells per cell with 2 x 2 or 4 x 4 nodes each (never at the cell
+/// edges, where densities may be singular or discontinuous).
+std::vector<double> integrate(int nx, int ny, const DensityFn& density, int sub, bool order4) {
+  static const double x2[] = {-0.5773502691896257, 0.5773502691896257};
+  static const double w2[] = {1.0, 1.0};
+  static const double x4[] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
+                              0.8611363115940526};
+  static const double w4[] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                              0.3478548451374538};
+  const double* xs = order4 ? x4 : x2;
+  const double* ws = order4 ? w4 : w2;
+  const int order = order4 ? 4 : 2;
+  std::vector<double> p(std::size_t(nx) * ny, 0.0);
+  const double hx = 1.0 / (nx * sub), hy = 1.0 / (ny * sub);
+  for (int iy = 0; iy < ny; ++iy)
+    for (int ix = 0; ix < nx; ++ix) {
+      double sum = 0.0;
+      for (int sy = 0; sy < sub; ++sy)
+        for (int sx = 0; sx < sub; ++sx) {
+          // Centre of the sub-cell, then the Gauss nodes around it.
+          const double cx = (ix * sub + sx + 0.5) * hx, cy = (iy * sub + sy + 0.5) * hy;
+          for (int a = 0; a < order; ++a)
+            for (int b = 0; b < order; ++b)
+              sum += ws[a] * ws[b] * density(cx + 0.5 * hx * xs[a], cy + 0.5 * hy * xs[b]);
+        }
+      p[std::size_t(iy) * nx + ix] = sum * 0.25 * hx * hy;
+    }
+  return p;
+}
+
+struct Chi2Result {
+  double statistic = 0.0;
+  int dof = 0;
+  double pValue = 0.0;
+  std::string failure;  ///< Set when the test failed outright (sample where none expected).
+};
+
+/// Pearson's chi-square test of the histogram against n * probabilities, with the cells
+/// of low expectation pooled (Nori's chi2test).
+Chi2Result chi2Test(const Histogram& h, const std::vector<double>& probability, long long n) {
+  Chi2Result r;
+  if (h.outside > 0) {
+    r.failure = std::to_string(h.outside) + " samples outside the density's domain";
+    return r;
+  }
+  // Sort the cells by expected count so low-expectation cells are pooled first.
+  std::vector<std::pair<double, double>> cells;  // (expected, observed)
+  for (std::size_t i = 0; i < h.counts.size(); ++i)
+    cells.emplace_back(probability[i] * double(n), h.counts[i]);
+  std::sort(cells.begin(), cells.end());
+  double pooledExpected = 0.0, pooledObserved = 0.0;
+  for (const auto& [expected, observed] : cells) {
+    if (expected <= 0.0) {
+      if (observed > 0.0) {
+        r.failure = std::to_string(long(observed)) + " samples in a cell of zero density";
+        return r;
+      }
+    } else if (expected < kMinExpected || (pooledExpected > 0.0 && pooledExpected < kMinExpected)) {
+      // Too few expected: into the pool (and the pool into the next cell until it is big
+      // enough).
+      pooledExpected += expected;
+      pooledObserved += observed;
+    } else {
+      r.statistic += (observed - expected) * (observed - expected) / expected;
+      ++r.dof;
+    }
+  }
+  if (pooledExpected > 0.0) {
+    r.statistic +=
+        (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
+    ++r.dof;
+  }
+  // One degree of freedom is lost to the fixed total.
+  r.dof -= 1;
+  if (r.dof < 1) {
+    r.failure = "too few cells for a chi-square test";
+    return r;
+  }
+  r.pValue = boost::math::gamma_q(0.5 * r.dof, 0.5 * r.statistic);
+  return r;
+}
+
+/// Runs one test and prints its figures.
+Chi2Result runChi2(const std::string& name, int nx, int ny, long long n, const SampleFn& sample,
+                   const DensityFn& density, int sub = 4, bool order4 = true) {
+  const Histogram h = histogram(nx, ny, n, sample);
+  const std::vector<double> p = integrate(nx, ny, density, sub, order4);
+  double total = 0.0;
+  for (double v : p) total += v;
+  const Chi2Result r = chi2Test(h, p, n);
+  std::printf("chi2 %-44s statistic=%10.1f dof=%5d p=%.4g%s (integral %.6f, rejected %lld)\n",
+              name.c_str(), r.statistic, r.dof, r.pValue,
+              r.failure.empty() ? "" : (" FAILED: " + r.failure).c_str(), total, h.rejected);
+  ::testing::Test::RecordProperty("p_" + name, std::to_string(r.pValue));
+  return r;
+}
+
+void expectAccepted(const Chi2Result& r, const std::string& name) {
+  EXPECT_TRUE(r.failure.empty()) << name << ": " << r.failure;
+  EXPECT_GE(r.pValue, kAlpha) << name << ": chi2 = " << r.statistic << ", dof = " << r.dof;
+}
+
+void expectRejected(const Chi2Result& r, const std::string& name) {
+  EXPECT_TRUE(!r.failure.empty() || r.pValue < kAlpha)
+      << name << " (negative control) was accepted: p = " << r.pValue;
+}
+
+/// How the polar coordinate of a direction maps to the grid's x.
+enum class Polar {
+  Cos,       ///< x uniform in cos theta, from 1 down to cMin.
+  Theta,     ///< x uniform in theta, from 0 to acos(cMin).
+  SqrtEdge,  ///< x uniform in 1 - sqrt((cos theta - cMin) / (1 - cMin)): smooth at a
+             ///< 1/sqrt singularity on the cone's edge.
+};
+
+/// Directions around an axis, as grid coordinates (x: polar, y: phi / 2 pi).
+struct SphereGrid {
+  Frame frame;
+  Polar polar = Polar::Cos;
+  double cMin = -1.0;  ///< Cosine of the domain's largest polar angle.
+
+  Vec2 toGrid(const Vec3& w) const {
+    const Vec3 l = frame.toLocal(w);
+    double c = glm::clamp(l.z, -1.0, 1.0);
+    // Rounding may put a sample on the cone's edge just outside it.
+    if (c < cMin - 1e-9) return {-1.0, -1.0};
+    c = std::max(c, cMin);
+    double x = 0.0;
+    switch (polar) {
+      case Polar::Cos:
+        x = (1.0 - c) / (1.0 - cMin);
+        break;
+      case Polar::Theta:
+        x = std::acos(c) / std::acos(cMin);
+        break;
+      case Polar::SqrtEdge:
+        x = 1.0 - std::sqrt((c - cMin) / (1.0 - cMin));
+        break;
+    }
+    double phi = std::atan2(l.y, l.x);
+    if (phi < 0.0) phi += 2.0 * kPi;
+    return {x, phi / (2.0 * kPi)};
+  }
+
+  /// The direction at grid point (x, y) and the Jacobian d omega / (dx dy).
+  std::pair<Vec3, double> at(double x, double y) const {
+    double c = 0.0, dcdx = 0.0;
+    switch (polar) {
+      case Polar::Cos:
+        c = 1.0 - (1.0 - cMin) * x;
+        dcdx = 1.0 - cMin;
+        break;
+      case Polar::Theta: {
+        const double thetaMax = std::acos(cMin);
+        c = std::cos(thetaMax * x);
+        dcdx = thetaMax * std::sin(thetaMax * x);
+        break;
+      }
+      case Polar::SqrtEdge:
+        c = cMin + (1.0 - cMin) * (1.0 - x) * (1.0 - x);
+        dcdx = 2.0 * (1.0 - cMin) * (1.0 - x);
+        break;
+    }
+    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));
+    const double phi = 2.0 * kPi * y;
+    return {frame.toWorld({s * std::cos(phi), s * std::sin(phi), c}), dcdx * 2.0 * kPi};
+  }
+
+  DensityFn density(std::function<double(const Vec3&)> pdf) const {
+    return [this, pdf](double x, double y) {
+      const auto [w, jacobian] = at(x, y);
+      return pdf(w) * jacobian;
+    };
+  }
+};
+
+/// A disk point as grid coordinates (r^2, phi / 2 pi); outside the unit disk is outside.
+Vec2 diskToGrid(const Vec2& p) {
+  const double r2 = glm::dot(p, p);
+  if (r2 > 1.0 + 1e-12) return {-1.0, -1.0};
+  double phi = std::atan2(p.y, p.x);
+  if (phi < 0.0) phi += 2.0 * kPi;
+  return {std::min(r2, 1.0), phi / (2.0 * kPi)};
+}
+
+/// Area element of the (r^2, phi / 2 pi) grid: dA = r dr dphi = pi dx dy.
+constexpr double kDiskJacobian = kPi;
+
+const Normal3 kNormal = glm::normalize(Vec3(0.3, -0.2, 0.9));
+
+TEST(Chi2, 01_CosineHemisphere) {
+  Sampler rng(1, 0, 0, 0);
+  const Frame f(kNormal);
+  SphereGrid grid{f, Polar::Cos, -1.0};
+  auto sample = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(f.toWorld(sampleCosineHemisphere(rng.next2D())));
+  };
+  const auto r = runChi2(
+      "cosine hemisphere", 40, 80, 1000000, sample,
+      grid.density([&](const Vec3& w) { return cosineHemispherePdf(glm::dot(w, kNormal)); }));
+  expectAccepted(r, "cosine hemisphere");
+  // Negative control: cosine samples claimed to be uniform over the hemisphere.
+  Sampler rng2(2, 0, 0, 0);
+  auto sample2 = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(f.toWorld(sampleCosineHemisphere(rng2.next2D())));
+  };
+  expectRejected(runChi2("NEGATIVE cosine as uniform hemisphere", 40, 80, 1000000, sample2,
+                         grid.density([&](const Vec3& w) {
+                           return glm::dot(w, kNormal) > 0.0 ? 1.0 / (2.0 * kPi) : 0.0;
+                         })),
+                 "cosine as uniform");
+}
+
+TEST(Chi2, 02_UniformSphere) {
+  Sampler rng(3, 0, 0, 0);
+  SphereGrid grid{Frame(kNormal), Polar::Cos, -1.0};
+  auto sample = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(sampleUniformSphere(rng.next2D()));
+  };
+  expectAccepted(runChi2("uniform sphere", 40, 80, 1000000, sample,
+                         grid.density([](const Vec3&) { return uniformSpherePdf(); })),
+                 "uniform sphere");
+  // Negative control: a 10% tilt of the claimed density along the axis.
+  Sampler rng2(4, 0, 0, 0);
+  auto sample2 = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(sampleUniformSphere(rng2.next2D()));
+  };
+  expectRejected(runChi2("NEGATIVE uniform sphere as (1 + 0.1 z) / 4pi", 40, 80, 1000000, sample2,
+                         grid.density([](const Vec3& w) {
+                           return (1.0 + 0.1 * glm::dot(w, kNormal)) / (4.0 * kPi);
+                         })),
+                 "tilted sphere");
+}
+
+TEST(Chi2, 03_PhongLobeWarp) {
+  // samplePhongLobe itself, exponent 20, binned in theta around the lobe's axis.
+  Sampler rng(5, 0, 0, 0);
+  const Frame f(kNormal);
+  SphereGrid grid{f, Polar::Theta, -1.0};
+  auto sample = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(f.toWorld(samplePhongLobe(rng.next2D(), 20.0)));
+  };
+  expectAccepted(
+      runChi2("phong lobe warp n=20", 60, 60, 1000000, sample, grid.density([&](const Vec3& w) {
+        return phongLobePdf(glm::dot(w, kNormal), 20.0);
+      })),
+      "phong warp");
+}
+
+/// Glossy material at incidence `degrees` from the normal kNormal, as a sampler and pdf.
+struct GlossySetup {
+  Material m;
+  SurfaceInteraction si;
+  Vec3 wo;
+  GlossySetup(double exponent, double degrees) {
+    m.type = MaterialType::Glossy;
+    m.colour = Vec3(0.5, 0.6, 0.7);
+    m.specular = 0.7;
+    m.exponent = exponent;
+    const Frame f(kNormal);
+    const double a = radians(degrees);
+    wo = f.toWorld({std::sin(a), 0.0, std::cos(a)});
+    si.n = kNormal;
+    si.frontFace = true;
+  }
+};
+
+TEST(Chi2, 04_GlossyMaterialSampling) {
+  // bsdf::sample against bsdf::pdf for the Glossy material (Phong lobe + Lambert mixture),
+  // exponents 1, 10, 100 at incidence 0, 45 and 80 degrees. Samples below the surface are
+  // rejected by the sampler; pdf is 0 there, so none may land there. Theta bins around
+  // the normal (3 degrees) resolve even the n = 100 lobe; the horizon is a cell edge.
+  for (double exponent : {1.0, 10.0, 100.0})
+    for (double degrees : {0.0, 45.0, 80.0}) {
+      const GlossySetup g(exponent, degrees);
+      Sampler rng(6, int(exponent), int(degrees), 0);
+      SphereGrid grid{Frame(kNormal), Polar::Theta, -1.0};
+      auto sample = [&]() -> std::optional<Vec2> {
+        const auto s = bsdf::sample(g.m, g.si, g.wo, rng);
+        if (!s) return std::nullopt;
+        return grid.toGrid(s->wi);
+      };
+      char name[64];
+      std::snprintf(name, sizeof name, "glossy n=%g at %g deg", exponent, degrees);
+      expectAccepted(runChi2(name, 60, 60, 1000000, sample, grid.density([&](const Vec3& w) {
+                       return bsdf::pdf(g.m, g.si, g.wo, w);
+                     })),
+                     name);
+    }
+  // Negative control: samples of exponent 10 against the density of exponent 13.
+  const GlossySetup g(10.0, 45.0), wrong(13.0, 45.0);
+  Sampler rng(7, 0, 0, 0);
+  SphereGrid grid{Frame(kNormal), Polar::Theta, -1.0};
+  auto sample = [&]() -> std::optional<Vec2> {
+    const auto s = bsdf::sample(g.m, g.si, g.wo, rng);
+    if (!s) return std::nullopt;
+    return grid.toGrid(s->wi);
+  };
+  expectRejected(runChi2("NEGATIVE glossy n=10 as n=13", 60, 60, 1000000, sample,
+                         grid.density([&](const Vec3& w) {
+                           return bsdf::pdf(wrong.m, wrong.si, wrong.wo, w);
+                         })),
+                 "glossy n=10 as n=13");
+}
+
+/// One emissive object seen from the origin.
+Scene lightScene(std::unique_ptr<Shape> light) {
+  Scene scene;
+  Material m;
+  m.name = "light";
+  m.emission = Vec3(1.0, 2.0, 0.5);
+  scene.materials.push_back(m);
+  scene.objects.emplace_back("light", std::move(light), 0);
+  return scene;
+}
+
+/// Solid-angle density of the intersector's light sampling towards w, from the origin:
+/// lightPdf at the first hit along w.
+double lightDensity(const SceneIntersector& si, const Vec3& w) {
+  const auto hit = si.intersect(Ray::make(Point3(0.0), w));
+  if (!hit) return 0.0;
+  return si.lightPdf(Point3(0.0), hit->object, hit->si);
+}
+
+TEST(Chi2, 05_SphereLightSampling) {
+  // A sphere of radius 0.8 at distance 2 (centre (0.6, 1.8, -0.6) away): area sampling seen
+  // in solid angle fills the cone of half-angle asin(0.8 / 2) with density
+  // d^2 / (A cos_light), which is singular at the silhouette. Grid: that cone, cells
+  // uniform in sqrt(cos theta - cos theta_max).
+  const Point3 centre(0.6, 1.8, -0.6);
+  const double radius = 0.8;
+  const Scene scene = lightScene(std::make_unique<Sphere>(centre, radius));
+  const SceneIntersector si(scene);
+  const double d = glm::length(centre);
+  SphereGrid grid{Frame(centre / d), Polar::SqrtEdge, std::sqrt(1.0 - (radius / d) * (radius / d))};
+  Sampler rng(8, 0, 0, 0);
+  auto sample = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(Point3(0.0), rng.next2D(), rng.next1D());
+    if (!ls) return std::nullopt;
+    return grid.toGrid(ls->wi);
+  };
+  expectAccepted(runChi2("sphere light (solid angle)", 30, 40, 1000000, sample,
+                         grid.density([&](const Vec3& w) { return lightDensity(si, w); })),
+                 "sphere light");
+  // Negative control: the area-to-solid-angle conversion without 1 / cos_light.
+  Sampler rng2(9, 0, 0, 0);
+  auto sample2 = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(Point3(0.0), rng2.next2D(), rng2.next1D());
+    if (!ls) return std::nullopt;
+    return grid.toGrid(ls->wi);
+  };
+  expectRejected(runChi2("NEGATIVE sphere light without 1/cos", 30, 40, 1000000, sample2,
+                         grid.density([&](const Vec3& w) {
+                           const auto hit = si.intersect(Ray::make(Point3(0.0), w));
+                           if (!hit) return 0.0;
+                           const double cosLight = -glm::dot(hit->si.n, w);
+                           return si.lightPdf(Point3(0.0), hit->object, hit->si) * cosLight;
+                         })),
+                 "sphere light without cos");
+}
+
+TEST(Chi2, 06_QuadLightSampling) {
+  // A tilted 1.5 x 1 rectangle facing the origin; the grid is a cone around its centre
+  // that contains it, so cells straddle its edges: many sub-cells per cell keep the
+  // integration error there far below the statistical one.
+  auto quad =
+      std::make_unique<Quad>(Point3(-0.5, 2.0, -0.8), Vec3(1.5, 0.3, 0.0), Vec3(0.0, 0.4, 1.0));
+  if (glm::dot(glm::cross(quad->edgeU(), quad->edgeV()), Vec3(0, 1, 0)) > 0.0)
+    quad =
+        std::make_unique<Quad>(Point3(-0.5, 2.0, -0.8), Vec3(0.0, 0.4, 1.0), Vec3(1.5, 0.3, 0.0));
+  const Point3 centre = quad->corner() + 0.5 * (quad->edgeU() + quad->edgeV());
+  const Vec3 axis = glm::normalize(centre);
+  double cMin = 1.0;
+  for (Vec3 corner :
+       {quad->corner(), quad->corner() + quad->edgeU(), quad->corner() + quad->edgeV(),
+        quad->corner() + quad->edgeU() + quad->edgeV()})
+    cMin = std::min(cMin, glm::dot(glm::normalize(corner), axis));
+  cMin -= 0.02;
+  const Scene scene = lightScene(std::move(quad));
+  const SceneIntersector si(scene);
+  SphereGrid grid{Frame(axis), Polar::Cos, cMin};
+  Sampler rng(10, 0, 0, 0);
+  auto sample = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(Point3(0.0), rng.next2D(), rng.next1D());
+    if (!ls) return std::nullopt;
+    return grid.toGrid(ls->wi);
+  };
+  const auto r =
+      runChi2("quad light (solid angle)", 30, 60, 1000000, sample,
+              grid.density([&](const Vec3& w) { return lightDensity(si, w); }), 24, false);
+  expectAccepted(r, "quad light");
+}
+
+TEST(Chi2, 07_LensSampling) {
+  // The concentric disk mapping, and the thin-lens camera's ray origins (which must be
+  // uniform on the lens), on a (r^2, phi) grid.
+  Sampler rng(11, 0, 0, 0);
+  auto sample = [&]() -> std::optional<Vec2> {
+    return diskToGrid(sampleUniformDisk(rng.next2D()));
+  };
+  const DensityFn uniform = [](double, double) { return uniformDiskPdf() * kDiskJacobian; };
+  expectAccepted(runChi2("uniform disk", 40, 40, 1000000, sample, uniform), "uniform disk");
+
+  CameraSpec spec;
+  spec.position = {1, 2, 3};
+  spec.lookAt = {0, 0, 0};
+  spec.aperture = 0.25;
+  const Camera camera(spec);
+  const Vec3 forward = glm::normalize(spec.lookAt - spec.position);
+  const Vec3 right = glm::normalize(glm::cross(forward, spec.up));
+  const Vec3 up = glm::cross(right, forward);
+  Sampler rng2(12, 3, 4, 0);
+  auto lens = [&]() -> std::optional<Vec2> {
+    const Vec3 o = camera.generateRay({17.5, 99.5}, rng2.next2D(), 0.0).origin - spec.position;
+    return diskToGrid(Vec2(glm::dot(o, right), glm::dot(o, up)) / spec.aperture);
+  };
+  expectAccepted(runChi2("thin lens camera origins", 40, 40, 1000000, lens, uniform), "thin lens");
+
+  // Negative control: the naive polar map (r = u) bunches points at the centre.
+  Sampler rng3(13, 0, 0, 0);
+  auto naive = [&]() -> std::optional<Vec2> {
+    const Vec2 u = rng3.next2D();
+    return diskToGrid(u.x * Vec2(std::cos(2 * kPi * u.y), std::sin(2 * kPi * u.y)));
+  };
+  expectRejected(runChi2("NEGATIVE naive polar disk as uniform", 40, 40, 1000000, naive, uniform),
+                 "naive disk");
+}
+
+TEST(Chi2, 08_TheCountOfTestsMatchesTheCorrection) {
+  // cosine 1 + sphere 1 + phong warp 1 + glossy 9 + sphere light 1 + quad light 1 + disk 2.
+  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2);
+  EXPECT_NEAR(kAlpha, 6.2795e-4, 1e-7);
+}
+
+}  // namespace
+}  // namespace raylab
