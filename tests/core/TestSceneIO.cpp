@@ -1,5 +1,6 @@
 // Scene files: the default scene, round trips, and error messages that name the place.
 #include "raylab/core/Box.h"
+#include "raylab/core/Camera.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Transform.h"
@@ -304,6 +305,9 @@ TEST(SceneIO, 09_NewFieldsRoundTripExactly) {
   EXPECT_EQ(back.render.toString(), s.render.toString());
   EXPECT_EQ(back.camera.aperture, s.camera.aperture);
   EXPECT_EQ(back.camera.focusDistance, s.camera.focusDistance);
+  Scene clipped = s;
+  clipped.camera.nearClip = 0.1;
+  EXPECT_EQ(SceneIO::parse(SceneIO::serialize(clipped), "clipped").camera.nearClip, 0.1);
   // The file says which version it is.
   EXPECT_THAT(text, HasSubstr("\"raylab_scene\": " + std::to_string(SceneIO::kVersion)));
 }
@@ -368,6 +372,8 @@ TEST(SceneIO, 11_NewErrorsNameThePlaceAndTheProblem) {
        "/point_lights/1/name: duplicate point light \"p\""},
       {"negative aperture", one + ball + R"(], "camera": {"aperture": -1}})",
        "/camera/aperture: aperture (lens radius) must not be negative"},
+      {"negative near clip", one + ball + R"(], "camera": {"near_clip": -1}})",
+       "/camera/near_clip: near_clip must not be negative"},
       {"negative focus distance", one + ball + R"(], "camera": {"focus_distance": -2}})",
        "/camera/focus_distance: focus_distance must not be negative"},
       {"unknown algorithm", one + ball + R"(], "render": {"algorithm": "photon"}})",
@@ -538,14 +544,25 @@ TEST(ShippedScenes, 02_SmallptIsTheNineSphereCornellBox) {
   const Scene s = SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/smallpt.json");
   ASSERT_EQ(s.objects.size(), 9u);
   for (const SceneObject& o : s.objects) EXPECT_EQ(o.shape->kind(), ShapeKind::Sphere) << o.name;
-  // smallpt: cx = w * 0.5135 / h, so the vertical field of view is 2 atan(0.5135).
-  EXPECT_NEAR(s.camera.verticalFov, 2.0 * std::atan(0.5135) * 180.0 / kPi, 1e-12);
+  // smallpt: d = cx (sx - 0.5) + cy (sy - 0.5) + dir with |cy| = 0.5135 and sx, sy in
+  // [0, 1]: the top of the image is 0.5135 / 2 above the axis at unit distance, so the
+  // vertical field of view is 2 atan(0.5135 / 2) = 28.79 degrees (cx = w 0.5135 / h keeps
+  // the pixels square).
+  EXPECT_NEAR(s.camera.verticalFov, 2.0 * std::atan(0.5135 / 2.0) * 180.0 / kPi, 1e-12);
   EXPECT_EQ(s.camera.position, Point3(50, 52, 295.6));
   const Vec3 dir = glm::normalize(s.camera.lookAt - s.camera.position);
   const Vec3 expected = glm::normalize(Vec3(0, -0.042612, -1));
   EXPECT_NEAR(glm::length(dir - expected), 0.0, 1e-12);
   EXPECT_EQ(s.camera.width, 1024);
   EXPECT_EQ(s.camera.height, 768);
+  // smallpt starts camera rays 140 units along the (unnormalised) pixel direction: inside
+  // the box, past the black front wall (z = 170) that the eye at z = 295.6 is behind.
+  EXPECT_EQ(s.camera.nearClip, 140.0);
+  const Ray centre = Camera(s.camera).generateRay(Vec2(512.0, 384.0), Vec2(0.5), 0.0);
+  EXPECT_NEAR(glm::length(centre.origin - (s.camera.position + 140.0 * expected)), 0.0, 1e-9);
+  EXPECT_LT(centre.origin.z, 170.0);
+  const Ray corner = Camera(s.camera).generateRay(Vec2(0.0), Vec2(0.5), 0.0);
+  EXPECT_NEAR(glm::dot(corner.origin - s.camera.position, expected), 140.0, 1e-9);
 
   const auto sphere = [&](const char* name) -> const Sphere& {
     const int i = s.findObject(name);

@@ -20,8 +20,8 @@ Camera::Camera(const CameraSpec& spec) : m_spec(spec) {
   if (spec.width <= 0 || spec.height <= 0)
     throw Exception("camera: width and height must be positive, got " + std::to_string(spec.width) +
                     " x " + std::to_string(spec.height));
-  if (!(spec.aperture >= 0.0) || !(spec.focusDistance >= 0.0))
-    throw Exception("camera: aperture and focusDistance must be >= 0");
+  if (!(spec.aperture >= 0.0) || !(spec.focusDistance >= 0.0) || !(spec.nearClip >= 0.0))
+    throw Exception("camera: aperture, focusDistance and nearClip must be >= 0");
 
   // Build the orthonormal frame: forward towards lookAt, right = forward x up, and the
   // true up perpendicular to both (the camera looks down its local -z).
@@ -45,7 +45,11 @@ Ray Camera::generateRay(const Vec2& film, const Vec2& lens, double time) const {
   const double sx = (2.0 * film.x / m_spec.width - 1.0) * aspect * m_tanHalfFov;
   const double sy = (1.0 - 2.0 * film.y / m_spec.height) * m_tanHalfFov;
   const Vec3 direction = m_forward + sx * m_right + sy * m_up;
-  if (m_spec.aperture <= 0.0) return Ray::make(m_spec.position, direction, 0.0, kInfinity, time);
+  // The near plane: `direction` has a forward component of 1, so position + nearClip *
+  // direction lies nearClip in front of the eye (smallpt starts its rays there).
+  if (m_spec.aperture <= 0.0)
+    return Ray::make(m_spec.position + m_spec.nearClip * direction, direction, 0.0, kInfinity,
+                     time);
 
   // Thin lens: every ray through this film point meets the pinhole ray on the plane in
   // focus (perpendicular to forward, m_focusDistance away); start it from a uniform point
@@ -53,7 +57,9 @@ Ray Camera::generateRay(const Vec2& film, const Vec2& lens, double time) const {
   const Point3 focus = m_spec.position + m_focusDistance * direction;
   const Vec2 disk = m_spec.aperture * sampleUniformDisk(lens);
   const Point3 origin = m_spec.position + disk.x * m_right + disk.y * m_up;
-  return Ray::make(origin, focus - origin, 0.0, kInfinity, time);
+  const Vec3 toFocus = focus - origin;  // forward component m_focusDistance
+  return Ray::make(origin + (m_spec.nearClip / m_focusDistance) * toFocus, toFocus, 0.0, kInfinity,
+                   time);
 }
 
 }  // namespace raylab

@@ -272,7 +272,7 @@ class Reader {
   void camera(const json& c, CameraSpec& cam) const {
     onlyKeys(c, "/camera",
              {"position", "look_at", "up", "vertical_fov", "width", "height", "aperture",
-              "focus_distance"});
+              "focus_distance", "near_clip"});
     if (c.contains("position")) cam.position = vec3(c["position"], "/camera/position");
     if (c.contains("look_at")) cam.lookAt = vec3(c["look_at"], "/camera/look_at");
     if (c.contains("up")) cam.up = nonZero(c["up"], "/camera/up");
@@ -283,6 +283,7 @@ class Reader {
     if (c.contains("aperture")) cam.aperture = number(c["aperture"], "/camera/aperture");
     if (c.contains("focus_distance"))
       cam.focusDistance = number(c["focus_distance"], "/camera/focus_distance");
+    if (c.contains("near_clip")) cam.nearClip = number(c["near_clip"], "/camera/near_clip");
     if (cam.position == cam.lookAt) fail("/camera/look_at", "camera looks at its own position");
     if (glm::length(glm::cross(cam.lookAt - cam.position, cam.up)) == 0.0)
       fail("/camera/up", "up is parallel to the viewing direction");
@@ -291,6 +292,7 @@ class Reader {
     if (cam.width < 1 || cam.height < 1 || cam.width > 16384 || cam.height > 16384)
       fail("/camera", "width and height must be in [1, 16384]");
     if (cam.aperture < 0.0) fail("/camera/aperture", "aperture (lens radius) must not be negative");
+    if (cam.nearClip < 0.0) fail("/camera/near_clip", "near_clip must not be negative");
     if (cam.focusDistance < 0.0)
       fail("/camera/focus_distance",
            "focus_distance must not be negative (0: distance to look_at)");
@@ -642,6 +644,7 @@ std::string SceneIO::serialize(const Scene& scene, const std::string& sceneDir) 
                     {"height", c.height},
                     {"aperture", c.aperture},
                     {"focus_distance", c.focusDistance}};
+  if (c.nearClip != 0.0) root["camera"]["near_clip"] = c.nearClip;
   const RenderSettings& r = scene.render;
   root["render"] = {{"algorithm", toString(r.algorithm)},
                     {"spp", r.samplesPerPixel},

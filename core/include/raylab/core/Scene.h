@@ -50,6 +50,9 @@ struct CameraSpec {
   double aperture = 0.0;           ///< Thin lens: lens radius, world units; 0 = pinhole.
   double focusDistance = 0.0;      ///< Thin lens: distance to the plane in focus; 0 means
                                    ///< the distance from position to lookAt.
+  double nearClip = 0.0;           ///< Camera rays start on the plane this far in front of
+                                   ///< the eye (along the viewing direction), world units;
+                                   ///< smallpt's 140. 0 = at the eye (or lens).
   std::string toString() const;
 };
 

@@ -36,7 +36,7 @@ namespace raylab {
  *       "point_lights": [ {"name": "key", "position": [2, 5, 2], "intensity": [20, 20, 20]} ],
  *       "camera": {"position": [0, 2, 5], "look_at": [0, 1, 0], "up": [0, 1, 0],
  *                  "vertical_fov": 45, "width": 320, "height": 240,
- *                  "aperture": 0, "focus_distance": 0},
+ *                  "aperture": 0, "focus_distance": 0, "near_clip": 0},
  *       "render": {"algorithm": "path", "spp": 16, "max_depth": 5, "seed": 1,
  *                  "shadow_samples": 4, "glossy_samples": 4, "russian_roulette_depth": 3,
  *                  "next_event_estimation": true, "multiple_importance": true,
@@ -58,9 +58,9 @@ namespace raylab {
  * misspelt key would otherwise be ignored).
  *
  * Versions: version 2 added material types and parameters, point lights, velocity,
- * meshes, the thin-lens camera and the render block. Version 1 files are still read
- * (they have none of these, so every new field takes its default); files are written
- * as version 2.
+ * meshes, the thin-lens camera, the camera's near clip and the render block. Version 1
+ * files are still read (they have none of these, so every new field takes its default);
+ * files are written as version 2.
  *
  * Every error names the file and the place: line and column for JSON syntax, the JSON
  * path (e.g. /objects/2/shape/radius) for content. A failed load throws and returns
