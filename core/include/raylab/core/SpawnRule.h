@@ -33,10 +33,12 @@ struct HitDecision {
  * (the seed's BRDF(intersection) factory). The engine (Tracer) does everything else:
  * queueing, intersecting, shadow-ray visibility, energy bookkeeping, recording.
  *
- * Children are appended to `children` with kind, depth, weight (relative to this ray),
- * pdf and, for shadow rays, `shadowLe` (the radiance delivered when unoccluded) already
- * multiplied into nothing: the engine multiplies throughput by weight. Implementations
- * are stateless and thread-safe.
+ * Children are appended to `children` with ray, kind, depth, weight (relative to this
+ * ray), pdf and, for shadow rays, `shadowLe` (the radiance delivered when unoccluded, not
+ * multiplied by the weight); the engine fills id, parent and throughput (the parent's
+ * throughput times the weight). Random numbers come from `context.sampler` only, so the
+ * image renderer and the stepper draw the same ones. Implementations are stateless and
+ * thread-safe. The algorithms live in core/src/integrators/<name>/.
  */
 class SpawnRule {
  public:

@@ -11,13 +11,16 @@
 #include <deque>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace raylab {
 
 /// Rays traced, by kind (the cost figures of a comparison).
 struct RayCounts {
   std::array<std::uint64_t, kRayKindCount> byKind{};  ///< Indexed by RayKind.
+  /// Rays of every kind.
   std::uint64_t total() const;
+  /// Adds another count kind by kind (merging threads or passes).
   RayCounts& operator+=(const RayCounts& other);
 };
 
@@ -58,6 +61,7 @@ class SpawnRule;
  */
 class Tracer {
  public:
+  /// The engine for `scene` (which must outlive it) with the rule of settings.algorithm.
   Tracer(const Scene& scene, const RenderSettings& settings);
   ~Tracer();
   Tracer(const Tracer&) = delete;
@@ -72,6 +76,9 @@ class Tracer {
   const RenderSettings& settings() const { return m_settings; }
   const Camera& camera() const { return m_camera; }
   const SpawnRule& rule() const { return *m_rule; }
+  /// Length at which recorded escaped rays are drawn: the diagonal of the bounds of the
+  /// scene's finite objects and the camera, world units (1 for an empty scene).
+  double escapeLength() const { return m_escapeLength; }
 
  private:
   friend class Stepper;
@@ -79,6 +86,7 @@ class Tracer {
   RenderSettings m_settings;
   Camera m_camera;
   std::unique_ptr<SpawnRule> m_rule;
+  double m_escapeLength = 1.0;
 };
 
 /**
@@ -87,26 +95,36 @@ class Tracer {
  *
  * Recording stops at `memoryBudget` bytes with a message in RayTree::message (the
  * estimate is still computed to the end); it never crashes on a bushy distributed tree.
+ * A truncated tree holds the rays recorded before the budget ran out (their children
+ * after that point are not recorded), so its RayTree::estimate() covers those rays only;
+ * Stepper::estimate() stays exact.
  */
 class Stepper {
  public:
+  /// Prepares sample `sample` of pixel (x, y) of `tracer` (which must outlive the stepper):
+  /// the camera ray waits in the queue. `memoryBudget` bounds the recorded segments, bytes.
   Stepper(const Tracer& tracer, int x, int y, int sample,
           std::size_t memoryBudget = std::size_t(256) << 20);
 
   /// Processes the first ray of the queue. Returns false when the queue was empty.
+  /// The step that empties the queue also propagates the tree.
   bool step();
   /// Steps until the queue is empty; the tree is then propagated.
   void runToEnd();
   /// Back to the state before the first step (same pixel, sample and seed).
   void reset();
+  /// True when every ray has been processed.
   bool done() const { return m_queue.empty(); }
 
+  /// Rays waiting to be processed, first in front (breadth-first: ids in queue order).
   const std::deque<QueuedRay>& queue() const { return m_queue; }
   /// The tree so far; radiance fields are final once done().
   const RayTree& tree() const { return m_tree; }
+  /// What the last step did (before the first step: the camera ray waiting).
   const StepEvent& lastEvent() const { return m_event; }
   /// The sample's estimate so far (final once done()); equals Tracer::trace when done.
   Vec3 estimate() const { return m_estimate; }
+  /// Rays processed so far, by kind.
   const RayCounts& counts() const { return m_counts; }
 
  private:
@@ -119,6 +137,7 @@ class Stepper {
   StepEvent m_event;
   Vec3 m_estimate{0.0};
   RayCounts m_counts;
+  std::vector<QueuedRay> m_children;  ///< Scratch for the rule's children.
 };
 
 }  // namespace raylab

@@ -1,0 +1,150 @@
+#include "integrators/LocalShading.h"
+
+#include "raylab/core/RayOffset.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab::shading {
+
+namespace {
+/// Shadow rays to a surface point stop this fraction of the distance short of it, so the
+/// light's own surface never blocks them.
+constexpr double kShadowShortening = 1e-6;
+
+bool isBlack(const Vec3& v) { return v.x <= 0.0 && v.y <= 0.0 && v.z <= 0.0; }
+}  // namespace
+
+Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
+                    Lobes lobes) {
+  const double cosThetaI = glm::dot(n, wi);
+  if (cosThetaI <= 0.0 || m.isSpecular()) return Vec3(0.0);
+  // Lambert: colour / pi, scaled by kd.
+  const bool glossy = m.type == MaterialType::Glossy;
+  const double ks = glossy ? std::clamp(m.specular, 0.0, 1.0) : 0.0;
+  Vec3 f = (1.0 - ks) / kPi * m.colour;
+  // Phong highlight around the mirror direction of wo (white, as Phong's).
+  if (glossy && lobes == Lobes::All) {
+    const Vec3 mirror = 2.0 * glm::dot(wo, n) * n - wo;
+    const double cosAlpha = std::max(0.0, glm::dot(mirror, wi));
+    f += Vec3(ks * (m.exponent + 2.0) / (2.0 * kPi) * std::pow(cosAlpha, m.exponent));
+  }
+  return f * cosThetaI;
+}
+
+QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
+                   double pdf, double tMax) {
+  QueuedRay child;
+  child.ray = spawnRay(context.hit.si, wi, tMax);
+  child.ray.time = context.ray.ray.time;
+  child.kind = kind;
+  child.depth = context.ray.depth + 1;
+  child.weight = weight;
+  child.pdf = pdf;
+  child.previousPdf = pdf;
+  child.specularChain = context.ray.specularChain && pdf == 0.0 && kind != RayKind::Shadow;
+  return child;
+}
+
+Vec3 emitterSeen(const HitContext& context) {
+  if (!context.material.isEmitter()) return Vec3(0.0);
+  return context.scene.emitted(context.hit.object, context.hit.si, context.ray.ray.direction);
+}
+
+std::optional<LightSample> sampleAreaLight(const SceneIntersector& scene, int object,
+                                           const Point3& ref, const Vec2& u, double time) {
+  const SceneObject& light = scene.scene().objects[std::size_t(object)];
+  // An infinite emitter (a plane) has no point to aim at: only hitting it counts.
+  if (light.shape->kind() == ShapeKind::Plane) return std::nullopt;
+  // A point on the light's surface, where the light is at this shutter time.
+  const ShapeSample s = light.shape->sampleArea(u);
+  const Point3 p = s.p + time * light.velocity;
+  const Vec3 d = p - ref;
+  const double distance2 = glm::dot(d, d);
+  if (!(distance2 > 0.0) || !(s.pdfArea > 0.0)) return std::nullopt;
+  const double distance = std::sqrt(distance2);
+  const Vec3 wi = d / distance;
+  // Only the front side emits: the light must face the shading point.
+  const double cosLight = -glm::dot(s.n, wi);
+  if (cosLight <= 0.0) return std::nullopt;
+  // Convert the area density to solid angle at ref: pdfA d^2 / cos(theta_light).
+  const double pdf = s.pdfArea * distance2 / cosLight;
+  if (!std::isfinite(pdf) || pdf <= 0.0) return std::nullopt;
+  LightSample sample;
+  sample.object = object;
+  sample.p = p;
+  sample.n = s.n;
+  sample.wi = wi;
+  sample.distance = distance;
+  sample.pdf = pdf;
+  SurfaceInteraction si;
+  si.t = distance;
+  si.p = p;
+  si.n = s.n;
+  si.frontFace = true;
+  sample.Le = scene.emitted(object, si, wi);
+  return sample;
+}
+
+QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
+                    const Vec3& Le, bool targetIsSurface) {
+  const Point3 origin = offsetRayOrigin(context.hit.si, target - context.hit.si.p);
+  const double distance = glm::length(target - origin);
+  // Stop short of a light's surface (its own surface must not block the ray); a point
+  // light has no surface.
+  const double tMax =
+      targetIsSurface
+          ? std::max(0.0, distance * (1.0 - kShadowShortening) - rayOffsetDistance(target))
+          : distance;
+  QueuedRay child;
+  child.ray = Ray::make(origin, target - origin, 0.0, tMax, context.ray.ray.time);
+  child.kind = RayKind::Shadow;
+  child.depth = context.ray.depth + 1;
+  child.weight = weight;
+  child.shadowLe = Le;
+  child.specularChain = false;
+  return child;
+}
+
+void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
+  const SurfaceInteraction& si = context.hit.si;
+  const Normal3 n = si.facingNormal();
+  const Vec3 wo = -context.ray.ray.direction;
+  for (const PointLight& light : context.scene.scene().pointLights) {
+    // Direction and distance to the light; it lights the side it is on.
+    const Vec3 d = light.position - si.p;
+    const double distance2 = glm::dot(d, d);
+    if (!(distance2 > 0.0)) continue;
+    const Vec3 wi = d / std::sqrt(distance2);
+    const Vec3 fCos = classicShading(context.material, n, wo, wi, lobes);
+    if (isBlack(fCos)) continue;
+    // Radiance arriving from a point light: I / d^2 (weight f cos).
+    children.push_back(
+        shadowRay(context, light.position, fCos, light.intensity / distance2, false));
+  }
+}
+
+void addAreaLightRays(const HitContext& context, int samplesPerLight, bool centre, Lobes lobes,
+                      std::vector<QueuedRay>& children) {
+  if (samplesPerLight <= 0) return;
+  const SurfaceInteraction& si = context.hit.si;
+  const Normal3 n = si.facingNormal();
+  const Vec3 wo = -context.ray.ray.direction;
+  const double invN = 1.0 / double(samplesPerLight);
+  for (int object : context.scene.areaLights()) {
+    if (object == context.hit.object) continue;  // a surface does not light itself
+    for (int k = 0; k < samplesPerLight; ++k) {
+      // A point on the light: the fixed centre-ish sample, or a random one (soft shadows).
+      const Vec2 u = centre ? Vec2(0.5) : context.sampler.next2D();
+      const std::optional<LightSample> ls =
+          sampleAreaLight(context.scene, object, si.p, u, context.ray.ray.time);
+      if (!ls) continue;
+      const Vec3 fCos = classicShading(context.material, n, wo, ls->wi, lobes);
+      if (isBlack(fCos) || isBlack(ls->Le)) continue;
+      // Monte Carlo estimate of the light's integral: f cos Le / pdf, averaged over N.
+      children.push_back(shadowRay(context, ls->p, fCos * (invN / ls->pdf), ls->Le, true));
+    }
+  }
+}
+
+}  // namespace raylab::shading

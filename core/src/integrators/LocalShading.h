@@ -1,0 +1,63 @@
+#pragma once
+
+#include "raylab/core/SpawnRule.h"
+
+#include <optional>
+#include <vector>
+
+/// \file LocalShading.h
+/// What the classic algorithms (ray casting, Whitted, distributed) share: the Phong-era
+/// local shading model, shadow rays to point and area lights, and the child-ray factory
+/// every rule uses. Private to the integrators.
+
+namespace raylab::shading {
+
+/// Which part of the classic model a shadow ray carries.
+enum class Lobes {
+  All,          ///< Lambert + Phong highlight (ray casting, Whitted, point lights).
+  DiffuseOnly,  ///< Lambert only (distributed area lights: glossy rays see the lights).
+};
+
+/**
+ * \brief The classic local shading model times the cosine, f(wo, wi) cos(theta_i):
+ * `((1 - ks) colour / pi + ks (n + 2) / (2 pi) cos^n(alpha)) cos(theta_i)` with alpha the
+ * angle between wi and the mirror direction of wo (Phong 1975, normalised as in
+ * Lafortune and Willems 1994; the highlight is white, as bsdf::eval's). Diffuse: ks = 0;
+ * Glossy: ks = specular, n = exponent; Mirror and Dielectric have no local shading (0).
+ * With Lobes::All it equals bsdf::eval.
+ * `n` is the unit normal facing wo; wo, wi unit, world space. 0 when wi is below n.
+ */
+Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
+                    Lobes lobes);
+
+/// A child leaving the hit of `context` in unit world direction `wi`: origin offset by the
+/// RayOffset rule, the parent's time, depth + 1, the given kind, weight and pdf (0 for a
+/// deterministic direction), t in [0, tMax].
+QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
+                   double pdf, double tMax = kInfinity);
+
+/// Radiance of the emitter the ray of `context` hit, towards the ray's origin (0 for
+/// non-emitters and for the back side of lights).
+Vec3 emitterSeen(const HitContext& context);
+
+/// A point on area light `object` for `u` in [0,1)^2, seen from `ref` at shutter time
+/// `time` (moving lights move): solid-angle pdf of this one light (no pick probability).
+/// Nothing when the point faces away from ref or the density degenerates.
+std::optional<LightSample> sampleAreaLight(const SceneIntersector& scene, int object,
+                                           const Point3& ref, const Vec2& u, double time);
+
+/// A shadow ray from the hit of `context` to the light point `target` (world space),
+/// stopping just short of it, with `weight` and the radiance `Le` it delivers.
+QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
+                    const Vec3& Le, bool targetIsSurface);
+
+/// Appends one shadow ray per point light that lies above the surface: weight
+/// f cos (classicShading), delivering intensity / d^2.
+void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children);
+
+/// Appends `samplesPerLight` shadow rays per area light with weight f cos / (pdf N):
+/// u from the sampler, or the fixed u = (0.5, 0.5) when `centre` (ray casting, Whitted).
+void addAreaLightRays(const HitContext& context, int samplesPerLight, bool centre, Lobes lobes,
+                      std::vector<QueuedRay>& children);
+
+}  // namespace raylab::shading

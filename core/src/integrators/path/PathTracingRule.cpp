@@ -1,0 +1,101 @@
+#include "integrators/path/PathTracingRule.h"
+
+#include "integrators/LocalShading.h"
+#include "raylab/core/Bsdf.h"
+#include "raylab/core/Sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+bool isUsable(const Vec3& w) {
+  return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && w.x >= 0.0 &&
+         w.y >= 0.0 && w.z >= 0.0 && (w.x > 0.0 || w.y > 0.0 || w.z > 0.0);
+}
+
+double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
+
+}  // namespace
+
+HitDecision PathTracingRule::onHit(const HitContext& context,
+                                   std::vector<QueuedRay>& children) const {
+  const RenderSettings& settings = context.settings;
+  const QueuedRay& ray = context.ray;
+  const SurfaceInteraction& si = context.hit.si;
+  const Material& m = context.material;
+  const Vec3 wo = -ray.ray.direction;
+
+  // 1. Emission, MIS-weighted against light sampling when a BSDF sample found the light.
+  Vec3 emitted(0.0);
+  if (m.isEmitter()) {
+    const Vec3 Le = shading::emitterSeen(context);
+    double w = 1.0;
+    const bool deterministic = ray.kind == RayKind::Camera || ray.previousPdf <= 0.0;
+    if (settings.nextEventEstimation && !deterministic) {
+      if (settings.multipleImportance) {
+        const double lightPdf = context.scene.lightPdf(ray.ray.origin, context.hit.object, si);
+        w = powerHeuristic(ray.previousPdf, lightPdf);
+      } else {
+        w = 0.0;
+      }
+    }
+    if (w > 0.0) emitted = w * Le;
+    if (m.colour.x <= 0.0 && m.colour.y <= 0.0 && m.colour.z <= 0.0)
+      return {emitted, EndReason::HitLight};
+  }
+
+  // 2. The longest path allowed ends here.
+  if (ray.depth >= settings.maxDepth) return {emitted, EndReason::MaxDepth};
+
+  // 3. Russian roulette: survive with probability q, and weigh survivors by 1 / q.
+  double rouletteScale = 1.0;
+  if (ray.depth >= settings.russianRouletteDepth) {
+    const double q = std::min(0.95, maxComponent(ray.throughput));
+    if (!(q > 0.0) || context.sampler.next1D() >= q) return {emitted, EndReason::RussianRoulette};
+    rouletteScale = 1.0 / q;
+  }
+
+  // 4. Next-event estimation: a shadow ray to a sampled light point, and to point lights.
+  if (settings.nextEventEstimation && !m.isSpecular()) {
+    if (!context.scene.areaLights().empty()) {
+      const Vec2 uLight = context.sampler.next2D();
+      const double uPick = context.sampler.next1D();
+      const std::optional<LightSample> ls = context.scene.sampleLight(si.p, uLight, uPick);
+      if (ls && ls->pdf > 0.0 && std::isfinite(ls->pdf)) {
+        const Vec3 fCos = bsdf::eval(m, si, wo, ls->wi);
+        const double w = settings.multipleImportance
+                             ? powerHeuristic(ls->pdf, bsdf::pdf(m, si, wo, ls->wi))
+                             : 1.0;
+        const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
+        if (isUsable(weight) && isUsable(ls->Le))
+          children.push_back(shading::shadowRay(context, ls->p, weight, ls->Le, true));
+      }
+    }
+    for (const PointLight& light : context.scene.scene().pointLights) {
+      const Vec3 d = light.position - si.p;
+      const double distance2 = glm::dot(d, d);
+      if (!(distance2 > 0.0)) continue;
+      const Vec3 weight = bsdf::eval(m, si, wo, d / std::sqrt(distance2)) * rouletteScale;
+      if (isUsable(weight))
+        children.push_back(shading::shadowRay(context, light.position, weight,
+                                              light.intensity / distance2, false));
+    }
+  }
+
+  // 5. Continue the path in one direction sampled from the BSDF.
+  const std::optional<BsdfSample> bs = bsdf::sample(m, si, wo, context.sampler);
+  if (bs && (bs->specular || (bs->pdf > 0.0 && std::isfinite(bs->pdf)))) {
+    const Vec3 weight = bs->weight * rouletteScale;
+    if (isUsable(weight)) {
+      QueuedRay child =
+          shading::childRay(context, bs->wi, bs->kind, weight, bs->specular ? 0.0 : bs->pdf);
+      children.push_back(child);
+    }
+  }
+  return {emitted, children.empty() ? EndReason::Absorbed : EndReason::Spawned};
+}
+
+}  // namespace raylab

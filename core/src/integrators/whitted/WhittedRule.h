@@ -1,0 +1,34 @@
+#pragma once
+
+#include "raylab/core/SpawnRule.h"
+
+namespace raylab {
+
+/**
+ * \brief Whitted ray tracing (T. Whitted, "An improved illumination model for shaded
+ * display", CACM 23(6), 1980; SIGGRAPH 1979): ray casting's local shading plus perfect
+ * reflection and refraction, followed recursively.
+ *
+ * At a hit:
+ * - an emitter: its radiance (also when seen through mirrors and glass), then HitLight;
+ * - Diffuse and Glossy: exactly ray casting's local shading (RayCastingRule::addLocalShading),
+ *   so both algorithms agree pixel for pixel on scenes without specular surfaces;
+ * - Mirror and Dielectric: every specular lobe (bsdf::specularLobes: reflection and
+ *   refraction, weighted by the seed's rates or by Fresnel, total internal reflection
+ *   included) becomes a Reflection / Refraction child, while the ray's depth is below
+ *   maxDepth; at maxDepth the ray ends (MaxDepth) and contributes nothing.
+ *
+ * Parameters (RenderSettings): maxDepth (default 5; the camera ray has depth 0),
+ * samplesPerPixel (jittered film positions when > 1, lens centre, time 0), seed, background.
+ */
+class WhittedRule final : public SpawnRule {
+ public:
+  Algorithm kind() const override { return Algorithm::Whitted; }
+  HitDecision onHit(const HitContext& context, std::vector<QueuedRay>& children) const override;
+
+  /// Appends the specular children of a Mirror / Dielectric hit below maxDepth (shared
+  /// with distributed tracing); returns MaxDepth, Absorbed or Spawned.
+  static EndReason addSpecularChildren(const HitContext& context, std::vector<QueuedRay>& children);
+};
+
+}  // namespace raylab

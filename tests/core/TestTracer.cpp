@@ -1,0 +1,360 @@
+// The engine shared by the four algorithms: ray counts, the recorded tree and its
+// invariants, stepping, the equality of the recorded tree's estimate with Tracer::trace,
+// escaped and occluded rays as drawn, and the memory budget of recorded trees.
+#include "raylab/core/Tracer.h"
+
+#include "TransportScenes.h"
+#include "raylab/core/SpawnRule.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+namespace raylab {
+namespace {
+
+using testing::addMaterial;
+using testing::addObject;
+using testing::allMaterialsScene;
+using testing::makeMaterial;
+using testing::settingsFor;
+
+constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
+                                     Algorithm::Distributed, Algorithm::PathTracing};
+
+/// |a - b| <= 1e-12 relative to the larger magnitude, per channel (all radiance >= 0).
+void expectNearRelative(const Vec3& a, const Vec3& b, const std::string& what) {
+  for (int c = 0; c < 3; ++c) {
+    const double scale = std::max({std::abs(a[c]), std::abs(b[c]), 1e-300});
+    EXPECT_LE(std::abs(a[c] - b[c]), 1e-12 * scale)
+        << what << " channel " << c << ": " << a[c] << " vs " << b[c];
+  }
+}
+
+TEST(Tracer, 01_RayCountsAddAndTotal) {
+  RayCounts a, b;
+  a.byKind[std::size_t(RayKind::Camera)] = 3;
+  a.byKind[std::size_t(RayKind::Shadow)] = 5;
+  b.byKind[std::size_t(RayKind::Shadow)] = 2;
+  b.byKind[std::size_t(RayKind::Glossy)] = 7;
+  a += b;
+  EXPECT_EQ(a.byKind[std::size_t(RayKind::Camera)], 3u);
+  EXPECT_EQ(a.byKind[std::size_t(RayKind::Shadow)], 7u);
+  EXPECT_EQ(a.byKind[std::size_t(RayKind::Glossy)], 7u);
+  EXPECT_EQ(a.total(), 17u);  // 3 + 7 + 7
+  EXPECT_EQ(RayCounts{}.total(), 0u);
+}
+
+TEST(Tracer, 02_KindAndEndReasonNames) {
+  EXPECT_STREQ(toString(RayKind::Camera), "camera");
+  EXPECT_STREQ(toString(RayKind::Reflection), "reflection");
+  EXPECT_STREQ(toString(RayKind::Refraction), "refraction");
+  EXPECT_STREQ(toString(RayKind::Diffuse), "diffuse");
+  EXPECT_STREQ(toString(RayKind::Glossy), "glossy");
+  EXPECT_STREQ(toString(RayKind::Shadow), "shadow");
+  EXPECT_STREQ(toString(EndReason::Escaped), "escaped");
+  EXPECT_STREQ(toString(EndReason::RussianRoulette), "Russian roulette");
+  EXPECT_STREQ(toString(EndReason::ReachedLight), "reached its light");
+  EXPECT_EQ(SpawnRule::create(settingsFor(Algorithm::Whitted, 1))->kind(), Algorithm::Whitted);
+  EXPECT_EQ(SpawnRule::create(settingsFor(Algorithm::PathTracing, 1))->kind(),
+            Algorithm::PathTracing);
+}
+
+// The recorded tree's estimate (propagated bottom-up) equals Tracer::trace for the same
+// (pixel, sample, seed), for every algorithm, on a scene with every material. The
+// stepper's running estimate uses the very same summation as trace: bit-equal. The tree
+// sums in another order (weights times children's radiance): within 1e-12 relative.
+TEST(Tracer, 03_TreeEstimateEqualsTraceForAllAlgorithms) {
+  const Scene scene = allMaterialsScene();
+  const int pixels[][2] = {{8, 6}, {2, 9}, {13, 3}, {5, 5}, {11, 10}, {0, 0}, {7, 8}};
+  for (Algorithm algorithm : kAlgorithms) {
+    RenderSettings settings = settingsFor(algorithm, 4, 7);
+    settings.maxDepth = 6;
+    settings.shadowSamples = 2;
+    settings.glossySamples = 2;
+    const Tracer tracer(scene, settings);
+    int nonZero = 0;
+    for (const auto& p : pixels) {
+      for (int sample = 0; sample < 4; ++sample) {
+        RayCounts traceCounts;
+        const Vec3 traced = tracer.trace(p[0], p[1], sample, &traceCounts);
+        Stepper stepper(tracer, p[0], p[1], sample);
+        stepper.runToEnd();
+        const std::string what = std::string(toString(algorithm)) + " pixel (" +
+                                 std::to_string(p[0]) + ", " + std::to_string(p[1]) + ") sample " +
+                                 std::to_string(sample);
+        ASSERT_TRUE(stepper.done());
+        ASSERT_FALSE(stepper.tree().truncated) << what;
+        EXPECT_EQ(stepper.estimate(), traced) << what;  // bit-equal: one step function
+        expectNearRelative(stepper.tree().estimate(), traced, what);
+        EXPECT_EQ(stepper.counts().byKind, traceCounts.byKind) << what;
+        EXPECT_EQ(stepper.tree().segments.size(), traceCounts.total()) << what;
+        if (traced.x + traced.y + traced.z > 0.0) ++nonZero;
+      }
+    }
+    EXPECT_GT(nonZero, 10) << toString(algorithm) << ": the scene must be lit";
+  }
+}
+
+// Structure of a recorded tree: the bookkeeping of RayTree.h holds for every segment.
+TEST(Tracer, 04_TreeStructureIsConsistent) {
+  const Scene scene = allMaterialsScene();
+  for (Algorithm algorithm : kAlgorithms) {
+    RenderSettings settings = settingsFor(algorithm, 2, 3);
+    settings.shadowSamples = 2;
+    settings.glossySamples = 3;
+    const Tracer tracer(scene, settings);
+    for (int sample = 0; sample < 6; ++sample) {
+      Stepper stepper(tracer, 9, 7, sample);
+      stepper.runToEnd();
+      const RayTree& tree = stepper.tree();
+      ASSERT_FALSE(tree.segments.empty());
+      EXPECT_EQ(tree.pixelX, 9);
+      EXPECT_EQ(tree.pixelY, 7);
+      EXPECT_EQ(tree.sample, sample);
+      EXPECT_EQ(tree.segments[0].kind, RayKind::Camera);
+      EXPECT_EQ(tree.segments[0].parent, -1);
+      EXPECT_EQ(tree.segments[0].depth, 0);
+      EXPECT_EQ(tree.segments[0].throughput, Vec3(1.0));
+      for (std::size_t i = 0; i < tree.segments.size(); ++i) {
+        const RaySegment& s = tree.segments[i];
+        EXPECT_EQ(s.id, int(i));
+        EXPECT_NE(s.endReason, EndReason::Pending) << "segment " << i;
+        EXPECT_EQ(s.endReason == EndReason::Spawned, s.childCount > 0) << "segment " << i;
+        EXPECT_NEAR(glm::length(s.direction), 1.0, 1e-12);
+        EXPECT_TRUE(testing::isFiniteVec(s.radiance));
+        // Radiance after propagation: emitted + sum of weighted children.
+        Vec3 sum = s.emitted;
+        for (int c = 0; c < s.childCount; ++c) {
+          const RaySegment& child = tree.segments[std::size_t(s.firstChild + c)];
+          // Children of one ray are consecutive, point back to it, one level deeper.
+          EXPECT_EQ(child.parent, s.id);
+          EXPECT_EQ(child.depth, s.depth + 1);
+          EXPECT_GT(child.id, s.id);
+          EXPECT_EQ(child.throughput, s.throughput * child.weight);
+          EXPECT_EQ(child.time, s.time);
+          sum += child.weight * child.radiance;
+        }
+        EXPECT_EQ(s.radiance, sum);
+        if (s.kind == RayKind::Shadow) {
+          EXPECT_EQ(s.childCount, 0);
+          EXPECT_TRUE(s.endReason == EndReason::Occluded || s.endReason == EndReason::ReachedLight);
+        }
+        if (s.endReason == EndReason::Spawned) {
+          EXPECT_TRUE(s.hit);
+          EXPECT_GE(s.object, 0);
+          EXPECT_NEAR(glm::length(s.normal), 1.0, 1e-12);
+        }
+      }
+    }
+  }
+}
+
+// Stepping: the queue, the tree so far and the last event, one ray at a time; reset
+// starts over and replays the same algorithm exactly.
+TEST(Tracer, 05_StepperExposesQueueTreeAndEvents) {
+  const Scene scene = allMaterialsScene();
+  RenderSettings settings = settingsFor(Algorithm::Whitted, 1);
+  const Tracer tracer(scene, settings);
+  Stepper stepper(tracer, 8, 6, 0);
+  // Before the first step: the camera ray waits in the queue.
+  EXPECT_FALSE(stepper.done());
+  ASSERT_EQ(stepper.queue().size(), 1u);
+  EXPECT_EQ(stepper.queue().front().kind, RayKind::Camera);
+  ASSERT_EQ(stepper.tree().segments.size(), 1u);
+  EXPECT_EQ(stepper.tree().segments[0].endReason, EndReason::Pending);
+  EXPECT_FALSE(stepper.lastEvent().text.empty());
+
+  // The first step processes the camera ray.
+  ASSERT_TRUE(stepper.step());
+  EXPECT_EQ(stepper.lastEvent().ray, 0);
+  EXPECT_EQ(stepper.lastEvent().end, stepper.tree().segments[0].endReason);
+  EXPECT_EQ(std::size_t(stepper.lastEvent().spawned), stepper.queue().size());
+  EXPECT_NE(stepper.lastEvent().text.find("camera ray #0"), std::string::npos)
+      << stepper.lastEvent().text;
+  EXPECT_EQ(stepper.tree().segments.size(), 1u + stepper.queue().size());
+  for (const QueuedRay& q : stepper.queue()) EXPECT_EQ(q.parent, 0);
+
+  // Step to the end, counting steps: one per ray.
+  std::size_t steps = 1;
+  while (stepper.step()) ++steps;
+  EXPECT_TRUE(stepper.done());
+  EXPECT_FALSE(stepper.step());
+  const RayTree first = stepper.tree();
+  EXPECT_EQ(steps, first.segments.size());
+  EXPECT_EQ(stepper.estimate(), tracer.trace(8, 6, 0));
+
+  // Reset: the same tree again.
+  stepper.reset();
+  EXPECT_EQ(stepper.tree().segments.size(), 1u);
+  EXPECT_EQ(stepper.estimate(), Vec3(0.0));
+  stepper.runToEnd();
+  ASSERT_EQ(stepper.tree().segments.size(), first.segments.size());
+  for (std::size_t i = 0; i < first.segments.size(); ++i) {
+    EXPECT_EQ(stepper.tree().segments[i].direction, first.segments[i].direction);
+    EXPECT_EQ(stepper.tree().segments[i].radiance, first.segments[i].radiance);
+  }
+}
+
+// Escaped rays are drawn to origin + L * direction with L the scene's bounding diagonal.
+TEST(Tracer, 06_EscapedRaysAreDrawnAtTheSceneDiagonal) {
+  Scene scene;
+  const int grey = addMaterial(scene, makeMaterial("grey", MaterialType::Diffuse, Vec3(0.5)));
+  addObject(scene, "ball", std::make_unique<Sphere>(Point3(0.0, 0.0, -5.0), 1.0), grey);
+  scene.camera.position = Point3(0.0, 0.0, 3.0);
+  scene.camera.lookAt = Point3(0.0, 0.0, 13.0);  // looks away from the ball
+  scene.camera.width = scene.camera.height = 3;
+  RenderSettings settings = settingsFor(Algorithm::Whitted, 1);
+  settings.background = Vec3(0.25, 0.5, 0.75);
+  const Tracer tracer(scene, settings);
+  // Bounds: ball [-1, 1] x [-1, 1] x [-6, -4] and the camera (0, 0, 3):
+  // extent (2, 2, 9), diagonal sqrt(4 + 4 + 81) = sqrt(89).
+  EXPECT_NEAR(tracer.escapeLength(), std::sqrt(89.0), 1e-12);
+  Stepper stepper(tracer, 1, 1, 0);
+  stepper.runToEnd();
+  ASSERT_EQ(stepper.tree().segments.size(), 1u);
+  const RaySegment& s = stepper.tree().segments[0];
+  EXPECT_EQ(s.endReason, EndReason::Escaped);
+  EXPECT_FALSE(s.hit);
+  EXPECT_EQ(s.object, -1);
+  const Point3 expected = s.origin + std::sqrt(89.0) * s.direction;
+  EXPECT_NEAR(glm::length(s.endPoint - expected), 0.0, 1e-12);
+  // An escaped ray brings the background radiance.
+  EXPECT_EQ(stepper.estimate(), Vec3(0.25, 0.5, 0.75));
+  EXPECT_EQ(s.radiance, Vec3(0.25, 0.5, 0.75));
+}
+
+// A shadow ray blocked on its way to the point light ends at the blocker; one that
+// reaches the light delivers I / d^2 and ends at the light.
+TEST(Tracer, 07_ShadowRaysEndAtTheBlockerOrTheLight) {
+  Scene scene;
+  const int grey = addMaterial(scene, makeMaterial("grey", MaterialType::Diffuse, Vec3(0.5)));
+  const int floor =
+      addObject(scene, "floor",
+                std::make_unique<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), grey);
+  // Blocks the light above x < 0 only: box x in [-2, -0.5], y in [1, 1.2].
+  const int blocker = addObject(
+      scene, "blocker", std::make_unique<Box>(Point3(-1.25, 1.1, 0.0), Vec3(1.5, 0.2, 4.0)), grey);
+  PointLight light;
+  light.name = "bulb";
+  light.position = Point3(-1.0, 2.0, 0.0);
+  light.intensity = Vec3(4.0);
+  scene.pointLights.push_back(light);
+  scene.camera.position = Point3(0.0, 3.0, 0.0);
+  scene.camera.lookAt = Point3(0.0, 0.0, 0.0);
+  scene.camera.up = Vec3(0.0, 0.0, -1.0);
+  // 8 pixels across x in about [-2.5, 2.5] of the floor; no pixel centre at x = 0.
+  scene.camera.verticalFov = 12.0;
+  scene.camera.width = 8;
+  scene.camera.height = 1;
+  const Tracer tracer(scene, settingsFor(Algorithm::RayCasting, 1));
+
+  int occluded = 0, reached = 0;
+  for (int x = 0; x < 8; ++x) {
+    Stepper stepper(tracer, x, 0, 0);
+    stepper.runToEnd();
+    const RayTree& tree = stepper.tree();
+    if (tree.segments[0].object == blocker) continue;  // the blocker's top, seen from above
+    ASSERT_EQ(tree.segments[0].object, floor);
+    ASSERT_EQ(tree.segments[0].childCount, 1);
+    const RaySegment& camera = tree.segments[0];
+    const RaySegment& shadow = tree.segments[1];
+    EXPECT_EQ(shadow.kind, RayKind::Shadow);
+    if (shadow.endReason == EndReason::Occluded) {
+      ++occluded;
+      EXPECT_TRUE(shadow.hit);
+      EXPECT_EQ(shadow.object, blocker);
+      EXPECT_NEAR(shadow.endPoint.y, 1.0, 1e-9);  // the blocker's underside
+      EXPECT_EQ(stepper.estimate(), Vec3(0.0));
+    } else {
+      ++reached;
+      EXPECT_EQ(shadow.endReason, EndReason::ReachedLight);
+      EXPECT_NEAR(glm::length(shadow.endPoint - light.position), 0.0, 1e-9);
+      // Lambert with a point light: colour / pi * cos(theta) * I / d^2.
+      const Vec3 d = light.position - camera.endPoint;
+      const double d2 = glm::dot(d, d);
+      const double cosTheta = d.y / std::sqrt(d2);
+      const double expected = 0.5 / kPi * cosTheta * 4.0 / d2;
+      EXPECT_NEAR(stepper.estimate().x, expected, 1e-9 * expected);
+      EXPECT_NEAR(shadow.weight.x, 0.5 / kPi * cosTheta, 1e-9);
+      EXPECT_NEAR(shadow.emitted.x, 4.0 / d2, 1e-9);
+    }
+  }
+  EXPECT_GT(occluded, 0);
+  EXPECT_GT(reached, 0);
+}
+
+// A bushy distributed tree under a tiny memory budget: recording stops with a clear
+// message, never beyond the budget, and the estimate is still exactly trace()'s.
+TEST(Tracer, 08_MemoryBudgetStopsRecordingNotTheEstimate) {
+  const Scene scene = allMaterialsScene();
+  RenderSettings settings = settingsFor(Algorithm::Distributed, 1);
+  settings.shadowSamples = 8;
+  settings.glossySamples = 8;
+  settings.maxDepth = 6;
+  const Tracer tracer(scene, settings);
+  const std::size_t budget = 40 * sizeof(RaySegment);
+  int truncatedTrees = 0;
+  std::size_t largest = 0;
+  for (int x = 0; x < 16; ++x) {
+    for (int y = 0; y < 12; ++y) {
+      Stepper stepper(tracer, x, y, 0, budget);
+      stepper.runToEnd();
+      const RayTree& tree = stepper.tree();
+      EXPECT_LE(tree.segments.size() * sizeof(RaySegment), budget);
+      EXPECT_LE(tree.memoryBytes(), budget);
+      RayCounts counts;
+      EXPECT_EQ(stepper.estimate(), tracer.trace(x, y, 0, &counts));
+      EXPECT_EQ(stepper.counts().byKind, counts.byKind);
+      largest = std::max<std::size_t>(largest, counts.total());
+      if (tree.truncated) {
+        ++truncatedTrees;
+        EXPECT_GT(counts.total(), tree.segments.size());
+        EXPECT_NE(tree.message.find("ray tree truncated at " +
+                                    std::to_string(tree.segments.size()) + " rays"),
+                  std::string::npos)
+            << tree.message;
+        EXPECT_NE(tree.message.find("MiB budget); the estimate is still exact"), std::string::npos)
+            << tree.message;
+      } else {
+        EXPECT_TRUE(tree.message.empty());
+        EXPECT_EQ(counts.total(), tree.segments.size());
+      }
+    }
+  }
+  EXPECT_GT(truncatedTrees, 0) << "the scene must branch beyond 40 rays somewhere; largest "
+                               << largest;
+
+  // A budget below one segment records nothing at all, and still computes the estimate.
+  Stepper none(tracer, 8, 6, 0, sizeof(RaySegment) - 1);
+  none.runToEnd();
+  EXPECT_TRUE(none.tree().truncated);
+  EXPECT_TRUE(none.tree().segments.empty());
+  EXPECT_EQ(none.tree().estimate(), Vec3(0.0));
+  EXPECT_EQ(none.estimate(), tracer.trace(8, 6, 0));
+}
+
+// trace() is a pure function of (pixel, sample, seed): the same on any thread, in any
+// order, and different seeds give different samples.
+TEST(Tracer, 09_TraceIsDeterministic) {
+  const Scene scene = allMaterialsScene();
+  const Tracer tracer(scene, settingsFor(Algorithm::PathTracing, 4, 11));
+  const Tracer otherSeed(scene, settingsFor(Algorithm::PathTracing, 4, 12));
+  std::vector<Vec3> first, second(48);
+  for (int i = 0; i < 48; ++i) first.push_back(tracer.trace(i % 16, i / 16 + 4, i % 4));
+  std::thread worker([&] {
+    for (int i = 47; i >= 0; --i) second[std::size_t(i)] = tracer.trace(i % 16, i / 16 + 4, i % 4);
+  });
+  worker.join();
+  int differs = 0;
+  for (int i = 0; i < 48; ++i) {
+    EXPECT_EQ(first[std::size_t(i)], second[std::size_t(i)]) << "sample " << i;
+    if (otherSeed.trace(i % 16, i / 16 + 4, i % 4) != first[std::size_t(i)]) ++differs;
+  }
+  EXPECT_GT(differs, 24);
+}
+
+}  // namespace
+}  // namespace raylab
