@@ -1,6 +1,7 @@
 #include "CommandLine.h"
 
 #include "ExitCodes.h"
+#include "RenderCommand.h"
 #include "SnapshotCommand.h"
 
 #if RAYLAB_WITH_GUI
@@ -9,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
 #include <iostream>
 
 namespace raylab::app {
@@ -84,6 +86,45 @@ int runCommandLine(int argc, char** argv) {
       ->check(CLI::Validator(checkSize, "WxH"))
       ->capture_default_str();
 
+  // raylab render
+  RenderOptions render;
+  std::string renderSize;
+  std::string renderAlgorithm;
+  int renderSpp = 0;
+  std::uint64_t renderSeed = 0;
+  CLI::App* renderCommand = cli.add_subcommand(
+      "render", "Render the scene with a ray-tracing algorithm to an image file (no display)");
+  renderCommand->footer(
+      "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable output),\n"
+      "            2 usage error, 3 internal error (please report it).\n"
+      "Needs no display: the image is ray traced on the CPU. Progress goes to stderr.");
+  renderCommand->add_option("--out,-o", render.out, "Image to write: .png, .ppm or .pfm (linear)")
+      ->required()
+      ->check(CLI::Validator(
+          [](const std::string& path) {
+            return isRenderOutput(path) ? std::string()
+                                        : "the file name must end in .png, .ppm or .pfm";
+          },
+          "FILE"));
+  renderCommand->add_option("--scene", render.scene, "Scene file (default: the built-in scene)");
+  CLI::Option* algorithmOption =
+      renderCommand
+          ->add_option("--algorithm,-a", renderAlgorithm,
+                       "raycast, whitted, distributed or path (default: the scene's)")
+          ->check(CLI::IsMember({"raycast", "whitted", "distributed", "path"}));
+  CLI::Option* sppOption =
+      renderCommand->add_option("--spp", renderSpp, "Samples per pixel (default: the scene's)")
+          ->check(CLI::Range(1, 1 << 20));
+  CLI::Option* seedOption =
+      renderCommand->add_option("--seed", renderSeed, "Random seed (default: the scene's)");
+  renderCommand->add_option("--threads", render.threads, "Worker threads, 0 = all")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  CLI::Option* renderSizeOption =
+      renderCommand
+          ->add_option("--size", renderSize, "Image size WIDTHxHEIGHT (default: the scene's)")
+          ->check(CLI::Validator(checkSize, "WxH"));
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -97,6 +138,19 @@ int runCommandLine(int argc, char** argv) {
     snapshot.height = wh->second;
     if (snapshot.scene.empty()) snapshot.scene = windowScene;  // raylab --scene F snapshot
     return runSnapshot(snapshot);
+  }
+
+  if (*renderCommand) {
+    if (*algorithmOption) render.algorithm = renderAlgorithm;
+    if (*sppOption) render.spp = renderSpp;
+    if (*seedOption) render.seed = renderSeed;
+    if (*renderSizeOption) {
+      const auto wh = parseSize(renderSize);
+      render.width = wh->first;
+      render.height = wh->second;
+    }
+    if (render.scene.empty()) render.scene = windowScene;  // raylab --scene F render
+    return runRender(render);
   }
 
 #if RAYLAB_WITH_GUI

@@ -13,7 +13,9 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
  * \brief Parses the command line and runs the chosen command.
  *
  * `raylab` alone opens the window; `raylab snapshot --out FILE.png [--scene FILE]
- * [--size WxH]` renders the same view headless. Usage errors print CLI11's message and
+ * [--size WxH]` renders the same view headless; `raylab render --out FILE.png|.ppm|.pfm
+ * [--scene FILE] [--algorithm A] [--spp N] [--seed S] [--threads T] [--size WxH]` ray
+ * traces the scene into an image (see RenderCommand.h). Usage errors print CLI11's message and
  * return kExitUsage; --help and --version return kExitOk. Errors while running are
  * thrown to main(), which maps them to exit codes (see ExitCodes.h).
  */
