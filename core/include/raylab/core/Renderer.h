@@ -35,7 +35,8 @@ struct RenderStats {
  */
 class Renderer {
  public:
-  /// Called after each pass with the fraction done and the image so far.
+  /// Called on the thread that runs render(), after each pass, with the fraction of the
+  /// samples done and the image so far.
   using Progress = std::function<void(double fraction, const FloatImage& image)>;
 
   Renderer(const Scene& scene, const RenderSettings& settings);
@@ -43,7 +44,9 @@ class Renderer {
   /// Worker threads; 0 = all hardware threads.
   void setThreads(int threads) { m_threads = threads; }
   void setProgress(Progress progress) { m_progress = std::move(progress); }
-  /// Safe from any thread: stops at the next tile; render() returns what is done.
+  /// Safe from any thread (also from the progress callback): workers stop before their
+  /// next tile and render() returns the image of the last complete pass. A cancelled
+  /// renderer stays cancelled: make a new one to render again.
   void cancel() { m_cancel = true; }
 
   /// Renders at the scene camera's width x height.
