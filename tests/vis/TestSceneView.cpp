@@ -171,7 +171,10 @@ TEST(SceneView, 06_EllipsoidFollowsItsTransform) {
   // A unit sphere stretched 3x along x, seen straight down -z: 3 times wider than tall.
   Scene scene;
   scene.name = "ellipsoid";
-  scene.materials = {{"red", {0.8, 0.1, 0.1}, Vec3(0.0), 1.0}};
+  Material red;
+  red.name = "red";
+  red.colour = {0.8, 0.1, 0.1};
+  scene.materials = {red};
   auto sphere = std::make_unique<Sphere>(Point3(0.0), 1.0, 32, 48);
   sphere->apply(Transform::scale({3.0, 1.0, 1.0}).matrix());
   scene.objects.emplace_back("ellipsoid", std::move(sphere), 0);

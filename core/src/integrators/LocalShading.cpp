@@ -124,7 +124,7 @@ void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<Queue
   }
 }
 
-void addAreaLightRays(const HitContext& context, int samplesPerLight, bool centre, Lobes lobes,
+void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobes,
                       std::vector<QueuedRay>& children) {
   if (samplesPerLight <= 0) return;
   const SurfaceInteraction& si = context.hit.si;
@@ -134,8 +134,8 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, bool centr
   for (int object : context.scene.areaLights()) {
     if (object == context.hit.object) continue;  // a surface does not light itself
     for (int k = 0; k < samplesPerLight; ++k) {
-      // A point on the light: the fixed centre-ish sample, or a random one (soft shadows).
-      const Vec2 u = centre ? Vec2(0.5) : context.sampler.next2D();
+      // A random point on the light (soft shadows).
+      const Vec2 u = context.sampler.next2D();
       const std::optional<LightSample> ls =
           sampleAreaLight(context.scene, object, si.p, u, context.ray.ray.time);
       if (!ls) continue;
@@ -144,6 +144,45 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, bool centr
       // Monte Carlo estimate of the light's integral: f cos Le / pdf, averaged over N.
       children.push_back(shadowRay(context, ls->p, fCos * (invN / ls->pdf), ls->Le, true));
     }
+  }
+}
+
+void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
+  const SurfaceInteraction& si = context.hit.si;
+  const Normal3 n = si.facingNormal();
+  const Vec3 wo = -context.ray.ray.direction;
+  const Scene& scene = context.scene.scene();
+  for (int object : context.scene.areaLights()) {
+    if (object == context.hit.object) continue;  // a surface does not light itself
+    const SceneObject& light = scene.objects[std::size_t(object)];
+    if (light.shape->kind() == ShapeKind::Plane) continue;  // no centre to aim at
+    // The light where it is at this shutter time, and the direction to its centre.
+    const Vec3 shift = context.ray.ray.time * light.velocity;
+    const Point3 centre = light.shape->bounds().centre() + shift;
+    const Vec3 d = centre - si.p;
+    const double distance2 = glm::dot(d, d);
+    if (!(distance2 > 0.0)) continue;
+    const Vec3 wi = d / std::sqrt(distance2);
+
+    // Intensity of the emitter seen from far away in direction -wi.
+    const Vec3 Le = scene.materials[std::size_t(light.material)].emission;
+    const double area = light.shape->area();
+    const bool flat =
+        light.shape->kind() == ShapeKind::Quad || light.shape->kind() == ShapeKind::Triangle;
+    double projectedArea = 0.25 * area;
+    if (flat) {
+      const double cosLight = -glm::dot(light.shape->normal(centre - shift), wi);
+      if (cosLight <= 0.0) continue;  // the light's back faces the point
+      projectedArea = area * cosLight;
+    }
+    const Vec3 fCos = classicShading(context.material, n, wo, wi, lobes);
+    if (isBlack(fCos) || isBlack(Le)) continue;
+
+    // Aim at the light's centre but stop where the ray enters the light.
+    Ray probe = Ray::make(si.p - shift, wi);
+    const std::optional<Hit> entry = light.shape->intersect(probe);
+    const Point3 target = entry ? si.p + entry->t * wi : centre;
+    children.push_back(shadowRay(context, target, fCos, Le * (projectedArea / distance2), true));
   }
 }
 

@@ -55,9 +55,17 @@ QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3&
 /// f cos (classicShading), delivering intensity / d^2.
 void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children);
 
-/// Appends `samplesPerLight` shadow rays per area light with weight f cos / (pdf N):
-/// u from the sampler, or the fixed u = (0.5, 0.5) when `centre` (ray casting, Whitted).
-void addAreaLightRays(const HitContext& context, int samplesPerLight, bool centre, Lobes lobes,
+/// Appends `samplesPerLight` shadow rays per area light to points sampled on it, with
+/// weight f cos / (pdf N): a Monte Carlo estimate of the light's integral (soft shadows).
+void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobes,
                       std::vector<QueuedRay>& children);
+
+/// The classic algorithms' view of an area light (ray casting, Whitted): one shadow ray
+/// to the centre of its bounds, as if it were a point light there with the intensity the
+/// emitter has seen from far away: Le A cos(theta_light) for a flat light (front side
+/// only), Le A / 4 for a closed one (exact for a sphere: projected area pi r^2 = A / 4).
+/// The shadow ray stops where it enters the light, so the light never shadows itself.
+/// Hard shadows, deterministic, no sampling.
+void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children);
 
 }  // namespace raylab::shading

@@ -12,7 +12,7 @@ Scene defaultScene() {
 
   // Materials: the seed's red sphere, blue cube and flesh-coloured light, grey walls.
   const Vec3 flesh(1.0, 0.8, 0.65);
-  auto material = [](std::string name, const Vec3& colour, const Vec3& emission) {
+  auto makeMaterial = [](std::string name, const Vec3& colour, const Vec3& emission) {
     Material m;
     m.name = std::move(name);
     m.colour = colour;
@@ -20,10 +20,10 @@ Scene defaultScene() {
     return m;
   };
   scene.materials = {
-      material("red", {0.80, 0.10, 0.10}, Vec3(0.0)),
-      material("blue", {0.10, 0.20, 0.80}, Vec3(0.0)),
-      material("light", flesh, 8.0 * flesh),
-      material("wall", {0.75, 0.75, 0.75}, Vec3(0.0)),
+      makeMaterial("red", {0.80, 0.10, 0.10}, Vec3(0.0)),
+      makeMaterial("blue", {0.10, 0.20, 0.80}, Vec3(0.0)),
+      makeMaterial("light", flesh, 8.0 * flesh),
+      makeMaterial("wall", {0.75, 0.75, 0.75}, Vec3(0.0)),
   };
   const int red = 0, blue = 1, light = 2, wall = 3;
 

@@ -48,7 +48,7 @@ HitDecision DistributedRule::onHit(const HitContext& context,
   shading::addPointLightRays(context, shading::Lobes::All, children);
   const shading::Lobes areaLobes =
       m.type == MaterialType::Glossy ? shading::Lobes::DiffuseOnly : shading::Lobes::All;
-  shading::addAreaLightRays(context, context.settings.shadowSamples, false, areaLobes, children);
+  shading::addAreaLightRays(context, context.settings.shadowSamples, areaLobes, children);
 
   // Glossy reflection: several rays spread over the Phong lobe.
   const bool glossy = m.type == MaterialType::Glossy && m.specular > 0.0;

@@ -6,7 +6,7 @@ namespace raylab {
 
 void RayCastingRule::addLocalShading(const HitContext& context, std::vector<QueuedRay>& children) {
   shading::addPointLightRays(context, shading::Lobes::All, children);
-  shading::addAreaLightRays(context, 1, true, shading::Lobes::All, children);
+  shading::addCentreLightRays(context, shading::Lobes::All, children);
 }
 
 HitDecision RayCastingRule::onHit(const HitContext& context,
