@@ -30,6 +30,8 @@
 // raw relative error |dt| / max(1, |t|) and the worst scaled error per primitive.
 #include "raylab/core/ExactOracle.h"
 
+#include "RandomGeometry.h"
+
 #include "raylab/core/Box.h"
 #include "raylab/core/MeshFactory.h"
 #include "raylab/core/Plane.h"
@@ -61,25 +63,14 @@ constexpr double kBand = 16.0;
 constexpr double kTBound = 8.0;
 constexpr std::uint64_t kBaseSeed = 0x5EED0AC1E2024ULL;
 
-using Rng = std::mt19937_64;
+using testing::chance;
+using testing::randomAffine;
+using testing::randomInCube;
+using testing::randomUnit;
+using testing::Rng;
+using testing::uniform;
 
-double uniform(Rng& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
 int uniformInt(Rng& rng, int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
-bool chance(Rng& rng, double p) { return uniform(rng, 0.0, 1.0) < p; }
-
-Vec3 randomUnit(Rng& rng) {
-  std::normal_distribution<double> g;
-  Vec3 v;
-  do v = Vec3(g(rng), g(rng), g(rng));
-  while (glm::length(v) < 1e-3);
-  return glm::normalize(v);
-}
-
-Vec3 randomInCube(Rng& rng, double h) {
-  return {uniform(rng, -h, h), uniform(rng, -h, h), uniform(rng, -h, h)};
-}
 
 /// A unit vector perpendicular to n.
 Vec3 perpendicular(Rng& rng, const Vec3& n) {
@@ -108,16 +99,6 @@ double randomMagnitude(Rng& rng) {
 }
 
 /// translate * rotate * scale with a random axis, angle, non-uniform factors and offset.
-Mat4 randomAffine(Rng& rng, double magnitude, bool uniformScale) {
-  const double s = magnitude * uniform(rng, 0.5, 2.0);
-  const Vec3 factors = uniformScale ? Vec3(s)
-                                    : Vec3(s * uniform(rng, 0.25, 4.0), s * uniform(rng, 0.25, 4.0),
-                                           s * uniform(rng, 0.25, 4.0));
-  const Transform t = Transform::translate(randomInCube(rng, 4.0 * magnitude)) *
-                      Transform::rotate(uniform(rng, 0.0, 2.0 * kPi), randomUnit(rng)) *
-                      Transform::scale(factors);
-  return t.matrix();
-}
 
 /// Frobenius condition number of the linear part, ||M|| ||M^-1||, at least 1.
 double conditionNumber(const Mat4& m) {

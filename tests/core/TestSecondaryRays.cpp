@@ -4,6 +4,8 @@
 // shapes at scales from 1e-6 to 1e6 with non-uniform transforms.
 #include "raylab/core/RayOffset.h"
 
+#include "RandomGeometry.h"
+
 #include "raylab/core/Box.h"
 #include "raylab/core/ExactOracle.h"
 #include "raylab/core/Plane.h"
@@ -25,39 +27,19 @@
 namespace raylab {
 namespace {
 
-using Rng = std::mt19937_64;
+using testing::chance;
+using testing::randomInCube;
+using testing::randomUnit;
+using testing::Rng;
+using testing::uniform;
 constexpr std::uint64_t kSeed = 0x5EC0DA7E2024ULL;
-
-double uniform(Rng& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-bool chance(Rng& rng, double p) { return uniform(rng, 0.0, 1.0) < p; }
-
-Vec3 randomUnit(Rng& rng) {
-  std::normal_distribution<double> g;
-  Vec3 v;
-  do v = Vec3(g(rng), g(rng), g(rng));
-  while (glm::length(v) < 1e-3);
-  return glm::normalize(v);
-}
-
-Vec3 randomInCube(Rng& rng, double h) {
-  return {uniform(rng, -h, h), uniform(rng, -h, h), uniform(rng, -h, h)};
-}
 
 /// translate * rotate * scale, overall size 1e-6 .. 1e6, non-uniform half of the time.
 Mat4 randomAffine(Rng& rng) {
   static const double kMagnitudes[] = {1e-6, 1e-3, 1.0, 1.0, 1e3, 1e6};
   const double m = kMagnitudes[std::uniform_int_distribution<int>(0, 5)(rng)];
   const bool uniformScale = chance(rng, 0.5);
-  const double s = m * uniform(rng, 0.5, 2.0);
-  const Vec3 factors = uniformScale ? Vec3(s)
-                                    : Vec3(s * uniform(rng, 0.25, 4.0), s * uniform(rng, 0.25, 4.0),
-                                           s * uniform(rng, 0.25, 4.0));
-  return (Transform::translate(randomInCube(rng, 4.0 * m)) *
-          Transform::rotate(uniform(rng, 0.0, 2.0 * kPi), randomUnit(rng)) *
-          Transform::scale(factors))
-      .matrix();
+  return testing::randomAffine(rng, m, uniformScale);
 }
 
 std::unique_ptr<Shape> randomShape(Rng& rng, ShapeKind kind) {

@@ -1,5 +1,7 @@
 #include "raylab/vis/Image.h"
 
+#include "VtkImage.h"
+
 #include "raylab/core/Check.h"
 
 #include <vtkImageData.h>
@@ -44,10 +46,7 @@ std::string Image::toString() const {
   return "Image(" + std::to_string(width) + "x" + std::to_string(height) + ")";
 }
 
-namespace {
-
-/// VTK image data with the same pixels; VTK's rows run bottom-up, so rows are flipped.
-vtkSmartPointer<vtkImageData> toVtk(const Image& image) {
+vtkSmartPointer<vtkImageData> detail::toVtkImage(const Image& image) {
   auto data = vtkSmartPointer<vtkImageData>::New();
   data->SetDimensions(image.width, image.height, 1);
   data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
@@ -60,8 +59,6 @@ vtkSmartPointer<vtkImageData> toVtk(const Image& image) {
   return data;
 }
 
-}  // namespace
-
 double compareImages(const Image& a, const Image& b) {
   // Step 1: pictures of different sizes are as different as it gets.
   if (a.width != b.width || a.height != b.height) return 1.0;
@@ -69,8 +66,8 @@ double compareImages(const Image& a, const Image& b) {
 
   // Step 2: VTK's regression-test difference (shift- and anti-aliasing tolerant).
   vtkNew<vtkImageDifference> difference;
-  difference->SetInputData(toVtk(a));
-  difference->SetImageData(toVtk(b));
+  difference->SetInputData(detail::toVtkImage(a));
+  difference->SetImageData(detail::toVtkImage(b));
   difference->SetThreshold(kCompareChannelTolerance);
   difference->Update();
 

@@ -1,5 +1,7 @@
 #include "raylab/vis/ImageIO.h"
 
+#include "VtkImage.h"
+
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
@@ -7,7 +9,6 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -56,15 +57,7 @@ void ImageIO::writePng(const Image& image, const std::string& path) {
   if (image.empty()) throw Error(path + ": cannot write an empty image");
 
   // Step 1: VTK image data, rows bottom-up.
-  auto data = vtkSmartPointer<vtkImageData>::New();
-  data->SetDimensions(image.width, image.height, 1);
-  data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* out = static_cast<std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t rowBytes = static_cast<std::size_t>(image.width) * 3;
-  for (int y = 0; y < image.height; ++y) {
-    std::memcpy(out + static_cast<std::size_t>(image.height - 1 - y) * rowBytes,
-                image.rgb.data() + static_cast<std::size_t>(y) * rowBytes, rowBytes);
-  }
+  const vtkSmartPointer<vtkImageData> data = detail::toVtkImage(image);
 
   // Step 2: write beside the target, then rename, so a failure leaves no half file.
   const std::filesystem::path target(path);
