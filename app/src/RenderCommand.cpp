@@ -9,26 +9,14 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
-
-#include <unistd.h>
+#include <memory>
+#include <optional>
 
 namespace raylab::app {
 
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-  std::string ext = path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 /// The renderer's float image as vis's 8-bit picture (clamp, sRGB).
 Image toPicture(const FloatImage& image) {
@@ -37,61 +25,42 @@ Image toPicture(const FloatImage& image) {
   return picture;
 }
 
-/// "[#########.........]  45%" on a terminal (redrawn in place), "render: 45%" otherwise.
-void reportProgress(double fraction, int samples, bool terminal) {
-  const int percent = static_cast<int>(fraction * 100.0 + 0.5);
-  if (terminal) {
-    constexpr int kWidth = 30;
-    const int filled = static_cast<int>(fraction * kWidth + 0.5);
-    std::cerr << "\r[" << std::string(filled, '#') << std::string(kWidth - filled, '.') << "] "
-              << std::setw(3) << percent << "% " << samples << " spp" << std::flush;
-    if (fraction >= 1.0) std::cerr << "\n";
-  } else {
-    std::cerr << "render: " << percent << "% (" << samples << " spp)" << std::endl;
-  }
-}
+struct RenderOptions {
+  CommonOptions common;
+  std::optional<int> spp;  ///< Samples per pixel; default the scene's.
+  int threads = 0;         ///< Worker threads; 0 = all hardware threads.
+};
 
-}  // namespace
-
-bool isRenderOutput(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  return ext == ".png" || ext == ".ppm" || ext == ".pfm";
-}
-
-int runRender(const RenderOptions& options) {
+int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene and the settings: the scene's render block, then the command line.
-  Scene scene = loadSceneOrDefault(options.scene);
-  RenderSettings settings = scene.render;
-  if (options.algorithm) settings.algorithm = *parseAlgorithm(*options.algorithm);
+  const Scene scene = options.common.loadScene(topLevelScene);
+  RenderSettings settings = options.common.settings(scene);
   if (options.spp) settings.samplesPerPixel = *options.spp;
-  if (options.seed) settings.seed = *options.seed;
-  if (options.width > 0 && options.height > 0) {
-    scene.camera.width = options.width;
-    scene.camera.height = options.height;
-  }
+  const std::string& out = options.common.out;
 
   // Step 2: render, reporting each pass.
   Renderer renderer(scene, settings);
   renderer.setThreads(options.threads);
-  const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  ProgressBar progress("render");
   renderer.setProgress([&](double fraction, const FloatImage&) {
-    reportProgress(fraction, static_cast<int>(fraction * settings.samplesPerPixel + 0.5), terminal);
+    const int samples = static_cast<int>(fraction * settings.samplesPerPixel + 0.5);
+    progress.update(fraction, std::to_string(samples) + " spp");
   });
   const FloatImage image = renderer.render();
 
   // Step 3: write the image in the format its extension names.
-  const std::string ext = lowerExtension(options.out);
+  const std::string ext = lowerExtension(out);
   if (ext == ".pfm") {
-    imageio::writePfm(image, options.out);
+    imageio::writePfm(image, out);
   } else if (ext == ".ppm") {
-    imageio::writePpm(image, options.out);
+    imageio::writePpm(image, out);
   } else {
-    ImageIO::writePng(toPicture(image), options.out);
+    ImageIO::writePng(toPicture(image), out);
   }
 
   // Step 4: the figures.
   const RenderStats& stats = renderer.stats();
-  std::cout << options.out << "\n";
+  std::cout << out << "\n";
   std::cout << "algorithm " << toString(settings.algorithm) << ", " << image.width << "x"
             << image.height << ", " << stats.samplesPerPixel << " spp, seed " << settings.seed
             << "\n";
@@ -107,6 +76,49 @@ int runRender(const RenderOptions& options) {
     std::cerr << "raylab: warning: " << stats.nonFiniteSamples
               << " samples were NaN or infinite and were counted as black" << std::endl;
   return kExitOk;
+}
+
+}  // namespace
+
+std::string lowerExtension(const std::string& path) {
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+bool isRenderOutput(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".png" || ext == ".ppm" || ext == ".pfm";
+}
+
+Subcommand addRenderCommand(CLI::App& cli) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* command = cli.add_subcommand(
+      "render", "Render the scene with a ray-tracing algorithm to an image file (no display)");
+  command->footer(
+      "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable output),\n"
+      "            2 usage error, 3 internal error (please report it).\n"
+      "Needs no display: the image is ray traced on the CPU. Progress goes to stderr.");
+  options->common.add(command, "Image to write: .png, .ppm or .pfm (linear)",
+                      "Image size WIDTHxHEIGHT (default: the scene's)");
+  command->get_option("--out")->check(CLI::Validator(
+      [](const std::string& path) {
+        return isRenderOutput(path) ? std::string()
+                                    : "the file name must end in .png, .ppm or .pfm";
+      },
+      "FILE"));
+  command->add_option("--spp", options->spp, "Samples per pixel (default: the scene's)")
+      ->check(CLI::Range(1, 1 << 20));
+  command->add_option("--threads", options->threads, "Worker threads, 0 = all")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  return {command, [options](const std::string& topLevelScene) {
+            return runRender(*options, topLevelScene);
+          }};
 }
 
 }  // namespace raylab::app

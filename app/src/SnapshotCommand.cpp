@@ -1,21 +1,29 @@
 #include "SnapshotCommand.h"
 
 #include "ExitCodes.h"
-#include "SceneSource.h"
 
 #include "raylab/vis/SceneView.h"
 
 #include <iostream>
+#include <memory>
 
 namespace raylab::app {
 
-int runSnapshot(const SnapshotOptions& options) {
-  const Scene scene = loadSceneOrDefault(options.scene);
-  SceneView view(scene);
-  view.resetViewCamera(static_cast<double>(options.width) / options.height);
-  view.renderToPng(options.out, options.width, options.height);
-  std::cout << options.out << std::endl;
-  return kExitOk;
+Subcommand addSnapshotCommand(CLI::App& cli) {
+  auto options = std::make_shared<CommonOptions>();
+  CLI::App* command =
+      cli.add_subcommand("snapshot", "Render the window's 3D view offscreen to a PNG file");
+  options->add(command, "PNG file to write", "Picture size WIDTHxHEIGHT (default: 300x300)",
+               /*outRequired=*/true, /*withAlgorithm=*/false);
+  return {command, [options](const std::string& topLevelScene) {
+            const Scene scene = options->loadScene(topLevelScene);
+            const auto [width, height] = options->size.value_or(std::make_pair(300, 300));
+            SceneView view(scene);
+            view.resetViewCamera(static_cast<double>(width) / height);
+            view.renderToPng(options->out, width, height);
+            std::cout << options->out << std::endl;
+            return int(kExitOk);
+          }};
 }
 
 }  // namespace raylab::app

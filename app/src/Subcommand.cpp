@@ -1,0 +1,105 @@
+#include "Subcommand.h"
+
+#include "SceneSource.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+
+#include <unistd.h>
+
+namespace raylab::app {
+
+namespace {
+constexpr int kMinSize = 16;
+constexpr int kMaxSize = 8192;
+}  // namespace
+
+std::optional<std::pair<int, int>> parseSize(const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos || x == 0 || x + 1 >= text.size()) return std::nullopt;
+  const std::string w = text.substr(0, x);
+  const std::string h = text.substr(x + 1);
+  const auto digitsOnly = [](const std::string& s) {
+    return s.size() <= 5 && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (!digitsOnly(w) || !digitsOnly(h)) return std::nullopt;
+  const int width = std::stoi(w);
+  const int height = std::stoi(h);
+  if (width < kMinSize || width > kMaxSize || height < kMinSize || height > kMaxSize) {
+    return std::nullopt;
+  }
+  return std::make_pair(width, height);
+}
+
+std::string checkSize(const std::string& text) {
+  if (parseSize(text)) return {};
+  return "expected WIDTHxHEIGHT with each side in " + std::to_string(kMinSize) + ".." +
+         std::to_string(kMaxSize) + ", e.g. 300x300";
+}
+
+void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std::string& sizeHelp,
+                        bool outRequired, bool withAlgorithm) {
+  CLI::Option* outOption = command->add_option("--out,-o", out, outHelp);
+  if (outRequired) outOption->required();
+  command->add_option("--scene", scene, "Scene file (default: the built-in scene)");
+  if (withAlgorithm) {
+    m_algorithmOption =
+        command
+            ->add_option("--algorithm,-a", m_algorithmText,
+                         "raycast, whitted, distributed or path (default: the scene's)")
+            ->check(CLI::IsMember({"raycast", "whitted", "distributed", "path"}));
+  }
+  m_seedOption = command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)");
+  m_sizeOption =
+      command->add_option("--size", m_sizeText, sizeHelp)->check(CLI::Validator(checkSize, "WxH"));
+  command->final_callback([this] { finish(); });
+}
+
+void CommonOptions::finish() {
+  if (m_algorithmOption && *m_algorithmOption) algorithm = parseAlgorithm(m_algorithmText);
+  if (m_seedOption && *m_seedOption) seed = m_seedValue;
+  if (m_sizeOption && *m_sizeOption) size = parseSize(m_sizeText);
+}
+
+Scene CommonOptions::loadScene(const std::string& topLevelScene) const {
+  Scene loaded = loadSceneOrDefault(scene.empty() ? topLevelScene : scene);
+  if (size) {
+    loaded.camera.width = size->first;
+    loaded.camera.height = size->second;
+  }
+  return loaded;
+}
+
+RenderSettings CommonOptions::settings(const Scene& loaded) const {
+  RenderSettings result = loaded.render;
+  if (algorithm) result.algorithm = *algorithm;
+  if (seed) result.seed = *seed;
+  return result;
+}
+
+ProgressBar::ProgressBar(std::string label)
+    : m_label(std::move(label)), m_terminal(::isatty(STDERR_FILENO) == 1) {}
+
+void ProgressBar::update(double fraction, const std::string& detail) {
+  fraction = std::clamp(fraction, 0.0, 1.0);
+  const int percent = static_cast<int>(fraction * 100.0 + 0.5);
+  if (m_terminal) {
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(fraction * kWidth + 0.5);
+    std::cerr << "\r" << m_label << " [" << std::string(filled, '#')
+              << std::string(kWidth - filled, '.') << "] " << std::setw(3) << percent << "% "
+              << detail << "\033[K" << std::flush;
+    if (fraction >= 1.0) std::cerr << "\n";
+  } else {
+    if (percent == m_lastPercent) return;
+    std::cerr << m_label << ": " << percent << "%";
+    if (!detail.empty()) std::cerr << " (" << detail << ")";
+    std::cerr << std::endl;
+  }
+  m_lastPercent = percent;
+}
+
+}  // namespace raylab::app

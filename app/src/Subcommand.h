@@ -1,0 +1,80 @@
+#pragma once
+
+#include "raylab/core/RenderSettings.h"
+#include "raylab/core/Scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace raylab::app {
+
+/// A subcommand of `raylab`: its CLI11 parser and what runs when it was chosen. The
+/// argument of `run` is the top-level `--scene` (so `raylab --scene F trace ...` works).
+struct Subcommand {
+  CLI::App* parser = nullptr;
+  std::function<int(const std::string& topLevelScene)> run;
+};
+
+/**
+ * \brief The options every headless command shares: `--scene`, `--algorithm`, `--seed`,
+ * `--size` and `--out`. Register them with add(), then after parsing read the fields;
+ * unset options stay empty and fall back to the scene file's render block.
+ */
+struct CommonOptions {
+  std::string scene;  ///< Scene file; empty for the built-in default scene.
+  std::string out;    ///< Output file (or folder, for commands that write many).
+  std::optional<Algorithm> algorithm;
+  std::optional<std::uint64_t> seed;
+  std::optional<std::pair<int, int>> size;  ///< Width, height.
+
+  /// Adds the options to `command`. `outHelp` describes --out (required when `outRequired`);
+  /// `sizeHelp` describes --size. With `withAlgorithm` false there is no --algorithm.
+  void add(CLI::App* command, const std::string& outHelp, const std::string& sizeHelp,
+           bool outRequired = true, bool withAlgorithm = true);
+
+  /// The scene (file or built-in default; the top-level --scene when --scene is absent)
+  /// with --size applied to its camera. Throws SceneIO::LoadError naming the file.
+  Scene loadScene(const std::string& topLevelScene) const;
+  /// The scene's render settings with --algorithm and --seed applied.
+  RenderSettings settings(const Scene& scene) const;
+
+ private:
+  std::string m_algorithmText, m_sizeText;
+  std::uint64_t m_seedValue = 0;
+  CLI::Option* m_algorithmOption = nullptr;
+  CLI::Option* m_seedOption = nullptr;
+  CLI::Option* m_sizeOption = nullptr;
+  void finish();  ///< Fills the optionals from the parsed text (CLI11 final callback).
+};
+
+/// Parses "WIDTHxHEIGHT" (e.g. "300x300", each 16..8192); nothing when malformed.
+std::optional<std::pair<int, int>> parseSize(const std::string& text);
+/// CLI11 check text for --size: empty when `text` parses, else what is expected.
+std::string checkSize(const std::string& text);
+
+/**
+ * \brief A progress bar on stderr for long runs: "[#####.....]  45% detail" redrawn in
+ * place when stderr is a terminal, one "label: 45% (detail)" line per update otherwise
+ * (logs and tests read those).
+ */
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::string label);
+  /// Shows `fraction` (0..1) done; the bar ends its line at 1.
+  void update(double fraction, const std::string& detail = {});
+
+ private:
+  std::string m_label;
+  bool m_terminal;
+  int m_lastPercent = -1;
+};
+
+}  // namespace raylab::app
