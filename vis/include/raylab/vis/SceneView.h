@@ -1,8 +1,10 @@
 #pragma once
 
+#include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
 #include "raylab/vis/Image.h"
+#include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/ViewCamera.h"
 
 #include <memory>
@@ -62,6 +64,31 @@ class SceneView {
   void setViewCamera(const ViewCamera& camera);
   /// Back to the default view for a picture of aspect ratio `aspect` (width / height).
   void resetViewCamera(double aspect = 1.0);
+
+  /// \name The ray tree drawn in the view (one polydata, one actor for all its rays).
+  /// @{
+  /// Shows `tree` (replacing any other) with `style`, wholly revealed. `tree` is copied.
+  void setRayTree(const RayTree& tree, const RayTreeStyle& style = {});
+  /// Removes the ray tree from the view.
+  void clearRayTree();
+  /// True when a tree is shown.
+  bool hasRayTree() const;
+  /// The tree shown (empty when none).
+  const RayTree& rayTree() const;
+  /// Redraws the tree with another style (colouring, filters, toggles).
+  void setRayTreeStyle(const RayTreeStyle& style);
+  const RayTreeStyle& rayTreeStyle() const;
+  /// Shows the tree as in animation frame `frame` (see revealFrame).
+  void setReveal(const RevealFrame& frame);
+  /// Shows the whole tree again.
+  void revealAll();
+  /// Marks segment `id` (drawn thick, in the highlight colour); -1 clears.
+  void setSelectedSegment(int id);
+  int selectedSegment() const;
+  /// The drawn segment nearest to image point (x, y) (pixels, y down) of a width x height
+  /// picture of the current view, within `tolerance` pixels; -1 when none.
+  int segmentAt(double x, double y, int width, int height, double tolerance = 6.0) const;
+  /// @}
 
   /// The VTK renderer, for a window to show (at most one window at a time).
   vtkRenderer* renderer() const;
