@@ -1,0 +1,113 @@
+#pragma once
+
+#include "raylab/core/ExactOracle.h"
+#include "raylab/core/Material.h"
+#include "raylab/core/Ray.h"
+#include "raylab/core/RayTree.h"
+#include "raylab/core/Scene.h"
+#include "raylab/core/Types.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+/// The material of the object a ray hit, as the inspector shows it.
+struct MaterialSummary {
+  std::string name;                           ///< Material name (Scene::materials).
+  MaterialType type = MaterialType::Diffuse;  ///< Scattering model.
+  std::string parameters;  ///< The parameters that model reads, e.g. "colour (0.7, 0.1, 0.1)".
+  bool emitter = false;    ///< The object is an area light.
+  std::string toString() const;
+};
+
+/**
+ * \brief The exact oracle next to the double-precision intersection for the object a
+ * segment hit (the "exact vs floating point" lesson on epsilons and shadow acne).
+ *
+ * The segment's ray is rebuilt from the tree (origin, unit direction, time; t in
+ * [0, infinity)) and intersected with the hit object alone, once in doubles
+ * (`Shape::intersect`) and once exactly (ExactOracle). A moving object is met in its own
+ * frame at the ray's time (the origin moved back by time * velocity), as the engine does.
+ */
+struct OracleCheck {
+  Ray ray;                         ///< The rebuilt ray, in the object's frame (world units).
+  OracleComparison comparison;     ///< ExactOracle::compare(object shape, ray).
+  double recordedDistance = 0;     ///< |hit point - origin| as recorded in the tree.
+  double tBound = 0.0;             ///< Largest |t_double - t_exact| expected (see below).
+  bool agrees = true;              ///< Same hit/miss, a plain Hit, t within tBound.
+  std::vector<std::string> notes;  ///< Where the oracle says something else, one sentence each.
+  std::string toString() const;
+};
+
+/**
+ * \brief Everything the window's inspector and the command line show about one segment
+ * of a recorded ray tree: geometry, material, energy bookkeeping, why it ended, and the
+ * exact-oracle check of its hit. Vectors are world space, radiance linear RGB.
+ */
+struct RayInspection {
+  int id = -1;          ///< Segment id (processing order).
+  int parent = -1;      ///< Parent id, -1 for the camera ray.
+  int firstChild = -1;  ///< First child id, -1 when none.
+  int childCount = 0;   ///< Number of children.
+  RayKind kind = RayKind::Camera;
+  int depth = 0;           ///< Bounces from the camera ray.
+  Point3 origin{0.0};      ///< Start point.
+  Vec3 direction{0.0};     ///< Unit direction.
+  double time = 0.0;       ///< Shutter time in [0, 1].
+  bool hit = false;        ///< Ended on a surface (a shadow ray: on its blocker).
+  Point3 endPoint{0.0};    ///< Hit point, the light point of a shadow ray, or the drawn end.
+  double distance = 0.0;   ///< |endPoint - origin|, world units.
+  Normal3 normal{0.0};     ///< Unit geometric normal at the hit (zero when no hit).
+  int object = -1;         ///< Object hit (Scene::objects index), -1 when none.
+  std::string objectName;  ///< Its name, empty when none.
+  std::optional<MaterialSummary> material;  ///< The object's material, when it hit one.
+  Vec3 weight{1.0};      ///< Factor of this ray's radiance in its parent's estimate.
+  double pdf = 0.0;      ///< Solid-angle pdf of its direction, 0 = deterministic.
+  Vec3 throughput{1.0};  ///< Product of weights from the camera ray (beta).
+  Vec3 emitted{0.0};     ///< Radiance found at its end itself.
+  Vec3 radiance{0.0};    ///< Radiance it brings back (emitted + weighted children).
+  double energy = 0.0;   ///< Luminance (Rec. 709) of throughput * radiance: its share of
+                         ///< the pixel (the energy the ray-tree view colours by).
+  EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
+  std::string ended;                         ///< The same as a sentence.
+  std::optional<OracleCheck> oracle;         ///< The exact check, when it hit an object.
+
+  /// Multi-line text for the window's panel and the command line: one "label  value"
+  /// line per field, then the oracle block.
+  std::string toString() const;
+};
+
+/**
+ * \brief Reads one segment of a recorded ray tree against its scene and checks its hit
+ * with the exact oracle (ExactOracle, CGAL).
+ *
+ * The oracle's bound on the t error is the one the property tests establish
+ * (tests/core/TestOracleProperties.cpp) for a well-conditioned shape:
+ * `|t_double - t_exact| <= 8 eps (|t| + |origin| + |c| + L) / cos`, eps = 2^-52, c and L
+ * the centre and half diagonal of the object's bounds (0 for a plane), cos the oracle's
+ * |cosine| at the hit, floored at sqrt(eps) (near tangency the error grows as the square
+ * root of the discriminant's). Ellipsoids with badly conditioned matrices may exceed it;
+ * the inspector then says so rather than failing.
+ */
+class RayInspector {
+ public:
+  /// Thrown for a segment id outside the tree.
+  class BadSegment : public Exception {
+   public:
+    using Exception::Exception;
+  };
+
+  /// Inspects `tree.segments[id]`; `scene` is the scene the tree was traced in.
+  /// `withOracle` false skips the exact check (it costs a CGAL solve, more for meshes).
+  static RayInspection inspect(const Scene& scene, const RayTree& tree, int id,
+                               bool withOracle = true);
+  /// The exact check of a ray that hit `object` of `scene` at recorded point `hitPoint`.
+  static OracleCheck checkHit(const Scene& scene, int object, const Point3& origin,
+                              const Vec3& direction, double time, const Point3& hitPoint);
+  /// Rec. 709 luminance of throughput * radiance (the ray-tree view's energy).
+  static double energy(const RaySegment& segment);
+};
+
+}  // namespace raylab

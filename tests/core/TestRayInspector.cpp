@@ -1,0 +1,274 @@
+// The ray inspector: a recorded segment read against its scene (geometry, material,
+// energy, why it ended) and its hit checked by the exact oracle, on a hand-made scene
+// whose numbers are derived beside the assertions.
+#include "raylab/core/RayInspector.h"
+
+#include "TransportScenes.h"
+#include "raylab/core/Box.h"
+#include "raylab/core/Sphere.h"
+#include "raylab/core/Tracer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace raylab {
+namespace {
+
+using testing::addMaterial;
+using testing::addObject;
+using testing::makeMaterial;
+
+/**
+ * A red diffuse ball of radius 1 centred at (0, 0, -5), a point light at (0, 5, 0), and a
+ * pinhole camera at the origin looking down -z with an 11 x 11 film: the centre pixel
+ * (5, 5) looks exactly along (0, 0, -1) (film x = 5.5 maps to 2 * 5.5 / 11 - 1 = 0), so
+ * its camera ray hits the ball at t = 5 - 1 = 4, point (0, 0, -4), normal (0, 0, 1).
+ * With `blocker`, a small box at (0, 2.5, -2) stands between that point and the light.
+ */
+Scene ballScene(bool blocker = false) {
+  Scene scene;
+  scene.name = "ball";
+  const int red = addMaterial(scene, makeMaterial("red", MaterialType::Diffuse, {0.7, 0.1, 0.1}));
+  addObject(scene, "ball", std::make_unique<Sphere>(Point3(0, 0, -5), 1.0), red);
+  if (blocker)
+    addObject(scene, "blocker", std::make_unique<Box>(Point3(0, 2.5, -2), Vec3(1.0)), red);
+  PointLight light;
+  light.name = "lamp";
+  light.position = Point3(0, 5, 0);
+  light.intensity = Vec3(10.0);
+  scene.pointLights.push_back(light);
+  scene.camera.position = Point3(0.0);
+  scene.camera.lookAt = Point3(0, 0, -1);
+  scene.camera.verticalFov = 40.0;
+  scene.camera.width = 11;
+  scene.camera.height = 11;
+  return scene;
+}
+
+/// The tree of one pixel sample, traced to the end by the stepper.
+RayTree traceTree(const Scene& scene, Algorithm algorithm, int x, int y, int sample = 0) {
+  RenderSettings settings = scene.render;
+  settings.algorithm = algorithm;
+  settings.samplesPerPixel = 1;
+  const Tracer tracer(scene, settings);
+  Stepper stepper(tracer, x, y, sample);
+  stepper.runToEnd();
+  return stepper.tree();
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(RayInspector, 01_CameraRayHitsTheBallAtFour) {
+  const Scene scene = ballScene();
+  const RayTree tree = traceTree(scene, Algorithm::RayCasting, 5, 5);
+  ASSERT_GE(tree.segments.size(), 2u);
+  const RayInspection r = RayInspector::inspect(scene, tree, 0);
+  const std::string text = r.toString();
+  EXPECT_EQ(r.kind, RayKind::Camera);
+  EXPECT_EQ(r.depth, 0);
+  EXPECT_EQ(r.parent, -1);
+  EXPECT_EQ(r.origin, Point3(0.0));
+  EXPECT_EQ(r.direction, Vec3(0, 0, -1));
+  ASSERT_TRUE(r.hit) << text;
+  EXPECT_EQ(r.objectName, "ball");
+  EXPECT_NEAR(r.distance, 4.0, 1e-12);  // 5 - radius 1
+  EXPECT_NEAR(glm::length(r.endPoint - Point3(0, 0, -4)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(r.normal - Vec3(0, 0, 1)), 0.0, 1e-12);
+  ASSERT_TRUE(r.material.has_value());
+  EXPECT_EQ(r.material->name, "red");
+  EXPECT_EQ(r.material->type, MaterialType::Diffuse);
+  EXPECT_TRUE(contains(r.material->parameters, "albedo (0.7, 0.1, 0.1)")) << r.material->parameters;
+  EXPECT_EQ(r.endReason, EndReason::Spawned);  // its shadow ray to the lamp
+  EXPECT_EQ(r.childCount, 1);
+  // The camera ray's energy is the pixel's estimate: the lamp lights the ball.
+  EXPECT_GT(r.energy, 0.0);
+  const Vec3 e = tree.segments[0].throughput * tree.segments[0].radiance;
+  EXPECT_DOUBLE_EQ(r.energy, 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z);
+  EXPECT_EQ(r.pdf, 0.0);
+  EXPECT_TRUE(contains(text, "Ray #0: camera ray, depth 0")) << text;
+  EXPECT_TRUE(contains(text, "pdf         none (deterministic)")) << text;
+  EXPECT_TRUE(contains(text, "object      'ball'")) << text;
+  EXPECT_TRUE(contains(text, "'red' diffuse")) << text;
+  EXPECT_TRUE(contains(text, "spawned 1 ray (#1)")) << text;
+}
+
+// t = 4 is a double, so the exact oracle's t is exactly 4 and its bounds collapse; the
+// double t lies within the documented bound 8 eps (|t| + |origin| + |c| + L) / cos
+// = 8 eps (4 + 0 + 5 + sqrt(3)) / 1 ~ 1.9e-14 (c = (0, 0, -5), L = half diagonal sqrt 3).
+TEST(RayInspector, 02_ExactOracleAgreesWithinTheBound) {
+  const Scene scene = ballScene();
+  const RayTree tree = traceTree(scene, Algorithm::RayCasting, 5, 5);
+  const RayInspection r = RayInspector::inspect(scene, tree, 0);
+  ASSERT_TRUE(r.oracle.has_value());
+  const OracleCheck& check = *r.oracle;
+  EXPECT_EQ(check.comparison.exact.classification, ExactClass::Hit);
+  EXPECT_EQ(check.comparison.exact.t, 4.0);
+  EXPECT_EQ(check.comparison.exact.tLower, 4.0);
+  EXPECT_EQ(check.comparison.exact.tUpper, 4.0);
+  ASSERT_TRUE(check.comparison.floating.has_value());
+  const double eps = std::numeric_limits<double>::epsilon();
+  EXPECT_NEAR(check.tBound, 8.0 * eps * (4.0 + 5.0 + std::sqrt(3.0)), 1e-20);
+  EXPECT_LE(std::abs(check.comparison.floating->t - check.comparison.exact.t), check.tBound);
+  EXPECT_NEAR(check.comparison.exact.cosine, 1.0, 1e-12);  // head-on
+  EXPECT_TRUE(check.agrees);
+  EXPECT_TRUE(check.notes.empty()) << check.toString();
+  EXPECT_EQ(check.recordedDistance, r.distance);
+  const std::string text = r.toString();
+  EXPECT_TRUE(contains(text, "Exact oracle (CGAL) vs double on 'ball'")) << text;
+  EXPECT_TRUE(contains(text, "exact       Hit, t = 4\n")) << text;
+  EXPECT_TRUE(contains(text, "the oracle agrees with double precision")) << text;
+}
+
+TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
+  // Unblocked: the shadow ray from (0, 0, -4) (offset off the ball) reaches the lamp
+  // sqrt(5^2 + 4^2) = sqrt(41) away.
+  const Scene open = ballScene();
+  const RayTree tree = traceTree(open, Algorithm::RayCasting, 5, 5);
+  ASSERT_EQ(tree.segments.size(), 2u);
+  const RayInspection shadow = RayInspector::inspect(open, tree, 1);
+  const std::string text = shadow.toString();
+  EXPECT_EQ(shadow.kind, RayKind::Shadow);
+  EXPECT_EQ(shadow.parent, 0);
+  EXPECT_EQ(shadow.endReason, EndReason::ReachedLight);
+  EXPECT_FALSE(shadow.hit);
+  EXPECT_FALSE(shadow.oracle.has_value());
+  EXPECT_NEAR(glm::length(shadow.endPoint - Point3(0, 5, 0)), 0.0, 1e-6);
+  EXPECT_NEAR(shadow.distance, std::sqrt(41.0), 1e-6);
+  EXPECT_GT(shadow.energy, 0.0);
+  EXPECT_TRUE(contains(text, "Ray #1: shadow ray, depth 1, child of #0")) << text;
+  EXPECT_TRUE(contains(text, "light point (0, 5, 0)")) << text;
+  EXPECT_TRUE(contains(text, "reached its light unblocked")) << text;
+  EXPECT_TRUE(contains(text, "Exact oracle: no hit to check")) << text;
+
+  // Blocked by the box: the inspector names it, the oracle checks that hit, energy 0.
+  const Scene closed = ballScene(true);
+  const RayTree blockedTree = traceTree(closed, Algorithm::RayCasting, 5, 5);
+  ASSERT_EQ(blockedTree.segments.size(), 2u);
+  const RayInspection blocked = RayInspector::inspect(closed, blockedTree, 1);
+  const std::string blockedText = blocked.toString();
+  EXPECT_EQ(blocked.endReason, EndReason::Occluded);
+  EXPECT_TRUE(blocked.hit);
+  EXPECT_EQ(blocked.objectName, "blocker");
+  EXPECT_EQ(blocked.energy, 0.0);
+  ASSERT_TRUE(blocked.oracle.has_value());
+  EXPECT_EQ(blocked.oracle->comparison.exact.classification, ExactClass::Hit);
+  EXPECT_TRUE(blocked.oracle->agrees) << blocked.oracle->toString();
+  EXPECT_TRUE(contains(blockedText, "blocked by 'blocker' before reaching its light"))
+      << blockedText;
+  EXPECT_TRUE(contains(blockedText, "blocked at")) << blockedText;
+}
+
+TEST(RayInspector, 04_EscapedRayHitsNothing) {
+  // Pixel (0, 0) looks up and left at about 20 degrees: it misses the ball.
+  const Scene scene = ballScene();
+  const RayTree tree = traceTree(scene, Algorithm::RayCasting, 0, 0);
+  ASSERT_EQ(tree.segments.size(), 1u);
+  const RayInspection r = RayInspector::inspect(scene, tree, 0);
+  const std::string text = r.toString();
+  EXPECT_EQ(r.endReason, EndReason::Escaped);
+  EXPECT_FALSE(r.hit);
+  EXPECT_EQ(r.object, -1);
+  EXPECT_FALSE(r.material.has_value());
+  EXPECT_FALSE(r.oracle.has_value());
+  EXPECT_EQ(r.energy, 0.0);  // black background
+  EXPECT_TRUE(contains(text, "hit         nothing")) << text;
+  EXPECT_TRUE(contains(text, "escaped the scene")) << text;
+  EXPECT_TRUE(contains(text, "Exact oracle: no hit to check")) << text;
+}
+
+// A ray grazing the ball: x = 1 meets the sphere x^2 + y^2 + (z + 5)^2 = 1 only at
+// (1, 0, -5), discriminant exactly 0; and a ray down a cube's edge. The oracle says
+// Tangent / ThroughEdge, and the check says so instead of agreeing.
+TEST(RayInspector, 05_OracleSaysWhenTheRayIsDegenerate) {
+  const Scene scene = ballScene(true);
+  const OracleCheck tangent =
+      RayInspector::checkHit(scene, 0, Point3(1, 0, 0), Vec3(0, 0, -1), 0.0, Point3(1, 0, -5));
+  EXPECT_EQ(tangent.comparison.exact.classification, ExactClass::Tangent);
+  EXPECT_EQ(tangent.comparison.exact.t, 5.0);
+  EXPECT_FALSE(tangent.agrees);
+  ASSERT_FALSE(tangent.notes.empty());
+  EXPECT_TRUE(contains(tangent.toString(), "Exactly tangent")) << tangent.toString();
+  EXPECT_TRUE(contains(tangent.toString(), "the oracle says something different"));
+
+  // The blocker spans x in [-0.5, 0.5], y in [2, 3], z in [-2.5, -1.5]: the line
+  // x = 0.5, y = 3 runs along its top right edge.
+  const OracleCheck edge = RayInspector::checkHit(scene, 1, Point3(0.5, 3, 0), Vec3(0, 0, -1), 0.0,
+                                                  Point3(0.5, 3, -1.5));
+  EXPECT_NE(edge.comparison.exact.classification, ExactClass::Hit);
+  EXPECT_FALSE(edge.agrees);
+  EXPECT_FALSE(edge.notes.empty()) << edge.toString();
+}
+
+TEST(RayInspector, 06_MovingObjectIsMetInItsFrame) {
+  // The ball moves by (0, 0, 2) over the shutter: at time 0.5 it is centred at z = -4,
+  // so the ray along -z meets it at t = 3.
+  Scene scene = ballScene();
+  scene.objects[0].velocity = Vec3(0, 0, 2);
+  const OracleCheck check =
+      RayInspector::checkHit(scene, 0, Point3(0.0), Vec3(0, 0, -1), 0.5, Point3(0, 0, -3));
+  EXPECT_EQ(check.ray.origin, Point3(0, 0, -1));  // moved back by 0.5 * (0, 0, 2)
+  EXPECT_EQ(check.comparison.exact.t, 3.0);
+  EXPECT_TRUE(check.agrees) << check.toString();
+  EXPECT_TRUE(check.notes.empty()) << check.toString();
+}
+
+TEST(RayInspector, 07_SampledDirectionsShowTheirPdf) {
+  // Path tracing samples diffuse bounces from the cosine lobe: pdf = cos / pi > 0.
+  const Scene scene = testing::allMaterialsScene();
+  bool found = false;
+  for (int sample = 0; sample < 8 && !found; ++sample) {
+    const RayTree tree = traceTree(scene, Algorithm::PathTracing, 8, 8, sample);
+    for (const RaySegment& s : tree.segments) {
+      if (s.kind != RayKind::Diffuse) continue;
+      const RayInspection r = RayInspector::inspect(scene, tree, s.id, false);
+      EXPECT_GT(r.pdf, 0.0);
+      EXPECT_LE(r.pdf, 1.0 / kPi + 1e-12);  // cos / pi <= 1 / pi
+      EXPECT_TRUE(contains(r.toString(), " per sr")) << r.toString();
+      EXPECT_TRUE(contains(r.toString(), "Exact oracle: not computed") || !r.hit);
+      found = true;
+      break;
+    }
+  }
+  EXPECT_TRUE(found) << "no diffuse bounce in 8 samples of pixel (8, 8)";
+}
+
+TEST(RayInspector, 08_MaterialParametersFollowTheType) {
+  Material mirror = makeMaterial("silver", MaterialType::Mirror, Vec3(0.9));
+  mirror.reflectionRate = 0.3;
+  mirror.refractionRate = 0.6;
+  mirror.ior = 1.3;
+  Material glossy = makeMaterial("brass", MaterialType::Glossy, {0.8, 0.6, 0.2});
+  glossy.exponent = 30.0;
+  Material light = makeMaterial("lamp", MaterialType::Diffuse, Vec3(0.0), Vec3(12, 10, 8));
+  Scene scene = ballScene();
+  scene.materials = {mirror, glossy, light};
+  const RayTree tree = traceTree(scene, Algorithm::RayCasting, 5, 5);
+  const std::string expected[] = {"reflection rate 0.3, refraction rate 0.6, ior 1.3",
+                                  "Phong exponent 30, specular share 0.5", "emits (12, 10, 8)"};
+  for (int m = 0; m < 3; ++m) {
+    scene.objects[0].material = m;
+    const RayInspection r = RayInspector::inspect(scene, tree, 0, false);
+    ASSERT_TRUE(r.material.has_value());
+    EXPECT_TRUE(contains(r.material->parameters, expected[m])) << r.material->parameters;
+  }
+  EXPECT_TRUE(RayInspector::inspect(scene, tree, 0, false).material->emitter);
+}
+
+TEST(RayInspector, 09_UnknownSegmentIsAnError) {
+  const Scene scene = ballScene();
+  const RayTree tree = traceTree(scene, Algorithm::RayCasting, 5, 5);
+  try {
+    RayInspector::inspect(scene, tree, 7);
+    FAIL() << "no exception";
+  } catch (const RayInspector::BadSegment& e) {
+    EXPECT_EQ(std::string(e.what()), "ray #7 is not in the tree (it has 2 rays: #0..#1)");
+  }
+  EXPECT_THROW(RayInspector::inspect(scene, tree, -1), RayInspector::BadSegment);
+}
+
+}  // namespace
+}  // namespace raylab
