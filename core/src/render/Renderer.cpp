@@ -61,9 +61,23 @@ FloatImage Renderer::render() {
   int threadCount = m_threads > 0 ? m_threads : int(std::thread::hardware_concurrency());
   threadCount = std::clamp(threadCount, 1, int(tiles.size()));
 
+  const auto elapsed = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   int done = 0;  // samples per pixel in `committed`
   for (int passSize = 1; done < spp && !m_cancel; passSize = done) {
     // Pass sizes 1, 1, 2, 4, 8, ...: the total doubles each pass, capped at spp.
+    if (m_timeLimit > 0.0 && done > 0) {
+      // Under a time limit: stop once it is reached; otherwise take no more samples than
+      // the remaining time is expected to allow at the speed measured so far.
+      const double now = elapsed();
+      if (now >= m_timeLimit) {
+        m_stats.timeLimitReached = true;
+        break;
+      }
+      const double expected = std::ceil((m_timeLimit - now) * done / std::max(now, 1e-9));
+      passSize = int(std::clamp(expected, 1.0, double(passSize)));
+    }
     const int first = done;
     const int last = std::min(spp, done + std::max(passSize, 1));
     std::atomic<int> nextTile{0};
@@ -120,8 +134,8 @@ FloatImage Renderer::render() {
     if (m_progress) m_progress(double(done) / spp, average(committed, width, height, done));
   }
 
-  m_stats.cancelled = done < spp;
-  m_stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_stats.cancelled = done < spp && !m_stats.timeLimitReached;
+  m_stats.seconds = elapsed();
   return average(committed, width, height, done);
 }
 

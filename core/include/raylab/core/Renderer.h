@@ -15,6 +15,8 @@ struct RenderStats {
   int samplesPerPixel = 0;             ///< Samples completed in every pixel.
   double seconds = 0.0;                ///< Wall-clock time of render().
   bool cancelled = false;              ///< True when cancel() stopped the render before the end.
+  bool timeLimitReached = false;       ///< True when setTimeLimit's budget ended the render
+                                       ///< before samplesPerPixel.
   std::uint64_t nonFiniteSamples = 0;  ///< NaN / Inf estimates from the tracer, counted
                                        ///< as black so they never reach the image (a
                                        ///< tracer bug when non-zero).
@@ -48,6 +50,17 @@ class Renderer {
   /// next tile and render() returns the image of the last complete pass. A cancelled
   /// renderer stays cancelled: make a new one to render again.
   void cancel() { m_cancel = true; }
+  /**
+   * \brief Equal-time rendering: stop after the pass that reaches `seconds` of wall-clock
+   * time (0 = no limit); samplesPerPixel stays the cap.
+   *
+   * Passes then also shrink to the samples the remaining time is expected to allow (the
+   * speed of the passes so far, rounded up), so the render ends close past the limit
+   * rather than up to twice over it. How many samples are reached depends on the machine;
+   * RenderStats::samplesPerPixel reports it, and the image at that spp is the same as a
+   * render with samplesPerPixel set to it.
+   */
+  void setTimeLimit(double seconds) { m_timeLimit = seconds; }
 
   /// Renders at the scene camera's width x height.
   FloatImage render();
@@ -59,6 +72,7 @@ class Renderer {
   int m_threads = 0;
   Progress m_progress;
   std::atomic<bool> m_cancel{false};
+  double m_timeLimit = 0.0;  ///< Seconds; 0 = none.
   RenderStats m_stats;
 };
 

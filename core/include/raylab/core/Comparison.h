@@ -1,0 +1,160 @@
+#pragma once
+
+#include "raylab/core/Exception.h"
+#include "raylab/core/Image.h"
+#include "raylab/core/RenderSettings.h"
+#include "raylab/core/Renderer.h"
+#include "raylab/core/Scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+/**
+ * \brief Parameters of a side-by-side comparison of the algorithms on one scene.
+ *
+ * | field | default | meaning |
+ * | --- | --- | --- |
+ * | algorithms | all four | which algorithms, in this order |
+ * | samplesPerPixel | 16 | equal samples: every algorithm's spp; equal time: the cap |
+ * | secondsPerAlgorithm | 0 | > 0: equal time, each algorithm renders this long |
+ * | referenceSamplesPerPixel | 0 | spp of the rendered reference; 0 = defaultReferenceSpp |
+ * | threads | 0 | worker threads, 0 = all |
+ */
+struct ComparisonSettings {
+  std::vector<Algorithm> algorithms = {Algorithm::RayCasting, Algorithm::Whitted,
+                                       Algorithm::Distributed, Algorithm::PathTracing};
+  int samplesPerPixel = 16;          ///< Equal samples: spp of each; equal time: the cap.
+  double secondsPerAlgorithm = 0.0;  ///< Equal-time budget per algorithm, s; 0 = equal spp.
+  int referenceSamplesPerPixel = 0;  ///< Reference spp; 0 = defaultReferenceSpp().
+  int threads = 0;                   ///< Worker threads; 0 = all hardware threads.
+
+  /// True in equal-time mode.
+  bool equalTime() const { return secondsPerAlgorithm > 0.0; }
+  /// The rule for the rendered reference: max(256, 16 x samplesPerPixel) with equal
+  /// samples (its own noise then adds under 4% to the path tracer's error), 1024 with
+  /// equal time (the spp reached is not known beforehand).
+  int defaultReferenceSpp() const;
+  /// referenceSamplesPerPixel, or the default rule when it is 0.
+  int referenceSpp() const;
+  std::string toString() const;
+};
+
+/**
+ * \brief How far an image is from the reference, as displayed: the root-mean-square
+ * difference of the two pictures after clamping radiance to [0, 1] and applying the sRGB
+ * curve, over all pixels and channels. 0 = identical, 1 = black against white.
+ *
+ * Chosen over linear RMSE for the lessons: linear radiance is unbounded, so a few pixels
+ * on the edge of a bright light (radiance 15 in the Cornell box) and the path tracer's
+ * fireflies outweigh the whole rest of the picture. Both are reported.
+ */
+double displayRmse(const FloatImage& image, const FloatImage& reference);
+
+/// The error of one progressive pass: one point of a convergence curve.
+struct ConvergencePoint {
+  int samplesPerPixel = 0;  ///< Samples per pixel after the pass.
+  double seconds = 0.0;     ///< Render time to the end of the pass, s (error
+                            ///< measurement excluded).
+  std::uint64_t rays = 0;   ///< Rays traced so far, all kinds.
+  double rmse = 0.0;        ///< displayRmse against the reference.
+  double rmseLinear = 0.0;  ///< imageio::rmse (linear radiance) against the reference.
+};
+
+/// What one algorithm achieved: its image and its figures.
+struct AlgorithmFigures {
+  Algorithm algorithm = Algorithm::PathTracing;
+  FloatImage image;   ///< The final image, linear radiance.
+  RenderStats stats;  ///< Rays by kind, spp reached, seconds (error measurement
+                      ///< excluded), time limit reached.
+  /// displayRmse of the final image against the path-traced reference. Ray casting,
+  /// Whitted and distributed tracing converge to other images than path tracing (no
+  /// diffuse interreflection), so theirs levels off above 0.
+  double rmse = 0.0;
+  double rmseLinear = 0.0;               ///< imageio::rmse (linear radiance), same images.
+  std::vector<ConvergencePoint> series;  ///< One point per progressive pass.
+};
+
+/// The reference every error is measured against: path tracing at high spp.
+struct ComparisonReference {
+  FloatImage image;         ///< Linear radiance.
+  int samplesPerPixel = 0;  ///< Its spp (0 when read from a file that does not say).
+  std::uint64_t seed = 0;   ///< Seed it was rendered with (0 for a file).
+  std::string file;         ///< PFM it was read from; empty when rendered.
+  double seconds = 0.0;     ///< Time to render it, s (0 for a file).
+};
+
+/// Everything a comparison measured: what ComparisonView draws and the JSON reports.
+struct ComparisonResult {
+  std::string sceneName;       ///< Scene::name.
+  int width = 0, height = 0;   ///< Image size, pixels.
+  RenderSettings settings;     ///< Shared settings (algorithm field unused).
+  ComparisonSettings compare;  ///< Mode and budgets.
+  ComparisonReference reference;
+  std::vector<AlgorithmFigures> algorithms;  ///< In compare.algorithms' order.
+};
+
+/// Human name and citation of an algorithm: "Ray casting (Appel 1968)".
+std::string algorithmTitle(Algorithm algorithm);
+
+/**
+ * \brief Renders one scene under several algorithms with the core Renderer and measures
+ * each against a converged reference: the side-by-side comparison of the lessons.
+ *
+ * Equal samples: every algorithm renders samplesPerPixel. Equal time: each renders
+ * progressive passes until secondsPerAlgorithm is used (Renderer::setTimeLimit), and the
+ * spp it reached is reported. In both modes, every pass's image is measured against the
+ * reference, giving the convergence series (spp 1, 2, 4, 8, ... with equal samples).
+ *
+ * The reference is path tracing — the algorithm that solves the rendering equation — at
+ * referenceSpp(), with another seed than the compared renders (so the path tracer's error
+ * is not shrunk by sharing its first samples with the reference), or an image given with
+ * setReference. Images are deterministic for a given spp; times are wall-clock.
+ */
+class Comparison {
+ public:
+  /// Input errors: a reference image of the wrong size, bad settings.
+  class Error : public Exception {
+   public:
+    using Exception::Exception;
+  };
+
+  /// Called on the rendering thread: `stage` is "reference" or the algorithm's name,
+  /// `fraction` the part of the whole comparison done (0..1), `samples` the stage's spp.
+  using Progress =
+      std::function<void(const std::string& stage, double fraction, int samplesPerPixel)>;
+
+  /// `scene` (which must outlive the comparison) rendered with `settings` (algorithm
+  /// ignored). Throws Error when `compare` is invalid (no algorithm, spp < 1, ...).
+  Comparison(const Scene& scene, const RenderSettings& settings, const ComparisonSettings& compare);
+
+  /// Uses `image` (e.g. a PFM of a long path-traced render) as the reference instead of
+  /// rendering one; `file` names it in the figures. Throws Error naming the file when its
+  /// size differs from the scene camera's.
+  void setReference(FloatImage image, const std::string& file = {});
+  void setProgress(Progress progress) { m_progress = std::move(progress); }
+
+  /// Renders the reference (unless given) and each algorithm; returns the figures.
+  ComparisonResult run();
+
+  /// Seed of the rendered reference for a comparison seeded with `seed`.
+  static std::uint64_t referenceSeed(std::uint64_t seed);
+
+ private:
+  const Scene& m_scene;
+  RenderSettings m_settings;
+  ComparisonSettings m_compare;
+  ComparisonReference m_reference;
+  bool m_hasReference = false;
+  Progress m_progress;
+};
+
+/// The figures as JSON (nlohmann-json, 2-space indent): scene, mode, error metric and
+/// what it is measured against, the reference, and per algorithm its time, spp, rays by
+/// kind and total, rmse, linear rmse and convergence series.
+std::string comparisonJson(const ComparisonResult& result);
+
+}  // namespace raylab

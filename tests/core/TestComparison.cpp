@@ -1,0 +1,317 @@
+// The side-by-side comparison: its figures are the renderer's, its reference is path
+// tracing with its own seed, path tracing's error falls with the samples, equal time
+// stops after the pass that reaches the budget, and the JSON carries every figure.
+#include "raylab/core/Comparison.h"
+#include "raylab/core/Renderer.h"
+#include "raylab/core/SceneIO.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace raylab {
+namespace {
+
+/// A shipped scene at a small size: lessons/scenes/<name>.json.
+Scene shippedScene(const std::string& name, int width, int height) {
+  Scene scene = SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/" + name + ".json");
+  scene.camera.width = width;
+  scene.camera.height = height;
+  return scene;
+}
+
+/// Cheap settings for the tests: shallow paths, few distributed rays.
+RenderSettings smallSettings(const Scene& scene) {
+  RenderSettings settings = scene.render;
+  settings.maxDepth = 4;
+  settings.shadowSamples = 2;
+  settings.glossySamples = 2;
+  settings.seed = 11;
+  return settings;
+}
+
+FloatImage renderWith(const Scene& scene, RenderSettings settings, Algorithm algorithm, int spp,
+                      RenderStats* stats = nullptr) {
+  settings.algorithm = algorithm;
+  settings.samplesPerPixel = spp;
+  Renderer renderer(scene, settings);
+  renderer.setThreads(2);
+  FloatImage image = renderer.render();
+  if (stats) *stats = renderer.stats();
+  return image;
+}
+
+int differingPixels(const FloatImage& a, const FloatImage& b) {
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  if (a.pixels.size() != b.pixels.size()) return -1;
+  int different = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) different += a.pixels[i] != b.pixels[i];
+  return different;
+}
+
+TEST(Comparison, 01_FiguresAreTheRenderersAtEqualSamples) {
+  const Scene scene = shippedScene("cornell", 32, 24);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 4;
+  compare.referenceSamplesPerPixel = 32;
+  compare.threads = 3;
+  const ComparisonResult result = Comparison(scene, settings, compare).run();
+
+  ASSERT_EQ(result.algorithms.size(), 4u);
+  EXPECT_EQ(result.width, 32);
+  EXPECT_EQ(result.height, 24);
+  for (std::size_t i = 0; i < result.algorithms.size(); ++i) {
+    const AlgorithmFigures& figures = result.algorithms[i];
+    SCOPED_TRACE(toString(figures.algorithm));
+    EXPECT_EQ(figures.algorithm, compare.algorithms[i]);
+    // The same image and the same ray counts as the renderer alone (2 threads, not 3).
+    RenderStats direct;
+    const FloatImage image = renderWith(scene, settings, figures.algorithm, 4, &direct);
+    EXPECT_EQ(differingPixels(figures.image, image), 0);
+    EXPECT_EQ(figures.stats.samplesPerPixel, 4);
+    EXPECT_FALSE(figures.stats.timeLimitReached);
+    for (int k = 0; k < kRayKindCount; ++k)
+      EXPECT_EQ(figures.stats.rays.byKind[k], direct.rays.byKind[k])
+          << toString(static_cast<RayKind>(k));
+    // Camera rays: one per pixel and sample.
+    EXPECT_EQ(figures.stats.rays.byKind[int(RayKind::Camera)], 32u * 24u * 4u);
+    // The error is the RMSE against the reference; the series ends at the final image.
+    EXPECT_DOUBLE_EQ(figures.rmse, displayRmse(image, result.reference.image));
+    EXPECT_DOUBLE_EQ(figures.rmseLinear, imageio::rmse(image, result.reference.image));
+    ASSERT_EQ(figures.series.size(), 3u);  // passes end at 1, 2, 4 spp
+    EXPECT_EQ(figures.series[0].samplesPerPixel, 1);
+    EXPECT_EQ(figures.series[1].samplesPerPixel, 2);
+    EXPECT_EQ(figures.series[2].samplesPerPixel, 4);
+    EXPECT_EQ(figures.series[2].rays, direct.rays.total());
+    EXPECT_DOUBLE_EQ(figures.series[2].rmse, figures.rmse);
+    EXPECT_LT(figures.series[0].rays, figures.series[1].rays);
+    EXPECT_LE(figures.series[0].seconds, figures.series[1].seconds);
+    EXPECT_GE(figures.stats.seconds, 0.0);
+    EXPECT_GT(figures.rmse, 0.0);
+  }
+}
+
+TEST(Comparison, 02_ReferenceIsPathTracingWithItsOwnSeed) {
+  const Scene scene = shippedScene("cornell", 24, 16);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.algorithms = {Algorithm::PathTracing};
+  compare.samplesPerPixel = 2;
+  compare.referenceSamplesPerPixel = 16;
+  const ComparisonResult result = Comparison(scene, settings, compare).run();
+
+  EXPECT_EQ(result.reference.samplesPerPixel, 16);
+  EXPECT_NE(result.reference.seed, settings.seed);
+  EXPECT_EQ(result.reference.seed, Comparison::referenceSeed(settings.seed));
+  EXPECT_TRUE(result.reference.file.empty());
+  RenderSettings referenceSettings = settings;
+  referenceSettings.seed = Comparison::referenceSeed(settings.seed);
+  const FloatImage reference = renderWith(scene, referenceSettings, Algorithm::PathTracing, 16);
+  EXPECT_EQ(differingPixels(result.reference.image, reference), 0);
+}
+
+TEST(Comparison, 03_DefaultReferenceSamplesFollowTheRule) {
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 4;
+  EXPECT_EQ(compare.referenceSpp(), 256);  // max(256, 16 x 4)
+  compare.samplesPerPixel = 64;
+  EXPECT_EQ(compare.referenceSpp(), 1024);  // 16 x 64
+  compare.secondsPerAlgorithm = 2.0;
+  EXPECT_EQ(compare.referenceSpp(), 1024);  // equal time
+  compare.referenceSamplesPerPixel = 100;
+  EXPECT_EQ(compare.referenceSpp(), 100);
+}
+
+TEST(Comparison, 04_PathTracingErrorFallsWithSamplesTheOthersLevelOff) {
+  // Cornell box: its colour bleeding and lit ceiling are indirect light that only path
+  // tracing computes, so ray casting stays far from the reference at any spp.
+  const Scene scene = shippedScene("cornell", 24, 18);
+  ComparisonSettings compare;
+  compare.algorithms = {Algorithm::RayCasting, Algorithm::PathTracing};
+  compare.samplesPerPixel = 64;
+  compare.referenceSamplesPerPixel = 512;
+  const ComparisonResult result = Comparison(scene, smallSettings(scene), compare).run();
+  const AlgorithmFigures& rayCasting = result.algorithms[0];
+  const AlgorithmFigures& path = result.algorithms[1];
+
+  // Passes end at 1, 2, 4, 8, 16, 32, 64 spp; the path tracer's error falls at each.
+  ASSERT_EQ(path.series.size(), 7u);
+  for (std::size_t i = 1; i < path.series.size(); ++i) {
+    EXPECT_EQ(path.series[i].samplesPerPixel, 1 << i);
+    EXPECT_LT(path.series[i].rmse, path.series[i - 1].rmse) << "at " << (1 << i) << " spp";
+  }
+  // Monte Carlo: error ~ 1 / sqrt(spp), 64x the samples -> 1/8 the error; the reference's
+  // own noise (1/8 of the samples' variance) leaves it a little above that.
+  EXPECT_LT(path.series.back().rmse, 0.3 * path.series.front().rmse);
+  // Ray casting's error is mostly bias (missing indirect light): once antialiasing has
+  // settled, doubling the samples barely moves it, while path tracing's keeps falling.
+  const std::size_t last = path.series.size() - 1;
+  ASSERT_EQ(rayCasting.series.size(), path.series.size());
+  EXPECT_GT(rayCasting.series[last].rmse, 0.9 * rayCasting.series[last - 1].rmse);
+  EXPECT_LT(path.series[last].rmse, 0.85 * path.series[last - 1].rmse);
+  EXPECT_GT(rayCasting.rmse, 3.0 * path.rmse);
+}
+
+TEST(Comparison, 05_EqualTimeStopsAfterThePassThatReachesTheBudget) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.referenceSamplesPerPixel = 8;
+
+  // A budget shorter than any pass: one pass of 1 spp, then the renderer stops.
+  compare.secondsPerAlgorithm = 1e-9;
+  compare.samplesPerPixel = 64;
+  ComparisonResult result = Comparison(scene, settings, compare).run();
+  for (const AlgorithmFigures& figures : result.algorithms) {
+    SCOPED_TRACE(toString(figures.algorithm));
+    EXPECT_EQ(figures.stats.samplesPerPixel, 1);
+    EXPECT_TRUE(figures.stats.timeLimitReached);
+    EXPECT_FALSE(figures.stats.cancelled);
+    EXPECT_EQ(figures.series.size(), 1u);
+  }
+
+  // A budget no render uses up: the spp cap ends each render, as with equal samples.
+  compare.secondsPerAlgorithm = 1e6;
+  compare.samplesPerPixel = 4;
+  result = Comparison(scene, settings, compare).run();
+  for (const AlgorithmFigures& figures : result.algorithms) {
+    SCOPED_TRACE(toString(figures.algorithm));
+    EXPECT_EQ(figures.stats.samplesPerPixel, 4);
+    EXPECT_FALSE(figures.stats.timeLimitReached);
+  }
+
+  // A real budget: every pass but the last started before it was used up (the renderer
+  // checks the clock between passes), and the image is the one of the spp reached.
+  compare.secondsPerAlgorithm = 0.03;
+  compare.samplesPerPixel = 1 << 20;
+  result = Comparison(scene, settings, compare).run();
+  for (const AlgorithmFigures& figures : result.algorithms) {
+    SCOPED_TRACE(toString(figures.algorithm));
+    ASSERT_FALSE(figures.series.empty());
+    EXPECT_TRUE(figures.stats.timeLimitReached);
+    EXPECT_EQ(figures.series.back().samplesPerPixel, figures.stats.samplesPerPixel);
+    for (std::size_t i = 0; i + 1 < figures.series.size(); ++i) {
+      EXPECT_LT(figures.series[i].seconds, compare.secondsPerAlgorithm);
+      EXPECT_LT(figures.series[i].samplesPerPixel, figures.series[i + 1].samplesPerPixel);
+    }
+    const FloatImage same =
+        renderWith(scene, settings, figures.algorithm, figures.stats.samplesPerPixel);
+    EXPECT_EQ(differingPixels(figures.image, same), 0);
+  }
+}
+
+TEST(Comparison, 06_JsonCarriesEveryFigure) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 2;
+  compare.referenceSamplesPerPixel = 8;
+  const ComparisonResult result = Comparison(scene, smallSettings(scene), compare).run();
+  const nlohmann::json json = nlohmann::json::parse(comparisonJson(result));
+
+  EXPECT_EQ(json.at("raylab"), "comparison");
+  EXPECT_EQ(json.at("mode"), "equal-samples");
+  EXPECT_EQ(json.at("samplesPerPixel"), 2);
+  EXPECT_EQ(json.at("width"), 16);
+  EXPECT_EQ(json.at("height"), 12);
+  EXPECT_NE(json.at("error").at("against").get<std::string>().find("path-traced reference"),
+            std::string::npos);
+  EXPECT_EQ(json.at("reference").at("algorithm"), "path");
+  EXPECT_EQ(json.at("reference").at("source"), "rendered");
+  EXPECT_EQ(json.at("reference").at("samplesPerPixel"), 8);
+  const auto& algorithms = json.at("algorithms");
+  ASSERT_EQ(algorithms.size(), 4u);
+  const char* names[] = {"raycast", "whitted", "distributed", "path"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto& a = algorithms[i];
+    const AlgorithmFigures& figures = result.algorithms[i];
+    EXPECT_EQ(a.at("algorithm"), names[i]);
+    EXPECT_EQ(a.at("samplesPerPixel"), 2);
+    EXPECT_DOUBLE_EQ(a.at("seconds").get<double>(), figures.stats.seconds);
+    EXPECT_DOUBLE_EQ(a.at("rmse").get<double>(), figures.rmse);
+    EXPECT_DOUBLE_EQ(a.at("rmseLinear").get<double>(), figures.rmseLinear);
+    std::uint64_t sum = 0;
+    for (int k = 0; k < kRayKindCount; ++k) {
+      const auto count = a.at("rays").at(toString(static_cast<RayKind>(k))).get<std::uint64_t>();
+      EXPECT_EQ(count, figures.stats.rays.byKind[k]);
+      sum += count;
+    }
+    EXPECT_EQ(a.at("rays").at("total").get<std::uint64_t>(), sum);
+    ASSERT_EQ(a.at("series").size(), figures.series.size());
+    EXPECT_EQ(a.at("series").back().at("samplesPerPixel"), 2);
+    EXPECT_DOUBLE_EQ(a.at("series").back().at("rmse").get<double>(), figures.rmse);
+  }
+}
+
+TEST(Comparison, 07_GivenReferenceIsUsedAndMustMatchTheSize) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  ComparisonSettings compare;
+  compare.algorithms = {Algorithm::Whitted};
+  compare.samplesPerPixel = 1;
+  Comparison comparison(scene, smallSettings(scene), compare);
+  try {
+    comparison.setReference(FloatImage(20, 12), "ref.pfm");
+    FAIL() << "a 20x12 reference for a 16x12 scene was accepted";
+  } catch (const Comparison::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("ref.pfm"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("20x12"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("16x12"), std::string::npos) << e.what();
+  }
+  // A black reference: the errors are the RMS of the image itself.
+  comparison.setReference(FloatImage(16, 12), "black.pfm");
+  const ComparisonResult result = comparison.run();
+  EXPECT_EQ(result.reference.file, "black.pfm");
+  const FloatImage& image = result.algorithms[0].image;
+  EXPECT_DOUBLE_EQ(result.algorithms[0].rmseLinear, imageio::rmse(image, FloatImage(16, 12)));
+  EXPECT_DOUBLE_EQ(result.algorithms[0].rmse, displayRmse(image, FloatImage(16, 12)));
+  EXPECT_GT(result.algorithms[0].rmse, 0.0);
+  const nlohmann::json json = nlohmann::json::parse(comparisonJson(result));
+  EXPECT_EQ(json.at("reference").at("source"), "file");
+  EXPECT_EQ(json.at("reference").at("file"), "black.pfm");
+}
+
+TEST(Comparison, 08_InvalidSettingsAreRejected) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings none;
+  none.algorithms.clear();
+  EXPECT_THROW(Comparison(scene, settings, none), Comparison::Error);
+  ComparisonSettings zeroSpp;
+  zeroSpp.samplesPerPixel = 0;
+  EXPECT_THROW(Comparison(scene, settings, zeroSpp), Comparison::Error);
+  ComparisonSettings negativeTime;
+  negativeTime.secondsPerAlgorithm = -1.0;
+  EXPECT_THROW(Comparison(scene, settings, negativeTime), Comparison::Error);
+  ComparisonSettings nanTime;
+  nanTime.secondsPerAlgorithm = std::nan("");
+  EXPECT_THROW(Comparison(scene, settings, nanTime), Comparison::Error);
+}
+
+TEST(Comparison, 09_ProgressCoversReferenceAndEveryAlgorithm) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 2;
+  compare.referenceSamplesPerPixel = 4;
+  Comparison comparison(scene, smallSettings(scene), compare);
+  std::vector<std::string> stages;
+  double last = 0.0;
+  bool monotonic = true;
+  comparison.setProgress([&](const std::string& stage, double fraction, int) {
+    if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+    monotonic = monotonic && fraction >= last;
+    last = fraction;
+  });
+  comparison.run();
+  const std::vector<std::string> expected = {"reference", "raycast", "whitted", "distributed",
+                                             "path"};
+  EXPECT_EQ(stages, expected);
+  EXPECT_TRUE(monotonic);
+  EXPECT_DOUBLE_EQ(last, 1.0);
+}
+
+}  // namespace
+}  // namespace raylab
