@@ -9,7 +9,8 @@ macro(raylab_find_vtk)
     CommonCore CommonDataModel CommonMath CommonTransforms
     FiltersCore FiltersGeneral FiltersHybrid FiltersSources
     ImagingCore IOImage
-    InteractionStyle RenderingCore RenderingOpenGL2)
+    InteractionStyle RenderingCore RenderingOpenGL2
+    RenderingAnnotation RenderingFreeType)  # the ray-tree legend: a scalar bar and its text
   set(_raylab_vtk_args ${ARGN})  # a macro's ARGN is not a variable IN_LIST can read
   if("GUI" IN_LIST _raylab_vtk_args)
     list(APPEND _raylab_vtk_modules GUISupportQt)

@@ -1,5 +1,6 @@
 #include "raylab/vis/SceneView.h"
 
+#include "RayTreeActors.h"
 #include "ShapeGeometry.h"
 
 #include "raylab/core/Check.h"
@@ -11,6 +12,7 @@
 #include <vtkCamera.h>
 #include <vtkImageData.h>
 #include <vtkMapper.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataSilhouette.h>
@@ -18,6 +20,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkSphereSource.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -36,6 +39,8 @@ constexpr double kHighlight[3] = {1.0, 0.85, 0.0};
 constexpr double kCameraBody[3] = {0.85, 0.88, 0.95};
 constexpr double kCameraBodyOpacity = 0.45;
 constexpr double kFrustum[3] = {0.9, 0.9, 0.9};
+/// Colour of a point light's glyph: the seed's flesh-coloured light.
+constexpr double kPointLight[3] = {1.0, 0.8, 0.65};
 
 /// Display colour of a material: emitters show their emission's hue at full brightness,
 /// everything else its reflectance, clamped to [0, 1].
@@ -64,6 +69,7 @@ struct SceneView::Impl {
   std::vector<vtkSmartPointer<vtkActor>> objects;     ///< One per scene object.
   std::vector<vtkSmartPointer<vtkActor>> highlights;  ///< Hidden outlines, one per object.
   vtkSmartPointer<vtkRenderWindow> offscreen;         ///< Created on first offscreen render.
+  RayTreeActors rays{Vec3(kBackground[0], kBackground[1], kBackground[2])};  ///< Ray tree.
 
   ~Impl() {
     if (offscreen) {
@@ -167,6 +173,25 @@ void SceneView::setScene(const Scene& scene) {
   frustum->GetProperty()->SetLineWidth(1.5);
   frustum->GetProperty()->LightingOff();
   renderer->AddActor(frustum);
+
+  // Step 3b: point lights (the classic algorithms' lights) as small flesh-coloured balls.
+  for (const PointLight& light : m_scene.pointLights) {
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(light.position.x, light.position.y, light.position.z);
+    ball->SetRadius(0.3 * cameraGlyphSize(m_scene));
+    ball->SetThetaResolution(16);
+    ball->SetPhiResolution(12);
+    ball->Update();
+    auto glyph = makeActor(ball->GetOutput());
+    glyph->GetProperty()->SetColor(kPointLight[0], kPointLight[1], kPointLight[2]);
+    glyph->GetProperty()->LightingOff();
+    renderer->AddActor(glyph);
+  }
+
+  // Step 3c: the ray tree (kept across scene changes: re-trace and setRayTree to update).
+  m_impl->rays.glyphLength = 0.5 * cameraGlyphSize(m_scene);
+  m_impl->rays.addTo(renderer);
+  m_impl->rays.rebuild();
 
   // Step 4: look at it all from outside.
   resetViewCamera();
@@ -273,6 +298,100 @@ Image SceneView::renderOffscreen(int width, int height) {
 
 void SceneView::renderToPng(const std::string& path, int width, int height) {
   ImageIO::writePng(renderOffscreen(width, height), path);
+}
+
+void SceneView::setRayTree(const RayTree& tree, const RayTreeStyle& style) {
+  RayTreeActors& rays = m_impl->rays;
+  rays.tree = tree;
+  rays.style = style;
+  rays.reaches = reachesLight(rays.tree);
+  rays.fraction.clear();
+  rays.selected = -1;
+  rays.shown = true;
+  rays.rebuild();
+}
+
+void SceneView::clearRayTree() {
+  RayTreeActors& rays = m_impl->rays;
+  rays.tree = RayTree{};
+  rays.reaches.clear();
+  rays.fraction.clear();
+  rays.selected = -1;
+  rays.shown = false;
+  rays.rebuild();
+}
+
+bool SceneView::hasRayTree() const { return m_impl->rays.shown; }
+
+const RayTree& SceneView::rayTree() const { return m_impl->rays.tree; }
+
+void SceneView::setRayTreeStyle(const RayTreeStyle& style) {
+  m_impl->rays.style = style;
+  m_impl->rays.rebuild();
+}
+
+const RayTreeStyle& SceneView::rayTreeStyle() const { return m_impl->rays.style; }
+
+void SceneView::setReveal(const RevealFrame& frame) {
+  RayTreeActors& rays = m_impl->rays;
+  RAYLAB_CHECK_EQ(frame.fraction.size(), rays.tree.segments.size());
+  rays.fraction = frame.fraction;
+  rays.rebuild();
+}
+
+void SceneView::revealAll() {
+  m_impl->rays.fraction.clear();
+  m_impl->rays.rebuild();
+}
+
+void SceneView::setSelectedSegment(int id) {
+  RayTreeActors& rays = m_impl->rays;
+  rays.selected = id >= 0 && id < int(rays.tree.segments.size()) ? id : -1;
+  rays.rebuild();
+}
+
+int SceneView::selectedSegment() const { return m_impl->rays.selected; }
+
+int SceneView::segmentAt(double x, double y, int width, int height, double tolerance) const {
+  const RayTreeActors& rays = m_impl->rays;
+  if (!rays.shown || width <= 0 || height <= 0) return -1;
+  // Project with the view camera's matrix once, then test every drawn line in 2D.
+  vtkCamera* camera = m_impl->renderer->GetActiveCamera();
+  vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(double(width) / height, -1, 1);
+  double e[16];
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) e[4 * r + c] = m->GetElement(r, c);
+  // Image coordinates (y down) of a world point; w <= 0 when behind the eye.
+  auto project = [&](const float* p, double& px, double& py) {
+    const double w = e[12] * p[0] + e[13] * p[1] + e[14] * p[2] + e[15];
+    if (w <= 1e-12) return false;
+    px = ((e[0] * p[0] + e[1] * p[1] + e[2] * p[2] + e[3]) / w + 1.0) * width / 2.0;
+    py = height - ((e[4] * p[0] + e[5] * p[1] + e[6] * p[2] + e[7]) / w + 1.0) * height / 2.0;
+    return true;
+  };
+  int best = -1;
+  double bestDistance = tolerance;
+  for (int k = 0; k < kRayWidthClasses; ++k) {
+    vtkPolyData* lines = rays.geometry.lines[std::size_t(k)];
+    if (!lines || lines->GetNumberOfPoints() == 0) continue;
+    const auto* points = static_cast<const float*>(lines->GetPoints()->GetVoidPointer(0));
+    const std::vector<int>& ids = rays.geometry.cellSegment[std::size_t(k)];
+    for (std::size_t c = 0; c < ids.size(); ++c) {
+      double ax, ay, bx, by;
+      if (!project(points + 6 * c, ax, ay) || !project(points + 6 * c + 3, bx, by)) continue;
+      // Distance from (x, y) to the projected segment.
+      const double dx = bx - ax, dy = by - ay;
+      const double len2 = dx * dx + dy * dy;
+      const double t =
+          len2 > 0.0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+      const double d = std::hypot(x - (ax + t * dx), y - (ay + t * dy));
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = ids[c];
+      }
+    }
+  }
+  return best;
 }
 
 std::optional<Vec2> SceneView::worldToImage(const Point3& world, int width, int height) const {

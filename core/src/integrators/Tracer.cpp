@@ -202,6 +202,7 @@ void stepEngine(const Tracer& tracer, Queue& queue, Sampler& sampler,
       seg.normal = hit->si.n;
     } else if (ray.kind == RayKind::Shadow) {
       seg.endPoint = ray.ray.at(ray.ray.tMax);
+      seg.lightPoint = seg.endPoint;
       if (end == EndReason::Occluded) {
         // Find the blocker, for drawing only.
         if (const std::optional<SceneHit> blocker = scene.intersect(ray.ray)) {

@@ -60,6 +60,8 @@ struct RaySegment {
                          ///< (MIS-weighted) or a shadow ray's light contribution.
   Vec3 radiance{0.0};    ///< After propagation: emitted + sum of weighted children.
   EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
+  Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (the far end);
+                           ///< when Occluded, endPoint is where the blocker was hit.
 };
 
 /// The rays of one (pixel, sample), in the engine's processing order.

@@ -68,6 +68,7 @@ class SceneView {
   /// \name The ray tree drawn in the view (one polydata, one actor for all its rays).
   /// @{
   /// Shows `tree` (replacing any other) with `style`, wholly revealed. `tree` is copied.
+  /// The tree stays through setScene (trace again and call this to update it).
   void setRayTree(const RayTree& tree, const RayTreeStyle& style = {});
   /// Removes the ray tree from the view.
   void clearRayTree();
@@ -82,7 +83,7 @@ class SceneView {
   void setReveal(const RevealFrame& frame);
   /// Shows the whole tree again.
   void revealAll();
-  /// Marks segment `id` (drawn thick, in the highlight colour); -1 clears.
+  /// Marks segment `id` (drawn thick, in magenta, as far as it is revealed); -1 clears.
   void setSelectedSegment(int id);
   int selectedSegment() const;
   /// The drawn segment nearest to image point (x, y) (pixels, y down) of a width x height

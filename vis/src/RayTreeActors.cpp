@@ -1,0 +1,272 @@
+#include "RayTreeActors.h"
+
+#include <vtkCellArray.h>
+#include <vtkConeSource.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace raylab {
+
+namespace {
+
+/// Colour of the selected segment: a magenta no colouring uses.
+constexpr double kSelectedRay[3] = {1.0, 0.2, 0.8};
+/// Colour of the legend's title and of the energy bar's labels.
+constexpr double kLegendText[3] = {0.95, 0.95, 0.95};
+
+/// An unlit actor drawing the direct RGB colours of its polydata (cell or point scalars).
+vtkSmartPointer<vtkActor> makeColouredActor() {
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  return actor;
+}
+
+void setInput(vtkActor* actor, vtkPolyData* data) {
+  static_cast<vtkPolyDataMapper*>(actor->GetMapper())->SetInputData(data);
+}
+
+void styleText(vtkTextProperty* text, const double colour[3]) {
+  text->SetColor(colour[0], colour[1], colour[2]);
+  text->SetFontFamilyToArial();
+  text->BoldOff();
+  text->ItalicOff();
+  text->ShadowOff();
+  text->SetJustificationToLeft();
+  text->SetVerticalJustificationToBottom();
+}
+
+void layoutCallback(vtkObject* caller, unsigned long, void* clientData, void*) {
+  auto* renderer = static_cast<vtkRenderer*>(caller);
+  const int* size = renderer->GetSize();
+  static_cast<RayTreeActors*>(clientData)->layoutLegend(size[0], size[1]);
+}
+
+}  // namespace
+
+RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) {
+  for (auto& actor : m_lines) actor = makeColouredActor();
+  m_blocked = makeColouredActor();
+  m_blocked->GetProperty()->SetLineWidth(1.5);
+  m_hitPoints = makeColouredActor();
+  m_hitPoints->GetMapper()->ScalarVisibilityOff();
+  m_hitPoints->GetProperty()->SetColor(0.95, 0.95, 0.95);
+  m_hitPoints->GetProperty()->RenderPointsAsSpheresOn();
+  m_fronts = makeColouredActor();
+  m_fronts->GetProperty()->RenderPointsAsSpheresOn();
+  m_normals = makeColouredActor();
+  m_normals->GetMapper()->ScalarVisibilityOff();
+  m_normals->GetProperty()->SetColor(1.0, 0.45, 0.45);
+  m_normals->GetProperty()->SetLineWidth(1.5);
+
+  // Arrow heads: small cones whose tip sits on the ray front, pointing along the ray,
+  // in the ray's colour.
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(12);
+  cone->SetHeight(1.0);
+  cone->SetRadius(0.3);
+  cone->SetCenter(-0.5, 0.0, 0.0);
+  m_arrowGlyphs = vtkSmartPointer<vtkGlyph3D>::New();
+  m_arrowGlyphs->SetSourceConnection(cone->GetOutputPort());
+  m_arrowGlyphs->SetVectorModeToUseVector();
+  m_arrowGlyphs->OrientOn();
+  m_arrowGlyphs->SetScaleModeToDataScalingOff();
+  m_arrowGlyphs->SetColorModeToColorByScalar();
+  vtkNew<vtkPolyDataMapper> arrowMapper;
+  arrowMapper->SetInputConnection(m_arrowGlyphs->GetOutputPort());
+  arrowMapper->SetColorModeToDirectScalars();
+  m_arrows = vtkSmartPointer<vtkActor>::New();
+  m_arrows->SetMapper(arrowMapper);
+  m_arrows->GetProperty()->LightingOff();
+
+  m_selection = makeColouredActor();
+  m_selection->GetMapper()->ScalarVisibilityOff();
+  m_selection->GetProperty()->SetColor(kSelectedRay[0], kSelectedRay[1], kSelectedRay[2]);
+  // Drawn over the ray it marks.
+  m_selection->GetMapper()->SetRelativeCoincidentTopologyLineOffsetParameters(-2.0, -20.0);
+
+  // The legend: a title, then a colour bar (energy) or coloured names (kinds, depths).
+  m_legendTitle = vtkSmartPointer<vtkTextActor>::New();
+  styleText(m_legendTitle->GetTextProperty(), kLegendText);
+  m_legendTitle->GetTextProperty()->BoldOn();
+  for (auto& entry : m_legendEntries) {
+    entry = vtkSmartPointer<vtkTextActor>::New();
+    styleText(entry->GetTextProperty(), kLegendText);
+    entry->GetTextProperty()->BoldOn();
+  }
+  m_energyBar = vtkSmartPointer<vtkScalarBarActor>::New();
+  m_energyBar->SetOrientationToVertical();
+  m_energyBar->SetTextPositionToSucceedScalarBar();
+  m_energyBar->UnconstrainedFontSizeOn();
+  m_energyBar->SetBarRatio(0.3);
+  m_energyBar->SetTitle("");
+  m_energyBar->SetLabelFormat("%g");
+  m_energyBar->DrawAnnotationsOff();
+  styleText(m_energyBar->GetLabelTextProperty(), kLegendText);
+  m_energyBar->GetLabelTextProperty()->SetVerticalJustificationToCentered();
+  m_energyBar->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+  m_energyBar->GetPosition2Coordinate()->SetCoordinateSystemToDisplay();
+
+  m_layout = vtkSmartPointer<vtkCallbackCommand>::New();
+  m_layout->SetCallback(layoutCallback);
+  m_layout->SetClientData(this);
+}
+
+RayTreeActors::~RayTreeActors() {
+  if (m_observed) m_observed->RemoveObserver(m_observer);
+}
+
+std::vector<vtkProp*> RayTreeActors::props() const {
+  std::vector<vtkProp*> all(m_lines.begin(), m_lines.end());
+  all.insert(all.end(),
+             {m_blocked.Get(), m_hitPoints.Get(), m_fronts.Get(), m_normals.Get(), m_arrows.Get(),
+              m_selection.Get(), m_legendTitle.Get(), m_energyBar.Get()});
+  for (const auto& entry : m_legendEntries) all.push_back(entry);
+  return all;
+}
+
+void RayTreeActors::addTo(vtkRenderer* renderer) {
+  for (vtkProp* prop : props()) renderer->AddViewProp(prop);
+  if (m_observed != renderer) {
+    if (m_observed) m_observed->RemoveObserver(m_observer);
+    m_observer = renderer->AddObserver(vtkCommand::StartEvent, m_layout);
+    m_observed = renderer;
+  }
+}
+
+void RayTreeActors::rebuild() {
+  const std::vector<float>* revealed = fraction.empty() ? nullptr : &fraction;
+  geometry = buildRayTreeGeometry(tree, style, reaches, revealed, glyphLength, m_background);
+  for (int k = 0; k < kRayWidthClasses; ++k) {
+    vtkActor* actor = m_lines[std::size_t(k)];
+    setInput(actor, geometry.lines[std::size_t(k)]);
+    actor->GetProperty()->SetLineWidth(float(rayLineWidth(style, k)));
+    actor->SetVisibility(shown && geometry.lines[std::size_t(k)]->GetNumberOfCells() > 0);
+  }
+  setInput(m_blocked, geometry.blocked);
+  m_blocked->SetVisibility(shown && geometry.blocked->GetNumberOfCells() > 0);
+  setInput(m_hitPoints, geometry.hitPoints);
+  m_hitPoints->GetProperty()->SetPointSize(float(2.0 * style.lineWidth + 2.0));
+  m_hitPoints->SetVisibility(shown && style.showHitPoints &&
+                             geometry.hitPoints->GetNumberOfCells() > 0);
+  setInput(m_fronts, geometry.fronts);
+  m_fronts->GetProperty()->SetPointSize(float(3.0 * style.lineWidth + 3.0));
+  m_fronts->SetVisibility(shown && geometry.fronts->GetNumberOfCells() > 0);
+  setInput(m_normals, geometry.normals);
+  m_normals->SetVisibility(shown && style.showNormals && geometry.normals->GetNumberOfCells() > 0);
+  m_arrowGlyphs->SetInputData(geometry.arrows);
+  m_arrowGlyphs->SetScaleFactor(glyphLength * 0.6);
+  m_arrows->SetVisibility(shown && style.showArrows && geometry.arrows->GetNumberOfPoints() > 0);
+
+  // The selected segment, as far as it is revealed, thick and magenta.
+  auto selectionData = vtkSmartPointer<vtkPolyData>::New();
+  bool selectionShown = false;
+  if (shown && selected >= 0 && selected < int(tree.segments.size())) {
+    const RaySegment& s = tree.segments[std::size_t(selected)];
+    const double f = fraction.empty() ? 1.0 : double(fraction[std::size_t(selected)]);
+    if (f > 0.0) {
+      const Point3 end = s.origin + f * (s.endPoint - s.origin);
+      vtkNew<vtkPoints> points;
+      points->InsertNextPoint(s.origin.x, s.origin.y, s.origin.z);
+      points->InsertNextPoint(end.x, end.y, end.z);
+      vtkNew<vtkCellArray> cells;
+      const vtkIdType ids[2] = {0, 1};
+      cells->InsertNextCell(2, ids);
+      selectionData->SetPoints(points);
+      selectionData->SetLines(cells);
+      selectionShown = true;
+    }
+  }
+  setInput(m_selection, selectionData);
+  m_selection->GetProperty()->SetLineWidth(float(rayLineWidth(style, kRayWidthClasses - 1) + 3.0));
+  m_selection->SetVisibility(selectionShown);
+
+  updateLegend();
+}
+
+void RayTreeActors::updateLegend() {
+  const bool legend = shown && style.showLegend;
+  m_legendEntryCount = 0;
+  auto addEntry = [&](const std::string& text, const Vec3& colour) {
+    vtkTextActor* entry = m_legendEntries[std::size_t(m_legendEntryCount++)];
+    entry->SetInput(text.c_str());
+    entry->GetTextProperty()->SetColor(colour.x, colour.y, colour.z);
+  };
+  switch (style.colouring) {
+    case RayColouring::Energy: {
+      // The shared log scale: grey at `low`, green at the geometric mean, blue at `high`.
+      m_legendTitle->SetInput("ray energy");
+      vtkNew<vtkLookupTable> table;
+      const int n = 256;
+      table->SetNumberOfTableValues(n);
+      table->SetScaleToLog10();
+      table->SetRange(style.scale.low, style.scale.high);
+      for (int i = 0; i < n; ++i) {
+        const Vec3 c = EnergyScale::colour(double(i) / double(n - 1));
+        table->SetTableValue(i, c.x, c.y, c.z, 1.0);
+      }
+      table->Build();
+      m_energyBar->SetLookupTable(table);
+      const double decades = std::log10(style.scale.high / style.scale.low);
+      m_energyBar->SetNumberOfLabels(std::clamp(int(std::lround(decades)) + 1, 2, 6));
+      break;
+    }
+    case RayColouring::Kind:
+      m_legendTitle->SetInput("ray kind");
+      for (int k = 0; k < kRayKindCount; ++k)
+        addEntry(toString(RayKind(k)), kindColour(RayKind(k)));
+      break;
+    case RayColouring::Depth: {
+      m_legendTitle->SetInput("depth");
+      const int deepest = geometry.deepest;
+      const int every = deepest / kLegendEntries + 1;
+      for (int d = 0; d <= deepest && m_legendEntryCount < kLegendEntries; d += every)
+        addEntry(d == 0 ? "0 (camera)" : std::to_string(d), depthColour(d, deepest));
+      break;
+    }
+  }
+  m_legendTitle->SetVisibility(legend);
+  m_energyBar->SetVisibility(legend && style.colouring == RayColouring::Energy);
+  for (int i = 0; i < kLegendEntries; ++i)
+    m_legendEntries[std::size_t(i)]->SetVisibility(legend && i < m_legendEntryCount);
+}
+
+void RayTreeActors::layoutLegend(int width, int height) {
+  if (width <= 0 || height <= 0) return;
+  // Text about 1/24 of the picture's height: readable when projected, small beside the scene.
+  const int font = std::clamp(int(std::lround(height / 24.0)), 10, 40);
+  const int margin = std::max(4, int(std::lround(0.02 * height)));
+  const int line = int(std::lround(1.3 * font));
+  int y = height - margin - font;
+  m_legendTitle->GetTextProperty()->SetFontSize(font);
+  m_legendTitle->SetDisplayPosition(margin, y);
+  for (int i = 0; i < m_legendEntryCount; ++i) {
+    y -= line;
+    vtkTextActor* entry = m_legendEntries[std::size_t(i)];
+    entry->GetTextProperty()->SetFontSize(font);
+    entry->SetDisplayPosition(margin + font / 2, y);
+  }
+  // The energy bar under the title: labels half a line tall above and below the bar.
+  const int barTop = height - margin - font - line / 2;
+  const int barHeight = std::max(4 * font, int(0.4 * height));
+  m_energyBar->GetLabelTextProperty()->SetFontSize(font);
+  m_energyBar->GetPositionCoordinate()->SetValue(margin + font / 2, barTop - barHeight);
+  m_energyBar->GetPosition2Coordinate()->SetValue(5 * font, barHeight);
+  m_energyBar->SetMaximumWidthInPixels(5 * font);
+  m_energyBar->SetMaximumHeightInPixels(barHeight);
+}
+
+}  // namespace raylab
