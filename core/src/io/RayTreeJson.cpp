@@ -1,0 +1,237 @@
+#include "raylab/core/RayTreeJson.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace raylab {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr std::array<EndReason, 9> kEndReasons = {
+    EndReason::Pending,  EndReason::Escaped,         EndReason::HitLight,
+    EndReason::MaxDepth, EndReason::RussianRoulette, EndReason::Absorbed,
+    EndReason::Occluded, EndReason::ReachedLight,    EndReason::Spawned};
+
+json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+/// Reads the field `key` of segment object `s` (of segment `index`) as T.
+template <typename T>
+T field(const json& s, const char* key, std::size_t index, const std::string& origin) {
+  const auto it = s.find(key);
+  if (it == s.end())
+    throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(index) + " has no \"" + key +
+                             "\"");
+  try {
+    return it->get<T>();
+  } catch (const json::exception&) {
+    throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(index) + "/" + key +
+                             " has the wrong type");
+  }
+}
+
+Vec3 vecField(const json& s, const char* key, std::size_t index, const std::string& origin) {
+  const auto a = field<std::vector<double>>(s, key, index, origin);
+  if (a.size() != 3)
+    throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(index) + "/" + key +
+                             " must have 3 numbers");
+  return Vec3(a[0], a[1], a[2]);
+}
+
+}  // namespace
+
+const char* RayTreeJson::endReasonName(EndReason reason) {
+  switch (reason) {
+    case EndReason::Pending:
+      return "pending";
+    case EndReason::Escaped:
+      return "escaped";
+    case EndReason::HitLight:
+      return "hit_light";
+    case EndReason::MaxDepth:
+      return "max_depth";
+    case EndReason::RussianRoulette:
+      return "russian_roulette";
+    case EndReason::Absorbed:
+      return "absorbed";
+    case EndReason::Occluded:
+      return "occluded";
+    case EndReason::ReachedLight:
+      return "reached_light";
+    case EndReason::Spawned:
+      return "spawned";
+  }
+  return "unknown";
+}
+
+std::string RayTreeJson::serialize(const RayTree& tree, const Scene& scene,
+                                   const RenderSettings& settings) {
+  json doc;
+  doc["raylab_ray_tree"] = kVersion;
+  doc["scene"] = scene.name;
+  doc["algorithm"] = toString(settings.algorithm);
+  doc["seed"] = settings.seed;
+  doc["pixel"] = json::array({tree.pixelX, tree.pixelY});
+  doc["sample"] = tree.sample;
+  doc["estimate"] = vec(tree.estimate());
+  doc["rays"] = tree.segments.size();
+  std::array<std::size_t, kRayKindCount> byKind{};
+  for (const RaySegment& s : tree.segments) ++byKind[std::size_t(s.kind)];
+  json kinds = json::object();
+  for (int k = 0; k < kRayKindCount; ++k) kinds[toString(RayKind(k))] = byKind[std::size_t(k)];
+  doc["rays_by_kind"] = kinds;
+  doc["truncated"] = tree.truncated;
+  doc["message"] = tree.message;
+
+  json segments = json::array();
+  for (const RaySegment& s : tree.segments) {
+    const bool named = s.object >= 0 && s.object < int(scene.objects.size());
+    json j;
+    j["id"] = s.id;
+    j["parent"] = s.parent;
+    j["first_child"] = s.firstChild;
+    j["child_count"] = s.childCount;
+    j["kind"] = toString(s.kind);
+    j["depth"] = s.depth;
+    j["origin"] = vec(s.origin);
+    j["direction"] = vec(s.direction);
+    j["time"] = s.time;
+    j["hit"] = s.hit;
+    j["end_point"] = vec(s.endPoint);
+    j["light_point"] = vec(s.lightPoint);
+    j["object"] = s.object;
+    j["object_name"] = named ? scene.objects[std::size_t(s.object)].name : std::string();
+    j["normal"] = vec(s.normal);
+    j["weight"] = vec(s.weight);
+    j["pdf"] = s.pdf;
+    j["throughput"] = vec(s.throughput);
+    j["emitted"] = vec(s.emitted);
+    j["radiance"] = vec(s.radiance);
+    j["end_reason"] = endReasonName(s.endReason);
+    segments.push_back(std::move(j));
+  }
+  doc["segments"] = std::move(segments);
+  return doc.dump(1) + "\n";
+}
+
+void RayTreeJson::save(const RayTree& tree, const Scene& scene, const RenderSettings& settings,
+                       const std::string& path) {
+  const std::string text = serialize(tree, scene, settings);
+  // A temporary file beside the target, then a rename: never a half-written dump.
+  std::string temp = path + ".XXXXXX";
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) throw Error(path + ": cannot create a file there (does the folder exist?)");
+  ::fchmod(fd, 0644);
+  std::size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n <= 0) {
+      ::close(fd);
+      ::unlink(temp.c_str());
+      throw Error(path + ": write failed (disk full?); the file was not written");
+    }
+    written += std::size_t(n);
+  }
+  if (::close(fd) != 0 || std::rename(temp.c_str(), path.c_str()) != 0) {
+    ::unlink(temp.c_str());
+    throw Error(path + ": could not write the file");
+  }
+}
+
+RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, Info* info) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw Error(origin + ": not JSON (" + e.what() + ")");
+  }
+  if (!doc.is_object() || !doc.contains("raylab_ray_tree"))
+    throw Error(origin + ": not a ray tree dump (no \"raylab_ray_tree\" version)");
+  RayTree tree;
+  Info read;
+  try {
+    read.version = doc.at("raylab_ray_tree").get<int>();
+    if (read.version != kVersion)
+      throw Error(origin + ": ray tree format " + std::to_string(read.version) +
+                  " is not supported (this RayLab reads " + std::to_string(kVersion) + ")");
+    const auto pixel = doc.at("pixel").get<std::array<int, 2>>();
+    tree.pixelX = pixel[0];
+    tree.pixelY = pixel[1];
+    tree.sample = doc.at("sample").get<int>();
+    tree.truncated = doc.value("truncated", false);
+    tree.message = doc.value("message", std::string());
+    read.scene = doc.value("scene", std::string());
+    read.algorithm = doc.value("algorithm", std::string());
+    read.seed = doc.value("seed", std::uint64_t(0));
+    const auto estimate = doc.value("estimate", std::array<double, 3>{0.0, 0.0, 0.0});
+    read.estimate = Vec3(estimate[0], estimate[1], estimate[2]);
+  } catch (const json::exception& e) {
+    throw Error(origin + ": bad ray tree header (" + e.what() + ")");
+  }
+  const auto segments = doc.find("segments");
+  if (segments == doc.end() || !segments->is_array())
+    throw Error(origin + ": no \"segments\" array");
+  tree.segments.resize(segments->size());
+  for (std::size_t i = 0; i < segments->size(); ++i) {
+    const json& j = (*segments)[i];
+    RaySegment& s = tree.segments[i];
+    s.id = field<int>(j, "id", i, origin);
+    s.parent = field<int>(j, "parent", i, origin);
+    s.firstChild = field<int>(j, "first_child", i, origin);
+    s.childCount = field<int>(j, "child_count", i, origin);
+    const auto kind = field<std::string>(j, "kind", i, origin);
+    int k = 0;
+    while (k < kRayKindCount && kind != toString(RayKind(k))) ++k;
+    if (k == kRayKindCount)
+      throw Error(origin + ": /segments/" + std::to_string(i) + "/kind: unknown kind '" + kind +
+                  "'");
+    s.kind = RayKind(k);
+    s.depth = field<int>(j, "depth", i, origin);
+    s.origin = vecField(j, "origin", i, origin);
+    s.direction = vecField(j, "direction", i, origin);
+    s.time = field<double>(j, "time", i, origin);
+    s.hit = field<bool>(j, "hit", i, origin);
+    s.endPoint = vecField(j, "end_point", i, origin);
+    s.lightPoint = vecField(j, "light_point", i, origin);
+    s.object = field<int>(j, "object", i, origin);
+    s.normal = vecField(j, "normal", i, origin);
+    s.weight = vecField(j, "weight", i, origin);
+    s.pdf = field<double>(j, "pdf", i, origin);
+    s.throughput = vecField(j, "throughput", i, origin);
+    s.emitted = vecField(j, "emitted", i, origin);
+    s.radiance = vecField(j, "radiance", i, origin);
+    const auto reason = field<std::string>(j, "end_reason", i, origin);
+    bool known = false;
+    for (EndReason r : kEndReasons) {
+      if (reason == endReasonName(r)) {
+        s.endReason = r;
+        known = true;
+      }
+    }
+    if (!known)
+      throw Error(origin + ": /segments/" + std::to_string(i) + "/end_reason: unknown '" + reason +
+                  "'");
+    read.objectNames.push_back(j.value("object_name", std::string()));
+  }
+  if (info) *info = std::move(read);
+  return tree;
+}
+
+RayTree RayTreeJson::load(const std::string& path, Info* info) {
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse(text.str(), path, info);
+}
+
+}  // namespace raylab

@@ -1,0 +1,192 @@
+// Ray tree dumps: every RaySegment field round-trips bit for bit under its documented
+// name, the header names the pixel, sample, algorithm and objects, and bad documents and
+// unwritable files give errors naming the place.
+#include "raylab/core/RayTreeJson.h"
+
+#include "TransportScenes.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace raylab {
+namespace {
+
+using testing::allMaterialsScene;
+using testing::settingsFor;
+
+/// A tree with every field set to a distinct, non-round value (doubles that need all 17
+/// digits), every kind and every end reason.
+RayTree handMadeTree() {
+  RayTree tree;
+  tree.pixelX = 7;
+  tree.pixelY = 3;
+  tree.sample = 5;
+  tree.truncated = true;
+  tree.message = "ray tree truncated at 9 rays";
+  for (int i = 0; i < 9; ++i) {
+    RaySegment s;
+    s.id = i;
+    s.parent = i == 0 ? -1 : (i - 1) / 2;
+    s.firstChild = 2 * i + 1 < 9 ? 2 * i + 1 : -1;
+    s.childCount = 2 * i + 1 < 9 ? 2 : 0;
+    s.kind = RayKind(i % kRayKindCount);
+    s.depth = i / 2;
+    const double x = 0.1 * i + 1.0 / 3.0;
+    s.origin = Point3(x, -x, 2.0 * x);
+    s.direction = glm::normalize(Vec3(1.0, x, -0.7));
+    s.time = x / 7.0;
+    s.hit = i % 2 == 0;
+    s.endPoint = Point3(x + 1e-9, 3.0, -x / 9.0);
+    s.lightPoint = Point3(-x, 6.0, x * x);
+    s.object = i % 3 - 1;
+    s.normal = glm::normalize(Vec3(-x, 1.0, 0.25));
+    s.weight = Vec3(0.5 + x, 1.0 / (x + 3.0), 1e-7 * x);
+    s.pdf = 1.0 / (3.0 + x);
+    s.throughput = Vec3(x, x * x, 1.0 / 7.0);
+    s.emitted = Vec3(1e-300 * x, 0.0, 12.0 / 7.0);
+    s.radiance = Vec3(3.0 / 11.0, x, 0.0);
+    s.endReason = EndReason(i);
+    tree.segments.push_back(s);
+  }
+  return tree;
+}
+
+void expectSameVec(const Vec3& a, const Vec3& b, const std::string& what) {
+  EXPECT_EQ(a.x, b.x) << what;
+  EXPECT_EQ(a.y, b.y) << what;
+  EXPECT_EQ(a.z, b.z) << what;
+}
+
+TEST(RayTreeJson, 01_EveryFieldRoundTripsExactly) {
+  const Scene scene = allMaterialsScene();
+  const RayTree tree = handMadeTree();
+  RayTreeJson::Info info;
+  const RayTree back = RayTreeJson::parse(
+      RayTreeJson::serialize(tree, scene, settingsFor(Algorithm::Whitted, 1)), "dump", &info);
+  EXPECT_EQ(back.pixelX, 7);
+  EXPECT_EQ(back.pixelY, 3);
+  EXPECT_EQ(back.sample, 5);
+  EXPECT_TRUE(back.truncated);
+  EXPECT_EQ(back.message, tree.message);
+  ASSERT_EQ(back.segments.size(), tree.segments.size());
+  for (std::size_t i = 0; i < tree.segments.size(); ++i) {
+    const RaySegment& a = tree.segments[i];
+    const RaySegment& b = back.segments[i];
+    const std::string at = "segment " + std::to_string(i);
+    EXPECT_EQ(a.id, b.id) << at;
+    EXPECT_EQ(a.parent, b.parent) << at;
+    EXPECT_EQ(a.firstChild, b.firstChild) << at;
+    EXPECT_EQ(a.childCount, b.childCount) << at;
+    EXPECT_EQ(a.kind, b.kind) << at;
+    EXPECT_EQ(a.depth, b.depth) << at;
+    expectSameVec(a.origin, b.origin, at + " origin");
+    expectSameVec(a.direction, b.direction, at + " direction");
+    EXPECT_EQ(a.time, b.time) << at;
+    EXPECT_EQ(a.hit, b.hit) << at;
+    expectSameVec(a.endPoint, b.endPoint, at + " endPoint");
+    expectSameVec(a.lightPoint, b.lightPoint, at + " lightPoint");
+    EXPECT_EQ(a.object, b.object) << at;
+    expectSameVec(a.normal, b.normal, at + " normal");
+    expectSameVec(a.weight, b.weight, at + " weight");
+    EXPECT_EQ(a.pdf, b.pdf) << at;
+    expectSameVec(a.throughput, b.throughput, at + " throughput");
+    expectSameVec(a.emitted, b.emitted, at + " emitted");
+    expectSameVec(a.radiance, b.radiance, at + " radiance");
+    EXPECT_EQ(a.endReason, b.endReason) << at;
+  }
+  EXPECT_EQ(info.algorithm, "whitted");
+  EXPECT_EQ(info.scene, "all materials");
+  EXPECT_EQ(info.seed, 1u);
+  expectSameVec(info.estimate, tree.estimate(), "estimate");
+  // Object -1 has no name; others are the scene's names.
+  ASSERT_EQ(info.objectNames.size(), tree.segments.size());
+  EXPECT_EQ(info.objectNames[0], "");
+  EXPECT_EQ(info.objectNames[1], scene.objects[0].name);
+  EXPECT_EQ(info.objectNames[2], scene.objects[1].name);
+}
+
+TEST(RayTreeJson, 02_FieldNamesAndWords) {
+  const Scene scene = allMaterialsScene();
+  const RayTree tree = handMadeTree();
+  const auto doc = nlohmann::json::parse(
+      RayTreeJson::serialize(tree, scene, settingsFor(Algorithm::PathTracing, 1)));
+  EXPECT_EQ(doc.at("raylab_ray_tree"), 1);
+  EXPECT_EQ(doc.at("algorithm"), "path");
+  EXPECT_EQ(doc.at("pixel"), nlohmann::json::array({7, 3}));
+  EXPECT_EQ(doc.at("sample"), 5);
+  EXPECT_EQ(doc.at("rays"), 9);
+  // Kinds cycle camera..shadow over the 9 segments: camera, reflection, refraction twice.
+  EXPECT_EQ(doc.at("rays_by_kind").at("camera"), 2);
+  EXPECT_EQ(doc.at("rays_by_kind").at("refraction"), 2);
+  EXPECT_EQ(doc.at("rays_by_kind").at("shadow"), 1);
+  const auto& s = doc.at("segments").at(8);
+  for (const char* key :
+       {"id",      "parent",      "first_child", "child_count", "kind",      "depth",
+        "origin",  "direction",   "time",        "hit",         "end_point", "light_point",
+        "object",  "object_name", "normal",      "weight",      "pdf",       "throughput",
+        "emitted", "radiance",    "end_reason"})
+    EXPECT_TRUE(s.contains(key)) << "segment field " << key;
+  EXPECT_EQ(s.size(), 21u) << "a field was added: document it and test it";
+  EXPECT_EQ(s.at("kind"), "refraction");
+  EXPECT_EQ(s.at("end_reason"), "spawned");
+  EXPECT_EQ(doc.at("segments").at(4).at("end_reason"), "russian_roulette");
+  EXPECT_EQ(doc.at("segments").at(7).at("end_reason"), "reached_light");
+  EXPECT_EQ(s.at("origin").size(), 3u);
+}
+
+TEST(RayTreeJson, 03_ARecordedTreeRoundTripsWithItsEstimate) {
+  const Scene scene = allMaterialsScene();
+  const RenderSettings settings = settingsFor(Algorithm::PathTracing, 4);
+  const Tracer tracer(scene, settings);
+  Stepper stepper(tracer, 8, 6, 1);
+  stepper.runToEnd();
+  const RayTree& tree = stepper.tree();
+  ASSERT_GT(tree.segments.size(), 2u);
+  RayTreeJson::Info info;
+  RayTree back = RayTreeJson::parse(RayTreeJson::serialize(tree, scene, settings), "t", &info);
+  ASSERT_EQ(back.segments.size(), tree.segments.size());
+  expectSameVec(info.estimate, tree.estimate(), "estimate in the header");
+  // The propagated radiance read back gives the same estimate, and propagating again too.
+  expectSameVec(back.estimate(), tree.estimate(), "estimate of the read tree");
+  back.propagate();
+  expectSameVec(back.estimate(), tree.estimate(), "estimate after propagating again");
+}
+
+TEST(RayTreeJson, 04_SaveIsAtomicAndErrorsNameThePlace) {
+  const Scene scene = allMaterialsScene();
+  const RenderSettings settings = settingsFor(Algorithm::Whitted, 1);
+  const RayTree tree = handMadeTree();
+  const auto dir = std::filesystem::temp_directory_path() / "raylab_TestRayTreeJson";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "tree.json").string();
+  RayTreeJson::save(tree, scene, settings, path);
+  EXPECT_EQ(RayTreeJson::load(path).segments.size(), tree.segments.size());
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename(), "tree.json") << "a temporary file was left behind";
+
+  const std::string missing = (dir / "no-such-folder" / "tree.json").string();
+  try {
+    RayTreeJson::save(tree, scene, settings, missing);
+    ADD_FAILURE() << "saving into a missing folder should throw";
+  } catch (const RayTreeJson::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(RayTreeJson::parse("{\"x\": 1}", "x.json"), RayTreeJson::Error);
+  try {
+    std::string text = RayTreeJson::serialize(tree, scene, settings);
+    text.replace(text.find("\"reached_light\""), 15, "\"bounced_away\"");
+    RayTreeJson::parse(text, "bad.json");
+    ADD_FAILURE() << "an unknown end reason should throw";
+  } catch (const RayTreeJson::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.json: /segments/7/end_reason"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace raylab
