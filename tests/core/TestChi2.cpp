@@ -35,10 +35,10 @@ namespace raylab {
 namespace {
 
 /// Number of chi-square tests below that must pass (the Sidak correction's m).
-constexpr int kPositiveTests = 16;
+constexpr int kPositiveTests = 18;
 /// Overall significance level of the file.
 constexpr double kSignificance = 0.01;
-/// Per-test level: 1 - (1 - 0.01)^(1/16) = 6.28e-4.
+/// Per-test level: 1 - (1 - 0.01)^(1/18) = 5.58e-4.
 const double kAlpha = 1.0 - std::pow(1.0 - kSignificance, 1.0 / kPositiveTests);
 /// Cells expecting fewer samples than this are pooled (the usual rule for chi-square).
 constexpr double kMinExpected = 5.0;
@@ -396,19 +396,19 @@ Scene lightScene(std::unique_ptr<Shape> light) {
   return scene;
 }
 
-/// Solid-angle density of the intersector's light sampling towards w, from the origin:
-/// lightPdf at the first hit along w.
-double lightDensity(const SceneIntersector& si, const Vec3& w) {
-  const auto hit = si.intersect(Ray::make(Point3(0.0), w));
+/// Solid-angle density of the intersector's light sampling towards w, from `ref` (the
+/// origin unless given): lightPdf at the first hit along w, 0 when that is not a light.
+double lightDensity(const SceneIntersector& si, const Vec3& w, const Point3& ref = Point3(0.0)) {
+  const auto hit = si.intersect(Ray::make(ref, w));
   if (!hit) return 0.0;
-  return si.lightPdf(Point3(0.0), hit->object, hit->si);
+  return si.lightPdf(ref, hit->object, hit->si);
 }
 
 TEST(Chi2, 05_SphereLightSampling) {
-  // A sphere of radius 0.8 at distance 2 (centre (0.6, 1.8, -0.6) away): area sampling seen
-  // in solid angle fills the cone of half-angle asin(0.8 / 2) with density
-  // d^2 / (A cos_light), which is singular at the silhouette. Grid: that cone, cells
-  // uniform in sqrt(cos theta - cos theta_max).
+  // A sphere of radius 0.8 at distance 2 (centre (0.6, 1.8, -0.6) away): a round sphere light
+  // is sampled uniformly in the cone of half-angle asin(0.8 / 2) it subtends. Grid: that
+  // cone, cells uniform in sqrt(cos theta - cos theta_max) (fine at the silhouette, where
+  // the negative control's density is singular).
   const Point3 centre(0.6, 1.8, -0.6);
   const double radius = 0.8;
   const Scene scene = lightScene(std::make_unique<Sphere>(centre, radius));
@@ -424,7 +424,8 @@ TEST(Chi2, 05_SphereLightSampling) {
   expectAccepted(runChi2("sphere light (solid angle)", 30, 40, 1000000, sample,
                          grid.density([&](const Vec3& w) { return lightDensity(si, w); })),
                  "sphere light");
-  // Negative control: the area-to-solid-angle conversion without 1 / cos_light.
+  // Negative control: the density of area sampling without its 1 / cos_light, i.e. the
+  // cone's density times cos_light.
   Sampler rng2(9, 0, 0, 0);
   auto sample2 = [&]() -> std::optional<Vec2> {
     const auto ls = si.sampleLight(Point3(0.0), rng2.next2D(), rng2.next1D());
@@ -509,9 +510,99 @@ TEST(Chi2, 07_LensSampling) {
 }
 
 TEST(Chi2, 08_TheCountOfTestsMatchesTheCorrection) {
-  // cosine 1 + sphere 1 + phong warp 1 + glossy 9 + sphere light 1 + quad light 1 + disk 2.
-  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2);
-  EXPECT_NEAR(kAlpha, 6.2795e-4, 1e-7);
+  // cosine 1 + sphere 1 + phong warp 1 + glossy 9 + sphere light 1 + quad light 1 + disk 2
+  // + cone warp 1 + separated sphere light 1.
+  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1);
+  EXPECT_NEAR(kAlpha, 5.5820e-4, 1e-7);
+}
+
+TEST(Chi2, 09_UniformConeWarp) {
+  // sampleUniformCone with a half-angle of 50 degrees, cells uniform in cos theta over the
+  // cone: the density is the constant uniformConePdf inside, 0 outside.
+  const double cosMax = std::cos(radians(50.0));
+  const Frame f(kNormal);
+  SphereGrid grid{f, Polar::Cos, cosMax};
+  const auto inCone = [&](const Vec3& w) { return glm::dot(w, kNormal) >= cosMax; };
+  Sampler rng(14, 0, 0, 0);
+  auto sample = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(f.toWorld(sampleUniformCone(rng.next2D(), cosMax)));
+  };
+  expectAccepted(
+      runChi2("uniform cone 50 deg", 40, 80, 1000000, sample, grid.density([&](const Vec3& w) {
+        return inCone(w) ? uniformConePdf(cosMax) : 0.0;
+      })),
+      "uniform cone");
+  // Negative control: the same samples claimed uniform in theta (density
+  // 1 / (2 pi theta_max sin theta)), the naive polar warp.
+  Sampler rng2(15, 0, 0, 0);
+  auto sample2 = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(f.toWorld(sampleUniformCone(rng2.next2D(), cosMax)));
+  };
+  expectRejected(runChi2("NEGATIVE uniform cone as uniform in theta", 40, 80, 1000000, sample2,
+                         grid.density([&](const Vec3& w) {
+                           const double c = glm::dot(w, kNormal);
+                           const double sinTheta = std::sqrt(std::max(0.0, 1.0 - c * c));
+                           return inCone(w) ? 1.0 / (2.0 * kPi * radians(50.0) * sinTheta) : 0.0;
+                         })),
+                 "cone as uniform in theta");
+}
+
+TEST(Chi2, 10_SphereLightCutByASeparatingSphere) {
+  // smallpt in miniature: a light of radius R = 2.5 centred at (0, 3, 0) pokes 0.3 below the
+  // top of the "room", the inside of a sphere of radius 10.8 centred at (0, -10, 0) (top at
+  // y = 0.8). From a point in the room only the cap of the light inside the room can be
+  // seen; the sampler draws directions from the cone of the ball around that cap and keeps
+  // those whose first hit on the light is in the cap. The claimed density is lightPdf at
+  // the first hit of a real ray along w (the room's wall hides the rest of the light), so
+  // the test also checks that no sample lands where the room hides the light. Cells
+  // straddle the cap's rim, where the density jumps: many sub-cells keep the integration
+  // error there small.
+  Scene scene = lightScene(std::make_unique<Sphere>(Point3(0, 3, 0), 2.5));
+  Material wall;
+  wall.name = "wall";
+  scene.materials.push_back(wall);
+  scene.objects.emplace_back("room", std::make_unique<Sphere>(Point3(0, -10, 0), 10.8), 1);
+  const SceneIntersector si(scene);
+  const Point3 ref(0.3, -1.2, 0.2);
+  // The cap inside the room: n . (-y) >= cos(alpha) with cos(alpha) = (D^2 + R^2 - rho^2) /
+  // (2 R D) for the distance D = 13 between the centres; the ball through its rim circle.
+  const double D = 13.0, R = 2.5, rho = 10.8;
+  const double cosAlpha = (D * D + R * R - rho * rho) / (2.0 * R * D);
+  const Point3 rimCentre(0.0, 3.0 - R * cosAlpha, 0.0);
+  const double rimRadius = R * std::sqrt(1.0 - cosAlpha * cosAlpha);
+  const double distance = glm::length(rimCentre - ref);
+  const double cosMax = std::sqrt(1.0 - (rimRadius / distance) * (rimRadius / distance));
+  SphereGrid grid{Frame((rimCentre - ref) / distance), Polar::Cos, cosMax};
+  Sampler rng(16, 0, 0, 0);
+  long long accepted = 0;
+  auto sample = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(ref, rng.next2D(), rng.next1D());
+    if (!ls) return std::nullopt;
+    ++accepted;
+    return grid.toGrid(ls->wi);
+  };
+  expectAccepted(
+      runChi2("sphere light cut by a sphere", 30, 60, 1000000, sample,
+              grid.density([&](const Vec3& w) { return lightDensity(si, w, ref); }), 24, false),
+      "separated sphere light");
+  // Most directions of the cap's cone reach the cap.
+  EXPECT_GT(accepted, 500000);
+  // Negative control: the same samples against the light's own cone, uniform over every
+  // visible direction (what sampling without the separating sphere would give).
+  const double toLight = glm::length(Point3(0, 3, 0) - ref);
+  const double lightConePdf = uniformConePdf(std::sqrt(1.0 - (R / toLight) * (R / toLight)));
+  Sampler rng2(17, 0, 0, 0);
+  auto sample2 = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(ref, rng2.next2D(), rng2.next1D());
+    if (!ls) return std::nullopt;
+    return grid.toGrid(ls->wi);
+  };
+  expectRejected(runChi2("NEGATIVE cut sphere light as its whole cone", 30, 60, 1000000, sample2,
+                         grid.density([&](const Vec3& w) {
+                           return lightDensity(si, w, ref) > 0.0 ? lightConePdf : 0.0;
+                         }),
+                         24, false),
+                 "cut light as whole cone");
 }
 
 }  // namespace

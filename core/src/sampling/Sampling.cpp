@@ -54,6 +54,18 @@ Vec3 sampleUniformSphere(const Vec2& u) {
 
 double uniformSpherePdf() { return 1.0 / (4.0 * kPi); }
 
+Vec3 sampleUniformCone(const Vec2& u, double cosThetaMax) {
+  // Archimedes again: cos(theta) uniform in [cos theta_max, 1] gives equal areas on the
+  // cap; 1 - cos(theta) is computed directly so that narrow cones keep their precision.
+  const double oneMinusCos = u.x * (1.0 - cosThetaMax);
+  const double cosTheta = 1.0 - oneMinusCos;
+  const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
+  const double phi = 2.0 * kPi * u.y;
+  return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+}
+
+double uniformConePdf(double cosThetaMax) { return 1.0 / (2.0 * kPi * (1.0 - cosThetaMax)); }
+
 Vec3 samplePhongLobe(const Vec2& u, double exponent) {
   // Invert the CDF of cos(alpha): P(cos alpha > c) = 1 - c^(n + 1) over the hemisphere
   // around the lobe axis, so cos alpha = u^(1 / (n + 1)); phi is uniform.

@@ -1,5 +1,8 @@
 #include "raylab/core/SceneIntersector.h"
 
+#include "raylab/core/Sphere.h"
+#include "scene/SphereLightSampler.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -41,6 +44,10 @@ SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(&scene) {
                                    material.name + "' but its area (" + std::to_string(area) +
                                    ") cannot be sampled: a plane cannot be a light, use a quad");
     m_lights.push_back(static_cast<int>(i));
+    const bool round = object.shape->kind() == ShapeKind::Sphere &&
+                       static_cast<const Sphere&>(*object.shape).isRound();
+    m_sphereLights.push_back(
+        round ? std::make_shared<const SphereLightSampler>(scene, static_cast<int>(i)) : nullptr);
     total += luminance(material.emission) * area;
     m_lightCdf.push_back(total);
   }
@@ -89,7 +96,7 @@ bool SceneIntersector::occluded(const Ray& ray) const {
 }
 
 std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight,
-                                                         double uPick) const {
+                                                         double uPick, double time) const {
   if (m_lights.empty()) return std::nullopt;
   // Pick a light by power: the first CDF entry above uPick.
   const auto it = std::upper_bound(m_lightCdf.begin(), m_lightCdf.end(), uPick);
@@ -99,47 +106,62 @@ std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, cons
   const int index = m_lights[k];
   const SceneObject& object = m_scene->objects[static_cast<std::size_t>(index)];
 
-  // A point on its surface, uniform in area (lights are sampled at rest: time 0).
-  const ShapeSample s = object.shape->sampleArea(uLight);
-  const Vec3 toLight = s.p - ref;
-  const double distance2 = glm::dot(toLight, toLight);
-  if (!(distance2 > 0.0)) return std::nullopt;
-  const double distance = std::sqrt(distance2);
-  const Vec3 wi = toLight / distance;
-
-  // Only the front side emits: the outward normal must face the reference point.
-  const double cosLight = -glm::dot(s.n, wi);
-  if (!(cosLight > 0.0)) return std::nullopt;
-
-  // Convert the area density to solid angle at ref: d omega = cos_light dA / d^2.
-  LightSample ls;
-  ls.object = index;
-  ls.p = s.p;
-  ls.n = s.n;
-  ls.wi = wi;
-  ls.distance = distance;
-  ls.Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
-  ls.pdf = s.pdfArea * distance2 / cosLight * pick;
-  if (!(ls.pdf > 0.0) || !std::isfinite(ls.pdf)) return std::nullopt;
+  // Work where the light is at rest: a light displaced by time * velocity sees ref
+  // displaced the other way.
+  const Vec3 shift = time * object.velocity;
+  const Point3 localRef = ref - shift;
+  std::optional<LightSample> ls;
+  if (m_sphereLights[k]) {
+    // A round sphere: by solid angle, on the part of it ref can see.
+    ls = m_sphereLights[k]->sample(localRef, uLight);
+    if (!ls) return std::nullopt;
+  } else {
+    // A point on its surface, uniform in area.
+    const ShapeSample s = object.shape->sampleArea(uLight);
+    const Vec3 toLight = s.p - localRef;
+    const double distance2 = glm::dot(toLight, toLight);
+    if (!(distance2 > 0.0)) return std::nullopt;
+    ls.emplace();
+    ls->distance = std::sqrt(distance2);
+    ls->wi = toLight / ls->distance;
+    // Only the front side emits: the outward normal must face the reference point.
+    const double cosLight = -glm::dot(s.n, ls->wi);
+    if (!(cosLight > 0.0)) return std::nullopt;
+    // Convert the area density to solid angle at ref: d omega = cos_light dA / d^2.
+    ls->p = s.p;
+    ls->n = s.n;
+    ls->pdf = s.pdfArea * distance2 / cosLight;
+  }
+  ls->object = index;
+  ls->p += shift;
+  ls->Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
+  ls->pdf *= pick;
+  if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
   return ls;
 }
 
-double SceneIntersector::lightPdf(const Point3& ref, int object,
-                                  const SurfaceInteraction& hit) const {
+double SceneIntersector::lightPdf(const Point3& ref, int object, const SurfaceInteraction& hit,
+                                  double time) const {
   // The probability of picking this light (0 if it is not one).
   const auto it = std::lower_bound(m_lights.begin(), m_lights.end(), object);
   if (it == m_lights.end() || *it != object) return 0.0;
   const std::size_t k = static_cast<std::size_t>(it - m_lights.begin());
   const double pick = m_lightCdf[k] - (k == 0 ? 0.0 : m_lightCdf[k - 1]);
 
+  // Back to where the light is at rest, as sampleLight does.
+  const SceneObject& light = m_scene->objects[static_cast<std::size_t>(object)];
+  const Vec3 shift = time * light.velocity;
+  const Point3 localRef = ref - shift;
+  const Point3 p = hit.p - shift;
+  if (m_sphereLights[k]) return m_sphereLights[k]->pdf(localRef, p, hit.n) * pick;
+
   // The same conversion as sampleLight, and the same rule: back faces are never sampled.
-  const Vec3 toLight = hit.p - ref;
+  const Vec3 toLight = p - localRef;
   const double distance2 = glm::dot(toLight, toLight);
   if (!(distance2 > 0.0)) return 0.0;
   const double cosLight = -glm::dot(hit.n, toLight) / std::sqrt(distance2);
   if (!(cosLight > 0.0)) return 0.0;
-  const Shape& shape = *m_scene->objects[static_cast<std::size_t>(object)].shape;
-  return shape.pdfArea(hit.p) * distance2 / cosLight * pick;
+  return light.shape->pdfArea(p) * distance2 / cosLight * pick;
 }
 
 Vec3 SceneIntersector::emitted(int object, const SurfaceInteraction& hit,

@@ -30,6 +30,12 @@ Vec3 sampleUniformSphere(const Vec2& u);
 /// 1 / (4 pi).
 double uniformSpherePdf();
 
+/// Uniform direction in the cone of directions within angle theta_max of +z, given
+/// cos(theta_max) in [-1, 1) (the cone a sphere subtends, for solid-angle light sampling).
+Vec3 sampleUniformCone(const Vec2& u, double cosThetaMax);
+/// Density of sampleUniformCone per steradian inside the cone: 1 / (2 pi (1 - cos theta_max)).
+double uniformConePdf(double cosThetaMax);
+
 /// Uniform point on the unit disk (concentric mapping, Shirley and Chiu 1997).
 Vec2 sampleUniformDisk(const Vec2& u);
 /// 1 / pi.

@@ -3,10 +3,13 @@
 #include "raylab/core/Scene.h"
 #include "raylab/core/Shape.h"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 namespace raylab {
+
+class SphereLightSampler;
 
 /// The nearest hit of a ray in a scene.
 struct SceneHit {
@@ -30,6 +33,11 @@ struct LightSample {
  * \brief The scene as the tracers see it: nearest-hit and occlusion queries over all
  * objects (moving objects at the ray's time), and the list of area lights with their
  * sampling (lights chosen in proportion to their emitted power).
+ *
+ * Light points: round sphere lights are sampled by solid angle, in the cone they subtend,
+ * restricted to the part of the light no other sphere separates from the shading point
+ * (SphereLightSampler, core/src/scene); every other shape uniformly by area. Moving lights
+ * are sampled where they are at the given shutter time.
  */
 class SceneIntersector {
  public:
@@ -42,12 +50,16 @@ class SceneIntersector {
 
   /// Emitter objects (indices into Scene::objects).
   const std::vector<int>& areaLights() const { return m_lights; }
-  /// Samples a point on an area light for shading point `ref`. Nothing when the scene
-  /// has no area light or the sample faces away.
-  std::optional<LightSample> sampleLight(const Point3& ref, const Vec2& uLight, double uPick) const;
-  /// Solid-angle density with which sampleLight would pick the point `hit` (on emitter
-  /// `object`) from `ref`: used to MIS-weight emitters hit by BSDF sampling.
-  double lightPdf(const Point3& ref, int object, const SurfaceInteraction& hit) const;
+  /// Samples a point on an area light for shading point `ref` at shutter time `time`.
+  /// Nothing when the scene has no area light, the sample faces away or it falls on a
+  /// part of the light that `ref` cannot see (see the class comment).
+  std::optional<LightSample> sampleLight(const Point3& ref, const Vec2& uLight, double uPick,
+                                         double time = 0.0) const;
+  /// Solid-angle density with which sampleLight(ref, ..., time) would pick the point `hit`
+  /// (on emitter `object`, where it is at `time`): used to MIS-weight emitters hit by BSDF
+  /// sampling. It must be asked with the same ref and time as sampleLight.
+  double lightPdf(const Point3& ref, int object, const SurfaceInteraction& hit,
+                  double time = 0.0) const;
   /// Radiance an emitter sends from a hit towards the direction -rayDirection
   /// (front side only), 0 for non-emitters.
   Vec3 emitted(int object, const SurfaceInteraction& hit, const Vec3& rayDirection) const;
@@ -58,6 +70,8 @@ class SceneIntersector {
   const Scene* m_scene;
   std::vector<int> m_lights;
   std::vector<double> m_lightCdf;  ///< Cumulative pick probabilities (by power).
+  /// Per light (parallel to m_lights): its solid-angle sampler, null for area sampling.
+  std::vector<std::shared_ptr<const SphereLightSampler>> m_sphereLights;
 };
 
 }  // namespace raylab

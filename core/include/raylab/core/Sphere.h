@@ -46,6 +46,9 @@ class Sphere final : public Shape {
   /// Tessellation hint: slices around the axis.
   int n() const { return m_n; }
   void setTessellation(int m, int n);
+  /// True while no non-similarity map was applied: the sphere is round in world space and
+  /// centre() and radius() are world-space values (solid-angle light sampling needs that).
+  bool isRound() const { return !m_hasTransform; }
   /// Affine map from object space (where the sphere is round) to world space.
   const Transform& worldFromObject() const { return m_worldFromObject; }
 

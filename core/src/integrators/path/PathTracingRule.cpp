@@ -2,6 +2,7 @@
 
 #include "integrators/LocalShading.h"
 #include "raylab/core/Bsdf.h"
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
 
 #include <algorithm>
@@ -36,7 +37,10 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
     const bool deterministic = ray.kind == RayKind::Camera || ray.previousPdf <= 0.0;
     if (settings.nextEventEstimation && !deterministic) {
       if (settings.multipleImportance) {
-        const double lightPdf = context.scene.lightPdf(ray.ray.origin, context.hit.object, si);
+        // The density light sampling at the previous hit had for this point: asked from
+        // this ray's origin, the point next-event estimation samples from (step 4).
+        const double lightPdf =
+            context.scene.lightPdf(ray.ray.origin, context.hit.object, si, ray.ray.time);
         w = powerHeuristic(ray.previousPdf, lightPdf);
       } else {
         w = 0.0;
@@ -63,7 +67,12 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
     if (!context.scene.areaLights().empty()) {
       const Vec2 uLight = context.sampler.next2D();
       const double uPick = context.sampler.next1D();
-      const std::optional<LightSample> ls = context.scene.sampleLight(si.p, uLight, uPick);
+      // Lights are sampled from the origin every ray leaving this hit on the side wo is on
+      // has (the offset hit point), so that the emitter's MIS weight in step 1 asks
+      // lightPdf about exactly the same point; and where they are at this ray's time.
+      const Point3 ref = offsetRayOrigin(si, si.facingNormal());
+      const std::optional<LightSample> ls =
+          context.scene.sampleLight(ref, uLight, uPick, ray.ray.time);
       if (ls && ls->pdf > 0.0 && std::isfinite(ls->pdf)) {
         const Vec3 fCos = bsdf::eval(m, si, wo, ls->wi);
         const double w = settings.multipleImportance

@@ -23,7 +23,9 @@ namespace raylab {
  *    (RussianRoulette); the children of survivors carry an extra 1 / q.
  * 4. Next-event estimation at non-specular hits: one shadow ray to a point chosen by
  *    SceneIntersector::sampleLight (weight f cos w_light / pdf_light), plus one shadow ray
- *    per point light (delta lights: weight f cos, delivering I / d^2, no MIS).
+ *    per point light (delta lights: weight f cos, delivering I / d^2, no MIS). Lights are
+ *    sampled from the offset hit point on wo's side (the origin of the continuation ray, so
+ *    step 1 asks lightPdf about the same point) and where they are at the ray's time.
  * 5. Continuation: one bsdf::sample direction (Diffuse, Glossy, Reflection or Refraction
  *    child, weight f cos / pdf). A degenerate sample (no direction, zero or non-finite
  *    weight or pdf) ends the path (Absorbed).

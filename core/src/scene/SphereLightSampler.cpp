@@ -1,0 +1,179 @@
+#include "scene/SphereLightSampler.h"
+
+#include "raylab/core/Check.h"
+#include "raylab/core/Sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab {
+
+namespace {
+
+bool isStatic(const SceneObject& object) {
+  return object.velocity.x == 0.0 && object.velocity.y == 0.0 && object.velocity.z == 0.0;
+}
+
+/// The round sphere of an object, or nullptr (other shapes, ellipsoids).
+const Sphere* roundSphere(const SceneObject& object) {
+  if (!object.shape || object.shape->kind() != ShapeKind::Sphere) return nullptr;
+  const Sphere* sphere = static_cast<const Sphere*>(object.shape.get());
+  return sphere->isRound() ? sphere : nullptr;
+}
+
+}  // namespace
+
+SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
+  const SceneObject& light = scene.objects[std::size_t(object)];
+  m_sphere = roundSphere(light);
+  RAYLAB_CHECK(m_sphere != nullptr);
+  m_centre = m_sphere->centre();
+  m_radius = m_sphere->radius();
+  if (!isStatic(light)) return;
+
+  // Classify every other static round sphere S against the light: apart, around it, or
+  // cutting it along a circle.
+  const double R = m_radius;
+  for (std::size_t j = 0; j < scene.objects.size(); ++j) {
+    const SceneObject& other = scene.objects[j];
+    const Sphere* s = roundSphere(other);
+    if (int(j) == object || !s || !isStatic(other)) continue;
+    const double rho = s->radius();
+    const Vec3 between = s->centre() - m_centre;
+    const double D = glm::length(between);
+    Separator sep;
+    sep.centre = s->centre();
+    sep.radius2 = rho * rho;
+    if (D >= R + rho) {
+      sep.relation = Separator::Relation::Disjoint;
+    } else if (D + R <= rho) {
+      sep.relation = Separator::Relation::Encloses;
+    } else if (D + rho <= R) {
+      continue;  // S lies inside the light: it hides nothing of the outside surface
+    } else {
+      // Light points c + R n inside S satisfy |c + R n - s|^2 < rho^2, i.e.
+      // n . axis > (D^2 + R^2 - rho^2) / (2 R D); (D - rho)(D + rho) keeps the precision
+      // when S is huge (smallpt's walls have rho = 1e5).
+      sep.relation = Separator::Relation::Cuts;
+      sep.axis = between / D;
+      sep.cosAlpha = std::clamp(((D - rho) * (D + rho) + R * R) / (2.0 * R * D), -1.0, 1.0);
+    }
+    m_separators.push_back(sep);
+  }
+}
+
+SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
+  Plan best;
+  // From inside (or on) the light there is no cone: area sampling.
+  const Vec3 toCentre = m_centre - ref;
+  if (!(glm::dot(toCentre, toCentre) > m_radius * m_radius)) {
+    best.mode = Plan::Mode::Area;
+    return best;
+  }
+  // The cone of directions towards a ball (centre, radius) seen from outside it; keep the
+  // narrowest one.
+  best.mode = Plan::Mode::Cone;
+  best.cosThetaMax = -2.0;
+  const auto consider = [&](const Point3& centre, double radius) {
+    const Vec3 v = centre - ref;
+    const double distance2 = glm::dot(v, v);
+    if (!(distance2 > radius * radius)) return;
+    const double cosThetaMax = std::sqrt(std::max(0.0, 1.0 - radius * radius / distance2));
+    if (cosThetaMax > best.cosThetaMax) {
+      best.cosThetaMax = cosThetaMax;
+      best.axis = v / std::sqrt(distance2);
+    }
+  };
+  consider(m_centre, m_radius);
+  for (const Separator& s : m_separators) {
+    const bool inside = isInside(s, ref);
+    switch (s.relation) {
+      case Separator::Relation::Disjoint:
+        if (inside) return Plan{};  // the light is on the other side of S
+        break;
+      case Separator::Relation::Encloses:
+        if (!inside) return Plan{};
+        break;
+      case Separator::Relation::Cuts: {
+        // The cap on ref's side; if it is smaller than a hemisphere, the ball through its
+        // rim circle contains it.
+        const Vec3 axis = inside ? s.axis : -s.axis;
+        const double cosAlpha = inside ? s.cosAlpha : -s.cosAlpha;
+        if (cosAlpha > 0.0)
+          consider(m_centre + m_radius * cosAlpha * axis,
+                   m_radius * std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha)));
+        break;
+      }
+    }
+  }
+  return best;
+}
+
+bool SphereLightSampler::visibleSide(const Point3& ref, const Normal3& n) const {
+  for (const Separator& s : m_separators) {
+    if (s.relation != Separator::Relation::Cuts) continue;
+    const double side = glm::dot(n, s.axis) - s.cosAlpha;  // > 0: the light point is inside S
+    if (isInside(s, ref) ? side < 0.0 : side > 0.0) return false;
+  }
+  return true;
+}
+
+std::optional<LightSample> SphereLightSampler::sample(const Point3& ref, const Vec2& u) const {
+  const Plan p = plan(ref);
+  LightSample ls;
+  switch (p.mode) {
+    case Plan::Mode::Invisible:
+      return std::nullopt;
+    case Plan::Mode::Area: {
+      // Uniform on the surface, converted to solid angle (only the outside emits, so from
+      // inside this finds nothing; it keeps the density well defined).
+      const ShapeSample s = m_sphere->sampleArea(u);
+      const Vec3 d = s.p - ref;
+      const double distance2 = glm::dot(d, d);
+      if (!(distance2 > 0.0)) return std::nullopt;
+      ls.distance = std::sqrt(distance2);
+      ls.wi = d / ls.distance;
+      const double cosLight = -glm::dot(s.n, ls.wi);
+      if (!(cosLight > 0.0)) return std::nullopt;
+      ls.p = s.p;
+      ls.n = s.n;
+      ls.pdf = s.pdfArea * distance2 / cosLight;
+      break;
+    }
+    case Plan::Mode::Cone: {
+      // A direction uniform in the cone, followed to its first hit on the light.
+      const Vec3 w = Frame(p.axis).toWorld(sampleUniformCone(u, p.cosThetaMax));
+      const std::optional<Hit> hit = m_sphere->intersect(Ray{ref, w, 0.0, kInfinity, 0.0});
+      if (!hit) return std::nullopt;  // a cap's cone is wider than the cap
+      const Vec3 radial = ref + hit->t * w - m_centre;
+      ls.n = radial / glm::length(radial);
+      // Drop points that a separating sphere hides from ref.
+      if (!visibleSide(ref, ls.n)) return std::nullopt;
+      ls.p = m_centre + m_radius * ls.n;
+      const Vec3 d = ls.p - ref;
+      ls.distance = glm::length(d);
+      ls.wi = d / ls.distance;
+      if (!(-glm::dot(ls.n, ls.wi) > 0.0)) return std::nullopt;
+      ls.pdf = uniformConePdf(p.cosThetaMax);
+      break;
+    }
+  }
+  if (!(ls.pdf > 0.0) || !std::isfinite(ls.pdf)) return std::nullopt;
+  return ls;
+}
+
+double SphereLightSampler::pdf(const Point3& ref, const Point3& point, const Normal3& n) const {
+  const Plan p = plan(ref);
+  if (p.mode == Plan::Mode::Invisible) return 0.0;
+  // Only the front side, facing ref, is ever sampled.
+  const Vec3 d = point - ref;
+  const double distance2 = glm::dot(d, d);
+  if (!(distance2 > 0.0)) return 0.0;
+  const double cosLight = -glm::dot(n, d) / std::sqrt(distance2);
+  if (!(cosLight > 0.0)) return 0.0;
+  if (p.mode == Plan::Mode::Area) return m_sphere->pdfArea(point) * distance2 / cosLight;
+  // Cone: every visible point lies in the chosen cone, where the density is uniform.
+  return visibleSide(ref, n) ? uniformConePdf(p.cosThetaMax) : 0.0;
+}
+
+}  // namespace raylab
