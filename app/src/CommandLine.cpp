@@ -4,6 +4,7 @@
 #include "RenderCommand.h"
 #include "SnapshotCommand.h"
 #include "Subcommand.h"
+#include "TraceCommand.h"
 
 #if RAYLAB_WITH_GUI
 #include "WindowCommand.h"
@@ -48,11 +49,36 @@ int runCommandLine(int argc, char** argv) {
       ->group("Testing");
   std::string select;
   cli.add_option("--select", select, "Select this object (by name) when the window opens");
+  std::string windowAlgorithm;
+  cli.add_option("--algorithm", windowAlgorithm,
+                 "Algorithm of the ray-tree panel: raycast, whitted, distributed or path")
+      ->check([](const std::string& name) {
+        return parseAlgorithm(name) ? std::string()
+                                    : "must be raycast, whitted, distributed or path";
+      });
+  std::vector<int> tracePixel;
+  CLI::Option* traceOption =
+      cli.add_option("--trace", tracePixel, "Trace pixel X Y when the window opens")
+          ->expected(2)
+          ->type_name("X Y");
+  int traceSample = 0;
+  cli.add_option("--sample", traceSample, "With --trace: which sample of the pixel (default 0)")
+      ->needs(traceOption);
+  int traceFrame = -1;
+  cli.add_option("--frame", traceFrame,
+                 "With --trace: show this frame of the bounce animation (default: the whole tree)")
+      ->needs(traceOption)
+      ->check(CLI::NonNegativeNumber);
+  int traceRay = -1;
+  cli.add_option("--ray", traceRay, "With --trace: inspect this ray (0 = the camera ray)")
+      ->needs(traceOption)
+      ->check(CLI::NonNegativeNumber);
 
   // The headless subcommands, each in its own file.
   const std::vector<Subcommand> subcommands = {
       addSnapshotCommand(cli),
       addRenderCommand(cli),
+      addTraceCommand(cli),
   };
 
   try {
@@ -72,6 +98,11 @@ int runCommandLine(int argc, char** argv) {
   window.quitAfterMs = quitAfterMs;
   window.screenshot = screenshot;
   window.select = select;
+  if (!windowAlgorithm.empty()) window.algorithm = parseAlgorithm(windowAlgorithm);
+  if (tracePixel.size() == 2) window.trace = std::make_pair(tracePixel[0], tracePixel[1]);
+  window.sample = traceSample;
+  if (traceFrame >= 0) window.frame = traceFrame;
+  if (traceRay >= 0) window.ray = traceRay;
   return runWindow(argc, argv, window);
 #else
   std::cerr << "raylab: this build has no window (configured with RAYLAB_BUILD_GUI=OFF); "

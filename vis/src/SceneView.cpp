@@ -62,6 +62,25 @@ vtkSmartPointer<vtkActor> makeActor(vtkPolyData* geometry) {
   return actor;
 }
 
+/// Opacity of glass while a ray tree is shown, so the rays inside it can be followed.
+constexpr double kGlassOpacityWithRays = 0.3;
+
+/// Glass (dielectrics, and mirrors that refract) is drawn see-through while a ray tree is
+/// shown (`rays` true), at the material's own opacity otherwise.
+void seeThroughGlass(const Scene& scene, const std::vector<vtkSmartPointer<vtkActor>>& actors,
+                     bool rays) {
+  for (std::size_t i = 0; i < actors.size() && i < scene.objects.size(); ++i) {
+    const int index = scene.objects[i].material;
+    if (index < 0 || index >= int(scene.materials.size())) continue;
+    const Material& m = scene.materials[std::size_t(index)];
+    const bool glass = m.type == MaterialType::Dielectric ||
+                       (m.type == MaterialType::Mirror && m.refractionRate > 0.0);
+    const double opacity = std::clamp(m.opacity, 0.0, 1.0);
+    actors[i]->GetProperty()->SetOpacity(glass && rays ? std::min(opacity, kGlassOpacityWithRays)
+                                                       : opacity);
+  }
+}
+
 }  // namespace
 
 struct SceneView::Impl {
@@ -192,6 +211,7 @@ void SceneView::setScene(const Scene& scene) {
   m_impl->rays.glyphLength = 0.5 * cameraGlyphSize(m_scene);
   m_impl->rays.addTo(renderer);
   m_impl->rays.rebuild();
+  seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
 
   // Step 4: look at it all from outside.
   resetViewCamera();
@@ -309,6 +329,7 @@ void SceneView::setRayTree(const RayTree& tree, const RayTreeStyle& style) {
   rays.selected = -1;
   rays.shown = true;
   rays.rebuild();
+  seeThroughGlass(m_scene, m_impl->objects, true);
 }
 
 void SceneView::clearRayTree() {
@@ -319,6 +340,7 @@ void SceneView::clearRayTree() {
   rays.selected = -1;
   rays.shown = false;
   rays.rebuild();
+  seeThroughGlass(m_scene, m_impl->objects, false);
 }
 
 bool SceneView::hasRayTree() const { return m_impl->rays.shown; }

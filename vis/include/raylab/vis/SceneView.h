@@ -69,6 +69,8 @@ class SceneView {
   /// @{
   /// Shows `tree` (replacing any other) with `style`, wholly revealed. `tree` is copied.
   /// The tree stays through setScene (trace again and call this to update it).
+  /// While a tree is shown, glass (dielectric) objects are drawn see-through (opacity
+  /// 0.3) so that the rays refracted and reflected inside them can be followed.
   void setRayTree(const RayTree& tree, const RayTreeStyle& style = {});
   /// Removes the ray tree from the view.
   void clearRayTree();

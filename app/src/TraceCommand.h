@@ -1,0 +1,73 @@
+#pragma once
+
+#include "Subcommand.h"
+
+#include "raylab/core/RayTree.h"
+#include "raylab/core/Scene.h"
+#include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/ViewCamera.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace raylab::app {
+
+/**
+ * \brief The options `trace` and `animate` share: which (pixel, sample) to trace, how its
+ * tree is drawn (--colour, filters, toggles) and from where (--view, --size is the picture).
+ *
+ * `--size` is the size of the picture of the 3D view; the traced pixel is one of the scene
+ * camera's image (its size from the scene, or --image-size).
+ */
+struct RayTreeOptions {
+  CommonOptions common;
+  std::pair<int, int> pixel{-1, -1};  ///< --pixel X Y, image coordinates (y down).
+  int sample = 0;                     ///< --sample.
+  std::string colour = "energy";      ///< --colour energy|kind|depth.
+  std::string kinds;                  ///< --kinds a,b,...; empty = all.
+  std::optional<int> maxDepth;        ///< --max-depth.
+  bool reachingLight = false;         ///< --reaching-light.
+  double minEnergy = 0.0;             ///< --min-energy.
+  bool hitPoints = true, normals = false, arrows = false, legend = true;
+  std::string view = "default";                  ///< --view default|camera.
+  std::optional<std::pair<int, int>> imageSize;  ///< --image-size (the traced image).
+
+  /// Registers the options on `command`; `defaultSize` is the picture size without --size.
+  void add(CLI::App* command, const std::string& outHelp, const std::string& defaultSize);
+  /// The scene with --image-size applied (not --size: that is the picture).
+  Scene loadScene(const std::string& topLevelScene) const;
+  /// Checks --pixel against the scene camera's image and --kinds; the message on failure.
+  std::optional<std::string> usageError(const Scene& scene) const;
+  /// The drawing style the options ask for (valid once usageError() is empty).
+  RayTreeStyle style() const;
+  /// The picture size (--size, or the command's default).
+  std::pair<int, int> pictureSize() const;
+
+ private:
+  std::string m_imageSizeText;
+  std::pair<int, int> m_defaultSize{1024, 768};
+};
+
+/// The recorded tree of sample `sample` of pixel (x, y) (core Stepper run to its end).
+RayTree traceRayTree(const Scene& scene, const RenderSettings& settings, int x, int y, int sample);
+
+/// A view from just behind and above the scene camera, looking at its look-at point with
+/// a slightly wider field of view: the rays leave the camera towards the viewer's scene.
+ViewCamera behindCameraView(const Scene& scene, double aspect);
+
+/// One line about a tree: "N rays (camera a, shadow b, ...), depth d, estimate (r, g, b)".
+std::string treeSummary(const RayTree& tree);
+
+/**
+ * \brief `raylab trace --pixel X Y`: traces one sample of one pixel with the chosen
+ * algorithm, recording its ray tree, and renders the 3D view with the tree to a PNG plus a
+ * JSON dump of the tree (RayTreeJson; --json, default beside the PNG). Prints the files
+ * and a one-line summary (rays by kind, estimate). A pixel outside the image is a usage
+ * error (exit 2) naming the pixel and the image size.
+ */
+Subcommand addTraceCommand(CLI::App& cli);
+
+}  // namespace raylab::app
