@@ -10,7 +10,8 @@ macro(raylab_find_vtk)
     FiltersCore FiltersGeneral FiltersHybrid FiltersSources
     ImagingCore IOImage
     InteractionStyle RenderingCore RenderingOpenGL2
-    RenderingAnnotation RenderingFreeType)  # the ray-tree legend: a scalar bar and its text
+    RenderingAnnotation RenderingFreeType  # the ray-tree legend: a scalar bar and its text
+    ChartsCore RenderingContext2D RenderingContextOpenGL2 ViewsContext2D)  # convergence plot
   set(_raylab_vtk_args ${ARGN})  # a macro's ARGN is not a variable IN_LIST can read
   if("GUI" IN_LIST _raylab_vtk_args)
     list(APPEND _raylab_vtk_modules GUISupportQt)

@@ -1,0 +1,285 @@
+// The side-by-side comparison and the convergence plot: baselines of the four-panel
+// picture (with and without ray trees) and of the plot, images never stretched and shown
+// pixel for pixel, title bands in the algorithms' colours, figures in the text, one
+// camera for the four tree views. The comparison is synthetic (fixed images and numbers)
+// so the pictures test the view, not the renderer, and show no measured time.
+#include "BaselineTest.h"
+
+#include "raylab/core/Comparison.h"
+#include "raylab/core/Image.h"
+#include "raylab/core/SceneIO.h"
+#include "raylab/core/Tracer.h"
+#include "raylab/vis/ComparisonView.h"
+#include "raylab/vis/ConvergencePlot.h"
+
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace raylab {
+namespace {
+
+using testing::expectMatchesBaseline;
+
+constexpr int kImageWidth = 64;
+constexpr int kImageHeight = 48;
+
+/// A fixed noise in [-1, 1] per (pixel, channel, algorithm): a small integer hash.
+double noise(int x, int y, int c, int salt) {
+  std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^
+                    std::uint32_t(c) * 83492791u ^ std::uint32_t(salt) * 2654435761u;
+  h ^= h >> 13;
+  h *= 0x5bd1e995u;
+  h ^= h >> 15;
+  return (h & 0xffff) / 32767.5 - 1.0;
+}
+
+/// A Cornell-box-like picture: red and green side walls, grey back wall and floor, a
+/// bright light in the ceiling, a white sphere. `indirect` brightens the walls (what
+/// path tracing adds), `grain` is the Monte Carlo noise.
+FloatImage syntheticImage(double indirect, double grain, int salt) {
+  FloatImage image(kImageWidth, kImageHeight);
+  for (int y = 0; y < kImageHeight; ++y)
+    for (int x = 0; x < kImageWidth; ++x) {
+      const double u = (x + 0.5) / kImageWidth, v = (y + 0.5) / kImageHeight;
+      glm::dvec3 c(0.45);                                             // back wall
+      if (u < 0.18) c = glm::dvec3(0.55, 0.08, 0.06);                 // red wall
+      if (u > 0.82) c = glm::dvec3(0.08, 0.45, 0.1);                  // green wall
+      if (v > 0.78) c = glm::dvec3(0.5);                              // floor
+      if (v < 0.06 && std::abs(u - 0.5) < 0.14) c = glm::dvec3(6.0);  // the light
+      const double dx = (u - 0.42) * kImageWidth / kImageHeight, dy = v - 0.62;
+      if (dx * dx + dy * dy < 0.17 * 0.17) c = glm::dvec3(0.75 - 2.0 * dy);  // sphere
+      if (c.x < 1.0) c *= indirect;
+      for (int k = 0; k < 3; ++k)
+        image.at(x, y)[k] = float(std::max(0.0, c[k] * (1.0 + grain * noise(x, y, k, salt))));
+    }
+  return image;
+}
+
+/// Figures of one algorithm: fixed rays by kind, error and a convergence series of
+/// spp 1, 2, 4, 8, 16 with error = bias + noise / sqrt(spp).
+AlgorithmFigures figures(Algorithm algorithm, double indirect, double grain,
+                         std::array<std::uint64_t, kRayKindCount> rays, double bias,
+                         double noiseAtOne, double secondsPerSample) {
+  AlgorithmFigures f;
+  f.algorithm = algorithm;
+  f.image = syntheticImage(indirect, grain, int(algorithm) + 1);
+  f.stats.rays.byKind = rays;
+  f.stats.samplesPerPixel = 16;
+  f.stats.seconds = 16 * secondsPerSample;
+  for (int spp = 1; spp <= 16; spp *= 2) {
+    ConvergencePoint p;
+    p.samplesPerPixel = spp;
+    p.seconds = spp * secondsPerSample;
+    p.rays = rays[0] * std::uint64_t(spp) / 16;
+    p.rmse = bias + noiseAtOne / std::sqrt(double(spp));
+    f.series.push_back(p);
+  }
+  f.rmse = f.series.back().rmse;
+  return f;
+}
+
+/// The synthetic comparison: 64x48, equal samples (16 spp), reference 256 spp.
+ComparisonResult syntheticComparison() {
+  ComparisonResult result;
+  result.sceneName = "Cornell box";
+  result.width = kImageWidth;
+  result.height = kImageHeight;
+  result.compare.samplesPerPixel = 16;
+  result.reference.samplesPerPixel = 256;
+  result.reference.image = syntheticImage(1.3, 0.0, 0);
+  // Rays by kind: camera, reflection, refraction, diffuse, glossy, shadow.
+  result.algorithms = {
+      figures(Algorithm::RayCasting, 0.8, 0.0, {49152, 0, 0, 0, 0, 49152}, 0.118, 0.04, 0.0009),
+      figures(Algorithm::Whitted, 0.8, 0.0, {49152, 6100, 3050, 0, 0, 55300}, 0.112, 0.04, 0.0012),
+      figures(Algorithm::Distributed, 1.0, 0.08, {49152, 6100, 3050, 0, 24400, 196608}, 0.07, 0.06,
+              0.004),
+      figures(Algorithm::PathTracing, 1.3, 0.25, {49152, 7300, 3600, 121000, 8800, 136500}, 0.004,
+              0.14, 0.006),
+  };
+  return result;
+}
+
+/// The recorded tree of sample 0 of pixel (x, y) of `scene` under `algorithm`, seed 1.
+RayTree traceTree(const Scene& scene, Algorithm algorithm, int x, int y) {
+  RenderSettings settings = scene.render;
+  settings.algorithm = algorithm;
+  settings.seed = 1;
+  const Tracer tracer(scene, settings);
+  Stepper stepper(tracer, x, y, 0);
+  stepper.runToEnd();
+  return stepper.tree();
+}
+
+ComparisonViewOptions baselineOptions() {
+  ComparisonViewOptions options;
+  options.showTimes = false;  // times vary from run to run: never in a baseline
+  return options;
+}
+
+bool contains(const std::vector<std::string>& lines, const std::string& text) {
+  for (const std::string& line : lines)
+    if (line.find(text) != std::string::npos) return true;
+  return false;
+}
+
+TEST(ComparisonView, 01_FourPanelsBaseline) {
+  ComparisonView view(syntheticComparison(), baselineOptions());
+  ASSERT_EQ(view.panelCount(), 4);
+  expectMatchesBaseline(view.renderOffscreen(960, 600), "TestComparisonView");
+}
+
+TEST(ComparisonView, 02_ImagesKeepTheirAspectAndShowEveryPixel) {
+  const ComparisonResult result = syntheticComparison();
+  for (int columns : {1, 2, 4}) {
+    const std::pair<int, int> size = columns == 1   ? std::pair{640, 1200}
+                                     : columns == 2 ? std::pair{960, 600}
+                                                    : std::pair{1600, 400};
+    {
+      const auto [width, height] = size;
+      SCOPED_TRACE(std::to_string(columns) + " columns, " + std::to_string(width) + "x" +
+                   std::to_string(height));
+      ComparisonViewOptions options = baselineOptions();
+      options.columns = columns;
+      ComparisonView view(result, options);
+      const Image picture = view.renderOffscreen(width, height);
+      for (int panel = 0; panel < view.panelCount(); ++panel) {
+        const PixelRect rect = view.imageRect(panel, width, height);
+        const PixelRect box = view.panelRect(panel, width, height);
+        // Inside its panel, and 64:48 within one pixel of rounding.
+        EXPECT_GE(rect.x, box.x);
+        EXPECT_GE(rect.y, box.y);
+        EXPECT_LE(rect.x + rect.width, box.x + box.width);
+        EXPECT_LE(rect.y + rect.height, box.y + box.height);
+        EXPECT_GT(rect.width, kImageWidth / 2) << "image drawn too small";
+        EXPECT_LE(std::abs(rect.width * kImageHeight - rect.height * kImageWidth), kImageWidth);
+        // Each image pixel's centre shows that pixel's sRGB colour (nearest neighbour).
+        const std::vector<std::uint8_t> srgb = imageio::toSrgb8(result.algorithms[panel].image);
+        int wrong = 0;
+        for (int j = 1; j < kImageHeight; j += 5)
+          for (int i = 1; i < kImageWidth; i += 5) {
+            const int px = rect.x + int((i + 0.5) * rect.width / kImageWidth);
+            const int py = rect.y + int((j + 0.5) * rect.height / kImageHeight);
+            const Rgb8 got = picture.at(px, py);
+            const std::size_t k = 3 * (std::size_t(j) * kImageWidth + i);
+            for (int c = 0; c < 3; ++c) wrong += std::abs(int(got[c]) - int(srgb[k + c])) > 2;
+          }
+        EXPECT_EQ(wrong, 0) << "panel " << panel << ": channels not showing their pixel";
+      }
+    }
+  }
+}
+
+TEST(ComparisonView, 03_TitleBandsInTheAlgorithmsColours) {
+  const ComparisonResult result = syntheticComparison();
+  ComparisonView view(result, baselineOptions());
+  const Image picture = view.renderOffscreen(960, 600);
+  for (int panel = 0; panel < 4; ++panel) {
+    const PixelRect box = view.panelRect(panel, 960, 600);
+    // The right end of the band, clear of the left-aligned title text.
+    const Rgb8 band = picture.at(box.x + box.width - 4, box.y + 4);
+    EXPECT_EQ(band, algorithmColour(result.algorithms[panel].algorithm)) << "panel " << panel;
+  }
+  // The four colours are distinct.
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      EXPECT_NE(algorithmColour(Algorithm(a)), algorithmColour(Algorithm(b)));
+}
+
+TEST(ComparisonView, 04_PanelsListTheFigures) {
+  ComparisonResult result = syntheticComparison();
+  ComparisonView hidden(result, baselineOptions());
+  const std::vector<std::string> path = hidden.panelText(3);
+  ASSERT_GE(path.size(), 4u);
+  EXPECT_EQ(path[0], "Path tracing (Kajiya 1986)");
+  EXPECT_TRUE(contains(path, "16 spp")) << ::testing::PrintToString(path);
+  EXPECT_TRUE(contains(path, "error 0.039 vs path ref")) << ::testing::PrintToString(path);
+  EXPECT_TRUE(contains(path, "rays 326 k")) << ::testing::PrintToString(path);
+  EXPECT_TRUE(contains(path, "diffuse 121 k")) << ::testing::PrintToString(path);
+  EXPECT_FALSE(contains(path, " ms")) << "times hidden";
+  // Ray casting traced no reflection rays: no line for them.
+  EXPECT_FALSE(contains(hidden.panelText(0), "reflection"));
+  EXPECT_NE(hidden.headerText().find("equal samples: 16 spp each"), std::string::npos);
+  EXPECT_NE(hidden.headerText().find("against path tracing at 256 spp"), std::string::npos);
+
+  ComparisonView shown(result, ComparisonViewOptions{});
+  EXPECT_TRUE(contains(shown.panelText(3), "16 spp in 96 ms"))
+      << ::testing::PrintToString(shown.panelText(3));
+  result.compare.secondsPerAlgorithm = 0.5;
+  shown.setResult(result);
+  EXPECT_TRUE(contains(shown.panelText(3), "16 spp reached in 96 ms"));
+  EXPECT_NE(shown.headerText().find("equal time: 500 ms each"), std::string::npos);
+}
+
+TEST(ComparisonView, 05_RayTreesBesideTheImagesShareOneCamera) {
+  // Real trees of the materials scene (320x240): pixel (64, 150) is on its glass sphere,
+  // where Whitted refracts and the stochastic algorithms branch. The images stay synthetic.
+  const Scene scene =
+      SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/materials.json");
+  std::vector<RayTree> trees;
+  for (Algorithm algorithm :
+       {Algorithm::RayCasting, Algorithm::Whitted, Algorithm::Distributed, Algorithm::PathTracing})
+    trees.push_back(traceTree(scene, algorithm, 64, 150));
+  ComparisonView view(syntheticComparison(), baselineOptions());
+  EXPECT_THROW(view.setRayTrees(scene, {trees[0]}, 0, 0), std::invalid_argument);
+  // The same place in the 64x48 synthetic image is pixel (12, 30): it gets the mark.
+  view.setRayTrees(scene, trees, 12, 30);
+  ASSERT_TRUE(view.hasRayTrees());
+
+  // Renderers: the header, then per panel background, title, image and tree view.
+  const std::vector<vtkRenderer*> renderers = view.renderers();
+  ASSERT_EQ(renderers.size(), 1u + 4u * 4u);
+  vtkCamera* shared = renderers[4]->GetActiveCamera();
+  for (int panel = 0; panel < 4; ++panel) {
+    EXPECT_EQ(renderers[std::size_t(4 * panel + 4)]->GetActiveCamera(), shared);
+    EXPECT_NE(renderers[std::size_t(4 * panel + 3)]->GetActiveCamera(), shared);  // image
+  }
+
+  const Image picture = view.renderOffscreen(1280, 720);
+  for (int panel = 0; panel < 4; ++panel) {
+    const PixelRect tree = view.treeRect(panel, 1280, 720);
+    const PixelRect image = view.imageRect(panel, 1280, 720);
+    EXPECT_EQ(tree.width, image.width);
+    EXPECT_EQ(tree.height, image.height);
+    EXPECT_GE(tree.x, image.x + image.width) << "tree view right of the image";
+  }
+  expectMatchesBaseline(picture, "TestComparisonView_Trees");
+
+  view.clearRayTrees();
+  EXPECT_FALSE(view.hasRayTrees());
+  EXPECT_EQ(view.treeRect(0, 1280, 720).width, 0);
+}
+
+TEST(ConvergencePlot, 06_SamplesBaseline) {
+  ConvergencePlot plot(syntheticComparison(), ConvergenceAxis::Samples);
+  EXPECT_EQ(plot.pointCounts(), (std::vector<int>{5, 5, 5, 5}));
+  expectMatchesBaseline(plot.renderOffscreen(800, 560), "TestComparisonView_Plot");
+}
+
+TEST(ConvergencePlot, 07_TimeAxisAndPointsThatCannotBeDrawn) {
+  ComparisonResult result = syntheticComparison();
+  result.algorithms[0].series[2].rmse = 0.0;  // exact: no place on a log axis
+  ConvergencePlot plot(result, ConvergenceAxis::Time);
+  EXPECT_EQ(plot.pointCounts(), (std::vector<int>{4, 5, 5, 5}));
+  // Ray casting's orange is on the picture; the curves are drawn on white.
+  const Image picture = plot.renderOffscreen(640, 480);
+  const Rgb8 orange = algorithmColour(Algorithm::RayCasting);
+  int orangePixels = 0, whitePixels = 0;
+  for (int y = 0; y < picture.height; ++y)
+    for (int x = 0; x < picture.width; ++x) {
+      const Rgb8 p = picture.at(x, y);
+      orangePixels +=
+          std::abs(p[0] - orange[0]) + std::abs(p[1] - orange[1]) + std::abs(p[2] - orange[2]) < 30;
+      whitePixels += p == Rgb8{255, 255, 255};
+    }
+  EXPECT_GT(orangePixels, 200);
+  EXPECT_GT(whitePixels, picture.width * picture.height / 2);
+}
+
+}  // namespace
+}  // namespace raylab

@@ -1,0 +1,562 @@
+#include "raylab/vis/ComparisonView.h"
+
+#include "VtkImage.h"
+
+#include "raylab/core/Check.h"
+#include "raylab/vis/ImageIO.h"
+#include "raylab/vis/SceneView.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkImageActor.h>
+#include <vtkImageData.h>
+#include <vtkImageMapper3D.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkTextRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+
+namespace raylab {
+
+namespace {
+
+/// Background of the panels (the 3D view's dark slate) and of the header band.
+constexpr double kPanelBackground[3] = {0.12, 0.13, 0.16};
+constexpr double kHeaderBackground[3] = {0.06, 0.07, 0.09};
+/// Colour of the figures and header text.
+constexpr double kTextColour[3] = {0.93, 0.93, 0.93};
+/// Colour of the mark around the traced pixel.
+constexpr double kPixelMark[3] = {1.0, 0.9, 0.0};
+
+/// A number with `digits` significant digits ("0.0234", "1.23").
+std::string significant(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
+}
+
+double channel(std::uint8_t value) { return value / 255.0; }
+
+/// Black or white, whichever reads better on `background` (Rec. 709 luminance of sRGB).
+bool darkTextOn(const Rgb8& background) {
+  const double y = 0.2126 * channel(background[0]) + 0.7152 * channel(background[1]) +
+                   0.0722 * channel(background[2]);
+  return y > 0.45;
+}
+
+/// Viewport of `rect` (pixels, y down) in a width x height window (normalised, y up).
+void setViewport(vtkRenderer* renderer, const PixelRect& rect, int width, int height) {
+  renderer->SetViewport(double(rect.x) / width, double(height - rect.y - rect.height) / height,
+                        double(rect.x + rect.width) / width, double(height - rect.y) / height);
+}
+
+/// Width and height in pixels of `text` drawn with `property` (72 dpi: 1 point = 1 pixel).
+std::pair<int, int> textSize(vtkTextProperty* property, const std::string& text) {
+  vtkTextRenderer* renderer = vtkTextRenderer::GetInstance();
+  RAYLAB_CHECK(renderer != nullptr);
+  int box[4] = {0, 0, 0, 0};
+  if (!renderer->GetBoundingBox(property, text, box, 72)) return {0, 0};
+  return {box[1] - box[0] + 1, box[3] - box[2] + 1};
+}
+
+void styleText(vtkTextProperty* p, int size, const double colour[3], bool bold) {
+  p->SetFontFamilyToArial();
+  p->SetFontSize(size);
+  p->SetColor(colour[0], colour[1], colour[2]);
+  p->SetBold(bold);
+  p->SetJustificationToLeft();
+  p->SetVerticalJustificationToTop();
+  p->SetLineSpacing(1.15);
+  p->ShadowOff();
+}
+
+/// The lines of a panel's figures, below its title.
+std::vector<std::string> figureLines(const ComparisonResult& result,
+                                     const AlgorithmFigures& figures, bool showTimes) {
+  std::vector<std::string> lines;
+  const RenderStats& stats = figures.stats;
+  std::string samples = std::to_string(stats.samplesPerPixel) + " spp";
+  if (result.compare.equalTime()) samples += " reached";
+  if (showTimes)
+    samples += (result.compare.equalTime() ? " in " : " in ") + formatSeconds(stats.seconds);
+  lines.push_back(samples);
+  lines.push_back("error " + significant(figures.rmse, 3) + " vs path ref");
+  std::string rays = "rays " + formatCount(stats.rays.total());
+  if (showTimes && stats.seconds > 0.0)
+    rays += " (" + formatCount(std::uint64_t(double(stats.rays.total()) / stats.seconds)) + "/s)";
+  lines.push_back(rays);
+  for (int k = 0; k < kRayKindCount; ++k) {
+    if (stats.rays.byKind[k] == 0) continue;
+    lines.push_back(std::string("   ") + toString(static_cast<RayKind>(k)) + " " +
+                    formatCount(stats.rays.byKind[k]));
+  }
+  return lines;
+}
+
+std::string joinLines(const std::vector<std::string>& lines) {
+  std::string text;
+  for (std::size_t i = 0; i < lines.size(); ++i) text += (i ? "\n" : "") + lines[i];
+  return text;
+}
+
+/// A square outline around image pixel (x, y) (row 0 at the top) of an image `height`
+/// pixels high, in the image actor's world coordinates (pixel centres at integers, row 0
+/// of VTK at the bottom), a little in front of the image.
+vtkSmartPointer<vtkPolyData> pixelMark(int x, int y, int height) {
+  const double cx = x;
+  const double cy = height - 1 - y;
+  const double r = 1.5;  // pixels: the mark surrounds the pixel with a one-pixel gap
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(cx - r, cy - r, 1.0);
+  points->InsertNextPoint(cx + r, cy - r, 1.0);
+  points->InsertNextPoint(cx + r, cy + r, 1.0);
+  points->InsertNextPoint(cx - r, cy + r, 1.0);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType loop[5] = {0, 1, 2, 3, 0};
+  lines->InsertNextCell(5, loop);
+  auto mark = vtkSmartPointer<vtkPolyData>::New();
+  mark->SetPoints(points);
+  mark->SetLines(lines);
+  return mark;
+}
+
+}  // namespace
+
+Rgb8 algorithmColour(Algorithm algorithm) {
+  switch (algorithm) {
+    case Algorithm::RayCasting:
+      return {230, 159, 0};
+    case Algorithm::Whitted:
+      return {0, 158, 115};
+    case Algorithm::Distributed:
+      return {0, 114, 178};
+    case Algorithm::PathTracing:
+      return {213, 94, 0};
+  }
+  return {128, 128, 128};
+}
+
+std::string ComparisonViewOptions::toString() const {
+  return "ComparisonViewOptions[columns=" + std::to_string(columns) +
+         ", showTimes=" + (showTimes ? "on" : "off") +
+         ", showHeader=" + (showHeader ? "on" : "off") + "]";
+}
+
+std::string formatSeconds(double seconds) {
+  if (seconds < 1.0) return significant(seconds * 1000.0, 3) + " ms";
+  return significant(seconds, 3) + " s";
+}
+
+std::string formatCount(std::uint64_t count) {
+  if (count < 10000) return std::to_string(count);
+  const double value = double(count);
+  if (value < 1e6) return significant(value / 1e3, 3) + " k";
+  if (value < 1e9) return significant(value / 1e6, 3) + " M";
+  return significant(value / 1e9, 3) + " G";
+}
+
+/// One algorithm's panel: its renderers and actors.
+struct Panel {
+  vtkNew<vtkRenderer> background;  ///< The whole panel; holds the figures text.
+  vtkNew<vtkRenderer> title;       ///< The title band in the algorithm's colour.
+  vtkNew<vtkRenderer> image;       ///< The image, exactly its aspect ratio.
+  vtkNew<vtkTextActor> titleText;
+  vtkNew<vtkTextActor> figuresText;
+  vtkNew<vtkImageActor> imageActor;
+  vtkNew<vtkActor> mark;                     ///< The traced pixel (hidden without trees).
+  std::unique_ptr<SceneView> tree;           ///< The 3D view of the pixel's tree, when shown.
+  std::vector<std::string> lines;            ///< Title, then the figures.
+  double titleColour[3] = {1.0, 1.0, 1.0};   ///< Black or white on the band.
+  PixelRect panelRect, imageRect, treeRect;  ///< From the last layout.
+};
+
+struct ComparisonView::Impl {
+  ComparisonResult result;
+  ComparisonViewOptions options;
+  std::vector<std::unique_ptr<Panel>> panels;
+  vtkNew<vtkRenderer> header;
+  vtkNew<vtkTextActor> headerText;
+  vtkSmartPointer<vtkRenderWindow> offscreen;
+  int layoutWidth = 0, layoutHeight = 0;
+
+  ~Impl() {
+    if (offscreen) {
+      offscreen->GetRenderers()->RemoveAllItems();
+      offscreen->Finalize();
+    }
+  }
+
+  void build();
+  std::string headerLine() const;
+  void layoutPanel(Panel& panel, const PixelRect& rect, int width, int height) const;
+  /// Takes every renderer out of the offscreen window (before renderers change).
+  void detach();
+  /// Panel `panel` laid out for a width x height picture.
+  const Panel& laidOut(int panel, int width, int height);
+  ComparisonView* owner = nullptr;
+};
+
+std::string ComparisonView::Impl::headerLine() const {
+  if (!options.showHeader) return {};
+  std::ostringstream out;
+  out << (result.sceneName.empty() ? std::string("scene") : result.sceneName) << "  "
+      << result.width << "x" << result.height << "  |  ";
+  if (result.compare.equalTime())
+    out << "equal time: " << formatSeconds(result.compare.secondsPerAlgorithm) << " each";
+  else
+    out << "equal samples: " << result.compare.samplesPerPixel << " spp each";
+  out << "  |  error: RMSE of the picture against path tracing ";
+  if (!result.reference.file.empty())
+    out << "(" << result.reference.file << ")";
+  else
+    out << "at " << result.reference.samplesPerPixel << " spp";
+  return out.str();
+}
+
+void ComparisonView::Impl::detach() {
+  if (!offscreen) return;
+  vtkRendererCollection* renderers = offscreen->GetRenderers();
+  while (renderers->GetNumberOfItems() > 0)
+    offscreen->RemoveRenderer(vtkRenderer::SafeDownCast(renderers->GetItemAsObject(0)));
+}
+
+void ComparisonView::Impl::layoutPanel(Panel& panel, const PixelRect& rect, int width,
+                                       int height) const {
+  const bool trees = panel.tree != nullptr;
+  const double imageW = std::max(1, result.width);
+  const double imageH = std::max(1, result.height);
+  panel.panelRect = rect;
+  setViewport(panel.background, rect, width, height);
+
+  // Step 1: sizes that follow the panel: margin, text, title band.
+  const int margin = std::max(4, int(std::lround(std::min(rect.width, rect.height) / 40.0)));
+  int font = std::clamp(int(std::lround(std::min(rect.width / 30.0, rect.height / 17.0))), 8, 40);
+  const int titleFont = int(std::lround(font * 1.25));
+  const int titleBand = int(std::lround(titleFont * 1.7));
+  const PixelRect titleRect{rect.x, rect.y, rect.width, titleBand};
+  setViewport(panel.title, titleRect, width, height);
+  const PixelRect content{rect.x + margin, rect.y + titleBand + margin, rect.width - 2 * margin,
+                          rect.height - titleBand - 2 * margin};
+
+  // Step 2: the largest image (and tree view beside it) that leaves room for the figures,
+  // either to their right or below them; the text shrinks when the image would get small.
+  // The text measured is the largest of all panels', so every panel is laid out alike.
+  const auto scaleFor = [&](int boxW, int boxH) {
+    if (boxW <= 0 || boxH <= 0) return 0.0;
+    const double across = trees ? (boxW - margin) / (2.0 * imageW) : boxW / imageW;
+    return std::max(0.0, std::min(across, boxH / imageH));
+  };
+  vtkTextProperty* figures = panel.figuresText->GetTextProperty();
+  int textW = 0, textH = 0;
+  double scale = 0.0;
+  bool side = true;
+  for (;; --font) {
+    styleText(figures, font, kTextColour, false);
+    textW = textH = 0;
+    for (const auto& other : panels) {
+      const char* text = other->figuresText->GetInput();
+      const auto [w, h] = textSize(figures, text ? text : "");
+      textW = std::max(textW, w);
+      textH = std::max(textH, h);
+    }
+    const double sideScale = scaleFor(content.width - textW - margin, content.height);
+    const double belowScale = scaleFor(content.width, content.height - textH - margin);
+    side = sideScale >= belowScale;
+    scale = std::max(sideScale, belowScale);
+    if (font <= 8 || scale * imageH >= 0.5 * content.height) break;
+  }
+
+  // Step 3: place the block (image, tree, figures) centred in the content area.
+  const int w = std::max(1, int(std::floor(scale * imageW)));
+  const int h = std::max(1, int(std::floor(scale * imageH)));
+  const int visualW = trees ? 2 * w + margin : w;
+  int textX = 0, textY = 0;
+  if (side) {
+    const int blockW = visualW + margin + textW;
+    const int x0 = content.x + std::max(0, (content.width - blockW) / 2);
+    const int y0 = content.y + std::max(0, (content.height - std::max(h, textH)) / 2);
+    panel.imageRect = {x0, y0, w, h};
+    textX = x0 + visualW + margin;
+    textY = y0;
+  } else {
+    const int blockH = h + margin + textH;
+    const int x0 = content.x + std::max(0, (content.width - visualW) / 2);
+    const int y0 = content.y + std::max(0, (content.height - blockH) / 2);
+    panel.imageRect = {x0, y0, w, h};
+    textX = x0;
+    textY = y0 + h + margin;
+  }
+  panel.treeRect = {panel.imageRect.x + w + margin, panel.imageRect.y, w, h};
+  setViewport(panel.image, panel.imageRect, width, height);
+  if (trees) setViewport(panel.tree->renderer(), panel.treeRect, width, height);
+
+  // Step 4: the text, in the coordinates of its renderer's viewport (pixels, y up).
+  panel.figuresText->SetPosition(textX - rect.x, rect.height - (textY - rect.y));
+  vtkTextProperty* title = panel.titleText->GetTextProperty();
+  styleText(title, titleFont, panel.titleColour, true);
+  title->SetVerticalJustificationToCentered();
+  panel.titleText->SetPosition(margin, titleBand / 2.0);
+}
+
+void ComparisonView::Impl::build() {
+  panels.clear();
+  header->RemoveAllViewProps();
+  header->SetBackground(kHeaderBackground[0], kHeaderBackground[1], kHeaderBackground[2]);
+  header->AddViewProp(headerText);
+  headerText->SetInput(headerLine().c_str());
+  for (const AlgorithmFigures& figures : result.algorithms) {
+    auto panel = std::make_unique<Panel>();
+    panel->background->SetBackground(kPanelBackground[0], kPanelBackground[1], kPanelBackground[2]);
+    panel->background->AddViewProp(panel->figuresText);
+
+    // The title band: the algorithm's colour, its name in black or white on it.
+    const Rgb8 colour = algorithmColour(figures.algorithm);
+    panel->title->SetBackground(channel(colour[0]), channel(colour[1]), channel(colour[2]));
+    panel->title->AddViewProp(panel->titleText);
+    const double ink = darkTextOn(colour) ? 0.0 : 1.0;
+    std::fill(std::begin(panel->titleColour), std::end(panel->titleColour), ink);
+    panel->lines = {algorithmTitle(figures.algorithm)};
+    for (const std::string& line : figureLines(result, figures, options.showTimes))
+      panel->lines.push_back(line);
+    panel->titleText->SetInput(panel->lines.front().c_str());
+    panel->figuresText->SetInput(joinLines({panel->lines.begin() + 1, panel->lines.end()}).c_str());
+
+    // The image: sRGB bytes on a slice seen by a parallel camera that frames it exactly.
+    Image picture(figures.image.width, figures.image.height);
+    picture.rgb = imageio::toSrgb8(figures.image);
+    panel->imageActor->SetInputData(detail::toVtkImage(picture));
+    panel->imageActor->InterpolateOff();         // show the pixels: the noise is the lesson
+    panel->imageActor->GetMapper()->BorderOn();  // cover whole pixels up to the edge
+    panel->image->SetBackground(0.0, 0.0, 0.0);
+    panel->image->AddViewProp(panel->imageActor);
+    vtkCamera* camera = panel->image->GetActiveCamera();
+    const double w = figures.image.width, h = figures.image.height;
+    camera->ParallelProjectionOn();
+    camera->SetFocalPoint((w - 1.0) / 2.0, (h - 1.0) / 2.0, 0.0);
+    camera->SetPosition((w - 1.0) / 2.0, (h - 1.0) / 2.0, 10.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetParallelScale(h / 2.0);
+    camera->SetClippingRange(1.0, 20.0);
+
+    vtkNew<vtkPolyDataMapper> markMapper;
+    panel->mark->SetMapper(markMapper);
+    panel->mark->GetProperty()->SetColor(kPixelMark[0], kPixelMark[1], kPixelMark[2]);
+    panel->mark->GetProperty()->SetLineWidth(3.0);
+    panel->mark->GetProperty()->LightingOff();
+    panel->mark->VisibilityOff();
+    panel->image->AddViewProp(panel->mark);
+    panels.push_back(std::move(panel));
+  }
+}
+
+}  // namespace raylab
+
+namespace raylab {
+
+ComparisonView::ComparisonView(const ComparisonResult& result, const ComparisonViewOptions& options)
+    : m_impl(std::make_unique<Impl>()) {
+  m_impl->owner = this;
+  m_impl->options = options;
+  setResult(result);
+}
+
+ComparisonView::~ComparisonView() = default;
+
+void ComparisonView::setResult(const ComparisonResult& result) {
+  m_impl->detach();
+  m_impl->result = result;
+  m_impl->build();
+}
+
+const ComparisonResult& ComparisonView::result() const { return m_impl->result; }
+
+void ComparisonView::setOptions(const ComparisonViewOptions& options) {
+  m_impl->detach();
+  m_impl->options = options;
+  m_impl->build();
+}
+
+const ComparisonViewOptions& ComparisonView::options() const { return m_impl->options; }
+
+int ComparisonView::panelCount() const { return int(m_impl->panels.size()); }
+
+void ComparisonView::layout(int width, int height) {
+  RAYLAB_CHECK(width > 0 && height > 0);
+  Impl& d = *m_impl;
+  d.layoutWidth = width;
+  d.layoutHeight = height;
+
+  // Step 1: the header band across the top, its text as large as fits the width.
+  int headerHeight = 0;
+  if (d.options.showHeader) {
+    const int margin = std::max(4, width / 100);
+    vtkTextProperty* p = d.headerText->GetTextProperty();
+    int size = std::clamp(int(std::lround(std::min(width / 55.0, height / 28.0))), 9, 30);
+    for (;; --size) {
+      styleText(p, size, kTextColour, false);
+      if (size <= 8 || textSize(p, d.headerLine()).first <= width - 2 * margin) break;
+    }
+    p->SetVerticalJustificationToCentered();
+    headerHeight = int(std::lround(size * 1.9));
+    setViewport(d.header, {0, 0, width, headerHeight}, width, height);
+    d.headerText->SetPosition(margin, headerHeight / 2.0);
+  }
+
+  // Step 2: the panels in a grid of `columns` across, row by row.
+  const int count = panelCount();
+  if (count == 0) return;
+  const int columns = std::clamp(d.options.columns, 1, count);
+  const int rows = (count + columns - 1) / columns;
+  const int below = height - headerHeight;
+  for (int i = 0; i < count; ++i) {
+    const int r = i / columns, c = i % columns;
+    const int x0 = c * width / columns, x1 = (c + 1) * width / columns;
+    const int y0 = headerHeight + r * below / rows, y1 = headerHeight + (r + 1) * below / rows;
+    d.layoutPanel(*d.panels[std::size_t(i)], {x0, y0, x1 - x0, y1 - y0}, width, height);
+  }
+
+  // Step 3: the shared camera of the tree views sees the whole scene.
+  if (hasRayTrees()) d.panels.front()->tree->renderer()->ResetCameraClippingRange();
+}
+
+std::vector<vtkRenderer*> ComparisonView::renderers() const {
+  std::vector<vtkRenderer*> out;
+  if (m_impl->options.showHeader) out.push_back(m_impl->header);
+  for (const auto& panel : m_impl->panels) {
+    out.push_back(panel->background);
+    out.push_back(panel->title);
+    out.push_back(panel->image);
+    if (panel->tree) out.push_back(panel->tree->renderer());
+  }
+  return out;
+}
+
+const Panel& ComparisonView::Impl::laidOut(int panel, int width, int height) {
+  RAYLAB_CHECK(panel >= 0 && panel < int(panels.size()));
+  if (layoutWidth != width || layoutHeight != height) owner->layout(width, height);
+  return *panels[std::size_t(panel)];
+}
+
+PixelRect ComparisonView::panelRect(int panel, int width, int height) const {
+  return m_impl->laidOut(panel, width, height).panelRect;
+}
+
+PixelRect ComparisonView::imageRect(int panel, int width, int height) const {
+  return m_impl->laidOut(panel, width, height).imageRect;
+}
+
+PixelRect ComparisonView::treeRect(int panel, int width, int height) const {
+  const Panel& laid = m_impl->laidOut(panel, width, height);
+  return laid.tree ? laid.treeRect : PixelRect{laid.treeRect.x, laid.treeRect.y, 0, 0};
+}
+
+std::vector<std::string> ComparisonView::panelText(int panel) const {
+  RAYLAB_CHECK(panel >= 0 && panel < panelCount());
+  return m_impl->panels[std::size_t(panel)]->lines;
+}
+
+std::string ComparisonView::headerText() const { return m_impl->headerLine(); }
+
+void ComparisonView::setRayTrees(const Scene& scene, const std::vector<RayTree>& trees, int pixelX,
+                                 int pixelY, const RayTreeStyle& style) {
+  if (int(trees.size()) != panelCount())
+    throw std::invalid_argument("ComparisonView::setRayTrees: " + std::to_string(trees.size()) +
+                                " trees for " + std::to_string(panelCount()) + " panels");
+  Impl& d = *m_impl;
+  d.detach();
+  vtkCamera* shared = nullptr;
+  for (std::size_t i = 0; i < trees.size(); ++i) {
+    Panel& panel = *d.panels[i];
+    panel.tree = std::make_unique<SceneView>(scene);
+    panel.tree->setRayTree(trees[i], style);
+    // One camera for the four views: turning one turns them all.
+    if (shared == nullptr)
+      shared = panel.tree->renderer()->GetActiveCamera();
+    else
+      panel.tree->renderer()->SetActiveCamera(shared);
+    panel.mark->GetMapper()->SetInputDataObject(pixelMark(pixelX, pixelY, d.result.height));
+    panel.mark->VisibilityOn();
+  }
+  // The scene's default view, a little closer: the trees, not the room, are the subject.
+  d.panels.front()->tree->resetViewCamera(double(d.result.width) / std::max(1, d.result.height));
+  shared->Zoom(1.35);
+  d.layoutWidth = d.layoutHeight = 0;
+}
+
+void ComparisonView::clearRayTrees() {
+  m_impl->detach();
+  for (auto& panel : m_impl->panels) {
+    panel->tree.reset();
+    panel->mark->VisibilityOff();
+  }
+  m_impl->layoutWidth = m_impl->layoutHeight = 0;
+}
+
+bool ComparisonView::hasRayTrees() const {
+  return !m_impl->panels.empty() && m_impl->panels.front()->tree != nullptr;
+}
+
+Image ComparisonView::renderOffscreen(int width, int height) {
+  RAYLAB_CHECK(width > 0 && height > 0);
+  Impl& d = *m_impl;
+  const std::vector<vtkRenderer*> all = renderers();
+  for (vtkRenderer* renderer : all)
+    RAYLAB_CHECK(renderer->GetRenderWindow() == nullptr ||
+                 renderer->GetRenderWindow() == d.offscreen.Get());
+
+  // Step 1: our own offscreen window, no multisampling, holding every renderer in order.
+  if (!d.offscreen) {
+    d.offscreen = vtkSmartPointer<vtkRenderWindow>::New();
+    RAYLAB_CHECK(d.offscreen != nullptr);
+    d.offscreen->SetOffScreenRendering(1);
+    d.offscreen->SetMultiSamples(0);
+  }
+  d.detach();
+  for (vtkRenderer* renderer : all) d.offscreen->AddRenderer(renderer);
+  d.offscreen->SetSize(width, height);
+  layout(width, height);
+
+  // Step 2: render, then read the back buffer (VTK's rows bottom-up, ours top-down).
+  d.offscreen->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(d.offscreen);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkImageData* data = grab->GetOutput();
+  int dims[3] = {0, 0, 0};
+  data->GetDimensions(dims);
+  RAYLAB_CHECK_EQ(dims[0], width);
+  RAYLAB_CHECK_EQ(dims[1], height);
+  Image image(width, height);
+  const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
+  const std::size_t rowBytes = std::size_t(width) * 3;
+  for (int y = 0; y < height; ++y)
+    std::memcpy(image.rgb.data() + std::size_t(y) * rowBytes,
+                in + std::size_t(height - 1 - y) * rowBytes, rowBytes);
+  return image;
+}
+
+void ComparisonView::renderToPng(const std::string& path, int width, int height) {
+  ImageIO::writePng(renderOffscreen(width, height), path);
+}
+
+}  // namespace raylab

@@ -1,0 +1,240 @@
+#include "raylab/vis/ConvergencePlot.h"
+
+#include "raylab/core/Check.h"
+#include "raylab/vis/ComparisonView.h"
+#include "raylab/vis/ImageIO.h"
+
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkPlotPoints.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace raylab {
+
+namespace {
+
+/// Colour of the 1 / sqrt(N) guide and of the axes' text.
+constexpr unsigned char kGuide[3] = {110, 110, 110};
+
+/// A two-column table (x, y) whose y column is named `label`.
+vtkSmartPointer<vtkTable> makeTable(const std::string& label, const std::vector<double>& x,
+                                    const std::vector<double>& y) {
+  auto table = vtkSmartPointer<vtkTable>::New();
+  vtkNew<vtkDoubleArray> xs;
+  xs->SetName("x");
+  vtkNew<vtkDoubleArray> ys;
+  ys->SetName(label.c_str());
+  table->AddColumn(xs);
+  table->AddColumn(ys);
+  table->SetNumberOfRows(vtkIdType(x.size()));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    table->SetValue(vtkIdType(i), 0, x[i]);
+    table->SetValue(vtkIdType(i), 1, y[i]);
+  }
+  return table;
+}
+
+}  // namespace
+
+const char* toString(ConvergenceAxis axis) {
+  return axis == ConvergenceAxis::Samples ? "samples" : "time";
+}
+
+struct ConvergencePlot::Impl {
+  vtkNew<vtkContextView> view;
+  vtkNew<vtkChartXY> chart;
+  std::vector<vtkSmartPointer<vtkTable>> tables;  ///< Kept alive with their plots.
+  std::vector<int> counts;
+  bool offscreen = false;
+
+  ~Impl() {
+    if (offscreen) view->GetRenderWindow()->Finalize();
+  }
+};
+
+ConvergencePlot::ConvergencePlot(const ComparisonResult& result, ConvergenceAxis axis)
+    : m_impl(std::make_unique<Impl>()), m_result(result), m_axis(axis) {
+  m_impl->view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  m_impl->view->GetScene()->AddItem(m_impl->chart);
+  build();
+}
+
+ConvergencePlot::~ConvergencePlot() = default;
+
+void ConvergencePlot::setResult(const ComparisonResult& result) {
+  m_result = result;
+  build();
+}
+
+void ConvergencePlot::setAxis(ConvergenceAxis axis) {
+  m_axis = axis;
+  build();
+}
+
+std::vector<int> ConvergencePlot::pointCounts() const { return m_impl->counts; }
+
+vtkRenderer* ConvergencePlot::renderer() const { return m_impl->view->GetRenderer(); }
+
+void ConvergencePlot::build() {
+  vtkChartXY* chart = m_impl->chart;
+  chart->ClearPlots();
+  m_impl->tables.clear();
+  m_impl->counts.clear();
+  const bool samples = m_axis == ConvergenceAxis::Samples;
+
+  // Step 1: one curve per algorithm, its points where the error can go on a log axis.
+  double xMin = HUGE_VAL, xMax = 0.0, yMin = HUGE_VAL, yMax = 0.0;
+  const AlgorithmFigures* path = nullptr;
+  for (const AlgorithmFigures& figures : m_result.algorithms) {
+    std::vector<double> x, y;
+    for (const ConvergencePoint& point : figures.series) {
+      const double across = samples ? double(point.samplesPerPixel) : point.seconds;
+      if (!(across > 0.0) || !(point.rmse > 0.0)) continue;
+      x.push_back(across);
+      y.push_back(point.rmse);
+      xMin = std::min(xMin, across);
+      xMax = std::max(xMax, across);
+      yMin = std::min(yMin, point.rmse);
+      yMax = std::max(yMax, point.rmse);
+    }
+    m_impl->counts.push_back(int(x.size()));
+    if (x.empty()) continue;
+    if (figures.algorithm == Algorithm::PathTracing) path = &figures;
+    auto table = makeTable(algorithmTitle(figures.algorithm), x, y);
+    vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+    line->SetInputData(table, 0, 1);
+    const Rgb8 colour = algorithmColour(figures.algorithm);
+    line->SetColor(colour[0], colour[1], colour[2], 255);
+    line->SetWidth(3.0);
+    if (auto* points = vtkPlotPoints::SafeDownCast(line)) {
+      points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
+      points->SetMarkerSize(9.0);
+    }
+    m_impl->tables.push_back(table);
+  }
+
+  // Step 2: the Monte Carlo guide, error ~ 1 / sqrt(N), through path tracing's first point.
+  if (path != nullptr) {
+    const ConvergencePoint* first = nullptr;
+    for (const ConvergencePoint& point : path->series) {
+      const double across = samples ? double(point.samplesPerPixel) : point.seconds;
+      if (across > 0.0 && point.rmse > 0.0) {
+        first = &point;
+        break;
+      }
+    }
+    const double x0 = samples ? double(first->samplesPerPixel) : first->seconds;
+    if (xMax > x0) {
+      std::vector<double> x, y;
+      for (int i = 0; i <= 16; ++i) {
+        const double xi = x0 * std::pow(xMax / x0, i / 16.0);
+        x.push_back(xi);
+        y.push_back(first->rmse * std::sqrt(x0 / xi));
+      }
+      auto table = makeTable(samples ? "1 / sqrt(spp)" : "1 / sqrt(time)", x, y);
+      vtkPlot* guide = chart->AddPlot(vtkChart::LINE);
+      guide->SetInputData(table, 0, 1);
+      guide->SetColor(kGuide[0], kGuide[1], kGuide[2], 255);
+      guide->SetWidth(2.0);
+      guide->GetPen()->SetLineType(vtkPen::DASH_LINE);
+      if (auto* points = vtkPlotPoints::SafeDownCast(guide))
+        points->SetMarkerStyle(vtkPlotPoints::NONE);
+      m_impl->tables.push_back(table);
+      yMin = std::min(yMin, y.back());
+    }
+  }
+
+  // Step 3: log-log axes a little wider than the data (whole decades when they fit).
+  vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
+  bottom->SetTitle(samples ? "samples per pixel" : "render time (s)");
+  left->SetTitle("error (RMSE against path-traced reference)");
+  for (vtkAxis* axis : {bottom, left}) {
+    axis->SetLogScale(true);
+    axis->SetGridVisible(true);
+  }
+  if (xMax > 0.0) {
+    bottom->SetBehavior(vtkAxis::FIXED);
+    bottom->SetUnscaledRange(xMin / 1.3, xMax * 1.3);
+    left->SetBehavior(vtkAxis::FIXED);
+    left->SetUnscaledRange(yMin / 1.5, yMax * 1.5);
+  }
+  std::string title = "Convergence";
+  if (!m_result.sceneName.empty()) title += ": " + m_result.sceneName;
+  title += " (" + std::to_string(m_result.width) + "x" + std::to_string(m_result.height) + ", " +
+           (m_result.compare.equalTime() ? "equal time" : "equal samples") + ")";
+  chart->SetTitle(title);
+  chart->SetShowLegend(true);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+}
+
+void ConvergencePlot::layout(int width, int height) {
+  RAYLAB_CHECK(width > 0 && height > 0);
+  const int base = std::clamp(int(std::lround(std::min(width, height) / 36.0)), 9, 32);
+  vtkChartXY* chart = m_impl->chart;
+  chart->GetTitleProperties()->SetFontSize(int(std::lround(base * 1.25)));
+  chart->GetTitleProperties()->SetBold(true);
+  for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
+    vtkAxis* axis = chart->GetAxis(a);
+    axis->GetTitleProperties()->SetFontSize(base);
+    axis->GetTitleProperties()->SetBold(false);
+    axis->GetLabelProperties()->SetFontSize(int(std::lround(base * 0.85)));
+  }
+  chart->GetLegend()->SetLabelSize(base);
+}
+
+Image ConvergencePlot::renderOffscreen(int width, int height) {
+  RAYLAB_CHECK(width > 0 && height > 0);
+  vtkRenderWindow* window = m_impl->view->GetRenderWindow();
+  if (!m_impl->offscreen) {
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    m_impl->offscreen = true;
+  }
+  window->SetSize(width, height);
+  layout(width, height);
+  m_impl->view->Render();
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkImageData* data = grab->GetOutput();
+  int dims[3] = {0, 0, 0};
+  data->GetDimensions(dims);
+  RAYLAB_CHECK_EQ(dims[0], width);
+  RAYLAB_CHECK_EQ(dims[1], height);
+  Image image(width, height);
+  const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
+  const std::size_t rowBytes = std::size_t(width) * 3;
+  for (int y = 0; y < height; ++y)
+    std::memcpy(image.rgb.data() + std::size_t(y) * rowBytes,
+                in + std::size_t(height - 1 - y) * rowBytes, rowBytes);
+  return image;
+}
+
+void ConvergencePlot::renderToPng(const std::string& path, int width, int height) {
+  ImageIO::writePng(renderOffscreen(width, height), path);
+}
+
+}  // namespace raylab
