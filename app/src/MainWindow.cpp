@@ -1,5 +1,8 @@
 #include "MainWindow.h"
 
+#include "InspectorPanel.h"
+#include "RayTreePanel.h"
+
 #include "raylab/core/Shape.h"
 #include "raylab/vis/SceneView.h"
 
@@ -14,7 +17,9 @@
 #include <QKeySequence>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QMouseEvent>
 #include <QPixmap>
+#include <QScrollArea>
 #include <QStatusBar>
 
 namespace raylab::app {
@@ -22,15 +27,17 @@ namespace raylab::app {
 MainWindow::MainWindow(const Scene& scene, QWidget* parent)
     : QMainWindow(parent), m_view(std::make_unique<SceneView>(scene)) {
   setWindowTitle(QStringLiteral("RayLab — %1").arg(QString::fromStdString(scene.name)));
-  resize(1100, 700);
+  resize(1400, 860);
 
-  // Step 1: the 3D view, with the trackball interaction (drag rotates, wheel zooms).
+  // Step 1: the 3D view, with the trackball interaction (drag rotates, wheel zooms); a
+  // click without a drag picks a ray (eventFilter).
   m_vtkWidget = new QVTKOpenGLNativeWidget(this);
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   m_vtkWidget->setRenderWindow(window);
   window->AddRenderer(m_view->renderer());
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   m_vtkWidget->interactor()->SetInteractorStyle(style);
+  m_vtkWidget->installEventFilter(this);
   setCentralWidget(m_vtkWidget);
 
   // Step 2: the object list, in a dock on the left.
@@ -39,15 +46,39 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
     auto* item = new QListWidgetItem(QString::fromStdString(object.name), m_objectList);
     item->setToolTip(QString::fromStdString(object.shape ? object.shape->toString() : ""));
   }
-  auto* dock = new QDockWidget(tr("Objects"), this);
-  dock->setObjectName(QStringLiteral("objects"));
-  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-  dock->setWidget(m_objectList);
-  addDockWidget(Qt::LeftDockWidgetArea, dock);
+  QDockWidget* objects =
+      addDock(tr("Objects"), QStringLiteral("objects"), m_objectList, Qt::LeftDockWidgetArea);
   connect(m_objectList, &QListWidget::currentRowChanged, this,
           [this](int row) { showSelection(row); });
 
-  // Step 3: menus and the hint line.
+  // Step 3: the ray-tree panel on the right (full height), scrolling when the window is low.
+  m_rayPanel = new RayTreePanel(*m_view);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(m_rayPanel);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(m_rayPanel->sizeHint().width() + 24);
+  setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+  setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
+  QDockWidget* rays =
+      addDock(tr("Ray tree"), QStringLiteral("raytree"), scroll, Qt::RightDockWidgetArea);
+
+  // Step 4: the inspector below the view.
+  m_inspector = new InspectorPanel(m_view->scene(), m_rayPanel->tree());
+  QDockWidget* inspector = addDock(tr("Ray inspector"), QStringLiteral("inspector"), m_inspector,
+                                   Qt::BottomDockWidgetArea);
+  resizeDocks({objects}, {220}, Qt::Horizontal);
+  resizeDocks({inspector}, {330}, Qt::Vertical);
+  connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
+  connect(m_rayPanel, &RayTreePanel::statusChanged, this,
+          [this](const QString& text) { statusBar()->showMessage(text); });
+  connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector,
+          [this](int id) { m_inspector->showSegment(id); });
+  connect(m_inspector, &InspectorPanel::segmentRequested, m_rayPanel,
+          [this](int id) { m_rayPanel->selectSegment(id); });
+
+  // Step 5: menus and the hint line.
   QMenu* file = menuBar()->addMenu(tr("&File"));
   QAction* quit = file->addAction(tr("&Quit"));
   quit->setShortcut(QKeySequence::Quit);
@@ -56,10 +87,26 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   QAction* reset = viewMenu->addAction(tr("&Reset view"));
   reset->setShortcut(QKeySequence(Qt::Key_R));
   connect(reset, &QAction::triggered, this, [this] { resetView(); });
-  statusBar()->showMessage(tr("Drag to rotate, wheel to zoom, pick an object in the list"));
+  viewMenu->addSeparator();
+  for (QDockWidget* dock : {objects, rays, inspector})
+    viewMenu->addAction(dock->toggleViewAction());
+  statusBar()->showMessage(
+      tr("Drag to rotate, wheel to zoom, pick an object in the list; trace a pixel on the right"));
+}
+
+QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
+                                 Qt::DockWidgetArea area) {
+  auto* dock = new QDockWidget(title, this);
+  dock->setObjectName(name);
+  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
+                    QDockWidget::DockWidgetClosable);
+  dock->setWidget(widget);
+  addDockWidget(area, dock);
+  return dock;
 }
 
 MainWindow::~MainWindow() {
+  m_rayPanel->pause();
   // The render window outlives us by a moment (Qt deletes children later): detach the
   // renderer now so it never draws a SceneView that is gone.
   if (m_vtkWidget && m_vtkWidget->renderWindow()) {
@@ -91,6 +138,34 @@ void MainWindow::resetView() {
 }
 
 void MainWindow::render() { m_vtkWidget->renderWindow()->Render(); }
+
+int MainWindow::clickRay(const QPoint& position) {
+  if (!m_view->hasRayTree()) return -1;
+  const int id =
+      m_view->segmentAt(position.x(), position.y(), m_vtkWidget->width(), m_vtkWidget->height());
+  m_rayPanel->selectSegment(id);
+  statusBar()->showMessage(id >= 0 ? tr("Ray #%1 selected: see the inspector below").arg(id)
+                                   : tr("No ray under the cursor"));
+  return id;
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  // A left click that does not drag picks a ray; the trackball still sees every event.
+  if (watched == m_vtkWidget) {
+    if (event->type() == QEvent::MouseButtonPress) {
+      const auto* mouse = static_cast<QMouseEvent*>(event);
+      m_pressed = mouse->button() == Qt::LeftButton;
+      m_pressPosition = mouse->pos();
+    } else if (event->type() == QEvent::MouseButtonRelease && m_pressed) {
+      const auto* mouse = static_cast<QMouseEvent*>(event);
+      m_pressed = false;
+      if (mouse->button() == Qt::LeftButton &&
+          (mouse->pos() - m_pressPosition).manhattanLength() <= 3)
+        clickRay(mouse->pos());
+    }
+  }
+  return QMainWindow::eventFilter(watched, event);
+}
 
 bool MainWindow::saveScreenshot(const QString& path) {
   const QPixmap picture = grab();

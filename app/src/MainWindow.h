@@ -6,6 +6,7 @@
 
 #include <memory>
 
+class QDockWidget;
 class QListWidget;
 class QVTKOpenGLNativeWidget;
 
@@ -15,10 +16,15 @@ class SceneView;
 
 namespace raylab::app {
 
+class InspectorPanel;
+class RayTreePanel;
+
 /**
  * \brief RayLab's main window: the scene's 3D view (drag to rotate, wheel to zoom, as in
- * the seed program) and the list of the scene's objects; selecting an object in the list
- * highlights it in the view.
+ * the seed program) and the list of the scene's objects (left; selecting one highlights
+ * it in the view); the ray-tree panel (right: trace a pixel, colours and filters, the
+ * bounce animation) and the ray inspector (bottom). Clicking a ray in the view (a press
+ * and release without dragging) selects it and shows it in the inspector.
  */
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -39,15 +45,32 @@ class MainWindow : public QMainWindow {
   QVTKOpenGLNativeWidget* viewWidget() const { return m_vtkWidget; }
   /// The list of the scene's objects, in Scene::objects order.
   QListWidget* objectList() const { return m_objectList; }
+  /// The ray-tree panel (trace, style, animation).
+  RayTreePanel* rayTreePanel() const { return m_rayPanel; }
+  /// The ray inspector.
+  InspectorPanel* inspectorPanel() const { return m_inspector; }
+
+  /// What a click at `position` (view widget pixels) does: selects the drawn ray nearest
+  /// to it (or clears the selection when there is none). Returns the ray id or -1.
+  int clickRay(const QPoint& position);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   void showSelection(int row);
   void resetView();
   void render();
+  QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
+                       Qt::DockWidgetArea area);
 
   std::unique_ptr<SceneView> m_view;
   QVTKOpenGLNativeWidget* m_vtkWidget = nullptr;
   QListWidget* m_objectList = nullptr;
+  RayTreePanel* m_rayPanel = nullptr;
+  InspectorPanel* m_inspector = nullptr;
+  QPoint m_pressPosition;  ///< Where the left button went down in the view.
+  bool m_pressed = false;
 };
 
 }  // namespace raylab::app

@@ -2,6 +2,7 @@
 
 #include "ExitCodes.h"
 #include "MainWindow.h"
+#include "RayTreePanel.h"
 #include "SceneSource.h"
 
 #include "raylab/core/Exception.h"
@@ -11,7 +12,9 @@
 #include <QSurfaceFormat>
 #include <QTimer>
 
+#include <algorithm>
 #include <iostream>
+#include <string>
 
 namespace raylab::app {
 
@@ -29,6 +32,22 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     throw Exception("--select: the scene '" + scene.name + "' has no object named '" +
                     options.select + "'");
   }
+  const CameraSpec& film = scene.camera;
+  if (options.trace && (options.trace->first < 0 || options.trace->first >= film.width ||
+                        options.trace->second < 0 || options.trace->second >= film.height)) {
+    throw Exception("--trace: pixel (" + std::to_string(options.trace->first) + ", " +
+                    std::to_string(options.trace->second) + ") is outside the " +
+                    std::to_string(film.width) + "x" + std::to_string(film.height) +
+                    " film of the scene '" + scene.name + "'");
+  }
+  const int samples = std::max(1, scene.render.samplesPerPixel);
+  if (options.sample < 0 || options.sample >= samples) {
+    throw Exception("--sample: " + std::to_string(options.sample) +
+                    " is not a sample of the "
+                    "scene '" +
+                    scene.name + "' (it renders " + std::to_string(samples) + " per pixel: 0.." +
+                    std::to_string(samples - 1) + ")");
+  }
 
   // Step 2: Qt, with the OpenGL surface format VTK's widget needs (set before the app).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
@@ -37,6 +56,24 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   MainWindow window(scene);
   window.selectObject(selected);
   window.show();
+
+  // The ray-tree panel: algorithm, and a pixel traced, animated and inspected.
+  RayTreePanel& panel = *window.rayTreePanel();
+  if (options.algorithm) panel.setAlgorithm(*options.algorithm);
+  if (options.trace) {
+    panel.setPixel(options.trace->first, options.trace->second);
+    panel.setSample(options.sample);
+    panel.trace();
+    if (options.frame) panel.setFrame(*options.frame);
+    if (options.ray) {
+      const int count = int(panel.tree().segments.size());
+      if (*options.ray < 0 || *options.ray >= count)
+        throw Exception("--ray: the tree of pixel (" + std::to_string(options.trace->first) + ", " +
+                        std::to_string(options.trace->second) + ") has " + std::to_string(count) +
+                        " rays: #0..#" + std::to_string(count - 1));
+      panel.selectSegment(*options.ray);
+    }
+  }
 
   // Step 3: for tests, leave by ourselves once the window has been shown and painted.
   int exitCode = kExitOk;

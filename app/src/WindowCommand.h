@@ -1,15 +1,24 @@
 #pragma once
 
+#include "raylab/core/RenderSettings.h"
+
+#include <optional>
 #include <string>
+#include <utility>
 
 namespace raylab::app {
 
 /// Options of the window (`raylab` with no subcommand).
 struct WindowOptions {
-  std::string scene;       ///< Scene file; empty for the built-in default scene.
-  int quitAfterMs = -1;    ///< Close by itself this long after showing; -1 stays open.
-  std::string screenshot;  ///< When set: grab the window into this PNG, then quit.
-  std::string select;      ///< Object to select at start (by name); empty selects none.
+  std::string scene;                   ///< Scene file; empty for the built-in default scene.
+  int quitAfterMs = -1;                ///< Close by itself this long after showing; -1 stays open.
+  std::string screenshot;              ///< When set: grab the window into this PNG, then quit.
+  std::string select;                  ///< Object to select at start (by name); empty selects none.
+  std::optional<Algorithm> algorithm;  ///< Ray-tree panel's algorithm (else the scene's).
+  std::optional<std::pair<int, int>> trace;  ///< Trace this pixel (x, y) when the window opens.
+  int sample = 0;                            ///< With trace: the pixel sample.
+  std::optional<int> frame;                  ///< With trace: show this animation frame.
+  std::optional<int> ray;                    ///< With trace: inspect this ray.
 };
 
 /**
@@ -18,7 +27,9 @@ struct WindowOptions {
  * For tests, `quitAfterMs` and/or `screenshot` make the window leave by itself after it
  * has been shown and painted (a screenshot alone waits 1500 ms). The scene is loaded
  * before any window appears, so a bad file (or an unknown `select` name) fails like in
- * the headless commands, with a raylab::Exception.
+ * the headless commands, with a raylab::Exception; so does a `trace` pixel outside the
+ * scene camera's film, a `sample` outside its samples per pixel, or a `ray` the traced
+ * tree does not have.
  * \return kExitOk, or kExitRuntimeError when the screenshot cannot be written.
  */
 int runWindow(int argc, char** argv, const WindowOptions& options);

@@ -91,8 +91,8 @@ TEST(RayInspector, 01_CameraRayHitsTheBallAtFour) {
   EXPECT_EQ(r.pdf, 0.0);
   EXPECT_TRUE(contains(text, "Ray #0: camera ray, depth 0")) << text;
   EXPECT_TRUE(contains(text, "pdf         none (deterministic)")) << text;
-  EXPECT_TRUE(contains(text, "object      'ball'")) << text;
-  EXPECT_TRUE(contains(text, "'red' diffuse")) << text;
+  EXPECT_TRUE(contains(text, "object      'ball', material 'red' (diffuse)")) << text;
+  EXPECT_TRUE(contains(text, "parameters  albedo (0.7, 0.1, 0.1)")) << text;
   EXPECT_TRUE(contains(text, "spawned 1 ray (#1)")) << text;
 }
 
@@ -160,6 +160,9 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   EXPECT_TRUE(contains(blockedText, "blocked by 'blocker' before reaching its light"))
       << blockedText;
   EXPECT_TRUE(contains(blockedText, "blocked at")) << blockedText;
+  // It aimed at the lamp: the far end is kept beside the blocker's hit point.
+  EXPECT_NEAR(glm::length(blocked.lightPoint - Point3(0, 5, 0)), 0.0, 1e-6);
+  EXPECT_TRUE(contains(blockedText, "light point (0, 5, 0)")) << blockedText;
 }
 
 TEST(RayInspector, 04_EscapedRayHitsNothing) {

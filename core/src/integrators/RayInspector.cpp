@@ -204,6 +204,7 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
   r.time = s.time;
   r.hit = s.hit;
   r.endPoint = s.endPoint;
+  r.lightPoint = s.kind == RayKind::Shadow ? s.lightPoint : s.endPoint;
   r.distance = glm::length(s.endPoint - s.origin);
   r.normal = s.hit ? s.normal : Normal3(0.0);
   r.object = s.object;
@@ -267,23 +268,31 @@ std::string OracleCheck::toString() const {
   return out.str();
 }
 
-std::string RayInspection::toString() const {
+std::string RayInspection::rayText() const {
   std::ostringstream out;
 
   // Which ray: kind, depth and family.
   out << "Ray #" << id << ": " << raylab::toString(kind) << " ray, depth " << depth;
   if (parent >= 0) out << ", child of #" << parent;
+  if (time != 0.0) out << ", time " << number(time, 3);
   out << "\n";
   line(out, "origin", vec(origin));
-  line(out, "direction", vec(direction) + (time != 0.0 ? ", time " + number(time, 3) : ""));
+  line(out, "direction", vec(direction));
 
   // Where it ended.
   if (hit) {
     line(out, kind == RayKind::Shadow ? "blocked at" : "hit point", vec(endPoint));
     line(out, "distance", number(distance));
     line(out, "normal", vec(normal));
-    line(out, "object", "'" + objectName + "'");
-    if (material) line(out, "material", material->toString());
+    if (material) {
+      line(out, "object",
+           "'" + objectName + "', material '" + material->name + "' (" +
+               raylab::toString(material->type) + (material->emitter ? ", a light)" : ")"));
+      line(out, "parameters", material->parameters);
+    } else {
+      line(out, "object", "'" + objectName + "'");
+    }
+    if (kind == RayKind::Shadow) line(out, "light point", vec(lightPoint));
   } else if (kind == RayKind::Shadow && endReason == EndReason::ReachedLight) {
     line(out, "light point", vec(endPoint));
     line(out, "distance", number(distance));
@@ -299,8 +308,12 @@ std::string RayInspection::toString() const {
   line(out, "radiance", vec(radiance));
   line(out, "energy", number(energy, 4));
   line(out, "ended", ended);
+  return out.str();
+}
 
+std::string RayInspection::oracleText() const {
   // The exact oracle next to double precision.
+  std::ostringstream out;
   if (oracle) {
     out << "Exact oracle (CGAL) vs double on '" << objectName << "':\n";
     out << oracle->toString();

@@ -58,6 +58,7 @@ struct RayInspection {
   double time = 0.0;       ///< Shutter time in [0, 1].
   bool hit = false;        ///< Ended on a surface (a shadow ray: on its blocker).
   Point3 endPoint{0.0};    ///< Hit point, the light point of a shadow ray, or the drawn end.
+  Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (else endPoint).
   double distance = 0.0;   ///< |endPoint - origin|, world units.
   Normal3 normal{0.0};     ///< Unit geometric normal at the hit (zero when no hit).
   int object = -1;         ///< Object hit (Scene::objects index), -1 when none.
@@ -75,8 +76,12 @@ struct RayInspection {
   std::optional<OracleCheck> oracle;         ///< The exact check, when it hit an object.
 
   /// Multi-line text for the window's panel and the command line: one "label  value"
-  /// line per field, then the oracle block.
-  std::string toString() const;
+  /// line per field (rayText), then the oracle block (oracleText).
+  std::string toString() const { return rayText() + oracleText(); }
+  /// The ray's own lines: kind, geometry, material, energy bookkeeping, why it ended.
+  std::string rayText() const;
+  /// The exact-oracle block, headed "Exact oracle ..." (says so when there is no hit).
+  std::string oracleText() const;
 };
 
 /**

@@ -1,0 +1,102 @@
+#include "InspectorPanel.h"
+
+#include "raylab/core/RayInspector.h"
+
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace raylab::app {
+
+namespace {
+
+/// A read-only monospace text box (the inspector's columns line up).
+QPlainTextEdit* textBox() {
+  auto* box = new QPlainTextEdit;
+  box->setReadOnly(true);
+  box->setLineWrapMode(QPlainTextEdit::NoWrap);
+  QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+  font.setPointSizeF(std::max(10.0, font.pointSizeF()));
+  box->setFont(font);
+  return box;
+}
+
+}  // namespace
+
+InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget* parent)
+    : QWidget(parent), m_scene(scene), m_tree(tree) {
+  // Step 1: which ray, and the way to its parent and children.
+  m_number = new QSpinBox;
+  m_number->setRange(-1, -1);
+  m_number->setSpecialValueText(tr("none"));
+  m_number->setToolTip(tr("Ray number in processing order (0 = the camera ray)"));
+  m_parent = new QPushButton(tr("Parent"));
+  m_parent->setToolTip(tr("Inspect the ray that spawned this one"));
+  m_child = new QPushButton(tr("First child"));
+  m_child->setToolTip(tr("Inspect the first ray this one spawned"));
+  auto* header = new QHBoxLayout;
+  header->addWidget(new QLabel(tr("Ray #")));
+  header->addWidget(m_number);
+  header->addWidget(m_parent);
+  header->addWidget(m_child);
+  header->addStretch(1);
+  header->addWidget(new QLabel(tr("Click a ray in the 3D view to inspect it.")));
+  connect(m_number, qOverload<int>(&QSpinBox::valueChanged), this,
+          [this](int id) { emit segmentRequested(id); });
+  connect(m_parent, &QPushButton::clicked, this, [this] {
+    if (m_segment >= 0) emit segmentRequested(m_tree.segments[std::size_t(m_segment)].parent);
+  });
+  connect(m_child, &QPushButton::clicked, this, [this] {
+    if (m_segment >= 0) emit segmentRequested(m_tree.segments[std::size_t(m_segment)].firstChild);
+  });
+
+  // Step 2: the two columns, the ray and the oracle.
+  m_rayText = textBox();
+  m_oracleText = textBox();
+  auto* columns = new QHBoxLayout;
+  columns->addWidget(m_rayText, 3);
+  columns->addWidget(m_oracleText, 2);
+  auto* layout = new QVBoxLayout(this);
+  layout->addLayout(header);
+  layout->addLayout(columns, 1);
+  showSegment(-1);
+}
+
+void InspectorPanel::showSegment(int id) {
+  const int count = int(m_tree.segments.size());
+  if (id < -1 || id >= count) id = -1;
+  m_segment = id;
+  {
+    const QSignalBlocker block(m_number);
+    m_number->setRange(-1, count - 1);
+    m_number->setValue(id);
+  }
+  m_number->setEnabled(count > 0);
+  m_parent->setEnabled(id >= 0 && m_tree.segments[std::size_t(id)].parent >= 0);
+  m_child->setEnabled(id >= 0 && m_tree.segments[std::size_t(id)].firstChild >= 0);
+  if (id < 0) {
+    m_rayText->setPlainText(count == 0 ? tr("No ray tree yet: choose a pixel in the Ray tree "
+                                            "panel and press Trace.")
+                                       : tr("Click a ray in the 3D view, or choose its number "
+                                            "above, to see its origin, direction, hit,\n"
+                                            "material, weight, pdf and energy."));
+    m_oracleText->setPlainText(
+        tr("The exact oracle (CGAL, exact arithmetic) checks the chosen ray's hit\n"
+           "against the double-precision intersection."));
+    return;
+  }
+  const RayInspection inspection = RayInspector::inspect(m_scene, m_tree, id);
+  m_rayText->setPlainText(QString::fromStdString(inspection.rayText()));
+  m_oracleText->setPlainText(QString::fromStdString(inspection.oracleText()));
+}
+
+QString InspectorPanel::text() const {
+  return m_rayText->toPlainText() + QStringLiteral("\n") + m_oracleText->toPlainText();
+}
+
+}  // namespace raylab::app

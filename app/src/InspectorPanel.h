@@ -1,0 +1,58 @@
+#pragma once
+
+#include "raylab/core/RayTree.h"
+#include "raylab/core/Scene.h"
+
+#include <QWidget>
+
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+class QSpinBox;
+
+namespace raylab::app {
+
+/**
+ * \brief The ray inspector: everything about one ray of the traced tree (raylab::
+ * RayInspector), the ray's own values on the left and the exact oracle's check of its
+ * hit beside the double-precision one on the right.
+ *
+ * A ray is chosen by clicking it in the 3D view, by its number, or by walking to its
+ * parent / first child; the panel asks for it with segmentRequested and shows it when
+ * showSegment is called back.
+ */
+class InspectorPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  /// A panel for trees of `scene` held in `tree` (both must outlive the panel; the tree
+  /// object is reused by every trace).
+  InspectorPanel(const Scene& scene, const RayTree& tree, QWidget* parent = nullptr);
+
+  /// Shows ray `id` of the tree (-1: none, with a hint).
+  void showSegment(int id);
+  /// The ray shown, -1 when none.
+  int segment() const { return m_segment; }
+  /// The whole text shown (ray values, then the oracle block).
+  QString text() const;
+
+  QSpinBox* segmentBox() const { return m_number; }
+  QPushButton* parentButton() const { return m_parent; }
+  QPushButton* childButton() const { return m_child; }
+
+ signals:
+  /// The user asked for ray `id` (number box, parent / child buttons).
+  void segmentRequested(int id);
+
+ private:
+  const Scene& m_scene;
+  const RayTree& m_tree;
+  int m_segment = -1;
+  QSpinBox* m_number = nullptr;
+  QPushButton* m_parent = nullptr;
+  QPushButton* m_child = nullptr;
+  QPlainTextEdit* m_rayText = nullptr;
+  QPlainTextEdit* m_oracleText = nullptr;
+};
+
+}  // namespace raylab::app

@@ -1,0 +1,550 @@
+#include "RayTreePanel.h"
+
+#include "raylab/core/Scene.h"
+#include "raylab/core/Tracer.h"
+#include "raylab/vis/SceneView.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPainter>
+#include <QPixmap>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStyle>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <climits>
+#include <cstdio>
+
+namespace raylab::app {
+
+namespace {
+
+/// Frames a ray front takes to travel its segment (AnimationSettings::framesPerStep).
+constexpr int kFramesPerStep = 12;
+/// Processing order: at most this many steps per animation when rays per step is chosen
+/// automatically (a bushy distributed tree still plays in about half a minute).
+constexpr int kAutoMaxSteps = 120;
+
+/// The algorithms in historical order, as the combo box lists them.
+constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
+                                     Algorithm::Distributed, Algorithm::PathTracing};
+
+const char* algorithmLabel(Algorithm a) {
+  switch (a) {
+    case Algorithm::RayCasting:
+      return "Ray casting (Appel 1968)";
+    case Algorithm::Whitted:
+      return "Whitted (1979)";
+    case Algorithm::Distributed:
+      return "Distributed (Cook 1984)";
+    case Algorithm::PathTracing:
+      return "Path tracing (Kajiya 1986)";
+  }
+  return "?";
+}
+
+/// A small swatch of a linear RGB colour with a dark border, for the kind checkboxes.
+QIcon swatch(const Vec3& colour) {
+  QPixmap pixmap(14, 14);
+  pixmap.fill(QColor::fromRgbF(colour.x, colour.y, colour.z));
+  QPainter painter(&pixmap);
+  painter.setPen(QColor(60, 60, 60));
+  painter.drawRect(0, 0, 13, 13);
+  return QIcon(pixmap);
+}
+
+QString vecText(const Vec3& v) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "(%.3g, %.3g, %.3g)", v.x, v.y, v.z);
+  return QString::fromLatin1(buffer);
+}
+
+/// Frames advanced per timer tick at speed-slider value v (1..10).
+int framesPerTick(int v) { return std::max(1, v); }
+
+}  // namespace
+
+RayTreePanel::RayTreePanel(SceneView& view, QWidget* parent) : QWidget(parent), m_view(view) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setSpacing(10);
+  layout->addWidget(buildTraceGroup());
+  layout->addWidget(buildStyleGroup());
+  layout->addWidget(buildAnimationGroup());
+  layout->addStretch(1);
+
+  m_timer = new QTimer(this);
+  m_timer->setInterval(kTickMs);
+  connect(m_timer, &QTimer::timeout, this, [this] { tick(); });
+  updateFrameControls();
+  setStatus(tr("Choose a pixel and press Trace to record its ray tree."));
+}
+
+RayTreePanel::~RayTreePanel() = default;
+
+QWidget* RayTreePanel::buildTraceGroup() {
+  const Scene& scene = m_view.scene();
+  auto* group = new QGroupBox(tr("Trace a pixel"));
+  auto* form = new QFormLayout(group);
+
+  // Step 1: which algorithm, pixel and sample.
+  m_algorithm = new QComboBox;
+  for (Algorithm a : kAlgorithms)
+    m_algorithm->addItem(tr(algorithmLabel(a)), QString::fromLatin1(toString(a)));
+  m_algorithm->setToolTip(
+      tr("Ray casting: camera ray, local shading, shadow rays.\n"
+         "Whitted: + perfect reflection and refraction, recursively.\n"
+         "Distributed: many rays per bounce (soft shadows, gloss).\n"
+         "Path tracing: one sampled continuation per bounce, Russian roulette."));
+  setAlgorithm(scene.render.algorithm);
+  form->addRow(tr("Algorithm"), m_algorithm);
+
+  const int width = std::max(1, scene.camera.width), height = std::max(1, scene.camera.height);
+  m_pixelX = new QSpinBox;
+  m_pixelX->setRange(0, width - 1);
+  m_pixelX->setValue(width / 2);
+  m_pixelX->setToolTip(
+      tr("Pixel column, 0 at the left (the film is %1 x %2)").arg(width).arg(height));
+  m_pixelY = new QSpinBox;
+  m_pixelY->setRange(0, height - 1);
+  m_pixelY->setValue(height / 2);
+  m_pixelY->setToolTip(tr("Pixel row, 0 at the top"));
+  auto* pixel = new QHBoxLayout;
+  pixel->addWidget(new QLabel(tr("x")));
+  pixel->addWidget(m_pixelX, 1);
+  pixel->addSpacing(8);
+  pixel->addWidget(new QLabel(tr("y")));
+  pixel->addWidget(m_pixelY, 1);
+  form->addRow(tr("Pixel"), pixel);
+
+  m_sample = new QSpinBox;
+  m_sample->setRange(0, std::max(1, scene.render.samplesPerPixel) - 1);
+  m_sample->setToolTip(tr("Which of the pixel's %1 samples (each has its own random numbers)")
+                           .arg(std::max(1, scene.render.samplesPerPixel)));
+  form->addRow(tr("Sample"), m_sample);
+
+  // Step 2: the button and what the last trace found.
+  m_traceButton = new QPushButton(tr("Trace"));
+  m_traceButton->setDefault(true);
+  m_traceButton->setToolTip(tr("Record this pixel sample's ray tree and show it in the view"));
+  connect(m_traceButton, &QPushButton::clicked, this, [this] { trace(); });
+  form->addRow(m_traceButton);
+  m_traceInfo = new QLabel;
+  m_traceInfo->setWordWrap(true);
+  form->addRow(m_traceInfo);
+  return group;
+}
+
+QWidget* RayTreePanel::buildStyleGroup() {
+  auto* group = new QGroupBox(tr("Colours and filters"));
+  auto* form = new QFormLayout(group);
+
+  // Colouring.
+  m_colouring = new QComboBox;
+  m_colouring->addItem(tr("Energy (grey, green, blue)"), int(RayColouring::Energy));
+  m_colouring->addItem(tr("Ray kind"), int(RayColouring::Kind));
+  m_colouring->addItem(tr("Depth"), int(RayColouring::Depth));
+  m_colouring->setToolTip(
+      tr("Energy: the share of the pixel's light that came back along the ray\n"
+         "(light grey = none, green = some, blue = most)."));
+  form->addRow(tr("Colour by"), m_colouring);
+  connect(m_colouring, qOverload<int>(&QComboBox::currentIndexChanged), this,
+          [this] { restyle(); });
+
+  // Which kinds are drawn, each with its colour in the kind colouring.
+  auto* kinds = new QGridLayout;
+  kinds->setHorizontalSpacing(12);
+  for (int k = 0; k < kRayKindCount; ++k) {
+    const RayKind kind = RayKind(k);
+    QString name = QString::fromLatin1(toString(kind));
+    name[0] = name[0].toUpper();
+    auto* box = new QCheckBox(name);
+    box->setChecked(true);
+    box->setIcon(swatch(kindColour(kind)));
+    box->setToolTip(tr("Draw %1 rays").arg(QString::fromLatin1(toString(kind))));
+    connect(box, &QCheckBox::toggled, this, [this] { restyle(); });
+    m_kinds[std::size_t(k)] = box;
+    kinds->addWidget(box, k / 2, k % 2);
+  }
+  form->addRow(tr("Kinds"), kinds);
+
+  m_maxDepth = new QSpinBox;
+  m_maxDepth->setRange(-1, 64);
+  m_maxDepth->setValue(-1);
+  m_maxDepth->setSpecialValueText(tr("all"));
+  m_maxDepth->setToolTip(tr("Hide rays deeper than this (camera rays have depth 0)"));
+  connect(m_maxDepth, qOverload<int>(&QSpinBox::valueChanged), this, [this] { restyle(); });
+  form->addRow(tr("Max depth"), m_maxDepth);
+
+  m_minEnergy = new QDoubleSpinBox;
+  m_minEnergy->setRange(0.0, 100.0);
+  m_minEnergy->setDecimals(4);
+  m_minEnergy->setSingleStep(0.001);
+  m_minEnergy->setToolTip(tr("Hide rays that carry less energy than this"));
+  connect(m_minEnergy, qOverload<double>(&QDoubleSpinBox::valueChanged), this,
+          [this] { restyle(); });
+  form->addRow(tr("Min energy"), m_minEnergy);
+
+  m_reachesLight = new QCheckBox(tr("Only paths that reached a light"));
+  m_reachesLight->setToolTip(tr("Hide rays whose subtree found no light"));
+  connect(m_reachesLight, &QCheckBox::toggled, this, [this] { restyle(); });
+  form->addRow(m_reachesLight);
+
+  // What is drawn besides the rays.
+  m_hitPoints = new QCheckBox(tr("Hit points"));
+  m_hitPoints->setChecked(RayTreeStyle{}.showHitPoints);
+  m_normals = new QCheckBox(tr("Normals"));
+  m_normals->setChecked(RayTreeStyle{}.showNormals);
+  m_arrows = new QCheckBox(tr("Arrows"));
+  m_arrows->setChecked(RayTreeStyle{}.showArrows);
+  m_legend = new QCheckBox(tr("Legend"));
+  m_legend->setChecked(RayTreeStyle{}.showLegend);
+  auto* toggles = new QGridLayout;
+  toggles->setHorizontalSpacing(12);
+  toggles->addWidget(m_hitPoints, 0, 0);
+  toggles->addWidget(m_normals, 0, 1);
+  toggles->addWidget(m_arrows, 1, 0);
+  toggles->addWidget(m_legend, 1, 1);
+  for (QCheckBox* box : {m_hitPoints, m_normals, m_arrows, m_legend})
+    connect(box, &QCheckBox::toggled, this, [this] { restyle(); });
+  form->addRow(tr("Show"), toggles);
+  return group;
+}
+
+QWidget* RayTreePanel::buildAnimationGroup() {
+  auto* group = new QGroupBox(tr("Bounce animation"));
+  auto* form = new QFormLayout(group);
+
+  // Order and pace.
+  m_order = new QComboBox;
+  m_order->addItem(tr("Depth by depth"), int(RevealOrder::Depth));
+  m_order->addItem(tr("Processing order"), int(RevealOrder::Processing));
+  m_order->setToolTip(
+      tr("Depth by depth: every ray of one depth travels at once.\n"
+         "Processing order: ray after ray, as the engine's queue takes them."));
+  form->addRow(tr("Order"), m_order);
+  m_raysPerStep = new QSpinBox;
+  m_raysPerStep->setRange(1, 100000);
+  m_raysPerStep->setToolTip(tr("Processing order: rays that start together in one step"));
+  form->addRow(tr("Rays per step"), m_raysPerStep);
+  const auto reorder = [this] {
+    const bool wasDone = !m_tree.segments.empty() && m_frame >= frameCount() - 1;
+    m_raysPerStep->setEnabled(animation().order == RevealOrder::Processing);
+    if (wasDone) m_frame = INT_MAX;
+    showFrame();
+  };
+  connect(m_order, qOverload<int>(&QComboBox::currentIndexChanged), this, reorder);
+  connect(m_raysPerStep, qOverload<int>(&QSpinBox::valueChanged), this, reorder);
+  m_raysPerStep->setEnabled(false);
+
+  m_speed = new QSlider(Qt::Horizontal);
+  m_speed->setRange(1, 10);
+  m_speed->setValue(2);
+  m_speed->setToolTip(
+      tr("Frames the animation moves on per tick (%1 ticks a second)").arg(1000 / kTickMs));
+  m_speedLabel = new QLabel;
+  m_speedLabel->setMinimumWidth(QFontMetrics(font()).horizontalAdvance(QStringLiteral("10x  ")));
+  const auto speedText = [this] {
+    m_speedLabel->setText(QStringLiteral("%1x").arg(framesPerTick(m_speed->value())));
+  };
+  speedText();
+  connect(m_speed, &QSlider::valueChanged, this, speedText);
+  auto* speed = new QHBoxLayout;
+  speed->addWidget(m_speed, 1);
+  speed->addWidget(m_speedLabel);
+  form->addRow(tr("Speed"), speed);
+
+  // The transport buttons.
+  m_play = new QPushButton(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play"));
+  m_pause = new QPushButton(style()->standardIcon(QStyle::SP_MediaPause), tr("Pause"));
+  m_stepBack = new QPushButton(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Back"));
+  m_stepForward = new QPushButton(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step"));
+  m_play->setToolTip(tr("Play the bounces from where the animation stands"));
+  m_pause->setToolTip(tr("Stop at the current frame"));
+  m_stepBack->setToolTip(tr("Back to the end of the previous step"));
+  m_stepForward->setToolTip(tr("On to the end of the next step"));
+  connect(m_play, &QPushButton::clicked, this, [this] { play(); });
+  connect(m_pause, &QPushButton::clicked, this, [this] { pause(); });
+  connect(m_stepBack, &QPushButton::clicked, this, [this] { stepBack(); });
+  connect(m_stepForward, &QPushButton::clicked, this, [this] { stepForward(); });
+  auto* buttons = new QHBoxLayout;
+  buttons->setSpacing(4);
+  for (QPushButton* button : {m_stepBack, m_play, m_pause, m_stepForward})
+    buttons->addWidget(button);
+  form->addRow(buttons);
+
+  // Where the animation stands.
+  m_frameSlider = new QSlider(Qt::Horizontal);
+  m_frameSlider->setToolTip(tr("Drag to any frame of the animation"));
+  connect(m_frameSlider, &QSlider::valueChanged, this, [this](int value) {
+    if (value != m_frame) {
+      pause();
+      setFrame(value);
+    }
+  });
+  m_frameLabel = new QLabel;
+  m_frameLabel->setMinimumWidth(
+      QFontMetrics(font()).horizontalAdvance(QStringLiteral("0000 of 0000")));
+  m_frameLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  auto* frame = new QHBoxLayout;
+  frame->addWidget(m_frameSlider, 1);
+  frame->addWidget(m_frameLabel);
+  form->addRow(tr("Frame"), frame);
+
+  m_statusLabel = new QLabel;
+  m_statusLabel->setWordWrap(true);
+  m_statusLabel->setFrameShape(QFrame::StyledPanel);
+  m_statusLabel->setMargin(6);
+  m_statusLabel->setMinimumHeight(3 * QFontMetrics(font()).lineSpacing() + 12);
+  m_statusLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  form->addRow(m_statusLabel);
+  return group;
+}
+
+void RayTreePanel::setAlgorithm(Algorithm algorithm) {
+  const int index = m_algorithm->findData(QString::fromLatin1(toString(algorithm)));
+  if (index >= 0) m_algorithm->setCurrentIndex(index);
+}
+
+Algorithm RayTreePanel::algorithm() const {
+  return parseAlgorithm(m_algorithm->currentData().toString().toStdString())
+      .value_or(Algorithm::PathTracing);
+}
+
+void RayTreePanel::setPixel(int x, int y) {
+  m_pixelX->setValue(x);
+  m_pixelY->setValue(y);
+}
+
+void RayTreePanel::setSample(int sample) { m_sample->setValue(sample); }
+
+void RayTreePanel::trace() {
+  pause();
+  const Scene& scene = m_view.scene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = algorithm();
+  const int x = m_pixelX->value(), y = m_pixelY->value(), sample = m_sample->value();
+
+  // Run the real algorithm ray by ray, keeping what each step did for the status line.
+  const Tracer tracer(scene, settings);
+  Stepper stepper(tracer, x, y, sample);
+  m_stepTexts.clear();
+  while (stepper.step()) {
+    const StepEvent& event = stepper.lastEvent();
+    if (event.ray < 0) continue;
+    if (std::size_t(event.ray) >= m_stepTexts.size())
+      m_stepTexts.resize(std::size_t(event.ray) + 1);
+    m_stepTexts[std::size_t(event.ray)] = event.text;
+  }
+  m_tree = stepper.tree();
+  m_stepTexts.resize(m_tree.segments.size());
+
+  // Summarise: rays by kind and the sample's estimate.
+  const RayCounts& counts = stepper.counts();
+  QStringList byKind;
+  for (int k = 0; k < kRayKindCount; ++k)
+    if (counts.byKind[std::size_t(k)] > 0)
+      byKind
+          << QStringLiteral("%1 %2").arg(counts.byKind[std::size_t(k)]).arg(toString(RayKind(k)));
+  QString info = tr("%1: pixel (%2, %3), sample %4\n%5 rays (%6)\nestimate %7")
+                     .arg(QString::fromLatin1(toString(settings.algorithm)))
+                     .arg(x)
+                     .arg(y)
+                     .arg(sample)
+                     .arg(m_tree.segments.size())
+                     .arg(byKind.join(QStringLiteral(", ")))
+                     .arg(vecText(stepper.estimate()));
+  if (m_tree.truncated) info += QStringLiteral("\n") + QString::fromStdString(m_tree.message);
+  m_traceInfo->setText(info);
+
+  // Pace the processing-order animation to the tree's size.
+  {
+    const QSignalBlocker block(m_raysPerStep);
+    const int n = int(m_tree.segments.size());
+    m_raysPerStep->setValue(std::max(1, (n + kAutoMaxSteps - 1) / kAutoMaxSteps));
+  }
+
+  // Show it whole, nothing selected.
+  m_selected = -1;
+  m_view.setRayTree(m_tree, treeStyle());
+  m_view.setSelectedSegment(-1);
+  m_frame = frameCount() - 1;
+  updateFrameControls();
+  emit treeChanged();
+  emit segmentSelected(-1);
+  showFrame();
+}
+
+RayTreeStyle RayTreePanel::treeStyle() const {
+  RayTreeStyle s;
+  s.colouring = RayColouring(m_colouring->currentData().toInt());
+  for (int k = 0; k < kRayKindCount; ++k)
+    s.filter.kinds[std::size_t(k)] = m_kinds[std::size_t(k)]->isChecked();
+  s.filter.maxDepth = m_maxDepth->value() < 0 ? INT_MAX : m_maxDepth->value();
+  s.filter.onlyReachingLight = m_reachesLight->isChecked();
+  s.filter.minEnergy = m_minEnergy->value();
+  s.showHitPoints = m_hitPoints->isChecked();
+  s.showNormals = m_normals->isChecked();
+  s.showArrows = m_arrows->isChecked();
+  s.showLegend = m_legend->isChecked();
+  return s;
+}
+
+AnimationSettings RayTreePanel::animation() const {
+  AnimationSettings a;
+  a.order = RevealOrder(m_order->currentData().toInt());
+  a.framesPerStep = kFramesPerStep;
+  a.raysPerStep = m_raysPerStep->value();
+  return a;
+}
+
+void RayTreePanel::restyle() {
+  if (m_tree.segments.empty()) return;
+  m_view.setRayTreeStyle(treeStyle());
+  showFrame();
+}
+
+int RayTreePanel::frameCount() const { return raylab::frameCount(m_tree, animation()); }
+
+int RayTreePanel::stepAt(int frame) const {
+  // Frame 0 shows nothing; step s travels during frames s F + 1 .. (s + 1) F.
+  if (frame <= 0) return -1;
+  return (frame - 1) / kFramesPerStep;
+}
+
+void RayTreePanel::setFrame(int frame) {
+  m_frame = frame;
+  showFrame();
+}
+
+void RayTreePanel::showFrame() {
+  m_frame = std::clamp(m_frame, 0, frameCount() - 1);
+  updateFrameControls();
+  if (m_tree.segments.empty()) return;
+
+  // The picture: a function of the frame number only.
+  m_view.setReveal(revealFrame(m_tree, animation(), m_frame));
+
+  // The status line: what the step being played does.
+  const AnimationSettings a = animation();
+  const int last = frameCount() - 1;
+  const int steps = last / kFramesPerStep;
+  const int step = stepAt(m_frame);
+  QString text;
+  if (step < 0) {
+    text = tr("Frame 0: nothing revealed yet. Press Play or Step.");
+  } else if (a.order == RevealOrder::Processing) {
+    const int first = step * a.raysPerStep;
+    const int end = std::min(int(m_tree.segments.size()), first + a.raysPerStep);
+    const QString what = QString::fromStdString(m_stepTexts[std::size_t(first)]);
+    text = end - first == 1 ? tr("Step %1 of %2: %3.").arg(step + 1).arg(steps).arg(what)
+                            : tr("Step %1 of %2: rays #%3..#%4; first: %5.")
+                                  .arg(step + 1)
+                                  .arg(steps)
+                                  .arg(first)
+                                  .arg(end - 1)
+                                  .arg(what);
+  } else {
+    std::array<int, kRayKindCount> byKind{};
+    int count = 0;
+    for (const RaySegment& s : m_tree.segments)
+      if (s.depth == step) {
+        ++byKind[std::size_t(s.kind)];
+        ++count;
+      }
+    QStringList parts;
+    for (int k = 0; k < kRayKindCount; ++k)
+      if (byKind[std::size_t(k)] > 0)
+        parts << QStringLiteral("%1 %2").arg(byKind[std::size_t(k)]).arg(toString(RayKind(k)));
+    text = tr("Depth %1 of %2: %3 %4 (%5).")
+               .arg(step)
+               .arg(steps - 1)
+               .arg(count)
+               .arg(count == 1 ? tr("ray travels") : tr("rays travel"))
+               .arg(parts.join(QStringLiteral(", ")));
+  }
+  if (m_frame == last) text += tr(" The whole tree is shown.");
+  setStatus(text);
+  emit viewChanged();
+}
+
+void RayTreePanel::updateFrameControls() {
+  const bool has = !m_tree.segments.empty();
+  const int last = has ? frameCount() - 1 : 0;
+  {
+    const QSignalBlocker block(m_frameSlider);
+    m_frameSlider->setRange(0, last);
+    m_frameSlider->setPageStep(kFramesPerStep);
+    m_frameSlider->setValue(m_frame);
+  }
+  m_frameLabel->setText(has ? tr("%1 of %2").arg(m_frame).arg(last) : tr("no tree yet"));
+  for (QWidget* w : {static_cast<QWidget*>(m_frameSlider), static_cast<QWidget*>(m_stepBack),
+                     static_cast<QWidget*>(m_stepForward)})
+    w->setEnabled(has);
+  const bool running = playing();
+  m_play->setEnabled(has && !running);
+  m_pause->setEnabled(has && running);
+}
+
+void RayTreePanel::play() {
+  if (m_tree.segments.empty()) return;
+  // From the end, play again from the start.
+  if (m_frame >= frameCount() - 1) setFrame(0);
+  m_timer->start();
+  updateFrameControls();
+}
+
+void RayTreePanel::pause() {
+  if (!m_timer || !m_timer->isActive()) return;
+  m_timer->stop();
+  updateFrameControls();
+}
+
+bool RayTreePanel::playing() const { return m_timer && m_timer->isActive(); }
+
+void RayTreePanel::tick() {
+  m_frame += framesPerTick(m_speed->value());
+  if (m_frame >= frameCount() - 1) {
+    m_frame = frameCount() - 1;
+    m_timer->stop();
+  }
+  showFrame();
+}
+
+void RayTreePanel::stepForward() {
+  pause();
+  setFrame((m_frame / kFramesPerStep + 1) * kFramesPerStep);
+}
+
+void RayTreePanel::stepBack() {
+  pause();
+  setFrame(m_frame <= 0 ? 0 : (m_frame - 1) / kFramesPerStep * kFramesPerStep);
+}
+
+void RayTreePanel::selectSegment(int id) {
+  if (id < -1 || id >= int(m_tree.segments.size())) id = -1;
+  m_selected = id;
+  m_view.setSelectedSegment(id);
+  emit segmentSelected(id);
+  emit viewChanged();
+}
+
+QString RayTreePanel::statusText() const { return m_status; }
+
+void RayTreePanel::setStatus(const QString& text) {
+  m_status = text;
+  m_statusLabel->setText(text);
+  emit statusChanged(text);
+}
+
+}  // namespace raylab::app

@@ -1,0 +1,178 @@
+#pragma once
+
+#include "raylab/core/RayTree.h"
+#include "raylab/core/RenderSettings.h"
+#include "raylab/vis/RayTreeStyle.h"
+
+#include <QWidget>
+
+#include <array>
+#include <string>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QSlider;
+class QSpinBox;
+class QTimer;
+
+namespace raylab {
+class SceneView;
+}
+
+namespace raylab::app {
+
+/**
+ * \brief The ray-tree panel: trace one pixel sample with the chosen algorithm, draw its
+ * tree in the 3D view, and play the bounce animation.
+ *
+ * Tracing runs the real algorithm one ray at a time (raylab::Stepper) and keeps what each
+ * step did for the status line. The picture is always a function of the frame number:
+ * `setFrame(n)` shows `revealFrame(tree, animation(), n)`; Play only starts a QTimer whose
+ * ticks add `speed` frames to that number, Step forward / back jump to the next / previous
+ * step boundary (a multiple of framesPerStep), and the frame slider sets it directly.
+ * Colouring, filters and toggles redraw the tree with another RayTreeStyle.
+ */
+class RayTreePanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  /// Interval of the animation timer, ms (25 ticks per second).
+  static constexpr int kTickMs = 40;
+
+  /// A panel drawing into `view` (which must outlive it), for the view's scene.
+  explicit RayTreePanel(SceneView& view, QWidget* parent = nullptr);
+  ~RayTreePanel() override;
+
+  /// Chooses the algorithm, pixel and sample of the next trace (clamped to the film).
+  void setAlgorithm(Algorithm algorithm);
+  void setPixel(int x, int y);
+  void setSample(int sample);
+  Algorithm algorithm() const;
+
+  /// Records the tree of the chosen (pixel, sample) and shows it whole.
+  void trace();
+  /// The tree shown (empty before the first trace).
+  const RayTree& tree() const { return m_tree; }
+  /// What each processed ray did, by ray id (the stepper's narration).
+  const std::vector<std::string>& stepTexts() const { return m_stepTexts; }
+
+  /// How the tree is drawn, read from the controls.
+  RayTreeStyle treeStyle() const;
+  /// How the animation reveals it, read from the controls.
+  AnimationSettings animation() const;
+
+  /// \name The bounce animation (frame 0 shows nothing, frameCount() - 1 the whole tree).
+  /// @{
+  int frame() const { return m_frame; }
+  int frameCount() const;
+  void setFrame(int frame);
+  void play();
+  void pause();
+  bool playing() const;
+  /// To the end of the step being played (or of the next one at a boundary).
+  void stepForward();
+  /// Back to the end of the previous step.
+  void stepBack();
+  /// One timer tick: `speed` frames on; pauses at the last frame.
+  void tick();
+  /// The step being played at `frame` (0-based), -1 at frame 0.
+  int stepAt(int frame) const;
+  /// @}
+
+  /// Selects ray `id` (-1 clears): marked in the view, reported by segmentSelected.
+  void selectSegment(int id);
+  int selectedSegment() const { return m_selected; }
+
+  /// The status line: what the last step did.
+  QString statusText() const;
+
+  /// \name Controls, for tests and for the window's option handling.
+  /// @{
+  QComboBox* algorithmBox() const { return m_algorithm; }
+  QSpinBox* pixelXBox() const { return m_pixelX; }
+  QSpinBox* pixelYBox() const { return m_pixelY; }
+  QSpinBox* sampleBox() const { return m_sample; }
+  QPushButton* traceButton() const { return m_traceButton; }
+  QComboBox* colouringBox() const { return m_colouring; }
+  QCheckBox* kindBox(RayKind kind) const { return m_kinds[std::size_t(kind)]; }
+  QSpinBox* maxDepthBox() const { return m_maxDepth; }
+  QCheckBox* reachesLightBox() const { return m_reachesLight; }
+  QDoubleSpinBox* minEnergyBox() const { return m_minEnergy; }
+  QCheckBox* hitPointsBox() const { return m_hitPoints; }
+  QCheckBox* normalsBox() const { return m_normals; }
+  QCheckBox* arrowsBox() const { return m_arrows; }
+  QCheckBox* legendBox() const { return m_legend; }
+  QPushButton* playButton() const { return m_play; }
+  QPushButton* pauseButton() const { return m_pause; }
+  QPushButton* stepForwardButton() const { return m_stepForward; }
+  QPushButton* stepBackButton() const { return m_stepBack; }
+  QSlider* speedSlider() const { return m_speed; }
+  QComboBox* orderBox() const { return m_order; }
+  QSpinBox* raysPerStepBox() const { return m_raysPerStep; }
+  QSlider* frameSlider() const { return m_frameSlider; }
+  QTimer* timer() const { return m_timer; }
+  /// @}
+
+ signals:
+  /// The view's picture changed: the window should render.
+  void viewChanged();
+  /// A ray was selected (-1: none) in the tree `tree()`.
+  void segmentSelected(int id);
+  /// A new tree was traced.
+  void treeChanged();
+  /// The status line changed.
+  void statusChanged(const QString& text);
+
+ private:
+  QWidget* buildTraceGroup();
+  QWidget* buildStyleGroup();
+  QWidget* buildAnimationGroup();
+  /// Redraws the tree with the controls' style and the current frame.
+  void restyle();
+  /// Shows frame m_frame (reveal, slider, labels, status).
+  void showFrame();
+  void setStatus(const QString& text);
+  void updateFrameControls();
+
+  SceneView& m_view;
+  RayTree m_tree;
+  std::vector<std::string> m_stepTexts;
+  std::string m_traceSummary;
+  int m_frame = 0;
+  int m_selected = -1;
+  QString m_status;
+
+  QComboBox* m_algorithm = nullptr;
+  QSpinBox* m_pixelX = nullptr;
+  QSpinBox* m_pixelY = nullptr;
+  QSpinBox* m_sample = nullptr;
+  QPushButton* m_traceButton = nullptr;
+  QLabel* m_traceInfo = nullptr;
+  QComboBox* m_colouring = nullptr;
+  std::array<QCheckBox*, kRayKindCount> m_kinds{};
+  QSpinBox* m_maxDepth = nullptr;
+  QCheckBox* m_reachesLight = nullptr;
+  QDoubleSpinBox* m_minEnergy = nullptr;
+  QCheckBox* m_hitPoints = nullptr;
+  QCheckBox* m_normals = nullptr;
+  QCheckBox* m_arrows = nullptr;
+  QCheckBox* m_legend = nullptr;
+  QPushButton* m_play = nullptr;
+  QPushButton* m_pause = nullptr;
+  QPushButton* m_stepForward = nullptr;
+  QPushButton* m_stepBack = nullptr;
+  QSlider* m_speed = nullptr;
+  QLabel* m_speedLabel = nullptr;
+  QComboBox* m_order = nullptr;
+  QSpinBox* m_raysPerStep = nullptr;
+  QSlider* m_frameSlider = nullptr;
+  QLabel* m_frameLabel = nullptr;
+  QLabel* m_statusLabel = nullptr;
+  QTimer* m_timer = nullptr;
+};
+
+}  // namespace raylab::app
