@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include "AnimateCommand.h"
 #include "ExitCodes.h"
 #include "RenderCommand.h"
 #include "SnapshotCommand.h"
@@ -79,6 +80,7 @@ int runCommandLine(int argc, char** argv) {
       addSnapshotCommand(cli),
       addRenderCommand(cli),
       addTraceCommand(cli),
+      addAnimateCommand(cli),
   };
 
   try {

@@ -40,6 +40,7 @@ std::optional<RayKind> parseKind(const std::string& name) {
 struct TraceOptions {
   RayTreeOptions tree;
   std::string json;  ///< --json; default: --out with .json.
+  int frame = -1;    ///< --frame: draw this frame of the animation; -1 the whole tree.
 };
 
 /// `path` with its extension replaced by `ext` (".json").
@@ -63,14 +64,9 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
 
   // Step 3: the 3D view with the tree, in memory first.
   const auto [width, height] = o.pictureSize();
-  SceneView view(scene);
-  view.setRayTree(tree, o.style());
-  const double aspect = double(width) / height;
-  if (o.view == "camera")
-    view.setViewCamera(behindCameraView(scene, aspect));
-  else
-    view.resetViewCamera(aspect);
-  const Image picture = view.renderOffscreen(width, height);
+  const std::unique_ptr<SceneView> view = o.makeView(scene, tree);
+  if (options.frame >= 0) view->setReveal(revealFrame(tree, o.animation(), options.frame));
+  const Image picture = view->renderOffscreen(width, height);
 
   // Step 4: the dump, then the picture; either both files are written or neither.
   const std::string json =
@@ -135,6 +131,42 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
       ->check(CLI::IsMember({"default", "camera"}))
       ->capture_default_str()
       ->group("Drawing");
+  command->add_option("--order", order, "Animation: reveal in processing order or depth by depth")
+      ->check(CLI::IsMember({"processing", "depth"}))
+      ->capture_default_str()
+      ->group("Animation");
+  command
+      ->add_option("--frames-per-step", framesPerStep,
+                   "Animation: frames for a ray front to travel its ray")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str()
+      ->group("Animation");
+  command
+      ->add_option("--rays-per-step", raysPerStep,
+                   "Animation, processing order: rays that set off together")
+      ->check(CLI::Range(1, 1 << 24))
+      ->capture_default_str()
+      ->group("Animation");
+}
+
+AnimationSettings RayTreeOptions::animation() const {
+  AnimationSettings settings;
+  settings.order = order == "processing" ? RevealOrder::Processing : RevealOrder::Depth;
+  settings.framesPerStep = framesPerStep;
+  settings.raysPerStep = raysPerStep;
+  return settings;
+}
+
+std::unique_ptr<SceneView> RayTreeOptions::makeView(const Scene& scene, const RayTree& tree) const {
+  auto result = std::make_unique<SceneView>(scene);
+  result->setRayTree(tree, style());
+  const auto [width, height] = pictureSize();
+  const double aspect = double(width) / height;
+  if (view == "camera")
+    result->setViewCamera(behindCameraView(scene, aspect));
+  else
+    result->resetViewCamera(aspect);
+  return result;
 }
 
 Scene RayTreeOptions::loadScene(const std::string& topLevelScene) const {
@@ -243,6 +275,11 @@ Subcommand addTraceCommand(CLI::App& cli) {
   options->tree.add(command, "PNG file of the 3D view to write", "1024x768");
   command->add_option("--json", options->json,
                       "JSON dump of the tree to write (default: --out with .json)");
+  command
+      ->add_option("--frame", options->frame,
+                   "Draw the tree as in this frame of `raylab animate` (default: all of it)")
+      ->check(CLI::Range(0, 1 << 30))
+      ->group("Animation");
   return {command, [options](const std::string& topLevelScene) {
             return runTrace(*options, topLevelScene);
           }};

@@ -5,10 +5,12 @@
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
 #include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/SceneView.h"
 #include "raylab/vis/ViewCamera.h"
 
 #include <CLI/CLI.hpp>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -32,8 +34,11 @@ struct RayTreeOptions {
   bool reachingLight = false;         ///< --reaching-light.
   double minEnergy = 0.0;             ///< --min-energy.
   bool hitPoints = true, normals = false, arrows = false, legend = true;
-  std::string view = "default";                  ///< --view default|camera.
-  std::optional<std::pair<int, int>> imageSize;  ///< --image-size (the traced image).
+  std::string view = "default";                           ///< --view default|camera.
+  std::optional<std::pair<int, int>> imageSize;           ///< --image-size (the traced image).
+  std::string order = "depth";                            ///< --order processing|depth.
+  int framesPerStep = AnimationSettings{}.framesPerStep;  ///< --frames-per-step.
+  int raysPerStep = AnimationSettings{}.raysPerStep;      ///< --rays-per-step.
 
   /// Registers the options on `command`; `defaultSize` is the picture size without --size.
   void add(CLI::App* command, const std::string& outHelp, const std::string& defaultSize);
@@ -45,6 +50,11 @@ struct RayTreeOptions {
   RayTreeStyle style() const;
   /// The picture size (--size, or the command's default).
   std::pair<int, int> pictureSize() const;
+  /// The bounce animation's settings (--order, --frames-per-step, --rays-per-step).
+  AnimationSettings animation() const;
+  /// A view of `scene` with `tree` drawn as the options ask, its camera set for a picture
+  /// of pictureSize().
+  std::unique_ptr<SceneView> makeView(const Scene& scene, const RayTree& tree) const;
 
  private:
   std::string m_imageSizeText;
@@ -66,7 +76,8 @@ std::string treeSummary(const RayTree& tree);
  * algorithm, recording its ray tree, and renders the 3D view with the tree to a PNG plus a
  * JSON dump of the tree (RayTreeJson; --json, default beside the PNG). Prints the files
  * and a one-line summary (rays by kind, estimate). A pixel outside the image is a usage
- * error (exit 2) naming the pixel and the image size.
+ * error (exit 2) naming the pixel and the image size. `--frame N` draws the tree as in
+ * frame N of `raylab animate` with the same options.
  */
 Subcommand addTraceCommand(CLI::App& cli);
 

@@ -1,0 +1,186 @@
+#include "AnimateCommand.h"
+
+#include "ExitCodes.h"
+#include "TraceCommand.h"
+
+#include "raylab/core/Exception.h"
+#include "raylab/vis/ImageIO.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <sys/wait.h>
+
+namespace raylab::app {
+
+namespace {
+
+/// A failure of the animation's output (folder, encoder).
+class AnimateError : public Exception {
+ public:
+  using Exception::Exception;
+};
+
+struct AnimateOptions {
+  RayTreeOptions tree;
+  std::string frames;  ///< --frames A:B (inclusive); empty = all.
+  int every = 1;       ///< --every N.
+  std::string video;   ///< --video F.mp4; empty = none.
+  int fps = 24;        ///< --fps of the video.
+};
+
+/// Parses "A:B" (A <= B, both >= 0); nothing when malformed.
+std::optional<std::pair<int, int>> parseRange(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos || colon == 0 || colon + 1 >= text.size()) return std::nullopt;
+  const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
+  const auto digits = [](const std::string& s) {
+    return s.size() <= 9 && s.find_first_not_of("0123456789") == std::string::npos;
+  };
+  if (!digits(a) || !digits(b)) return std::nullopt;
+  const int first = std::stoi(a), last = std::stoi(b);
+  if (first > last) return std::nullopt;
+  return std::make_pair(first, last);
+}
+
+/// The absolute path of `program` found on PATH, or "" when it is not there.
+std::string findOnPath(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  std::stringstream dirs(path);
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    if (dir.empty()) continue;
+    const std::filesystem::path candidate = std::filesystem::path(dir) / program;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec) &&
+        (std::filesystem::status(candidate, ec).permissions() &
+         std::filesystem::perms::owner_exec) != std::filesystem::perms::none)
+      return candidate.string();
+  }
+  return {};
+}
+
+/// Single-quotes `text` for /bin/sh.
+std::string shellQuote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) {
+  // Step 1: scene, pixel, frames and encoder, all checked before any work.
+  const RayTreeOptions& o = options.tree;
+  const Scene scene = o.loadScene(topLevelScene);
+  if (const auto error = o.usageError(scene)) {
+    std::cerr << "raylab animate: " << *error << std::endl;
+    return kExitUsage;
+  }
+  std::optional<std::pair<int, int>> range;
+  if (!options.frames.empty()) {
+    range = parseRange(options.frames);
+    if (!range) {
+      std::cerr << "raylab animate: --frames " << options.frames
+                << ": expected FIRST:LAST frame numbers, e.g. 0:47" << std::endl;
+      return kExitUsage;
+    }
+  }
+  std::string ffmpeg;
+  if (!options.video.empty()) {
+    ffmpeg = findOnPath("ffmpeg");
+    if (ffmpeg.empty())
+      throw AnimateError("--video " + options.video +
+                         " needs the ffmpeg encoder, which is not on PATH; install it with "
+                         "`sudo apt-get install ffmpeg`, or leave out --video to get the PNG "
+                         "frames only");
+  }
+  const RenderSettings settings = o.common.settings(scene);
+
+  // Step 2: the tree, its view and the frames to write.
+  const RayTree tree = traceRayTree(scene, settings, o.pixel.first, o.pixel.second, o.sample);
+  const AnimationSettings animation = o.animation();
+  const int total = frameCount(tree, animation);
+  const int first = range ? std::min(range->first, total - 1) : 0;
+  const int last = range ? std::min(range->second, total - 1) : total - 1;
+  std::vector<int> frames;
+  for (int f = first; f <= last; f += options.every) frames.push_back(f);
+
+  const std::filesystem::path dir(o.common.out);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw AnimateError(o.common.out + ": cannot create the folder for the frames (" +
+                       (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  const int digits = std::max(4, int(std::to_string(total - 1).size()));
+  const auto frameFile = [&](int frame) {
+    std::ostringstream name;
+    name << "frame_" << std::setfill('0') << std::setw(digits) << frame << ".png";
+    return (dir / name.str()).string();
+  };
+
+  // Step 3: render frame after frame into the same view.
+  const auto [width, height] = o.pictureSize();
+  const std::unique_ptr<SceneView> view = o.makeView(scene, tree);
+  ProgressBar progress("animate");
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    view->setReveal(revealFrame(tree, animation, frames[i]));
+    view->renderToPng(frameFile(frames[i]), width, height);
+    progress.update(double(i + 1) / double(frames.size()),
+                    std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " frames");
+  }
+
+  // Step 4: the video, when asked for.
+  if (!ffmpeg.empty()) {
+    const std::string command =
+        shellQuote(ffmpeg) + " -y -loglevel error -framerate " + std::to_string(options.fps) +
+        " -pattern_type glob -i " + shellQuote((dir / "frame_*.png").string()) +
+        " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p " + shellQuote(options.video);
+    const int status = std::system(command.c_str());
+    if (status != 0 || !std::filesystem::exists(options.video))
+      throw AnimateError(options.video + ": ffmpeg failed (exit status " +
+                         std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                         "); the PNG frames are in " + o.common.out);
+  }
+
+  std::cout << o.common.out << "\n";
+  if (!options.video.empty()) std::cout << options.video << "\n";
+  std::cout << frames.size() << " of " << total << " frames (" << first << ".." << last
+            << (options.every > 1 ? ", every " + std::to_string(options.every) : std::string())
+            << "), " << toString(animation.order) << " order, " << toString(settings.algorithm)
+            << ": " << treeSummary(tree) << std::endl;
+  return kExitOk;
+}
+
+}  // namespace
+
+Subcommand addAnimateCommand(CLI::App& cli) {
+  auto options = std::make_shared<AnimateOptions>();
+  CLI::App* command = cli.add_subcommand(
+      "animate", "Animate one pixel sample's ray tree bounce by bounce: numbered PNG frames");
+  command->footer(
+      "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable folder, no ffmpeg),\n"
+      "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
+      "Frame N is the same picture as `raylab trace --frame N` with the same options.\n"
+      "Rendering needs an X server, also headless: run under xvfb-run -a.");
+  options->tree.add(command, "Folder for the frames (frame_0000.png, ...)", "640x480");
+  command->add_option("--frames", options->frames, "Only frames FIRST:LAST (inclusive)")
+      ->group("Animation");
+  command->add_option("--every", options->every, "Write every Nth frame")
+      ->check(CLI::Range(1, 1 << 30))
+      ->capture_default_str()
+      ->group("Animation");
+  command->add_option("--video", options->video, "Also encode the frames to this video (ffmpeg)");
+  command->add_option("--fps", options->fps, "Frames per second of the video")
+      ->check(CLI::Range(1, 240))
+      ->capture_default_str();
+  return {command, [options](const std::string& topLevelScene) {
+            return runAnimate(*options, topLevelScene);
+          }};
+}
+
+}  // namespace raylab::app
