@@ -28,6 +28,17 @@ bool isMoving(const SceneObject& object) {
 }  // namespace
 
 SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(&scene) {
+  for (const SceneObject& object : scene.objects) {
+    Entry e;
+    e.shape = object.shape.get();
+    e.moving = isMoving(object);
+    e.velocity = object.velocity;
+    if (!e.moving && object.shape->kind() == ShapeKind::Sphere &&
+        static_cast<const Sphere&>(*object.shape).isRound())
+      e.round = static_cast<const Sphere*>(object.shape.get());
+    m_entries.push_back(e);
+  }
+
   // Every object with an emissive material is an area light; it is picked with
   // probability proportional to its power, luminance(emission) * area (the radiance is
   // uniform, so power = pi * L * area for one-sided emission; the pi cancels).
@@ -61,12 +72,18 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   Ray r = ray;
   int nearest = -1;
   Hit nearestHit;
-  const auto& objects = m_scene->objects;
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const SceneObject& object = objects[i];
-    const bool moving = isMoving(object);
-    const std::optional<Hit> hit =
-        object.shape->intersect(moving ? toObjectFrame(r, object.velocity) : r);
+  for (std::size_t i = 0; i < m_entries.size(); ++i) {
+    const Entry& e = m_entries[i];
+    if (e.round) {
+      // Static round sphere: the same roots as Sphere::intersect, called directly.
+      if (const std::optional<double> t = e.round->nearestRoot(r)) {
+        nearest = static_cast<int>(i);
+        nearestHit = Hit{*t, 0, {}};
+        r.tMax = *t;
+      }
+      continue;
+    }
+    const std::optional<Hit> hit = e.shape->intersect(e.moving ? toObjectFrame(r, e.velocity) : r);
     if (hit) {
       nearest = static_cast<int>(i);
       nearestHit = *hit;
@@ -77,20 +94,22 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
 
   // Surface geometry of the nearest hit only, moved back to where the object is at the
   // ray's time.
-  const SceneObject& object = objects[static_cast<std::size_t>(nearest)];
-  const bool moving = isMoving(object);
+  const Entry& e = m_entries[static_cast<std::size_t>(nearest)];
   SceneHit out;
   out.object = nearest;
-  out.si = object.shape->surfaceAt(moving ? toObjectFrame(ray, object.velocity) : ray, nearestHit);
-  if (moving) out.si.p += ray.time * object.velocity;
+  out.si = e.shape->surfaceAt(e.moving ? toObjectFrame(ray, e.velocity) : ray, nearestHit);
+  if (e.moving) out.si.p += ray.time * e.velocity;
   return out;
 }
 
 bool SceneIntersector::occluded(const Ray& ray) const {
   // Any hit in range blocks: stop at the first one.
-  for (const SceneObject& object : m_scene->objects) {
-    const Ray r = isMoving(object) ? toObjectFrame(ray, object.velocity) : ray;
-    if (object.shape->intersect(r)) return true;
+  for (const Entry& e : m_entries) {
+    if (e.round) {
+      if (e.round->nearestRoot(ray)) return true;
+    } else if (e.shape->intersect(e.moving ? toObjectFrame(ray, e.velocity) : ray)) {
+      return true;
+    }
   }
   return false;
 }

@@ -72,32 +72,6 @@ void Sphere::setTessellation(int m, int n) {
   m_n = n;
 }
 
-std::optional<std::pair<double, double>> Sphere::roots(const Ray& r) const {
-  // Solve |o + t d - c|^2 = radius^2 for t, with d not necessarily unit length.
-  const Vec3 f = r.origin - m_centre;
-  const double a = glm::dot(r.direction, r.direction);
-  const double halfB = glm::dot(f, r.direction);
-  // Compute the discriminant from the distance between the centre and the line, which
-  // loses far less precision than halfB^2 - a c when the sphere is small or far away.
-  const Vec3 l = f - (halfB / a) * r.direction;
-  const double lineDistance = glm::length(l);
-  const double discriminant = a * (m_radius - lineDistance) * (m_radius + lineDistance);
-  if (discriminant < 0.0) return std::nullopt;
-
-  // Stable roots: q has the sign of -halfB, so no cancellation happens in either root.
-  const double c = glm::dot(f, f) - m_radius * m_radius;
-  const double q = -(halfB + std::copysign(std::sqrt(discriminant), halfB));
-  double t0, t1;
-  if (q == 0.0) {
-    t0 = t1 = 0.0;
-  } else {
-    t0 = q / a;
-    t1 = c / q;
-  }
-  if (t0 > t1) std::swap(t0, t1);
-  return std::make_pair(t0, t1);
-}
-
 std::optional<Hit> Sphere::intersect(const Ray& ray) const {
   const Ray r = m_hasTransform ? m_worldFromObject.inverseTransformRay(ray) : ray;
   const auto t = roots(r);

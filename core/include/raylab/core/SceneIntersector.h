@@ -9,6 +9,7 @@
 
 namespace raylab {
 
+class Sphere;
 class SphereLightSampler;
 
 /// The nearest hit of a ray in a scene.
@@ -67,7 +68,16 @@ class SceneIntersector {
   const Scene& scene() const { return *m_scene; }
 
  private:
+  /// What the inner loops need of an object, gathered once.
+  struct Entry {
+    const Shape* shape = nullptr;
+    const Sphere* round = nullptr;  ///< Static round spheres: intersected without a virtual call.
+    bool moving = false;
+    Vec3 velocity{0.0};
+  };
+
   const Scene* m_scene;
+  std::vector<Entry> m_entries;  ///< Parallel to Scene::objects.
   std::vector<int> m_lights;
   std::vector<double> m_lightCdf;  ///< Cumulative pick probabilities (by power).
   /// Per light (parallel to m_lights): its solid-angle sampler, null for area sampling.

@@ -3,6 +3,10 @@
 #include "raylab/core/Shape.h"
 #include "raylab/core/Transform.h"
 
+#include <cmath>
+#include <optional>
+#include <utility>
+
 namespace raylab {
 
 /**
@@ -52,9 +56,48 @@ class Sphere final : public Shape {
   /// Affine map from object space (where the sphere is round) to world space.
   const Transform& worldFromObject() const { return m_worldFromObject; }
 
+  /// The t of intersect(ray) for a round sphere (isRound()), without the virtual call: the
+  /// scene's inner loop. Same arithmetic, same result, bit for bit.
+  std::optional<double> nearestRoot(const Ray& ray) const {
+    const auto t = roots(ray);
+    if (!t) return std::nullopt;
+    // Pick the nearest root in [tMin, tMax].
+    if (t->first >= ray.tMin && t->first <= ray.tMax) return t->first;
+    if (t->second >= ray.tMin && t->second <= ray.tMax) return t->second;
+    return std::nullopt;
+  }
+
  private:
   /// Both roots of the ray in object space, t0 <= t1; nothing when the ray misses.
-  std::optional<std::pair<double, double>> roots(const Ray& objectRay) const;
+  std::optional<std::pair<double, double>> roots(const Ray& r) const {
+    // Solve |o + t d - c|^2 = radius^2 for t, with d not necessarily unit length.
+    const Vec3 f = r.origin - m_centre;
+    const double a = glm::dot(r.direction, r.direction);
+    const double halfB = glm::dot(f, r.direction);
+    // Compute the discriminant from the distance between the centre and the line, which
+    // loses far less precision than halfB^2 - a c when the sphere is small or far away.
+    const Vec3 l = f - (halfB / a) * r.direction;
+    const double lineDistance2 = glm::dot(l, l);
+    // A clear miss needs no square root: the line passes farther than the radius even
+    // allowing for the rounding of the test below.
+    if (lineDistance2 > m_radius * m_radius * (1.0 + 1e-9)) return std::nullopt;
+    const double lineDistance = std::sqrt(lineDistance2);
+    const double discriminant = a * (m_radius - lineDistance) * (m_radius + lineDistance);
+    if (discriminant < 0.0) return std::nullopt;
+
+    // Stable roots: q has the sign of -halfB, so no cancellation happens in either root.
+    const double c = glm::dot(f, f) - m_radius * m_radius;
+    const double q = -(halfB + std::copysign(std::sqrt(discriminant), halfB));
+    double t0, t1;
+    if (q == 0.0) {
+      t0 = t1 = 0.0;
+    } else {
+      t0 = q / a;
+      t1 = c / q;
+    }
+    if (t0 > t1) std::swap(t0, t1);
+    return std::make_pair(t0, t1);
+  }
   /// Ratio of world to object area at the object-space unit normal n of the sphere:
   /// |det L| |L^-T n| for the linear part L of worldFromObject (1 without a transform).
   double areaScale(const Vec3& objectNormal) const;
