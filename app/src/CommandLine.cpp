@@ -1,7 +1,9 @@
 #include "CommandLine.h"
 
 #include "AnimateCommand.h"
+#include "CompareCommand.h"
 #include "ExitCodes.h"
+#include "PlotCommand.h"
 #include "RenderCommand.h"
 #include "SnapshotCommand.h"
 #include "Subcommand.h"
@@ -77,10 +79,8 @@ int runCommandLine(int argc, char** argv) {
 
   // The headless subcommands, each in its own file.
   const std::vector<Subcommand> subcommands = {
-      addSnapshotCommand(cli),
-      addRenderCommand(cli),
-      addTraceCommand(cli),
-      addAnimateCommand(cli),
+      addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
+      addCompareCommand(cli),  addPlotCommand(cli),   addAnimateCommand(cli),
   };
 
   try {

@@ -122,10 +122,16 @@ void ConvergencePlot::build() {
     line->SetInputData(table, 0, 1);
     const Rgb8 colour = algorithmColour(figures.algorithm);
     line->SetColor(colour[0], colour[1], colour[2], 255);
-    line->SetWidth(3.0);
+    // Curves can coincide (ray casting and Whitted in a scene without mirrors or glass):
+    // earlier algorithms are drawn wider, with larger markers of another shape, so the
+    // one beneath still shows around the one on top.
+    const int order = static_cast<int>(figures.algorithm);  // 0 = ray casting .. 3 = path
+    line->SetWidth(3.0 + 1.25 * (3 - order));
     if (auto* points = vtkPlotPoints::SafeDownCast(line)) {
-      points->SetMarkerStyle(vtkPlotPoints::CIRCLE);
-      points->SetMarkerSize(9.0);
+      static const int kMarkers[4] = {vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+                                      vtkPlotPoints::CIRCLE, vtkPlotPoints::CIRCLE};
+      points->SetMarkerStyle(kMarkers[order]);
+      points->SetMarkerSize(9.0 + 1.5 * (3 - order));
     }
     m_impl->tables.push_back(table);
   }
