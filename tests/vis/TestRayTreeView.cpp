@@ -121,6 +121,7 @@ TEST(RayTreeView, 04_LegendShowsAndHides) {
   view.setRayTree(tree, style);
   view.resetViewCamera(640.0 / 480.0);
   const Image with = view.renderOffscreen(640, 480);
+  EXPECT_EQ(view.renderOffscreen(640, 480).rgb, with.rgb) << "the first picture is not the next";
   style.showLegend = false;
   view.setRayTreeStyle(style);
   const Image without = view.renderOffscreen(640, 480);

@@ -267,6 +267,9 @@ void RayTreeActors::layoutLegend(int width, int height) {
   m_energyBar->GetPosition2Coordinate()->SetValue(5 * font, barHeight);
   m_energyBar->SetMaximumWidthInPixels(5 * font);
   m_energyBar->SetMaximumHeightInPixels(barHeight);
+  // The bar caches its layout by its own modification time, which a new label font size
+  // does not touch: without this its first picture would use another layout than the next.
+  m_energyBar->Modified();
 }
 
 }  // namespace raylab

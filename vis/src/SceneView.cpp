@@ -286,6 +286,10 @@ Image SceneView::renderOffscreen(int width, int height) {
     m_impl->offscreen->SetOffScreenRendering(1);
     m_impl->offscreen->SetMultiSamples(0);
     m_impl->offscreen->AddRenderer(renderer);
+    // A new window lays text (the ray-tree legend) out differently in its very first
+    // frame; render that one for nothing, so every picture is the same as the next.
+    m_impl->offscreen->SetSize(width, height);
+    m_impl->offscreen->Render();
   }
   m_impl->offscreen->SetSize(width, height);
 
