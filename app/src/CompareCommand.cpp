@@ -122,7 +122,7 @@ void ReferenceOptions::add(CLI::App* command, const std::string& pictureDefault)
   command
       ->add_option("--reference-spp", samples,
                    "Samples per pixel of the rendered reference (default: max(256, 16 x spp); "
-                   "1024 with --time)")
+                   "256 with --time)")
       ->check(CLI::Range(1, 1 << 20));
   command->add_option("--save-reference", saveAs, "Also write the rendered reference (.pfm)")
       ->check(endsIn(".pfm"));
@@ -150,6 +150,16 @@ ComparisonResult runComparison(const Scene& scene, const RenderSettings& setting
   ComparisonResult result = comparison.run();
   progress.update(1.0, "done");
   if (!reference.saveAs.empty()) imageio::writePfm(result.reference.image, reference.saveAs);
+  if (referenceTooNoisy(result)) {
+    int pathSpp = 0;
+    for (const AlgorithmFigures& figures : result.algorithms)
+      if (figures.algorithm == Algorithm::PathTracing) pathSpp = figures.stats.samplesPerPixel;
+    std::cerr << "raylab: note: the reference has " << result.reference.samplesPerPixel
+              << " spp and path tracing reached " << pathSpp
+              << ": the reference's own noise adds to path tracing's error; pass "
+                 "--reference-spp "
+              << 16 * pathSpp << " or more" << std::endl;
+  }
   for (const AlgorithmFigures& figures : result.algorithms)
     if (figures.stats.nonFiniteSamples > 0)
       std::cerr << "raylab: warning: " << toString(figures.algorithm) << ": "

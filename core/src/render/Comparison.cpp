@@ -73,7 +73,7 @@ double displayRmse(const FloatImage& image, const FloatImage& reference) {
 }
 
 int ComparisonSettings::defaultReferenceSpp() const {
-  if (equalTime()) return 1024;
+  if (equalTime()) return 256;
   return std::max(256, 16 * samplesPerPixel);
 }
 
@@ -89,6 +89,15 @@ std::string ComparisonSettings::toString() const {
   out << ", spp=" << samplesPerPixel << ", seconds=" << secondsPerAlgorithm
       << ", referenceSpp=" << referenceSpp() << ", threads=" << threads << "]";
   return out.str();
+}
+
+bool referenceTooNoisy(const ComparisonResult& result) {
+  if (!result.reference.file.empty() || result.reference.samplesPerPixel <= 0) return false;
+  for (const AlgorithmFigures& figures : result.algorithms)
+    if (figures.algorithm == Algorithm::PathTracing &&
+        16LL * figures.stats.samplesPerPixel > result.reference.samplesPerPixel)
+      return true;
+  return false;
 }
 
 std::string algorithmTitle(Algorithm algorithm) {

@@ -21,7 +21,7 @@ namespace raylab {
  * | algorithms | all four | which algorithms, in this order |
  * | samplesPerPixel | 16 | equal samples: every algorithm's spp; equal time: the cap |
  * | secondsPerAlgorithm | 0 | > 0: equal time, each algorithm renders this long |
- * | referenceSamplesPerPixel | 0 | spp of the rendered reference; 0 = defaultReferenceSpp |
+ * | referenceSamplesPerPixel | 0 | spp of the rendered reference; 0 = defaultReferenceSpp() |
  * | threads | 0 | worker threads, 0 = all |
  */
 struct ComparisonSettings {
@@ -35,8 +35,8 @@ struct ComparisonSettings {
   /// True in equal-time mode.
   bool equalTime() const { return secondsPerAlgorithm > 0.0; }
   /// The rule for the rendered reference: max(256, 16 x samplesPerPixel) with equal
-  /// samples (its own noise then adds under 4% to the path tracer's error), 1024 with
-  /// equal time (the spp reached is not known beforehand).
+  /// samples (its own noise then adds under 4% to the path tracer's error), 256 with equal
+  /// time (the spp reached is not known beforehand: see referenceTooNoisy).
   int defaultReferenceSpp() const;
   /// referenceSamplesPerPixel, or the default rule when it is 0.
   int referenceSpp() const;
@@ -96,6 +96,11 @@ struct ComparisonResult {
   ComparisonReference reference;
   std::vector<AlgorithmFigures> algorithms;  ///< In compare.algorithms' order.
 };
+
+/// True when the rendered reference has fewer than 16 times the samples path tracing
+/// reached, so that its own noise visibly adds to path tracing's error (a file reference,
+/// whose spp is unknown, never counts as too noisy).
+bool referenceTooNoisy(const ComparisonResult& result);
 
 /// Human name and citation of an algorithm: "Ray casting (Appel 1968)".
 std::string algorithmTitle(Algorithm algorithm);
