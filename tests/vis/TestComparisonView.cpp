@@ -237,7 +237,10 @@ TEST(ComparisonView, 05_RayTreesBesideTheImagesShareOneCamera) {
   vtkCamera* shared = renderers[4]->GetActiveCamera();
   for (int panel = 0; panel < 4; ++panel) {
     EXPECT_EQ(renderers[std::size_t(4 * panel + 4)]->GetActiveCamera(), shared);
-    EXPECT_NE(renderers[std::size_t(4 * panel + 3)]->GetActiveCamera(), shared);  // image
+    // The images share another camera: the one of panel 0's image.
+    EXPECT_NE(renderers[std::size_t(4 * panel + 3)]->GetActiveCamera(), shared);
+    EXPECT_EQ(renderers[std::size_t(4 * panel + 3)]->GetActiveCamera(),
+              renderers[3]->GetActiveCamera());
   }
 
   const Image picture = view.renderOffscreen(1280, 720);

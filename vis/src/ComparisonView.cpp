@@ -346,6 +346,9 @@ void ComparisonView::Impl::build() {
     panel->imageActor->GetMapper()->BorderOn();  // cover whole pixels up to the edge
     panel->image->SetBackground(0.0, 0.0, 0.0);
     panel->image->AddViewProp(panel->imageActor);
+    // One camera for the four images (all of the same size): zooming into one zooms into
+    // the same place of all of them.
+    if (!panels.empty()) panel->image->SetActiveCamera(panels.front()->image->GetActiveCamera());
     vtkCamera* camera = panel->image->GetActiveCamera();
     const double w = figures.image.width, h = figures.image.height;
     camera->ParallelProjectionOn();

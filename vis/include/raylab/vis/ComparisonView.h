@@ -45,7 +45,8 @@ struct PixelRect {
  * size (font sizes follow the panel size), so a window can host `renderers()` and call
  * `layout` when it is resized; `renderOffscreen` does both in its own window.
  *
- * The tree views share one vtkCamera: turning one turns all four (synchronised views).
+ * Synchronised views: the images share one vtkCamera (zooming into one zooms into the same
+ * place of all four), and so do the tree views (turning one turns all four).
  */
 class ComparisonView {
  public:
