@@ -11,22 +11,9 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace raylab::app {
-
-namespace {
-
-/// A read-only monospace text box (the inspector's columns line up).
-QPlainTextEdit* textBox() {
-  auto* box = new QPlainTextEdit;
-  box->setReadOnly(true);
-  box->setLineWrapMode(QPlainTextEdit::NoWrap);
-  QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-  font.setPointSizeF(std::max(10.0, font.pointSizeF()));
-  box->setFont(font);
-  return box;
-}
-
-}  // namespace
 
 InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget* parent)
     : QWidget(parent), m_scene(scene), m_tree(tree) {
@@ -45,7 +32,6 @@ InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget*
   header->addWidget(m_parent);
   header->addWidget(m_child);
   header->addStretch(1);
-  header->addWidget(new QLabel(tr("Click a ray in the 3D view to inspect it.")));
   connect(m_number, qOverload<int>(&QSpinBox::valueChanged), this,
           [this](int id) { emit segmentRequested(id); });
   connect(m_parent, &QPushButton::clicked, this, [this] {
@@ -55,15 +41,16 @@ InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget*
     if (m_segment >= 0) emit segmentRequested(m_tree.segments[std::size_t(m_segment)].firstChild);
   });
 
-  // Step 2: the two columns, the ray and the oracle.
-  m_rayText = textBox();
-  m_oracleText = textBox();
-  auto* columns = new QHBoxLayout;
-  columns->addWidget(m_rayText, 3);
-  columns->addWidget(m_oracleText, 2);
+  // Step 2: the text, the ray's values then the oracle's check.
+  m_text = new QPlainTextEdit;
+  m_text->setReadOnly(true);
+  m_text->setLineWrapMode(QPlainTextEdit::WidgetWidth);
+  QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+  font.setPointSizeF(std::max(10.0, font.pointSizeF()));
+  m_text->setFont(font);
   auto* layout = new QVBoxLayout(this);
   layout->addLayout(header);
-  layout->addLayout(columns, 1);
+  layout->addWidget(m_text, 1);
   showSegment(-1);
 }
 
@@ -80,23 +67,18 @@ void InspectorPanel::showSegment(int id) {
   m_parent->setEnabled(id >= 0 && m_tree.segments[std::size_t(id)].parent >= 0);
   m_child->setEnabled(id >= 0 && m_tree.segments[std::size_t(id)].firstChild >= 0);
   if (id < 0) {
-    m_rayText->setPlainText(count == 0 ? tr("No ray tree yet: choose a pixel in the Ray tree "
-                                            "panel and press Trace.")
-                                       : tr("Click a ray in the 3D view, or choose its number "
-                                            "above, to see its origin, direction, hit,\n"
-                                            "material, weight, pdf and energy."));
-    m_oracleText->setPlainText(
-        tr("The exact oracle (CGAL, exact arithmetic) checks the chosen ray's hit\n"
-           "against the double-precision intersection."));
+    m_text->setPlainText(
+        count == 0 ? tr("No ray tree yet: choose a pixel in the Ray tree tab and press Trace.")
+                   : tr("Click a ray in the 3D view, or choose its number above, to see its "
+                        "origin, direction, hit, material, weight, pdf and energy, and the exact "
+                        "oracle's check of its hit beside double precision."));
     return;
   }
   const RayInspection inspection = RayInspector::inspect(m_scene, m_tree, id);
-  m_rayText->setPlainText(QString::fromStdString(inspection.rayText()));
-  m_oracleText->setPlainText(QString::fromStdString(inspection.oracleText()));
+  m_text->setPlainText(
+      QString::fromStdString(inspection.rayText() + "\n" + inspection.oracleText()));
 }
 
-QString InspectorPanel::text() const {
-  return m_rayText->toPlainText() + QStringLiteral("\n") + m_oracleText->toPlainText();
-}
+QString InspectorPanel::text() const { return m_text->toPlainText(); }
 
 }  // namespace raylab::app

@@ -14,8 +14,8 @@ namespace raylab::app {
 
 /**
  * \brief The ray inspector: everything about one ray of the traced tree (raylab::
- * RayInspector), the ray's own values on the left and the exact oracle's check of its
- * hit beside the double-precision one on the right.
+ * RayInspector): the ray's own values, then the exact oracle's check of its hit beside
+ * the double-precision one.
  *
  * A ray is chosen by clicking it in the 3D view, by its number, or by walking to its
  * parent / first child; the panel asks for it with segmentRequested and shows it when
@@ -51,8 +51,7 @@ class InspectorPanel : public QWidget {
   QSpinBox* m_number = nullptr;
   QPushButton* m_parent = nullptr;
   QPushButton* m_child = nullptr;
-  QPlainTextEdit* m_rayText = nullptr;
-  QPlainTextEdit* m_oracleText = nullptr;
+  QPlainTextEdit* m_text = nullptr;
 };
 
 }  // namespace raylab::app

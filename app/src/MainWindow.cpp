@@ -21,6 +21,7 @@
 #include <QPixmap>
 #include <QScrollArea>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace raylab::app {
 
@@ -51,30 +52,32 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   connect(m_objectList, &QListWidget::currentRowChanged, this,
           [this](int row) { showSelection(row); });
 
-  // Step 3: the ray-tree panel on the right (full height), scrolling when the window is low.
+  // Step 3: the ray-tree panel on the right, scrolling when the window is low.
   m_rayPanel = new RayTreePanel(*m_view);
   auto* scroll = new QScrollArea;
   scroll->setWidget(m_rayPanel);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   scroll->setMinimumWidth(m_rayPanel->sizeHint().width() + 24);
-  setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
-  setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
-  setCorner(Qt::BottomLeftCorner, Qt::BottomDockWidgetArea);
   QDockWidget* rays =
       addDock(tr("Ray tree"), QStringLiteral("raytree"), scroll, Qt::RightDockWidgetArea);
 
-  // Step 4: the inspector below the view.
+  // Step 4: the inspector, in a tab beside the ray-tree panel (raised when a ray is chosen):
+  // the 3D view keeps the whole height.
   m_inspector = new InspectorPanel(m_view->scene(), m_rayPanel->tree());
   QDockWidget* inspector = addDock(tr("Ray inspector"), QStringLiteral("inspector"), m_inspector,
-                                   Qt::BottomDockWidgetArea);
-  resizeDocks({objects}, {220}, Qt::Horizontal);
-  resizeDocks({inspector}, {330}, Qt::Vertical);
+                                   Qt::RightDockWidgetArea);
+  tabifyDockWidget(rays, inspector);
+  m_raysDock = rays;
+  m_inspectorDock = inspector;
+  resizeDocks({objects}, {170}, Qt::Horizontal);
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this,
           [this](const QString& text) { statusBar()->showMessage(text); });
-  connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector,
-          [this](int id) { m_inspector->showSegment(id); });
+  connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this, inspector](int id) {
+    m_inspector->showSegment(id);
+    inspector->raise();
+  });
   connect(m_inspector, &InspectorPanel::segmentRequested, m_rayPanel,
           [this](int id) { m_rayPanel->selectSegment(id); });
 
@@ -144,9 +147,18 @@ int MainWindow::clickRay(const QPoint& position) {
   const int id =
       m_view->segmentAt(position.x(), position.y(), m_vtkWidget->width(), m_vtkWidget->height());
   m_rayPanel->selectSegment(id);
-  statusBar()->showMessage(id >= 0 ? tr("Ray #%1 selected: see the inspector below").arg(id)
+  statusBar()->showMessage(id >= 0 ? tr("Ray #%1 selected: see the Ray inspector tab").arg(id)
                                    : tr("No ray under the cursor"));
   return id;
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+  QMainWindow::showEvent(event);
+  // The tab in front: the inspector when a ray is chosen, else the ray-tree panel. Qt
+  // builds the tab bar in the first layout after showing: raise once the loop runs.
+  QTimer::singleShot(0, this, [this] {
+    (m_rayPanel->selectedSegment() >= 0 ? m_inspectorDock : m_raysDock)->raise();
+  });
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {

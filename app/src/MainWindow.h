@@ -21,10 +21,10 @@ class RayTreePanel;
 
 /**
  * \brief RayLab's main window: the scene's 3D view (drag to rotate, wheel to zoom, as in
- * the seed program) and the list of the scene's objects (left; selecting one highlights
- * it in the view); the ray-tree panel (right: trace a pixel, colours and filters, the
- * bounce animation) and the ray inspector (bottom). Clicking a ray in the view (a press
- * and release without dragging) selects it and shows it in the inspector.
+ * the seed program); on the left the list of the scene's objects (selecting one
+ * highlights it in the view); on the right, in two tabs, the ray-tree panel (trace a
+ * pixel, colours and filters, the bounce animation) and the ray inspector. Clicking a ray in the
+ * view (a press and release without dragging) selects it and shows it in the inspector.
  */
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -56,6 +56,7 @@ class MainWindow : public QMainWindow {
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void showSelection(int row);
@@ -69,7 +70,9 @@ class MainWindow : public QMainWindow {
   QListWidget* m_objectList = nullptr;
   RayTreePanel* m_rayPanel = nullptr;
   InspectorPanel* m_inspector = nullptr;
-  QPoint m_pressPosition;  ///< Where the left button went down in the view.
+  QDockWidget* m_raysDock = nullptr;       ///< Tab of the ray-tree panel.
+  QDockWidget* m_inspectorDock = nullptr;  ///< Tab of the inspector, beside it.
+  QPoint m_pressPosition;                  ///< Where the left button went down in the view.
   bool m_pressed = false;
 };
 

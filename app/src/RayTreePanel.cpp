@@ -77,7 +77,8 @@ int framesPerTick(int v) { return std::max(1, v); }
 
 RayTreePanel::RayTreePanel(SceneView& view, QWidget* parent) : QWidget(parent), m_view(view) {
   auto* layout = new QVBoxLayout(this);
-  layout->setSpacing(10);
+  layout->setSpacing(4);
+  layout->setContentsMargins(6, 4, 6, 4);
   layout->addWidget(buildTraceGroup());
   layout->addWidget(buildStyleGroup());
   layout->addWidget(buildAnimationGroup());
@@ -305,7 +306,7 @@ QWidget* RayTreePanel::buildAnimationGroup() {
   m_statusLabel->setWordWrap(true);
   m_statusLabel->setFrameShape(QFrame::StyledPanel);
   m_statusLabel->setMargin(6);
-  m_statusLabel->setMinimumHeight(3 * QFontMetrics(font()).lineSpacing() + 12);
+  m_statusLabel->setMinimumHeight(2 * QFontMetrics(font()).lineSpacing() + 12);
   m_statusLabel->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   form->addRow(m_statusLabel);
   return group;

@@ -12,15 +12,18 @@ namespace raylab::testing {
 
 /**
  * Pixels whose colour lies within `tolerance` (8-bit units, Euclidean) of the energy
- * scale between positions 0.35 and 1 (green ... blue; the grey end is left out, it is
- * too close to the grey walls). `rgbAt(x, y, rgb)` fills rgb[3] with 0..255 values.
+ * scale between positions `from` and `to` (default 0.35 ... 1: green ... blue; the grey
+ * end is left out, it is too close to the grey walls). In a grab of the whole window use
+ * `to` = 0.6: Qt's selection highlight (48, 140, 198) lies on the green-blue part.
+ * `rgbAt(x, y, rgb)` fills rgb[3] with 0..255 values.
  */
 template <typename RgbAt>
-int countEnergyRayPixels(int width, int height, RgbAt rgbAt, double tolerance = 18.0) {
+int countEnergyRayPixels(int width, int height, RgbAt rgbAt, double from = 0.35, double to = 1.0,
+                         double tolerance = 18.0) {
   constexpr int kSamples = 66;
   double ramp[kSamples][3];
   for (int i = 0; i < kSamples; ++i) {
-    const Vec3 c = EnergyScale::colour(0.35 + 0.65 * i / (kSamples - 1));
+    const Vec3 c = EnergyScale::colour(from + (to - from) * i / (kSamples - 1));
     for (int k = 0; k < 3; ++k) ramp[i][k] = 255.0 * c[k];
   }
   int count = 0;

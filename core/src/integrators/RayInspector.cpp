@@ -13,11 +13,11 @@ namespace raylab {
 
 namespace {
 
-/// "(x, y, z)" with 6 significant digits: readable on a projector, precise enough to
-/// recognise a scene's numbers.
+/// "(x, y, z)" with 4 significant digits: readable on a projector, precise enough to
+/// recognise a scene's numbers (the oracle block prints t in full).
 std::string vec(const Vec3& v) {
   char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
+  std::snprintf(buffer, sizeof buffer, "(%.4g, %.4g, %.4g)", v.x, v.y, v.z);
   return buffer;
 }
 
@@ -243,8 +243,11 @@ std::string OracleCheck::toString() const {
                   exact.t);
     line(out, "exact", buffer);
     if (exact.tLower != exact.tUpper) {
-      std::snprintf(buffer, sizeof buffer, "%.17g .. %.17g", exact.tLower, exact.tUpper);
-      line(out, "t in", buffer);
+      // The exact t is irrational or not a double: it lies between two adjacent doubles.
+      std::snprintf(buffer, sizeof buffer, "%.17g", exact.tLower);
+      line(out, "  t >", buffer);
+      std::snprintf(buffer, sizeof buffer, "%.17g", exact.tUpper);
+      line(out, "  t <", buffer);
     }
   } else {
     line(out, "exact", "Miss");
@@ -256,14 +259,14 @@ std::string OracleCheck::toString() const {
     line(out, "double", "Miss");
   }
   if (comparison.agree && comparison.floating) {
-    std::snprintf(buffer, sizeof buffer, "%.3g (%.3g ulp), bound %.3g", comparison.tError,
-                  comparison.tErrorUlps, tBound);
+    std::snprintf(buffer, sizeof buffer, "%.3g (%.3g ulp)", comparison.tError,
+                  comparison.tErrorUlps);
     line(out, "|t error|", buffer);
+    line(out, "bound", number(tBound, 3));
   }
   line(out, "margin", number(exact.margin, 4) + (exact.margin > 0 ? " (robust)" : ""));
   line(out, "cosine", number(exact.cosine, 4));
-  line(out, "verdict",
-       agrees ? "the oracle agrees with double precision" : "the oracle says something different:");
+  line(out, "verdict", agrees ? "agrees with double precision" : "differs from double precision:");
   for (const std::string& note : notes) out << "    " << note << "\n";
   return out.str();
 }
@@ -284,13 +287,12 @@ std::string RayInspection::rayText() const {
     line(out, kind == RayKind::Shadow ? "blocked at" : "hit point", vec(endPoint));
     line(out, "distance", number(distance));
     line(out, "normal", vec(normal));
+    line(out, "object", "'" + objectName + "'");
     if (material) {
-      line(out, "object",
-           "'" + objectName + "', material '" + material->name + "' (" +
-               raylab::toString(material->type) + (material->emitter ? ", a light)" : ")"));
+      line(out, "material",
+           "'" + material->name + "' (" + raylab::toString(material->type) +
+               (material->emitter ? ", a light)" : ")"));
       line(out, "parameters", material->parameters);
-    } else {
-      line(out, "object", "'" + objectName + "'");
     }
     if (kind == RayKind::Shadow) line(out, "light point", vec(lightPoint));
   } else if (kind == RayKind::Shadow && endReason == EndReason::ReachedLight) {
@@ -315,7 +317,7 @@ std::string RayInspection::oracleText() const {
   // The exact oracle next to double precision.
   std::ostringstream out;
   if (oracle) {
-    out << "Exact oracle (CGAL) vs double on '" << objectName << "':\n";
+    out << "Exact oracle (CGAL) on '" << objectName << "':\n";
     out << oracle->toString();
   } else if (hit) {
     out << "Exact oracle: not computed\n";
