@@ -235,7 +235,7 @@ ViewCamera behindCameraView(const Scene& scene, double aspect) {
   // camera's body and frustum show at the bottom of the picture.
   const double step = 4.0 * cameraGlyphSize(scene);
   ViewCamera view;
-  view.eye = camera.position - step * forward + 0.6 * step * up;
+  view.eye = camera.position - step * forward + 1.2 * step * up;
   view.focalPoint = camera.lookAt;
   view.up = up;
   // A wider angle than the scene camera's, wider still for a narrow picture.
