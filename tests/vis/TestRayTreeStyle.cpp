@@ -63,13 +63,13 @@ RayTree smallTree() {
 }
 
 TEST(RayTreeStyle, 01_EnergyScaleIsLogGreyGreenBlue) {
-  const EnergyScale scale;  // 1e-3 .. 1
+  const EnergyScale scale;  // 1e-4 .. 0.1
   EXPECT_EQ(scale.position(0.0), 0.0);
   EXPECT_EQ(scale.position(-1.0), 0.0);
-  EXPECT_EQ(scale.position(1e-3), 0.0);
-  EXPECT_NEAR(scale.position(std::sqrt(1e-3)), 0.5, 1e-12);  // geometric mean: the middle
-  EXPECT_NEAR(scale.position(1e-2), 1.0 / 3.0, 1e-12);       // one decade of three
-  EXPECT_EQ(scale.position(1.0), 1.0);
+  EXPECT_EQ(scale.position(1e-4), 0.0);
+  EXPECT_NEAR(scale.position(std::sqrt(1e-5)), 0.5, 1e-12);  // geometric mean: the middle
+  EXPECT_NEAR(scale.position(1e-3), 1.0 / 3.0, 1e-12);       // one decade of three
+  EXPECT_EQ(scale.position(0.1), 1.0);
   EXPECT_EQ(scale.position(50.0), 1.0);
 
   // Low: light grey (equal channels, bright on the dark view).

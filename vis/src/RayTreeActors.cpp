@@ -112,6 +112,7 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_energyBar->SetTextPositionToSucceedScalarBar();
   m_energyBar->UnconstrainedFontSizeOn();
   m_energyBar->SetBarRatio(0.3);
+  m_energyBar->SetTextPad(4);
   m_energyBar->SetTitle("");
   m_energyBar->SetLabelFormat("%g");
   m_energyBar->DrawAnnotationsOff();
@@ -246,8 +247,8 @@ void RayTreeActors::updateLegend() {
 
 void RayTreeActors::layoutLegend(int width, int height) {
   if (width <= 0 || height <= 0) return;
-  // Text about 1/24 of the picture's height: readable when projected, small beside the scene.
-  const int font = std::clamp(int(std::lround(height / 24.0)), 10, 40);
+  // Text about 1/36 of the picture's height: readable when projected, small beside the scene.
+  const int font = std::clamp(int(std::lround(height / 36.0)), 10, 28);
   const int margin = std::max(4, int(std::lround(0.02 * height)));
   const int line = int(std::lround(1.3 * font));
   int y = height - margin - font;
@@ -261,7 +262,7 @@ void RayTreeActors::layoutLegend(int width, int height) {
   }
   // The energy bar under the title: labels half a line tall above and below the bar.
   const int barTop = height - margin - font - line / 2;
-  const int barHeight = std::max(4 * font, int(0.4 * height));
+  const int barHeight = std::max(4 * font, int(0.3 * height));
   m_energyBar->GetLabelTextProperty()->SetFontSize(font);
   m_energyBar->GetPositionCoordinate()->SetValue(margin + font / 2, barTop - barHeight);
   m_energyBar->GetPosition2Coordinate()->SetValue(5 * font, barHeight);

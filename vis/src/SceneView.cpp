@@ -149,7 +149,8 @@ void SceneView::setScene(const Scene& scene) {
       else
         p->SetInterpolationToFlat();
     }
-    if (isOpenSurface(object.shape->kind())) p->BackfaceCullingOn();
+    // Emitters stay two-sided: a ceiling light faces the room, yet must show from above.
+    if (isOpenSurface(object.shape->kind()) && !material.isEmitter()) p->BackfaceCullingOn();
     renderer->AddActor(actor);
     m_impl->objects.push_back(actor);
 

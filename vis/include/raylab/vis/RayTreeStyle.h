@@ -34,8 +34,12 @@ const char* toString(RayColouring colouring);
  * light grey, at the geometric mean green, at or above `high` blue.
  */
 struct EnergyScale {
-  double low = 1e-3;  ///< Energy drawn light grey (and everything below it).
-  double high = 1.0;  ///< Energy drawn full blue (and everything above it).
+  /// Energy drawn light grey (and everything below it).
+  double low = 1e-4;
+  /// Energy drawn full blue (and everything above it). Lit surfaces seen by the camera
+  /// bring back about 0.05 to 1 (1 is a white pixel), so camera rays come out blue, shadow
+  /// rays and bounces that deliver a few percent of the pixel green, empty paths grey.
+  double high = 0.1;
   /// Position of `energy` on the scale, 0 at `low`, 1 at `high`, clamped.
   double position(double energy) const;
   /// Colour of a scale position in [0, 1]: grey -> green -> blue, linear RGB in [0, 1].
