@@ -196,7 +196,12 @@ void ConvergencePlot::layout(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
   const int base = std::clamp(int(std::lround(std::min(width, height) / 36.0)), 9, 32);
   vtkChartXY* chart = m_impl->chart;
-  chart->GetTitleProperties()->SetFontSize(int(std::lround(base * 1.25)));
+  // The title names the scene, which can be long: shrink it to fit the width (a bold
+  // glyph of this font is about 0.62 of its size wide).
+  const double titleChars = std::max<double>(1.0, double(chart->GetTitle().size()));
+  const double titleFit = 0.95 * width / (0.62 * titleChars);
+  chart->GetTitleProperties()->SetFontSize(
+      std::max(8, int(std::min(base * 1.25, std::floor(titleFit)))));
   chart->GetTitleProperties()->SetBold(true);
   for (int a : {vtkAxis::BOTTOM, vtkAxis::LEFT}) {
     vtkAxis* axis = chart->GetAxis(a);
