@@ -1,5 +1,6 @@
 #include "RayTreePanel.h"
 
+#include "raylab/core/Comparison.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/SceneView.h"
@@ -39,20 +40,6 @@ constexpr int kAutoMaxSteps = 120;
 /// The algorithms in historical order, as the combo box lists them.
 constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
                                      Algorithm::Distributed, Algorithm::PathTracing};
-
-const char* algorithmLabel(Algorithm a) {
-  switch (a) {
-    case Algorithm::RayCasting:
-      return "Ray casting (Appel 1968)";
-    case Algorithm::Whitted:
-      return "Whitted (1979)";
-    case Algorithm::Distributed:
-      return "Distributed (Cook 1984)";
-    case Algorithm::PathTracing:
-      return "Path tracing (Kajiya 1986)";
-  }
-  return "?";
-}
 
 /// A small swatch of a linear RGB colour with a dark border, for the kind checkboxes.
 QIcon swatch(const Vec3& colour) {
@@ -101,7 +88,8 @@ QWidget* RayTreePanel::buildTraceGroup() {
   // Step 1: which algorithm, pixel and sample.
   m_algorithm = new QComboBox;
   for (Algorithm a : kAlgorithms)
-    m_algorithm->addItem(tr(algorithmLabel(a)), QString::fromLatin1(toString(a)));
+    m_algorithm->addItem(QString::fromStdString(algorithmTitle(a)),
+                         QString::fromLatin1(toString(a)));
   m_algorithm->setToolTip(
       tr("Ray casting: camera ray, local shading, shadow rays.\n"
          "Whitted: + perfect reflection and refraction, recursively.\n"

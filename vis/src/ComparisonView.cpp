@@ -538,24 +538,7 @@ Image ComparisonView::renderOffscreen(int width, int height) {
 
   // Step 2: render, then read the back buffer (VTK's rows bottom-up, ours top-down).
   d.offscreen->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(d.offscreen);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  vtkImageData* data = grab->GetOutput();
-  int dims[3] = {0, 0, 0};
-  data->GetDimensions(dims);
-  RAYLAB_CHECK_EQ(dims[0], width);
-  RAYLAB_CHECK_EQ(dims[1], height);
-  Image image(width, height);
-  const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t rowBytes = std::size_t(width) * 3;
-  for (int y = 0; y < height; ++y)
-    std::memcpy(image.rgb.data() + std::size_t(y) * rowBytes,
-                in + std::size_t(height - 1 - y) * rowBytes, rowBytes);
-  return image;
+  return detail::grabWindow(d.offscreen, width, height);
 }
 
 void ComparisonView::renderToPng(const std::string& path, int width, int height) {

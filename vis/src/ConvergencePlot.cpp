@@ -1,5 +1,7 @@
 #include "raylab/vis/ConvergencePlot.h"
 
+#include "VtkImage.h"
+
 #include "raylab/core/Check.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ImageIO.h"
@@ -224,24 +226,7 @@ Image ConvergencePlot::renderOffscreen(int width, int height) {
   layout(width, height);
   m_impl->view->Render();
 
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  vtkImageData* data = grab->GetOutput();
-  int dims[3] = {0, 0, 0};
-  data->GetDimensions(dims);
-  RAYLAB_CHECK_EQ(dims[0], width);
-  RAYLAB_CHECK_EQ(dims[1], height);
-  Image image(width, height);
-  const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t rowBytes = std::size_t(width) * 3;
-  for (int y = 0; y < height; ++y)
-    std::memcpy(image.rgb.data() + std::size_t(y) * rowBytes,
-                in + std::size_t(height - 1 - y) * rowBytes, rowBytes);
-  return image;
+  return detail::grabWindow(window, width, height);
 }
 
 void ConvergencePlot::renderToPng(const std::string& path, int width, int height) {

@@ -8,6 +8,7 @@
 #include <vtkImageDifference.h>
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>
+#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cstring>
@@ -73,6 +74,28 @@ double compareImages(const Image& a, const Image& b) {
 
   // Step 3: from a sum over pixels to a mean per pixel, so the scale is size-independent.
   return difference->GetThresholdedError() / (static_cast<double>(a.width) * a.height);
+}
+
+Image detail::grabWindow(vtkRenderWindow* window, int width, int height) {
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->ShouldRerenderOff();
+  grab->Update();
+  vtkImageData* data = grab->GetOutput();
+  int dims[3] = {0, 0, 0};
+  data->GetDimensions(dims);
+  RAYLAB_CHECK_EQ(dims[0], width);
+  RAYLAB_CHECK_EQ(dims[1], height);
+  RAYLAB_CHECK_EQ(data->GetNumberOfScalarComponents(), 3);
+  Image image(width, height);
+  const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
+  const std::size_t rowBytes = std::size_t(width) * 3;
+  for (int y = 0; y < height; ++y)
+    std::memcpy(image.rgb.data() + std::size_t(y) * rowBytes,
+                in + std::size_t(height - 1 - y) * rowBytes, rowBytes);
+  return image;
 }
 
 }  // namespace raylab

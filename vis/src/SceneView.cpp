@@ -2,6 +2,7 @@
 
 #include "RayTreeActors.h"
 #include "ShapeGeometry.h"
+#include "VtkImage.h"
 
 #include "raylab/core/Check.h"
 #include "raylab/core/Plane.h"
@@ -297,28 +298,7 @@ Image SceneView::renderOffscreen(int width, int height) {
   // Step 2: render, then read the back buffer.
   renderer->ResetCameraClippingRange();
   m_impl->offscreen->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(m_impl->offscreen);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  vtkImageData* data = grab->GetOutput();
-  int dims[3] = {0, 0, 0};
-  data->GetDimensions(dims);
-  RAYLAB_CHECK_EQ(dims[0], width);
-  RAYLAB_CHECK_EQ(dims[1], height);
-  RAYLAB_CHECK_EQ(data->GetNumberOfScalarComponents(), 3);
-
-  // Step 3: VTK's rows run bottom-up; ours top-down.
-  Image image(width, height);
-  const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
-  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
-  for (int y = 0; y < height; ++y) {
-    std::memcpy(image.rgb.data() + static_cast<std::size_t>(y) * rowBytes,
-                in + static_cast<std::size_t>(height - 1 - y) * rowBytes, rowBytes);
-  }
-  return image;
+  return detail::grabWindow(m_impl->offscreen, width, height);
 }
 
 void SceneView::renderToPng(const std::string& path, int width, int height) {
