@@ -3,6 +3,7 @@
 #include "ExitCodes.h"
 #include "RenderCommand.h"
 
+#include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/Tracer.h"
@@ -201,24 +202,7 @@ void printFigures(const ComparisonResult& result, std::ostream& out) {
 }
 
 void writeTextFile(const std::string& path, const std::string& text) {
-  std::string temp = path + ".XXXXXX";
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw WriteError(path + ": cannot create a temporary file next to it");
-  ::fchmod(fd, 0644);  // mkstemp makes the file private; this is an ordinary file
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n <= 0) {
-      ::close(fd);
-      ::unlink(temp.c_str());
-      throw WriteError(path + ": write failed (disk full?); the file was not written");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0 || std::rename(temp.c_str(), path.c_str()) != 0) {
-    ::unlink(temp.c_str());
-    throw WriteError(path + ": could not write the file");
-  }
+  if (auto problem = writeFileAtomically(path, text)) throw WriteError(path + ": " + *problem);
 }
 
 std::string replaceExtension(const std::string& path, const std::string& extension) {

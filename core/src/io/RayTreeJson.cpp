@@ -1,4 +1,5 @@
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/AtomicFile.h"
 
 #include <nlohmann/json.hpp>
 
@@ -127,24 +128,7 @@ void RayTreeJson::save(const RayTree& tree, const Scene& scene, const RenderSett
                        const std::string& path) {
   const std::string text = serialize(tree, scene, settings);
   // A temporary file beside the target, then a rename: never a half-written dump.
-  std::string temp = path + ".XXXXXX";
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw Error(path + ": cannot create a file there (does the folder exist?)");
-  ::fchmod(fd, 0644);
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n <= 0) {
-      ::close(fd);
-      ::unlink(temp.c_str());
-      throw Error(path + ": write failed (disk full?); the file was not written");
-    }
-    written += std::size_t(n);
-  }
-  if (::close(fd) != 0 || std::rename(temp.c_str(), path.c_str()) != 0) {
-    ::unlink(temp.c_str());
-    throw Error(path + ": could not write the file");
-  }
+  if (auto problem = writeFileAtomically(path, text)) throw Error(path + ": " + *problem);
 }
 
 RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, Info* info) {

@@ -1,4 +1,5 @@
 #include "raylab/core/Image.h"
+#include "raylab/core/AtomicFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,31 +15,9 @@ namespace raylab::imageio {
 
 namespace {
 
-/// Writes `bytes` to a temporary file beside `path`, then renames it over `path`: the
-/// target is either unchanged or complete.
+/// Writes `bytes` atomically (see writeFileAtomically), throwing WriteError.
 void writeAtomically(const std::string& path, const std::string& bytes) {
-  std::string temp = path + ".XXXXXX";
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw WriteError(path + ": cannot create a temporary file next to it");
-  ::fchmod(fd, 0644);  // mkstemp makes the file private; an image is an ordinary file
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n <= 0) {
-      ::close(fd);
-      ::unlink(temp.c_str());
-      throw WriteError(path + ": write failed (disk full?); the file was not changed");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) {
-    ::unlink(temp.c_str());
-    throw WriteError(path + ": could not flush the file; the file was not changed");
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    ::unlink(temp.c_str());
-    throw WriteError(path + ": could not replace the file; it was not changed");
-  }
+  if (auto problem = writeFileAtomically(path, bytes)) throw WriteError(path + ": " + *problem);
 }
 
 void checkSize(const FloatImage& image, const std::string& path) {

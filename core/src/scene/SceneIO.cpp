@@ -1,4 +1,5 @@
 #include "raylab/core/SceneIO.h"
+#include "raylab/core/AtomicFile.h"
 
 #include "raylab/core/Box.h"
 #include "raylab/core/MeshIO.h"
@@ -665,30 +666,8 @@ std::string SceneIO::serialize(const Scene& scene, const std::string& sceneDir) 
 void SceneIO::save(const Scene& scene, const std::string& path) {
   // Mesh paths are written relative to the folder of the new file.
   const std::string text = serialize(scene, std::filesystem::path(path).parent_path().string());
-  // Write a temporary file beside the target, then rename: the target is either the old
-  // file or the complete new one, never half written.
-  std::string temp = path + ".XXXXXX";
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw SaveError(path + ": cannot create a temporary file next to it");
-  ::fchmod(fd, 0644);  // mkstemp makes the file private; a scene is an ordinary file
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n <= 0) {
-      ::close(fd);
-      ::unlink(temp.c_str());
-      throw SaveError(path + ": write failed (disk full?); the file was not changed");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    ::unlink(temp.c_str());
-    throw SaveError(path + ": could not flush the file; the file was not changed");
-  }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    ::unlink(temp.c_str());
-    throw SaveError(path + ": could not replace the file; it was not changed");
-  }
+  // A temporary file beside the target, then a rename: the old file or the whole new one.
+  if (auto problem = writeFileAtomically(path, text)) throw SaveError(path + ": " + *problem);
 }
 
 }  // namespace raylab

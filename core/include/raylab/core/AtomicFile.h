@@ -1,0 +1,18 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace raylab {
+
+/**
+ * \brief Writes `bytes` to a temporary file beside `path`, flushes it to disk and renames
+ * it over `path`: the target is either unchanged or complete, never half written.
+ *
+ * Returns nothing on success, else what went wrong (without the path, e.g. "write failed
+ * (disk full?); the file was not changed"), for the caller to throw in its own error type.
+ * The temporary file is removed on failure.
+ */
+std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes);
+
+}  // namespace raylab
