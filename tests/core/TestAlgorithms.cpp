@@ -146,15 +146,24 @@ TEST(Algorithms, 02_LocalShadingOfAPointLightByHand) {
 // L = Le + a L, so L = Le / (1 - a): 2 for a = 0.5, Le = 1; 5 for a = 0.8, Le = 1.
 // Path tracing must find it within 5 standard errors, with next-event estimation and MIS,
 // NEE without MIS, without NEE, and with Russian roulette from the first bounce.
+//
+// The standard error must also be small enough for the check to mean something (2% of L),
+// except for NEE without MIS: light sampled by area from a point near an edge of the cube
+// has the geometry term cos cos' / r^2 of the adjacent wall, whose second moment diverges
+// like 1 / (distance to the edge). That estimator's variance is infinite, so its measured
+// standard error wanders with the seed (it exceeds 2% for about a third of the seeds) and
+// bounds nothing. Its mean is still checked here, and Algorithms.09, .19 and .20 check it
+// where no light meets a lit surface at an edge. MIS keeps those samples' weights bounded.
 TEST(Algorithms, 03_FurnaceGivesLeOverOneMinusAlbedo) {
   struct Case {
     const char* name;
     double albedo;
     bool nee, mis;
     int rrDepth;
+    bool finiteVariance = true;
   };
   const Case cases[] = {{"a=0.5 NEE+MIS", 0.5, true, true, 3},
-                        {"a=0.5 NEE, no MIS", 0.5, true, false, 3},
+                        {"a=0.5 NEE, no MIS", 0.5, true, false, 3, false},
                         {"a=0.5 no NEE", 0.5, false, true, 3},
                         {"a=0.5 NEE+MIS roulette from depth 0", 0.5, true, true, 0},
                         {"a=0.8 NEE+MIS", 0.8, true, true, 3},
@@ -173,7 +182,9 @@ TEST(Algorithms, 03_FurnaceGivesLeOverOneMinusAlbedo) {
               << "), standard error " << stats.standardError.x << ", " << z << " sigma\n";
     EXPECT_LT(z, 5.0) << c.name;
     // The bound must be tight enough to mean something.
-    EXPECT_LT(stats.standardError.x, 0.02 * expected) << c.name;
+    if (c.finiteVariance) {
+      EXPECT_LT(stats.standardError.x, 0.02 * expected) << c.name;
+    }
     EXPECT_GT(stats.standardError.x, 0.0) << c.name;
   }
 }
