@@ -85,13 +85,14 @@ struct Recording {
 };
 
 /// The camera ray of one (pixel, sample). It always draws five dimensions (film jitter,
-/// lens, time) so every algorithm consumes the sampler alike; the film position is the
+/// lens, time) so every algorithm consumes the sampler alike. Film and lens samples are
+/// stratified over the pixel's samples (Sampler::nextStratified2D); the film position is the
 /// pixel centre when there is one sample per pixel, and ray casting and Whitted look
 /// through the lens centre at time 0.
 QueuedRay cameraRay(const Tracer& tracer, int x, int y, Sampler& sampler) {
   const RenderSettings& settings = tracer.settings();
-  const Vec2 jitter = sampler.next2D();
-  const Vec2 lens = sampler.next2D();
+  const Vec2 jitter = sampler.nextStratified2D();
+  const Vec2 lens = sampler.nextStratified2D();
   const double time = sampler.next1D();
   const bool classic =
       settings.algorithm == Algorithm::RayCasting || settings.algorithm == Algorithm::Whitted;

@@ -13,6 +13,14 @@ namespace raylab {
  * replayed exactly — by the image renderer, by the stepper, on any thread, in any order
  * (pbrt's IndependentSampler::StartPixelSample; never `rand()`). Dimensions are consumed
  * in the order the tracer asks for them.
+ *
+ * next2D() gives two independent uniforms. nextStratified2D() gives instead the next point of
+ * an Owen-scrambled Sobol (0,2)-sequence, one sequence per (seed, pixel, dimension pair), with
+ * the sample index shuffled per pair (Burley 2020, "Practical Hash-based Owen Scrambling",
+ * JCGT 9(4)): over the samples of one pixel the pairs drawn at one dimension are stratified
+ * (the first 2^m samples put exactly one point in every elementary interval of area 2^-m,
+ * whatever its shape), while each point alone is still uniform in [0, 1)^2 and independent
+ * of the other dimension pairs and pixels. The camera draws its film and lens samples so.
  */
 class Sampler {
  public:
@@ -23,12 +31,22 @@ class Sampler {
   double next1D();
   /// Two uniform doubles in [0, 1)^2.
   Vec2 next2D() { return {next1D(), next1D()}; }
+  /**
+   * \brief A point of this pixel's stratified sequence for the next two dimensions.
+   *
+   * Sample i of pixel (x, y) at dimension d gets point shuffle(i) of the Sobol (0,2)-sequence
+   * Owen-scrambled by a hash of (seed, x, y, d). Uniform in [0, 1)^2 (32-bit resolution);
+   * consumes two dimensions, like next2D().
+   */
+  Vec2 nextStratified2D();
   /// Jumps to a given dimension (to decorrelate branches that spawn a variable number of rays).
   void setDimension(std::uint64_t dimension) { m_dimension = dimension; }
   std::uint64_t dimension() const { return m_dimension; }
 
  private:
-  std::uint64_t m_key;
+  std::uint64_t m_key;          ///< Hash of (seed, pixel, sample): the next1D() stream.
+  std::uint64_t m_pixelKey;     ///< Hash of (seed, pixel): the scrambles of nextStratified2D().
+  std::uint32_t m_sampleIndex;  ///< The sample index, shuffled by nextStratified2D().
   std::uint64_t m_dimension = 0;
 };
 
