@@ -57,6 +57,15 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
       sep.relation = Separator::Relation::Cuts;
       sep.axis = between / D;
       sep.cosAlpha = std::clamp(((D - rho) * (D + rho) + R * R) / (2.0 * R * D), -1.0, 1.0);
+      // The cap on each side; if it is smaller than a hemisphere, the ball through its rim
+      // circle contains it.
+      for (const int inside : {0, 1}) {
+        const double cosAlpha = inside ? sep.cosAlpha : -sep.cosAlpha;
+        if (!(cosAlpha > 0.0)) continue;
+        const Vec3 axis = inside ? sep.axis : -sep.axis;
+        sep.capCentre[inside] = m_centre + R * cosAlpha * axis;
+        sep.capRadius2[inside] = R * R * std::max(0.0, 1.0 - cosAlpha * cosAlpha);
+      }
     }
     m_separators.push_back(sep);
   }
@@ -66,27 +75,32 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
   Plan best;
   // From inside (or on) the light there is no cone: area sampling.
   const Vec3 toCentre = m_centre - ref;
-  if (!(glm::dot(toCentre, toCentre) > m_radius * m_radius)) {
+  const double centreDistance2 = glm::dot(toCentre, toCentre);
+  if (!(centreDistance2 > m_radius * m_radius)) {
     best.mode = Plan::Mode::Area;
     return best;
   }
-  // The cone of directions towards a ball (centre, radius) seen from outside it; keep the
-  // narrowest one.
-  best.mode = Plan::Mode::Cone;
-  best.cosThetaMax = -2.0;
-  const auto consider = [&](const Point3& centre, double radius) {
+  // The cone of directions towards a ball (centre, radius) seen from outside it has
+  // sin^2 theta_max = radius^2 / distance^2: keep the ball with the smallest ratio (the
+  // narrowest cone), and take square roots once, for it alone.
+  Vec3 bestToCentre = toCentre;
+  double bestDistance2 = centreDistance2;
+  double bestSin2 = m_radius * m_radius / centreDistance2;
+  const auto consider = [&](const Point3& centre, double radius2) {
     const Vec3 v = centre - ref;
     const double distance2 = glm::dot(v, v);
-    if (!(distance2 > radius * radius)) return;
-    const double cosThetaMax = std::sqrt(std::max(0.0, 1.0 - radius * radius / distance2));
-    if (cosThetaMax > best.cosThetaMax) {
-      best.cosThetaMax = cosThetaMax;
-      best.axis = v / std::sqrt(distance2);
+    if (!(distance2 > radius2)) return;
+    const double sin2 = radius2 / distance2;
+    if (sin2 < bestSin2) {
+      bestSin2 = sin2;
+      bestToCentre = v;
+      bestDistance2 = distance2;
     }
   };
-  consider(m_centre, m_radius);
-  for (const Separator& s : m_separators) {
+  for (std::size_t i = 0; i < m_separators.size(); ++i) {
+    const Separator& s = m_separators[i];
     const bool inside = isInside(s, ref);
+    if (inside && i < 64) best.inside |= std::uint64_t(1) << i;
     switch (s.relation) {
       case Separator::Relation::Disjoint:
         if (inside) return Plan{};  // the light is on the other side of S
@@ -94,26 +108,24 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
       case Separator::Relation::Encloses:
         if (!inside) return Plan{};
         break;
-      case Separator::Relation::Cuts: {
-        // The cap on ref's side; if it is smaller than a hemisphere, the ball through its
-        // rim circle contains it.
-        const Vec3 axis = inside ? s.axis : -s.axis;
-        const double cosAlpha = inside ? s.cosAlpha : -s.cosAlpha;
-        if (cosAlpha > 0.0)
-          consider(m_centre + m_radius * cosAlpha * axis,
-                   m_radius * std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha)));
+      case Separator::Relation::Cuts:
+        if (s.capRadius2[inside] >= 0.0) consider(s.capCentre[inside], s.capRadius2[inside]);
         break;
-      }
     }
   }
+  best.mode = Plan::Mode::Cone;
+  best.cosThetaMax = std::sqrt(std::max(0.0, 1.0 - bestSin2));
+  best.axis = bestToCentre / std::sqrt(bestDistance2);
   return best;
 }
 
-bool SphereLightSampler::visibleSide(const Point3& ref, const Normal3& n) const {
-  for (const Separator& s : m_separators) {
+bool SphereLightSampler::visibleSide(const Plan& plan, const Point3& ref, const Normal3& n) const {
+  for (std::size_t i = 0; i < m_separators.size(); ++i) {
+    const Separator& s = m_separators[i];
     if (s.relation != Separator::Relation::Cuts) continue;
+    const bool inside = i < 64 ? (plan.inside >> i) & 1 : isInside(s, ref);
     const double side = glm::dot(n, s.axis) - s.cosAlpha;  // > 0: the light point is inside S
-    if (isInside(s, ref) ? side < 0.0 : side > 0.0) return false;
+    if (inside ? side < 0.0 : side > 0.0) return false;
   }
   return true;
 }
@@ -143,12 +155,12 @@ std::optional<LightSample> SphereLightSampler::sample(const Point3& ref, const V
     case Plan::Mode::Cone: {
       // A direction uniform in the cone, followed to its first hit on the light.
       const Vec3 w = Frame(p.axis).toWorld(sampleUniformCone(u, p.cosThetaMax));
-      const std::optional<Hit> hit = m_sphere->intersect(Ray{ref, w, 0.0, kInfinity, 0.0});
-      if (!hit) return std::nullopt;  // a cap's cone is wider than the cap
-      const Vec3 radial = ref + hit->t * w - m_centre;
+      const std::optional<double> t = m_sphere->nearestRoot(Ray{ref, w, 0.0, kInfinity, 0.0});
+      if (!t) return std::nullopt;  // a cap's cone is wider than the cap
+      const Vec3 radial = ref + *t * w - m_centre;
       ls.n = radial / glm::length(radial);
       // Drop points that a separating sphere hides from ref.
-      if (!visibleSide(ref, ls.n)) return std::nullopt;
+      if (!visibleSide(p, ref, ls.n)) return std::nullopt;
       ls.p = m_centre + m_radius * ls.n;
       const Vec3 d = ls.p - ref;
       ls.distance = glm::length(d);
@@ -173,7 +185,7 @@ double SphereLightSampler::pdf(const Point3& ref, const Point3& point, const Nor
   if (!(cosLight > 0.0)) return 0.0;
   if (p.mode == Plan::Mode::Area) return m_sphere->pdfArea(point) * distance2 / cosLight;
   // Cone: every visible point lies in the chosen cone, where the density is uniform.
-  return visibleSide(ref, n) ? uniformConePdf(p.cosThetaMax) : 0.0;
+  return visibleSide(p, ref, n) ? uniformConePdf(p.cosThetaMax) : 0.0;
 }
 
 }  // namespace raylab

@@ -3,6 +3,7 @@
 #include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Sphere.h"
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -64,6 +65,10 @@ class SphereLightSampler {
     double radius2 = 0.0;   ///< Of S, squared.
     Vec3 axis{0.0};         ///< Cuts: unit direction from the light's centre to S's centre.
     double cosAlpha = 0.0;  ///< Cuts: cosine of the half-angle of the cap inside S.
+    /// Cuts: the ball through the rim of the cap on each side ([1]: inside S), which
+    /// contains the cap when it is smaller than a hemisphere (capRadius2 < 0 otherwise).
+    Point3 capCentre[2] = {Point3(0.0), Point3(0.0)};
+    double capRadius2[2] = {-1.0, -1.0};
   };
 
   /// What to sample from one reference point.
@@ -71,11 +76,15 @@ class SphereLightSampler {
     enum class Mode { Invisible, Area, Cone } mode = Mode::Invisible;
     Vec3 axis{0.0};            ///< Cone: unit axis from ref.
     double cosThetaMax = 0.0;  ///< Cone: cosine of its half-angle.
+    /// Bit i: ref is inside separator i (for the first 64 separators; visibleSide
+    /// recomputes the rest).
+    std::uint64_t inside = 0;
   };
 
   Plan plan(const Point3& ref) const;
-  /// True when the light point with outward normal n is on ref's side of every separator.
-  bool visibleSide(const Point3& ref, const Normal3& n) const;
+  /// True when the light point with outward normal n is on ref's side of every separator
+  /// (`plan` is plan(ref)).
+  bool visibleSide(const Plan& plan, const Point3& ref, const Normal3& n) const;
   static bool isInside(const Separator& s, const Point3& ref) {
     const Vec3 f = ref - s.centre;
     return glm::dot(f, f) < s.radius2;
