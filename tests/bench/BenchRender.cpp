@@ -1,30 +1,39 @@
-// Light-transport benchmarks: path tracing the smallpt Cornell box (lessons/scenes/smallpt.json,
-// or another shipped scene with --scene NAME).
+// Light-transport benchmarks: path tracing the smallpt Cornell box (lessons/scenes/smallpt.json).
 //
-//   raylab_bench_render throughput [--size WxH] [--spp N] [--repeat R]
-//       Samples per second on 1 and 2 threads (default 1024x768, 4 spp per measurement, best
-//       of R = 2 runs), with and without next-event estimation, and the scaling factor
-//       2 threads / 1 thread. Also samples per CPU-second (process CPU time), which a busy
-//       machine disturbs far less than wall time.
-//   raylab_bench_render convergence [--size WxH] [--reference-spp N] [--reference FILE.pfm]
-//       RMSE against a converged reference at 16, 64 and 256 spp, with and without next-event
-//       estimation, with the wall time of each render (2 threads). Default 256x192 and a
-//       4096-spp reference (with NEE and MIS, another seed), cached in FILE.pfm when given.
-//       Then the equal-error comparison with smallpt: the RMSE of 40 spp without NEE
-//       (smallpt's estimator) and the spp, CPU time and wall time RayLab with NEE needs to
-//       reach it, scaled to 1024x768 with the measured cost per sample.
-//   raylab_bench_render smoke
-//       Both at a tiny size, for the `bench`-labelled CTest test.
+//   raylab_bench_render [Google Benchmark flags]
+//       Throughput (Google Benchmark): SmallptPath/nee:N/threads:T renders smallpt at
+//       1024x768, 1 spp per iteration, with next-event estimation on (1) or off (0), on 1 and
+//       2 threads. Counters: samples/s (wall time), samples/CPU-s (process CPU time, which a
+//       busy machine disturbs far less), rays/sample. Scaling 1 -> 2 threads is the ratio of
+//       the two samples/s figures; smallpt's 40 spp at 1024x768 take 31.5M / (samples/s).
+//       e.g. raylab_bench_render --benchmark_counters_tabular=true
+//   raylab_bench_render --convergence [--size WxH] [--reference-spp N] [--reference FILE.pfm]
+//                       [--scene NAME]
+//       Not a timing benchmark but the error study: RMSE against a converged reference at
+//       16, 64 and 256 spp, with and without next-event estimation, of linear radiance and
+//       as displayed, with the CPU time of each render (2 threads) and the error ratio at
+//       equal spp and at equal CPU time. Default 256x192 and a 4096-spp reference (with NEE
+//       and MIS, another seed), cached in FILE.pfm when given. Then the equal-error
+//       comparison with smallpt: the RMSE of 40 spp without NEE (smallpt's estimator) and
+//       the spp, CPU time and wall time RayLab with NEE needs to reach it, scaled to
+//       1024x768 with the measured cost per sample.
+//   raylab_bench_render --smoke
+//       The error study at a tiny size, for the `bench`-labelled CTest test (the throughput
+//       cases get their own smoke test with a filter and a short minimum time).
 //
 // Every render uses the scene's settings (path tracing, max depth 12, roulette from depth 5)
 // with only spp, seed, NEE and the size changed.
 
+#include "raylab/core/Comparison.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneIO.h"
 
+#include <benchmark/benchmark.h>
+
 #include <time.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -36,10 +45,8 @@ namespace raylab {
 namespace {
 
 struct Options {
-  std::string mode;
-  int width = 0, height = 0;
-  int spp = 4;
-  int repeat = 2;
+  bool smoke = false;
+  int width = 256, height = 192;
   int referenceSpp = 4096;
   std::string reference;
   std::string scene = "smallpt";
@@ -47,17 +54,17 @@ struct Options {
 
 [[noreturn]] void usage(const std::string& problem) {
   std::cerr << "raylab_bench_render: " << problem
-            << "\nusage: raylab_bench_render throughput|convergence|smoke [--size WxH] [--spp N]"
-               " [--repeat R] [--reference-spp N] [--reference FILE.pfm] [--scene NAME]\n";
+            << "\nusage: raylab_bench_render [Google Benchmark flags]\n"
+               "       raylab_bench_render --convergence [--size WxH] [--reference-spp N]"
+               " [--reference FILE.pfm] [--scene NAME]\n"
+               "       raylab_bench_render --smoke\n";
   std::exit(2);
 }
 
+/// The error study's options: argv[1] is --convergence or --smoke.
 Options parse(int argc, char** argv) {
-  if (argc < 2) usage("no mode given");
   Options o;
-  o.mode = argv[1];
-  if (o.mode != "throughput" && o.mode != "convergence" && o.mode != "smoke")
-    usage("unknown mode " + o.mode);
+  o.smoke = std::string(argv[1]) == "--smoke";
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     if (i + 1 >= argc) usage(arg + " needs a value");
@@ -66,10 +73,6 @@ Options parse(int argc, char** argv) {
       if (std::sscanf(value.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 1 ||
           o.height < 1)
         usage("bad --size " + value);
-    } else if (arg == "--spp") {
-      o.spp = std::atoi(value.c_str());
-    } else if (arg == "--repeat") {
-      o.repeat = std::atoi(value.c_str());
     } else if (arg == "--reference-spp") {
       o.referenceSpp = std::atoi(value.c_str());
     } else if (arg == "--reference") {
@@ -80,7 +83,7 @@ Options parse(int argc, char** argv) {
       usage("unknown option " + arg);
     }
   }
-  if (o.spp < 1 || o.repeat < 1 || o.referenceSpp < 1) usage("counts must be positive");
+  if (o.referenceSpp < 1) usage("--reference-spp must be positive");
   return o;
 }
 
@@ -116,41 +119,35 @@ Result renderOnce(const Scene& scene, const RenderSettings& settings, int thread
   return r;
 }
 
-/// Samples per second on 1 and 2 threads, best of `repeat` runs each, with and without NEE.
-void throughput(const std::string& name, int width, int height, int spp, int repeat) {
-  const Scene scene = shipped(name, width, height);
-  std::printf("Path tracing %s.json at %dx%d, %d spp per run, best of %d runs\n", name.c_str(),
-              width, height, spp, repeat);
-  std::printf("%4s %8s %9s %9s %12s %14s %12s %12s\n", "NEE", "threads", "seconds", "CPU s",
-              "samples/s", "samples/CPU-s", "rays/s", "rays/sample");
-  for (int nee = 1; nee >= 0; --nee) {
-    RenderSettings settings = scene.render;
-    settings.samplesPerPixel = spp;
-    settings.nextEventEstimation = nee == 1;
-    settings.multipleImportance = nee == 1;
-    double rate[3] = {0, 0, 0};
-    for (int threads : {1, 2}) {
-      Result best;
-      best.stats.seconds = 1e300;
-      for (int i = 0; i < repeat; ++i) {
-        Result r = renderOnce(scene, settings, threads);
-        if (r.stats.seconds < best.stats.seconds) best = std::move(r);
-      }
-      const double samples = double(width) * height * spp;
-      const double seconds = best.stats.seconds;
-      rate[threads] = samples / seconds;
-      std::printf("%4s %8d %9.3f %9.3f %12.0f %14.0f %12.0f %12.2f\n", nee ? "on" : "off", threads,
-                  seconds, best.cpuSeconds, rate[threads], samples / best.cpuSeconds,
-                  double(best.stats.rays.total()) / seconds,
-                  double(best.stats.rays.total()) / samples);
-    }
-    std::printf(
-        "NEE %s: scaling 1 -> 2 threads %.2fx; %dx%d at 40 spp on 2 threads: %.1f s "
-        "(smallpt: about 30 s)\n",
-        nee ? "on" : "off", rate[2] / rate[1], width, height,
-        double(width) * height * 40 / rate[2]);
+/// Path tracing smallpt at 1024x768, 1 spp per iteration: range(0) = NEE on/off,
+/// range(1) = threads.
+void SmallptPath(benchmark::State& state) {
+  const Scene scene = shipped("smallpt", 1024, 768);
+  RenderSettings settings = scene.render;
+  settings.samplesPerPixel = 1;
+  settings.nextEventEstimation = state.range(0) == 1;
+  settings.multipleImportance = settings.nextEventEstimation;
+  const int threads = int(state.range(1));
+  double cpu = 0.0, rays = 0.0;
+  std::uint64_t seed = 1;
+  for (auto _ : state) {
+    settings.seed = seed++;  // each iteration new samples, as further passes would be
+    const Result r = renderOnce(scene, settings, threads);
+    cpu += r.cpuSeconds;
+    rays += double(r.stats.rays.total());
+    benchmark::DoNotOptimize(r.image.pixels.data());
   }
+  const double samples = 1024.0 * 768.0 * double(state.iterations());
+  state.counters["samples/s"] = benchmark::Counter(samples, benchmark::Counter::kIsRate);
+  state.counters["samples/CPU-s"] = samples / cpu;
+  state.counters["rays/sample"] = rays / samples;
 }
+BENCHMARK(SmallptPath)
+    ->ArgNames({"nee", "threads"})
+    ->ArgsProduct({{1, 0}, {1, 2}})
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
 
 /// RMSE at 16, 64, 256 spp with and without NEE against a converged reference.
 void convergence(const std::string& name, int width, int height, int referenceSpp,
@@ -173,12 +170,15 @@ void convergence(const std::string& name, int width, int height, int referenceSp
                 static_cast<unsigned long long>(settings.seed), r.stats.seconds);
     if (!referencePath.empty()) imageio::writePfm(reference, referencePath);
   }
-  std::printf("Path tracing %s.json at %dx%d, 2 threads; RMSE over all channels (linear)\n",
-              name.c_str(), width, height);
-  std::printf("%6s | %12s %10s | %12s %10s | %s\n", "spp", "RMSE NEE", "seconds", "RMSE no NEE",
-              "seconds", "error ratio");
+  std::printf(
+      "Path tracing %s.json at %dx%d, 2 threads; RMSE over all channels, of linear radiance "
+      "and as displayed (sRGB, clamped to [0, 1], as in the PNG)\n",
+      name.c_str(), width, height);
+  std::printf("%6s | %9s %9s %8s | %9s %9s %8s | %-21s | %s\n", "spp", "NEE lin", "NEE disp",
+              "CPU s", "noNEE lin", "noNEE disp", "CPU s", "error ratio (lin/disp)",
+              "at equal CPU time");
   for (int spp : spps) {
-    double error[2], seconds[2];
+    double linear[2], display[2], cpu[2];
     for (int nee = 1; nee >= 0; --nee) {
       RenderSettings settings = scene.render;
       settings.samplesPerPixel = spp;
@@ -186,11 +186,16 @@ void convergence(const std::string& name, int width, int height, int referenceSp
       settings.nextEventEstimation = nee == 1;
       settings.multipleImportance = nee == 1;
       const Result r = renderOnce(scene, settings, 2);
-      error[nee] = imageio::rmse(r.image, reference);
-      seconds[nee] = r.stats.seconds;
+      linear[nee] = imageio::rmse(r.image, reference);
+      display[nee] = displayRmse(r.image, reference);
+      cpu[nee] = r.cpuSeconds;
     }
-    std::printf("%6d | %12.5f %10.2f | %12.5f %10.2f | %.2fx\n", spp, error[1], seconds[1],
-                error[0], seconds[0], error[0] / error[1]);
+    // At equal time error falls like 1 / sqrt(time): scale by the square root of the cost.
+    const double cost = std::sqrt(cpu[1] / cpu[0]);
+    std::printf("%6d | %9.5f %9.5f %8.2f | %9.5f %9.5f %8.2f | %9.2fx %9.2fx | %7.2fx %7.2fx\n",
+                spp, linear[1], display[1], cpu[1], linear[0], display[0], cpu[0],
+                linear[0] / linear[1], display[0] / display[1], linear[0] / linear[1] / cost,
+                display[0] / display[1] / cost);
   }
   if (!equalError) return;
 
@@ -247,16 +252,20 @@ void convergence(const std::string& name, int width, int height, int referenceSp
 
 int main(int argc, char** argv) {
   using namespace raylab;
+  const std::string first = argc > 1 ? argv[1] : "";
+  if (first != "--convergence" && first != "--smoke") {
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+  }
   const Options o = parse(argc, argv);
   try {
-    if (o.mode == "throughput") {
-      throughput(o.scene, o.width ? o.width : 1024, o.height ? o.height : 768, o.spp, o.repeat);
-    } else if (o.mode == "convergence") {
-      convergence(o.scene, o.width ? o.width : 256, o.height ? o.height : 192, o.referenceSpp,
-                  o.reference, {16, 64, 256}, true);
-    } else {
-      throughput(o.scene, 32, 24, 2, 1);
+    if (o.smoke) {
       convergence(o.scene, 32, 24, 64, "", {4, 16}, false);
+    } else {
+      convergence(o.scene, o.width, o.height, o.referenceSpp, o.reference, {16, 64, 256}, true);
     }
   } catch (const std::exception& e) {
     std::cerr << "raylab_bench_render: " << e.what() << "\n";
