@@ -51,41 +51,6 @@ Vec3 emitterSeen(const HitContext& context) {
   return context.scene.emitted(context.hit.object, context.hit.si, context.ray.ray.direction);
 }
 
-std::optional<LightSample> sampleAreaLight(const SceneIntersector& scene, int object,
-                                           const Point3& ref, const Vec2& u, double time) {
-  const SceneObject& light = scene.scene().objects[std::size_t(object)];
-  // An infinite emitter (a plane) has no point to aim at: only hitting it counts.
-  if (light.shape->kind() == ShapeKind::Plane) return std::nullopt;
-  // A point on the light's surface, where the light is at this shutter time.
-  const ShapeSample s = light.shape->sampleArea(u);
-  const Point3 p = s.p + time * light.velocity;
-  const Vec3 d = p - ref;
-  const double distance2 = glm::dot(d, d);
-  if (!(distance2 > 0.0) || !(s.pdfArea > 0.0)) return std::nullopt;
-  const double distance = std::sqrt(distance2);
-  const Vec3 wi = d / distance;
-  // Only the front side emits: the light must face the shading point.
-  const double cosLight = -glm::dot(s.n, wi);
-  if (cosLight <= 0.0) return std::nullopt;
-  // Convert the area density to solid angle at ref: pdfA d^2 / cos(theta_light).
-  const double pdf = s.pdfArea * distance2 / cosLight;
-  if (!std::isfinite(pdf) || pdf <= 0.0) return std::nullopt;
-  LightSample sample;
-  sample.object = object;
-  sample.p = p;
-  sample.n = s.n;
-  sample.wi = wi;
-  sample.distance = distance;
-  sample.pdf = pdf;
-  SurfaceInteraction si;
-  si.t = distance;
-  si.p = p;
-  si.n = s.n;
-  si.frontFace = true;
-  sample.Le = scene.emitted(object, si, wi);
-  return sample;
-}
-
 QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
                     const Vec3& Le, bool targetIsSurface) {
   const Point3 origin = offsetRayOrigin(context.hit.si, target - context.hit.si.p);
@@ -134,10 +99,11 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
   for (int object : context.scene.areaLights()) {
     if (object == context.hit.object) continue;  // a surface does not light itself
     for (int k = 0; k < samplesPerLight; ++k) {
-      // A random point on the light (soft shadows).
+      // A random point on the light (soft shadows): by solid angle for round sphere
+      // lights, by area for other shapes, as next-event estimation samples them.
       const Vec2 u = context.sampler.next2D();
       const std::optional<LightSample> ls =
-          sampleAreaLight(context.scene, object, si.p, u, context.ray.ray.time);
+          context.scene.sampleLightObject(object, si.p, u, context.ray.ray.time);
       if (!ls) continue;
       const Vec3 fCos = classicShading(context.material, n, wo, ls->wi, lobes);
       if (isBlack(fCos) || isBlack(ls->Le)) continue;

@@ -40,12 +40,6 @@ QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, cons
 /// non-emitters and for the back side of lights).
 Vec3 emitterSeen(const HitContext& context);
 
-/// A point on area light `object` for `u` in [0,1)^2, seen from `ref` at shutter time
-/// `time` (moving lights move): solid-angle pdf of this one light (no pick probability).
-/// Nothing when the point faces away from ref or the density degenerates.
-std::optional<LightSample> sampleAreaLight(const SceneIntersector& scene, int object,
-                                           const Point3& ref, const Vec2& u, double time);
-
 /// A shadow ray from the hit of `context` to the light point `target` (world space),
 /// stopping just short of it, with `weight` and the radiance `Le` it delivers.
 QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,

@@ -122,6 +122,22 @@ std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, cons
   const std::size_t k =
       std::min<std::size_t>(static_cast<std::size_t>(it - m_lightCdf.begin()), m_lights.size() - 1);
   const double pick = m_lightCdf[k] - (k == 0 ? 0.0 : m_lightCdf[k - 1]);
+  std::optional<LightSample> ls = sampleLightAt(k, ref, uLight, time);
+  if (!ls) return std::nullopt;
+  ls->pdf *= pick;
+  if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
+  return ls;
+}
+
+std::optional<LightSample> SceneIntersector::sampleLightObject(int object, const Point3& ref,
+                                                               const Vec2& u, double time) const {
+  const auto it = std::lower_bound(m_lights.begin(), m_lights.end(), object);
+  if (it == m_lights.end() || *it != object) return std::nullopt;
+  return sampleLightAt(static_cast<std::size_t>(it - m_lights.begin()), ref, u, time);
+}
+
+std::optional<LightSample> SceneIntersector::sampleLightAt(std::size_t k, const Point3& ref,
+                                                           const Vec2& uLight, double time) const {
   const int index = m_lights[k];
   const SceneObject& object = m_scene->objects[static_cast<std::size_t>(index)];
 
@@ -154,7 +170,6 @@ std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, cons
   ls->object = index;
   ls->p += shift;
   ls->Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
-  ls->pdf *= pick;
   if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
   return ls;
 }

@@ -56,6 +56,11 @@ class SceneIntersector {
   /// part of the light that `ref` cannot see (see the class comment).
   std::optional<LightSample> sampleLight(const Point3& ref, const Vec2& uLight, double uPick,
                                          double time = 0.0) const;
+  /// Samples a point on the area light `object` (one of areaLights()) the way sampleLight
+  /// does once it has picked that light: the pdf is this light's alone, without the pick
+  /// probability. For algorithms that sample every light in turn (distributed tracing).
+  std::optional<LightSample> sampleLightObject(int object, const Point3& ref, const Vec2& u,
+                                               double time = 0.0) const;
   /// Solid-angle density with which sampleLight(ref, ..., time) would pick the point `hit`
   /// (on emitter `object`, where it is at `time`): used to MIS-weight emitters hit by BSDF
   /// sampling. It must be asked with the same ref and time as sampleLight.
@@ -68,6 +73,10 @@ class SceneIntersector {
   const Scene& scene() const { return *m_scene; }
 
  private:
+  /// sampleLightObject for light k of m_lights.
+  std::optional<LightSample> sampleLightAt(std::size_t k, const Point3& ref, const Vec2& u,
+                                           double time) const;
+
   /// What the inner loops need of an object, gathered once.
   struct Entry {
     const Shape* shape = nullptr;
