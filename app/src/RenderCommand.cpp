@@ -29,6 +29,8 @@ struct RenderOptions {
   CommonOptions common;
   std::optional<int> spp;  ///< Samples per pixel; default the scene's.
   int threads = 0;         ///< Worker threads; 0 = all hardware threads.
+  bool noNee = false;      ///< Path tracing without next-event estimation.
+  bool noMis = false;      ///< Next-event estimation without multiple importance sampling.
 };
 
 int runRender(const RenderOptions& options, const std::string& topLevelScene) {
@@ -36,6 +38,8 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   const Scene scene = options.common.loadScene(topLevelScene);
   RenderSettings settings = options.common.settings(scene);
   if (options.spp) settings.samplesPerPixel = *options.spp;
+  if (options.noNee) settings.nextEventEstimation = false;
+  if (options.noMis) settings.multipleImportance = false;
   const std::string& out = options.common.out;
 
   // Step 2: render, reporting each pass.
@@ -62,8 +66,13 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   const RenderStats& stats = renderer.stats();
   std::cout << out << "\n";
   std::cout << "algorithm " << toString(settings.algorithm) << ", " << image.width << "x"
-            << image.height << ", " << stats.samplesPerPixel << " spp, seed " << settings.seed
-            << "\n";
+            << image.height << ", " << stats.samplesPerPixel << " spp, seed " << settings.seed;
+  if (settings.algorithm == Algorithm::PathTracing)
+    std::cout << ", next-event estimation "
+              << (!settings.nextEventEstimation ? "off"
+                  : settings.multipleImportance ? "with MIS"
+                                                : "without MIS");
+  std::cout << "\n";
   std::cout << "rays:";
   for (int k = 0; k < kRayKindCount; ++k)
     std::cout << " " << toString(static_cast<RayKind>(k)) << " " << stats.rays.byKind[k] << ",";
@@ -116,6 +125,12 @@ Subcommand addRenderCommand(CLI::App& cli) {
   command->add_option("--threads", options->threads, "Worker threads, 0 = all")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
+  command->add_flag("--no-nee", options->noNee,
+                    "Path tracing without next-event estimation (smallpt's estimator: light is "
+                    "found only by paths that hit it)");
+  command->add_flag("--no-mis", options->noMis,
+                    "Next-event estimation without multiple importance sampling (light hit by "
+                    "a bounce then counts only where it was not sampled)");
   return {command, [options](const std::string& topLevelScene) {
             return runRender(*options, topLevelScene);
           }};
