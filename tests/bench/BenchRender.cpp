@@ -6,7 +6,8 @@
 //       2 threads. Counters: samples/s (wall time), samples/CPU-s (process CPU time, which a
 //       busy machine disturbs far less), rays/sample. Scaling 1 -> 2 threads is the ratio of
 //       the two samples/s figures; smallpt's 40 spp at 1024x768 take 31.5M / (samples/s).
-//       e.g. raylab_bench_render --benchmark_counters_tabular=true
+//       An iteration takes 0.6-2 s: e.g. raylab_bench_render --benchmark_min_time=4
+//       --benchmark_repetitions=3 --benchmark_counters_tabular=true
 //   raylab_bench_render --convergence [--size WxH] [--reference-spp N] [--reference FILE.pfm]
 //                       [--scene NAME]
 //       Not a timing benchmark but the error study: RMSE against a converged reference at
@@ -146,8 +147,7 @@ BENCHMARK(SmallptPath)
     ->ArgNames({"nee", "threads"})
     ->ArgsProduct({{1, 0}, {1, 2}})
     ->Unit(benchmark::kSecond)
-    ->UseRealTime()
-    ->MinTime(2.0);
+    ->UseRealTime();
 
 /// RMSE at 16, 64, 256 spp with and without NEE against a converged reference.
 void convergence(const std::string& name, int width, int height, int referenceSpp,

@@ -149,11 +149,13 @@ TEST(Algorithms, 02_LocalShadingOfAPointLightByHand) {
 //
 // The standard error must also be small enough for the check to mean something (2% of L),
 // except for NEE without MIS: light sampled by area from a point near an edge of the cube
-// has the geometry term cos cos' / r^2 of the adjacent wall, whose second moment diverges
-// like 1 / (distance to the edge). That estimator's variance is infinite, so its measured
-// standard error wanders with the seed (it exceeds 2% for about a third of the seeds) and
-// bounds nothing. Its mean is still checked here, and Algorithms.09, .19 and .20 check it
-// where no light meets a lit surface at an edge. MIS keeps those samples' weights bounded.
+// has the geometry term cos cos' / r^2 of the adjacent wall: at distance d from the edge
+// the estimate's second moment grows like 1 / d^2, whose integral over the walls diverges.
+// That estimator's variance is infinite, so its measured standard error wanders with the
+// seed (it exceeds 2% for about a third of the seeds); it only has to stay under 10% here,
+// so that the 5-sigma check of its mean still means something. Algorithms.09, .19 and .20
+// check its mean where no light meets a lit surface at an edge. MIS keeps those samples'
+// weights bounded.
 TEST(Algorithms, 03_FurnaceGivesLeOverOneMinusAlbedo) {
   struct Case {
     const char* name;
@@ -182,9 +184,7 @@ TEST(Algorithms, 03_FurnaceGivesLeOverOneMinusAlbedo) {
               << "), standard error " << stats.standardError.x << ", " << z << " sigma\n";
     EXPECT_LT(z, 5.0) << c.name;
     // The bound must be tight enough to mean something.
-    if (c.finiteVariance) {
-      EXPECT_LT(stats.standardError.x, 0.02 * expected) << c.name;
-    }
+    EXPECT_LT(stats.standardError.x, (c.finiteVariance ? 0.02 : 0.1) * expected) << c.name;
     EXPECT_GT(stats.standardError.x, 0.0) << c.name;
   }
 }
@@ -687,6 +687,43 @@ TEST(Algorithms, 21_DistributedSamplesSphereLightsBySolidAngle) {
   EXPECT_NEAR(stats.mean.x, 0.125, 5.0 * se + 1e-12);
   EXPECT_LT(deviation, 0.05 * 0.125);
   EXPECT_GT(deviation, 0.0);  // the cone is sampled, not its axis alone
+}
+
+// The same on a curved floor: the top of a diffuse sphere of radius 20 instead of the
+// quad, so the shading points lie on a sphere that the light sees as a separator (the
+// light is outside it). Which side of that sphere a shading point is on must not be left
+// to rounding: sampled from the hit points themselves, many floor pixels found the light
+// invisible (dark samples). Every pixel of a 15 x 15 view around the point below the light
+// must be lit, and the centre pixel still gives L = 0.125: the floor falls away below its
+// tangent plane there and hides nothing of the light. (The scene sits away from the world
+// origin: near it, secondary-ray offsets are too small for a sphere of this size; see
+// RayOffset.h.)
+TEST(Algorithms, 22_DistributedSphereLightOverASphere) {
+  Scene scene;
+  const int floor = addMaterial(scene, makeMaterial("floor", MaterialType::Diffuse, Vec3(0.5)));
+  Material lamp = makeMaterial("lamp", MaterialType::Diffuse, Vec3(0.0));
+  lamp.emission = Vec3(4.0);
+  const int light = addMaterial(scene, lamp);
+  addObject(scene, "floor", std::make_unique<Sphere>(Point3(3.0, -20.0, 3.0), 20.0), floor);
+  addObject(scene, "lamp", std::make_unique<Sphere>(Point3(3.0, 2.0, 3.0), 0.5), light);
+  scene.camera.position = Point3(3.0, 1.0, 6.0);
+  scene.camera.lookAt = Point3(3.0, 0.0, 3.0);
+  scene.camera.verticalFov = 10.0;
+  scene.camera.width = scene.camera.height = 15;
+  RenderSettings settings = settingsFor(Algorithm::Distributed, 1, 9);
+  settings.shadowSamples = 1;
+  const Tracer cook(scene, settings);
+  int dark = 0;
+  for (int y = 0; y < 15; ++y)
+    for (int x = 0; x < 15; ++x)
+      for (int s = 0; s < 4; ++s)
+        if (!(cook.trace(x, y, s).x > 0.0)) ++dark;
+  RunningStats centre;
+  for (int s = 0; s < 1024; ++s) centre.add(cook.trace(7, 7, s));
+  std::cout << "[distributed sphere light over a sphere] " << dark
+            << " dark samples of 900; centre mean " << centre.mean.x << " (expected 0.125)\n";
+  EXPECT_EQ(dark, 0);
+  EXPECT_NEAR(centre.mean.x, 0.125, 1e-3);
 }
 
 // The built-in scene is lit by a box light only; the classic algorithms must light the

@@ -96,6 +96,10 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
   const Normal3 n = si.facingNormal();
   const Vec3 wo = -context.ray.ray.direction;
   const double invN = 1.0 / double(samplesPerLight);
+  // Lights are sampled from the offset hit point on the lit side, as next-event estimation
+  // does: si.p lies on its surface up to rounding, so a sphere light's test of which side
+  // of a spherical surface the point is on could go either way at si.p itself.
+  const Point3 ref = offsetRayOrigin(si, n);
   for (int object : context.scene.areaLights()) {
     if (object == context.hit.object) continue;  // a surface does not light itself
     for (int k = 0; k < samplesPerLight; ++k) {
@@ -103,7 +107,7 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
       // lights, by area for other shapes, as next-event estimation samples them.
       const Vec2 u = context.sampler.next2D();
       const std::optional<LightSample> ls =
-          context.scene.sampleLightObject(object, si.p, u, context.ray.ray.time);
+          context.scene.sampleLightObject(object, ref, u, context.ray.ray.time);
       if (!ls) continue;
       const Vec3 fCos = classicShading(context.material, n, wo, ls->wi, lobes);
       if (isBlack(fCos) || isBlack(ls->Le)) continue;

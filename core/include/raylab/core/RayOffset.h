@@ -20,11 +20,12 @@ constexpr double kRayOffsetFloor = 1e-6;
  * there can hit the same surface again at t ~ 0 ("shadow acne"). The offset is relative to
  * the hit point's magnitude: about 4.5e6 ulps of its largest coordinate, far above that
  * error and far below any feature a scene is built from, at every scale from 1e-6 to 1e6
- * (the tests cover that range). A relative rule is weak only where |p| is much smaller
- * than the coordinates the shape is built from (a large shape passing through the world
- * origin); the floor keeps the offset at least 1e-15 there, enough for shapes up to about
- * 1e2 units. (pbrt's `OffsetRayOrigin` uses a per-hit error bound instead; our shapes do
- * not carry one.)
+ * (the tests cover that range). A relative rule is weak where |p| is much smaller than
+ * the coordinates the shape is built from: a large shape passing through the world origin.
+ * The floor keeps the offset at least 1e-15 there, a few ulps of coordinates of order 1,
+ * which is not enough for larger shapes: a ray leaving a sphere of radius 20 at the
+ * world origin can hit it again at t = 0. (pbrt's `OffsetRayOrigin` uses a per-hit error
+ * bound instead; our shapes do not carry one yet.)
  */
 double rayOffsetDistance(const Point3& p);
 
