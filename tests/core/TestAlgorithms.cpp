@@ -633,23 +633,31 @@ TEST(Algorithms, 16_DistributedMotionBlurAveragesOverTheShutter) {
 namespace raylab {
 namespace {
 
+/// A diffuse floor of albedo 0.5 under a sphere light of radiance 4 and radius 0.5 whose
+/// centre is 2 above the point `below` of the floor, seen by a 1 x 1 camera from 1 above and
+/// 3 behind that point: the light sends L = 0.5 * 4 * 0.5^2 / 2^2 = 0.125 back from it.
+Scene sphereLightOverFloor(std::unique_ptr<Shape> floorShape, const Point3& below) {
+  Scene scene;
+  const int floor = addMaterial(scene, makeMaterial("floor", MaterialType::Diffuse, Vec3(0.5)));
+  Material lamp = makeMaterial("lamp", MaterialType::Diffuse, Vec3(0.0));
+  lamp.emission = Vec3(4.0);
+  const int light = addMaterial(scene, lamp);
+  addObject(scene, "floor", std::move(floorShape), floor);
+  addObject(scene, "lamp", std::make_unique<Sphere>(below + Vec3(0.0, 2.0, 0.0), 0.5), light);
+  scene.camera.position = below + Vec3(0.0, 1.0, 3.0);
+  scene.camera.lookAt = below;
+  scene.camera.width = scene.camera.height = 1;
+  return scene;
+}
+
 // Ray casting and Whitted see an area light as a point light at its centre with the
 // emitter's far-field intensity. For a sphere light this is exact: a sphere of radius r
 // and radiance Le subtends the irradiance E = Le pi (r / d)^2 at a surface facing it at
 // distance d, and a diffuse floor of albedo a sends back L = a / pi E = a Le r^2 / d^2.
 // Here a = 0.5, Le = 4, r = 0.5, d = 2 (light centre above the shading point): L = 0.125.
 TEST(Algorithms, 17_ClassicSphereLightGivesTheExactIrradiance) {
-  Scene scene;
-  const int floor = addMaterial(scene, makeMaterial("floor", MaterialType::Diffuse, Vec3(0.5)));
-  Material lamp = makeMaterial("lamp", MaterialType::Diffuse, Vec3(0.0));
-  lamp.emission = Vec3(4.0);
-  const int light = addMaterial(scene, lamp);
-  addObject(scene, "floor",
-            std::make_unique<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), floor);
-  addObject(scene, "lamp", std::make_unique<Sphere>(Point3(0.0, 2.0, 0.0), 0.5), light);
-  scene.camera.position = Point3(0.0, 1.0, 3.0);
-  scene.camera.lookAt = Point3(0.0);
-  scene.camera.width = scene.camera.height = 1;
+  const Scene scene = sphereLightOverFloor(
+      std::make_unique<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), Point3(0.0));
   for (Algorithm algorithm : {Algorithm::RayCasting, Algorithm::Whitted}) {
     const Vec3 L = Tracer(scene, settingsFor(algorithm, 1)).trace(0, 0, 0);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(L[k], 0.125, 1e-9) << toString(algorithm);
@@ -664,17 +672,8 @@ TEST(Algorithms, 17_ClassicSphereLightGivesTheExactIrradiance) {
 // side and the relative deviation would exceed 1. The mean is checked within 5 standard
 // errors over 1024 samples.
 TEST(Algorithms, 21_DistributedSamplesSphereLightsBySolidAngle) {
-  Scene scene;
-  const int floor = addMaterial(scene, makeMaterial("floor", MaterialType::Diffuse, Vec3(0.5)));
-  Material lamp = makeMaterial("lamp", MaterialType::Diffuse, Vec3(0.0));
-  lamp.emission = Vec3(4.0);
-  const int light = addMaterial(scene, lamp);
-  addObject(scene, "floor",
-            std::make_unique<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), floor);
-  addObject(scene, "lamp", std::make_unique<Sphere>(Point3(0.0, 2.0, 0.0), 0.5), light);
-  scene.camera.position = Point3(0.0, 1.0, 3.0);
-  scene.camera.lookAt = Point3(0.0);
-  scene.camera.width = scene.camera.height = 1;
+  const Scene scene = sphereLightOverFloor(
+      std::make_unique<Quad>(Point3(-5, 0, 5), Vec3(10, 0, 0), Vec3(0, 0, -10)), Point3(0.0));
   RenderSettings settings = settingsFor(Algorithm::Distributed, 1, 5);
   settings.shadowSamples = 1;
   const Tracer cook(scene, settings);
@@ -699,15 +698,8 @@ TEST(Algorithms, 21_DistributedSamplesSphereLightsBySolidAngle) {
 // origin: near it, secondary-ray offsets are too small for a sphere of this size; see
 // RayOffset.h.)
 TEST(Algorithms, 22_DistributedSphereLightOverASphere) {
-  Scene scene;
-  const int floor = addMaterial(scene, makeMaterial("floor", MaterialType::Diffuse, Vec3(0.5)));
-  Material lamp = makeMaterial("lamp", MaterialType::Diffuse, Vec3(0.0));
-  lamp.emission = Vec3(4.0);
-  const int light = addMaterial(scene, lamp);
-  addObject(scene, "floor", std::make_unique<Sphere>(Point3(3.0, -20.0, 3.0), 20.0), floor);
-  addObject(scene, "lamp", std::make_unique<Sphere>(Point3(3.0, 2.0, 3.0), 0.5), light);
-  scene.camera.position = Point3(3.0, 1.0, 6.0);
-  scene.camera.lookAt = Point3(3.0, 0.0, 3.0);
+  Scene scene = sphereLightOverFloor(std::make_unique<Sphere>(Point3(3.0, -20.0, 3.0), 20.0),
+                                     Point3(3.0, 0.0, 3.0));
   scene.camera.verticalFov = 10.0;
   scene.camera.width = scene.camera.height = 15;
   RenderSettings settings = settingsFor(Algorithm::Distributed, 1, 9);
