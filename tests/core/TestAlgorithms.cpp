@@ -74,6 +74,40 @@ double sigmas(const Vec3& a, const Vec3& seA, const Vec3& b, const Vec3& seB = V
   return worst;
 }
 
+/// Path tracing with NEE + MIS (`nee`), NEE without MIS (seed + 1) and without NEE
+/// (seed + 2), each `spp` samples per pixel, and how far the other two image means are from
+/// the first in combined standard errors. `tag` prefixes the printed figures.
+struct EstimatorRuns {
+  ImageStats withMis, withoutMis, withoutNee;
+  double zWithoutMis = 0.0, zWithoutNee = 0.0;
+};
+
+EstimatorRuns runThreeEstimators(const Scene& scene, const RenderSettings& nee, int spp,
+                                 const std::string& tag) {
+  RenderSettings noMis = nee;
+  noMis.multipleImportance = false;
+  noMis.seed = nee.seed + 1;
+  RenderSettings noNee = nee;
+  noNee.nextEventEstimation = false;
+  noNee.seed = nee.seed + 2;
+  EstimatorRuns r;
+  r.withMis = sampleImage(scene, nee, spp);
+  r.withoutMis = sampleImage(scene, noMis, spp);
+  r.withoutNee = sampleImage(scene, noNee, spp);
+  const ImageStats& a = r.withMis;
+  const ImageStats& b = r.withoutMis;
+  const ImageStats& c = r.withoutNee;
+  r.zWithoutMis = sigmas(a.mean, a.standardError, b.mean, b.standardError);
+  r.zWithoutNee = sigmas(a.mean, a.standardError, c.mean, c.standardError);
+  std::cout << tag << " image mean NEE+MIS " << toString(a.mean) << " +- "
+            << toString(a.standardError) << "\n"
+            << tag << " NEE without MIS " << toString(b.mean) << " (" << r.zWithoutMis
+            << " sigma)\n"
+            << tag << " without NEE " << toString(c.mean) << " +- " << toString(c.standardError)
+            << " (" << r.zWithoutNee << " sigma)\n";
+  return r;
+}
+
 // An emitter seen directly gives exactly its radiance, for every algorithm and any number
 // of samples: L = Le = (1, 2, 3) in every pixel (the emitter is black: it reflects nothing).
 TEST(Algorithms, 01_EmitterSeenDirectlyGivesItsRadianceExactly) {
@@ -391,31 +425,19 @@ TEST(Algorithms, 08_DistributedWithOneSampleEqualsWhitted) {
 TEST(Algorithms, 09_PathTracingMeanWithNeeEqualsMeanWithout) {
   const Scene scene = cornellScene(8, 8);
   RenderSettings nee = settingsFor(Algorithm::PathTracing, 256, 21);
-  RenderSettings noMis = nee;
-  noMis.multipleImportance = false;
-  noMis.seed = 22;
-  RenderSettings noNee = nee;
-  noNee.nextEventEstimation = false;
-  noNee.seed = 23;
-  const ImageStats a = sampleImage(scene, nee, 256);
-  const ImageStats b = sampleImage(scene, noMis, 256);
-  const ImageStats c = sampleImage(scene, noNee, 256);
-  const double zB = sigmas(a.mean, a.standardError, b.mean, b.standardError);
-  const double zC = sigmas(a.mean, a.standardError, c.mean, c.standardError);
-  std::cout << "[nee] image mean NEE+MIS " << toString(a.mean) << " +- "
-            << toString(a.standardError) << "\n[nee] NEE without MIS " << toString(b.mean) << " ("
-            << zB << " sigma)\n[nee] without NEE " << toString(c.mean) << " +- "
-            << toString(c.standardError) << " (" << zC << " sigma)\n";
-  EXPECT_LT(zB, 5.0);
-  EXPECT_LT(zC, 5.0);
+  const EstimatorRuns runs = runThreeEstimators(scene, nee, 256, "[nee]");
+  const ImageStats& a = runs.withMis;
+  EXPECT_LT(runs.zWithoutMis, 5.0);
+  EXPECT_LT(runs.zWithoutNee, 5.0);
   double worst = 0.0;
   for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    worst = std::max(worst, sigmas(a.pixels[i].mean, a.pixels[i].standardError(), b.pixels[i].mean,
-                                   b.pixels[i].standardError()));
+    worst = std::max(
+        worst, sigmas(a.pixels[i].mean, a.pixels[i].standardError(), runs.withoutMis.pixels[i].mean,
+                      runs.withoutMis.pixels[i].standardError()));
   std::cout << "[nee] largest pixel difference with and without MIS: " << worst << " sigma\n";
   EXPECT_LT(worst, 5.5);
   // NEE is the better estimator here: a smaller standard error.
-  EXPECT_LT(a.standardError.x, c.standardError.x);
+  EXPECT_LT(a.standardError.x, runs.withoutNee.standardError.x);
 }
 
 // Whitted mirror: one camera ray hits a mirror sphere (radius 1 at the origin) head-on at
@@ -749,24 +771,11 @@ TEST(Algorithms, 19_SmallptMeanWithNeeEqualsMeanWithout) {
   scene.camera.height = 12;
   RenderSettings nee = scene.render;
   nee.seed = 31;
-  RenderSettings noMis = nee;
-  noMis.multipleImportance = false;
-  noMis.seed = 32;
-  RenderSettings noNee = nee;
-  noNee.nextEventEstimation = false;
-  noNee.seed = 33;
-  const ImageStats a = sampleImage(scene, nee, 512);
-  const ImageStats b = sampleImage(scene, noMis, 512);
-  const ImageStats c = sampleImage(scene, noNee, 512);
-  const double zB = sigmas(a.mean, a.standardError, b.mean, b.standardError);
-  const double zC = sigmas(a.mean, a.standardError, c.mean, c.standardError);
-  std::cout << "[smallpt] image mean NEE+MIS " << toString(a.mean) << " +- "
-            << toString(a.standardError) << "\n[smallpt] NEE without MIS " << toString(b.mean)
-            << " (" << zB << " sigma)\n[smallpt] without NEE " << toString(c.mean) << " +- "
-            << toString(c.standardError) << " (" << zC << " sigma)\n";
-  EXPECT_LT(zB, 5.0);
-  EXPECT_LT(zC, 5.0);
-  EXPECT_LT(a.standardError.x, 0.8 * c.standardError.x);
+  const EstimatorRuns runs = runThreeEstimators(scene, nee, 512, "[smallpt]");
+  const ImageStats& a = runs.withMis;
+  EXPECT_LT(runs.zWithoutMis, 5.0);
+  EXPECT_LT(runs.zWithoutNee, 5.0);
+  EXPECT_LT(a.standardError.x, 0.8 * runs.withoutNee.standardError.x);
 }
 
 // A moving light: a sphere of radius 1 and radiance 4 above a diffuse floor rises from
@@ -789,25 +798,11 @@ TEST(Algorithms, 20_MovingLightNeeEqualsNoNee) {
   scene.camera.verticalFov = 20.0;
   scene.camera.width = 8;
   scene.camera.height = 6;
-  RenderSettings nee = settingsFor(Algorithm::PathTracing, 1024, 51);
-  RenderSettings noMis = nee;
-  noMis.multipleImportance = false;
-  noMis.seed = 52;
-  RenderSettings noNee = nee;
-  noNee.nextEventEstimation = false;
-  noNee.seed = 53;
-  const ImageStats a = sampleImage(scene, nee, 1024);
-  const ImageStats b = sampleImage(scene, noMis, 1024);
-  const ImageStats c = sampleImage(scene, noNee, 1024);
-  const double zB = sigmas(a.mean, a.standardError, b.mean, b.standardError);
-  const double zC = sigmas(a.mean, a.standardError, c.mean, c.standardError);
-  std::cout << "[moving light] image mean NEE+MIS " << toString(a.mean) << " +- "
-            << toString(a.standardError) << "\n[moving light] NEE without MIS " << toString(b.mean)
-            << " (" << zB << " sigma)\n[moving light] without NEE " << toString(c.mean) << " +- "
-            << toString(c.standardError) << " (" << zC << " sigma)\n";
-  EXPECT_GT(c.mean.x, 0.01);
-  EXPECT_LT(zB, 5.0);
-  EXPECT_LT(zC, 5.0);
+  const RenderSettings nee = settingsFor(Algorithm::PathTracing, 1024, 51);
+  const EstimatorRuns runs = runThreeEstimators(scene, nee, 1024, "[moving light]");
+  EXPECT_GT(runs.withoutNee.mean.x, 0.01);
+  EXPECT_LT(runs.zWithoutMis, 5.0);
+  EXPECT_LT(runs.zWithoutNee, 5.0);
 }
 
 }  // namespace
