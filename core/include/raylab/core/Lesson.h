@@ -1,0 +1,274 @@
+#pragma once
+
+#include "raylab/core/Exception.h"
+#include "raylab/core/RayTree.h"
+#include "raylab/core/RenderSettings.h"
+#include "raylab/core/Scene.h"
+
+#include <climits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raylab {
+
+/// The two languages every lesson is written in.
+enum class Language {
+  English,  ///< "en"
+  Chinese,  ///< "zh": Simplified Chinese.
+};
+/// "en" or "zh".
+const char* toString(Language language);
+/// Parses "en" and "zh"; nothing for anything else.
+std::optional<Language> parseLanguage(const std::string& code);
+
+/// One text in both languages (UTF-8). Lesson files require both.
+struct LocalText {
+  std::string en;  ///< English.
+  std::string zh;  ///< Simplified Chinese.
+  /// The text in `language`.
+  const std::string& in(Language language) const { return language == Language::Chinese ? zh : en; }
+  bool empty() const { return en.empty() && zh.empty(); }
+};
+
+/// What a lesson step shows.
+enum class LessonView {
+  Scene,      ///< "scene": the 3D scene with the ray tree of the step's pixel.
+  Image,      ///< "image": the rendered image of the step's algorithm.
+  Compare,    ///< "compare": the four algorithms side by side.
+  Plot,       ///< "plot": the convergence plot (error against samples or time).
+  Inspector,  ///< "inspector": one ray of the tree (select_ray) in the ray inspector.
+  Samples,    ///< "samples": a sampler's directions as a point cloud.
+};
+/// "scene", "image", "compare", "plot", "inspector", "samples".
+const char* toString(LessonView view);
+std::optional<LessonView> parseLessonView(const std::string& name);
+
+/// How the ray tree is coloured (the ray-tree view's colourings, named as in `raylab trace`).
+enum class LessonColouring {
+  Energy,  ///< "energy": the seed's grey-green-blue energy scale.
+  Kind,    ///< "kind": camera, reflection, refraction, diffuse, glossy, shadow.
+  Depth,   ///< "depth": bounces from the camera ray.
+};
+const char* toString(LessonColouring colouring);
+
+/// Where the 3D view looks from (as `raylab trace --view`).
+enum class LessonCameraView {
+  Default,  ///< "default": from outside the scene.
+  Camera,   ///< "camera": from just behind the scene's camera.
+};
+const char* toString(LessonCameraView view);
+
+/// How much of the ray tree a step reveals: all of it, up to an animation frame, or up
+/// to a depth (every ray of depth <= value).
+struct LessonReveal {
+  enum class By { Everything, Frame, Depth };
+  By by = By::Everything;
+  int value = 0;  ///< Frame number or depth, >= 0.
+};
+
+/// Which rays of the tree are drawn (as `raylab trace`'s filter options).
+struct LessonFilters {
+  std::vector<RayKind> kinds;  ///< Only these kinds; empty = every kind.
+  int maxDepth = INT_MAX;      ///< Deepest depth drawn (camera ray: 0).
+  bool reachingLight = false;  ///< Only rays on paths that found light.
+  double minEnergy = 0.0;      ///< Hide rays carrying less energy than this.
+};
+
+/// A sampler whose directions the "samples" view draws as a point cloud, in the local
+/// frame where the surface normal (or, for the Phong lobe, the mirror direction) is +z.
+struct LessonSamples {
+  enum class Sampler {
+    Cosine,   ///< "cosine": cosine-weighted hemisphere (sampleCosineHemisphere).
+    Uniform,  ///< "uniform": uniform hemisphere (sampleUniformSphere folded onto +z).
+    Sphere,   ///< "sphere": uniform sphere (sampleUniformSphere).
+    Phong,    ///< "phong": normalised Phong lobe of `exponent` (samplePhongLobe).
+  };
+  Sampler sampler = Sampler::Cosine;
+  int count = 256;        ///< Directions drawn, >= 1.
+  double exponent = 0.0;  ///< Phong exponent (> 0, required for "phong" only).
+};
+const char* toString(LessonSamples::Sampler sampler);
+
+/**
+ * \brief A number a question's answer is computed from, so answers are not typed by hand:
+ * the test suite recomputes each with Tracer / Stepper on the step's scene (scene changes
+ * applied) and checks the stated answer lies within its tolerance.
+ */
+struct LessonCheck {
+  enum class Quantity {
+    TreeRays,           ///< "tree_rays": rays in the recorded tree of one sample (optionally
+                        ///< only of `kind`, only those that ended for `end`).
+    TreeDepth,          ///< "tree_depth": the deepest depth in that tree (camera ray: 0).
+    EstimateLuminance,  ///< "estimate_luminance": luminance of that sample's estimate.
+    PixelLuminance,     ///< "pixel_luminance": mean luminance of samples 0..spp-1 of the pixel.
+    RayLength,          ///< "ray_length": distance from ray `ray`'s origin to its hit point.
+    CameraRays,         ///< "camera_rays": camera rays of a whole image at the scene's spp.
+  };
+  Quantity quantity = Quantity::TreeRays;
+  Algorithm algorithm = Algorithm::PathTracing;  ///< Default: the step's algorithm.
+  int pixelX = 0, pixelY = 0;                    ///< Default: the step's pixel.
+  int sample = 0;                                ///< Default: the step's sample.
+  std::optional<RayKind> kind;                   ///< tree_rays: only this kind.
+  std::optional<EndReason> end;                  ///< tree_rays: only rays that ended so.
+  int ray = 0;                                   ///< ray_length: the segment id.
+  int spp = 0;                                   ///< pixel_luminance: samples (0: scene's).
+};
+/// "tree_rays", "tree_depth", ...
+const char* toString(LessonCheck::Quantity quantity);
+
+/// A question for the student: multiple choice, or a number with a tolerance.
+struct LessonQuestion {
+  enum class Type { Choice, Number };
+  Type type = Type::Choice;
+  LocalText prompt;
+  std::vector<LocalText> choices;    ///< Choice: at least two.
+  int answerIndex = 0;               ///< Choice: index into choices.
+  double answer = 0.0;               ///< Number: the right answer.
+  double tolerance = 0.0;            ///< Number: accepted |given - answer|, >= 0.
+  std::optional<LessonCheck> check;  ///< Number: how the answer is computed.
+  LocalText explanation;             ///< Why, shown after answering.
+};
+
+/// One step of a lesson: what to show, what to read, what to ask.
+struct LessonStep {
+  LocalText title;
+  LocalText text;
+  LessonView view = LessonView::Scene;
+  Algorithm algorithm = Algorithm::PathTracing;  ///< Resolved: step, lesson default or scene.
+  std::optional<int> pixelX, pixelY;             ///< The pixel traced (both or neither).
+  int sample = 0;                                ///< Which sample of the pixel.
+  LessonReveal reveal;
+  LessonColouring colouring = LessonColouring::Energy;
+  LessonFilters filters;
+  LessonCameraView cameraView = LessonCameraView::Default;
+  std::optional<int> selectRay;          ///< Segment id to select (inspector: default 0).
+  std::optional<LessonSamples> samples;  ///< The "samples" view's sampler.
+  /// The step's scene changes as written (compact JSON, one per change), for captions.
+  std::vector<std::string> sceneChanges;
+  std::optional<LessonQuestion> question;
+  LocalText teacherNotes;          ///< Optional; empty when absent.
+  std::vector<std::string> needs;  ///< "requires": features the step needs that RayLab lacks.
+  /// The step's scene: the lesson's scene with this step's changes applied (shared with
+  /// the lesson when the step changes nothing). Never null in a loaded lesson.
+  std::shared_ptr<const Scene> scene;
+
+  /// The settings the step renders and traces with: the step scene's render block with
+  /// the step's algorithm.
+  RenderSettings settings() const;
+};
+
+/// A lesson: a scene and the steps a class goes through, in English and Chinese.
+struct Lesson {
+  std::string file;       ///< The lesson file as given to LessonIO::load (or the origin).
+  std::string id;         ///< Short name, e.g. "04-whitted".
+  LocalText title;        ///< Shown in lists and at the top of the handout.
+  LocalText summary;      ///< One paragraph: what the lesson teaches.
+  std::string scenePath;  ///< The scene file: "scene" joined to the lesson file's folder.
+  std::shared_ptr<const Scene> scene;  ///< The scene as loaded, before any step's changes.
+  std::vector<LessonStep> steps;
+
+  /// The scene of step `index` (0-based) with its changes applied.
+  const Scene& sceneOfStep(std::size_t index) const { return *steps.at(index).scene; }
+  /// Number of steps with a question.
+  int questionCount() const;
+  /// Every distinct feature named by a step's "requires", in order of first use.
+  std::vector<std::string> requiredFeatures() const;
+};
+
+/**
+ * \brief Reads lesson files: versioned JSON naming a scene in lessons/scenes/ and a list
+ * of steps, each in English and Chinese.
+ *
+ * Format (version 1):
+ *
+ *     {
+ *       "raylab_lesson": 1,
+ *       "id": "04-whitted",
+ *       "title":   {"en": "Whitted ray tracing", "zh": "Whitted 光线追踪"},
+ *       "summary": {"en": "...", "zh": "..."},
+ *       "scene": "scenes/whitted.json",
+ *       "defaults": {"view": "scene", "algorithm": "whitted", "pixel": [160, 120]},
+ *       "steps": [
+ *         {"title": {"en": "Snell's law", "zh": "斯涅尔定律"},
+ *          "text":  {"en": "The ray meets the glass and splits ...", "zh": "..."},
+ *          "view": "scene", "algorithm": "whitted", "pixel": [120, 96], "sample": 0,
+ *          "reveal": {"depth": 2}, "colour": "kind",
+ *          "filters": {"kinds": ["camera", "refraction"], "max_depth": 3,
+ *                      "reaching_light": false, "min_energy": 0},
+ *          "camera_view": "default", "select_ray": 1,
+ *          "scene_changes": [{"material": "glass", "set": {"ior": 1.0}}],
+ *          "question": {"type": "number",
+ *                       "prompt": {"en": "How many rays ...?", "zh": "..."},
+ *                       "answer": 7, "tolerance": 0,
+ *                       "check": {"quantity": "tree_rays", "algorithm": "whitted",
+ *                                 "pixel": [120, 96]},
+ *                       "explanation": {"en": "...", "zh": "..."}},
+ *          "teacher_notes": {"en": "...", "zh": "..."},
+ *          "requires": "schlick-fresnel"}
+ *       ]
+ *     }
+ *
+ * - "scene" is relative to the lesson file's folder; it is loaded with SceneIO (its
+ *   errors are passed on). "defaults" may hold view, algorithm, pixel, sample, reveal,
+ *   colour, filters and camera_view; a step inherits each one it does not set. The
+ *   algorithm falls back to the scene's render block, the view to "scene".
+ * - Step keys: title and text (both {en, zh}, both languages required; "zh" must contain
+ *   Chinese); view: scene | image | compare | plot | inspector | samples; algorithm:
+ *   raycast | whitted | distributed | path; pixel [x, y] inside the step scene's image
+ *   (required by inspector, and by select_ray and reveal); sample in [0, spp); reveal
+ *   {"frame": n} or {"depth": d}; colour: energy | kind | depth; filters (kinds from
+ *   camera, reflection, refraction, diffuse, glossy, shadow; max_depth; reaching_light;
+ *   min_energy); camera_view: default | camera; select_ray: a segment id of the pixel's
+ *   tree (checked by tracing it); samples (view "samples" only): {"sampler": cosine |
+ *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; teacher_notes {en, zh};
+ *   requires: a feature name or a list of them (the step needs something RayLab does not
+ *   have yet; the loader accepts it and Lesson::requiredFeatures lists it).
+ * - scene_changes: edits for this step only, applied in order to a copy of the scene
+ *   file's JSON and validated by SceneIO's own rules, in the scene format's key names:
+ *       {"material": NAME, "set": {...}}           merge into the material (not "name")
+ *       {"object": NAME, "set": {...}}             merge into the object (e.g. "material",
+ *                                                  "velocity", "shape": {"radius": 2})
+ *       {"object": NAME, "translate": [x, y, z]}   append a transform step (also "scale"
+ *       {"object": NAME, "rotate": {"axis", "degrees"}}   [x, y, z], "rotate")
+ *       {"object": NAME, "remove": true}           take the object out
+ *       {"point_light": NAME, "set" | "translate" | "remove": ...}
+ *       {"camera": {...}}, {"render": {...}}       merge into the camera / render block
+ *       {"add_material": {...}}, {"add_object": {...}}, {"add_point_light": {...}}
+ *   "set" is a JSON merge patch (RFC 7386): nested objects merge, null removes a key.
+ * - question: "type" choice (choices [{en, zh}, ...], "answer" = index) or number
+ *   ("answer", "tolerance" >= 0, optional "check"); "prompt" and "explanation" {en, zh}.
+ *   check: {"quantity": tree_rays | tree_depth | estimate_luminance | pixel_luminance |
+ *   ray_length | camera_rays, "algorithm", "pixel", "sample" (default: the step's),
+ *   "kind", "end" (tree_rays: escaped, hit_light, max_depth, russian_roulette, absorbed,
+ *   occluded, reached_light, spawned), "ray" (ray_length), "spp" (pixel_luminance)}.
+ * - Unknown keys are errors everywhere (a misspelt key would otherwise be ignored).
+ *
+ * Every error throws LoadError naming the file, the step (1-based number and English
+ * title) and the JSON path, e.g.
+ * `lessons/04-whitted.json: step 3 ("Snell's law"): at /steps/2/pixel: pixel (400, 10) is
+ * outside the 320x240 image`.
+ */
+class LessonIO {
+ public:
+  /// A lesson file that cannot be used: syntax, content, its scene or a scene change.
+  class LoadError : public Exception {
+   public:
+    using Exception::Exception;
+  };
+
+  /// The lesson format version this build reads.
+  static constexpr int kVersion = 1;
+
+  /// Reads and validates the lesson file at `path` and its scene.
+  static Lesson load(const std::string& path);
+  /// Parses lesson text; `origin` names it in messages, and the scene path is relative to
+  /// its folder (a bare name: the current directory).
+  static Lesson parse(const std::string& text, const std::string& origin);
+  /// The lesson files in `dir`: names "NN-topic.json" (two digits, a dash), sorted.
+  /// Throws LoadError when `dir` is not a readable folder.
+  static std::vector<std::string> list(const std::string& dir);
+};
+
+}  // namespace raylab

@@ -1,0 +1,796 @@
+#include "raylab/core/Lesson.h"
+
+#include "raylab/core/SceneIO.h"
+#include "raylab/core/Tracer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+
+namespace raylab {
+
+namespace {
+
+/// A name in a lesson file and the value it stands for.
+template <class E>
+struct Named {
+  const char* name;
+  E value;
+};
+
+const Named<Language> kLanguages[] = {{"en", Language::English}, {"zh", Language::Chinese}};
+const Named<LessonView> kViews[] = {
+    {"scene", LessonView::Scene},         {"image", LessonView::Image},
+    {"compare", LessonView::Compare},     {"plot", LessonView::Plot},
+    {"inspector", LessonView::Inspector}, {"samples", LessonView::Samples}};
+const Named<LessonColouring> kColourings[] = {{"energy", LessonColouring::Energy},
+                                              {"kind", LessonColouring::Kind},
+                                              {"depth", LessonColouring::Depth}};
+const Named<LessonCameraView> kCameraViews[] = {{"default", LessonCameraView::Default},
+                                                {"camera", LessonCameraView::Camera}};
+const Named<LessonSamples::Sampler> kSamplers[] = {{"cosine", LessonSamples::Sampler::Cosine},
+                                                   {"uniform", LessonSamples::Sampler::Uniform},
+                                                   {"sphere", LessonSamples::Sampler::Sphere},
+                                                   {"phong", LessonSamples::Sampler::Phong}};
+const Named<LessonCheck::Quantity> kQuantities[] = {
+    {"tree_rays", LessonCheck::Quantity::TreeRays},
+    {"tree_depth", LessonCheck::Quantity::TreeDepth},
+    {"estimate_luminance", LessonCheck::Quantity::EstimateLuminance},
+    {"pixel_luminance", LessonCheck::Quantity::PixelLuminance},
+    {"ray_length", LessonCheck::Quantity::RayLength},
+    {"camera_rays", LessonCheck::Quantity::CameraRays}};
+const Named<Algorithm> kAlgorithms[] = {{"raycast", Algorithm::RayCasting},
+                                        {"whitted", Algorithm::Whitted},
+                                        {"distributed", Algorithm::Distributed},
+                                        {"path", Algorithm::PathTracing}};
+const Named<RayKind> kKinds[] = {
+    {"camera", RayKind::Camera},         {"reflection", RayKind::Reflection},
+    {"refraction", RayKind::Refraction}, {"diffuse", RayKind::Diffuse},
+    {"glossy", RayKind::Glossy},         {"shadow", RayKind::Shadow}};
+const Named<EndReason> kEnds[] = {{"escaped", EndReason::Escaped},
+                                  {"hit_light", EndReason::HitLight},
+                                  {"max_depth", EndReason::MaxDepth},
+                                  {"russian_roulette", EndReason::RussianRoulette},
+                                  {"absorbed", EndReason::Absorbed},
+                                  {"occluded", EndReason::Occluded},
+                                  {"reached_light", EndReason::ReachedLight},
+                                  {"spawned", EndReason::Spawned}};
+
+template <class E, std::size_t N>
+std::optional<E> lookup(const Named<E> (&table)[N], const std::string& name) {
+  for (const Named<E>& entry : table)
+    if (name == entry.name) return entry.value;
+  return std::nullopt;
+}
+
+template <class E, std::size_t N>
+const char* nameOf(const Named<E> (&table)[N], E value) {
+  for (const Named<E>& entry : table)
+    if (entry.value == value) return entry.name;
+  return "unknown";
+}
+
+/// "a, b or c": the names of a table, for messages.
+template <class E, std::size_t N>
+std::string namesOf(const Named<E> (&table)[N]) {
+  std::string list;
+  for (std::size_t i = 0; i < N; ++i)
+    list += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + table[i].name;
+  return list;
+}
+
+/// True when UTF-8 `text` holds a CJK unified ideograph (U+4E00..U+9FFF).
+bool hasChinese(const std::string& text) {
+  for (std::size_t i = 0; i + 2 < text.size(); ++i) {
+    const auto b0 = static_cast<unsigned char>(text[i]);
+    if ((b0 & 0xF0) != 0xE0) continue;
+    const unsigned cp = ((b0 & 0x0Fu) << 12) |
+                        ((static_cast<unsigned char>(text[i + 1]) & 0x3Fu) << 6) |
+                        (static_cast<unsigned char>(text[i + 2]) & 0x3Fu);
+    if (cp >= 0x4E00 && cp <= 0x9FFF) return true;
+  }
+  return false;
+}
+
+/// 1-based line and column of a byte offset.
+std::pair<int, int> lineColumn(const std::string& text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+using nlohmann::json;
+
+/// What a step shows, as set by the lesson's "defaults" or by the step; unset = inherit.
+struct Display {
+  std::optional<LessonView> view;
+  std::optional<Algorithm> algorithm;
+  std::optional<std::pair<int, int>> pixel;
+  std::string pixelPath;  ///< Where the pixel was written (for messages).
+  std::optional<int> sample;
+  std::string samplePath;
+  std::optional<LessonReveal> reveal;
+  std::optional<LessonColouring> colouring;
+  std::optional<LessonFilters> filters;
+  std::optional<LessonCameraView> cameraView;
+
+  /// This display with every unset field taken from `base`.
+  Display over(const Display& base) const {
+    Display d = *this;
+    if (!d.view) d.view = base.view;
+    if (!d.algorithm) d.algorithm = base.algorithm;
+    if (!d.pixel) {
+      d.pixel = base.pixel;
+      d.pixelPath = base.pixelPath;
+    }
+    if (!d.sample) {
+      d.sample = base.sample;
+      d.samplePath = base.samplePath;
+    }
+    if (!d.reveal) d.reveal = base.reveal;
+    if (!d.colouring) d.colouring = base.colouring;
+    if (!d.filters) d.filters = base.filters;
+    if (!d.cameraView) d.cameraView = base.cameraView;
+    return d;
+  }
+};
+
+/// Where a scene change wrote in the scene document: a scene error at `scenePrefix` + rest
+/// is reported at `lessonPrefix` + rest.
+struct ChangeMapping {
+  std::string scenePrefix;
+  std::string lessonPrefix;
+};
+
+/// Reads one lesson document and remembers the file name and the current step for every
+/// message.
+class Reader {
+ public:
+  explicit Reader(std::string origin)
+      : m_origin(std::move(origin)),
+        m_baseDir(std::filesystem::path(m_origin).parent_path().string()) {}
+
+  Lesson lesson(const json& root);
+
+ private:
+  std::string m_origin;
+  std::string m_baseDir;  ///< Folder of the lesson file: the scene path is relative to it.
+  std::string m_step;     ///< "step 3 (\"Title\"): " while reading a step, else empty.
+  std::string m_scenePath;
+  json m_sceneDoc;  ///< The scene file's JSON: scene changes edit copies of it.
+  std::shared_ptr<const Scene> m_scene;
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw LessonIO::LoadError(m_origin + ": " + m_step + "at " + (path.empty() ? "/" : path) +
+                              ": " + what);
+  }
+
+  const json& member(const json& j, const std::string& path, const char* key) const {
+    if (!j.is_object()) fail(path, "expected an object");
+    const auto it = j.find(key);
+    if (it == j.end()) fail(path, std::string("missing \"") + key + "\"");
+    return *it;
+  }
+
+  /// Rejects members not in `known`: a misspelt key would otherwise be ignored silently.
+  void onlyKeys(const json& j, const std::string& path,
+                std::initializer_list<const char*> known) const {
+    if (!j.is_object()) fail(path, "expected an object, got " + j.dump());
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }) !=
+          known.end())
+        continue;
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      fail(path + "/" + it.key(),
+           "unknown key \"" + it.key() + "\" (expected one of " + list + ")");
+    }
+  }
+
+  std::string string(const json& j, const std::string& path) const {
+    if (!j.is_string()) fail(path, "expected a string, got " + j.dump());
+    return j.get<std::string>();
+  }
+
+  int integer(const json& j, const std::string& path) const {
+    if (!j.is_number_integer()) fail(path, "expected an integer, got " + j.dump());
+    return j.get<int>();
+  }
+
+  int integerAtLeast(const json& j, const std::string& path, int minimum) const {
+    const int v = integer(j, path);
+    if (v < minimum)
+      fail(path, "must be at least " + std::to_string(minimum) + ", got " + j.dump());
+    return v;
+  }
+
+  double number(const json& j, const std::string& path) const {
+    if (!j.is_number()) fail(path, "expected a number, got " + j.dump());
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(path, "number must be finite");
+    return v;
+  }
+
+  bool boolean(const json& j, const std::string& path) const {
+    if (!j.is_boolean()) fail(path, "expected true or false, got " + j.dump());
+    return j.get<bool>();
+  }
+
+  template <class E, std::size_t N>
+  E named(const json& j, const std::string& path, const Named<E> (&table)[N],
+          const char* what) const {
+    const std::string name = string(j, path);
+    const auto value = lookup(table, name);
+    if (!value)
+      fail(path,
+           std::string("unknown ") + what + " \"" + name + "\" (expected " + namesOf(table) + ")");
+    return *value;
+  }
+
+  /// {"en": ..., "zh": ...}, both required and non-empty; `chinese`: the "zh" text must
+  /// contain Chinese characters (not for choices, which may be numbers).
+  LocalText text(const json& j, const std::string& path, bool chinese = true) const {
+    onlyKeys(j, path, {"en", "zh"});
+    if (!j.contains("en")) fail(path, "missing \"en\" (the English text)");
+    if (!j.contains("zh")) fail(path, "missing \"zh\" (the Chinese text)");
+    LocalText t{string(j["en"], path + "/en"), string(j["zh"], path + "/zh")};
+    if (t.en.empty()) fail(path + "/en", "the English text is empty");
+    if (t.zh.empty()) fail(path + "/zh", "the Chinese text is empty");
+    if (chinese && !hasChinese(t.zh))
+      fail(path + "/zh", "the Chinese text has no Chinese characters");
+    return t;
+  }
+
+  std::pair<int, int> pixel(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 2) fail(path, "expected a pixel [x, y], got " + j.dump());
+    return {integer(j[0], path + "/0"), integer(j[1], path + "/1")};
+  }
+
+  void pixelInside(const std::pair<int, int>& p, const Scene& scene,
+                   const std::string& path) const {
+    const CameraSpec& c = scene.camera;
+    if (p.first < 0 || p.second < 0 || p.first >= c.width || p.second >= c.height)
+      fail(path, "pixel (" + std::to_string(p.first) + ", " + std::to_string(p.second) +
+                     ") is outside the " + std::to_string(c.width) + "x" +
+                     std::to_string(c.height) + " image");
+  }
+
+  Display display(const json& j, const std::string& path) const;
+  LessonFilters filters(const json& j, const std::string& path) const;
+  LessonStep step(const json& j, const std::string& path, const Display& defaults);
+  std::shared_ptr<const Scene> changedScene(const json& changes, const std::string& path,
+                                            std::vector<std::string>& written) const;
+  ChangeMapping applyChange(json& doc, const json& c, const std::string& path) const;
+  json& namedEntry(json& doc, const char* list, const char* what, const json& name,
+                   const std::string& path, std::size_t& index) const;
+  LessonQuestion question(const json& j, const std::string& path, const LessonStep& step) const;
+  LessonCheck check(const json& j, const std::string& path, const LessonStep& step) const;
+};
+
+Display Reader::display(const json& j, const std::string& path) const {
+  Display d;
+  if (j.contains("view")) d.view = named(j["view"], path + "/view", kViews, "view");
+  if (j.contains("algorithm"))
+    d.algorithm = named(j["algorithm"], path + "/algorithm", kAlgorithms, "algorithm");
+  if (j.contains("pixel")) {
+    d.pixel = pixel(j["pixel"], path + "/pixel");
+    d.pixelPath = path + "/pixel";
+  }
+  if (j.contains("sample")) {
+    d.sample = integerAtLeast(j["sample"], path + "/sample", 0);
+    d.samplePath = path + "/sample";
+  }
+  if (j.contains("reveal")) {
+    const std::string rp = path + "/reveal";
+    const json& r = j["reveal"];
+    onlyKeys(r, rp, {"frame", "depth"});
+    if (r.size() != 1) fail(rp, "reveal is {\"frame\": n} or {\"depth\": d}");
+    LessonReveal reveal;
+    reveal.by = r.contains("frame") ? LessonReveal::By::Frame : LessonReveal::By::Depth;
+    reveal.value = integerAtLeast(r.begin().value(), rp + "/" + r.begin().key(), 0);
+    d.reveal = reveal;
+  }
+  if (j.contains("colour"))
+    d.colouring = named(j["colour"], path + "/colour", kColourings, "colouring");
+  if (j.contains("filters")) d.filters = filters(j["filters"], path + "/filters");
+  if (j.contains("camera_view"))
+    d.cameraView = named(j["camera_view"], path + "/camera_view", kCameraViews, "camera view");
+  return d;
+}
+
+LessonFilters Reader::filters(const json& j, const std::string& path) const {
+  onlyKeys(j, path, {"kinds", "max_depth", "reaching_light", "min_energy"});
+  LessonFilters f;
+  if (j.contains("kinds")) {
+    const json& kinds = j["kinds"];
+    if (!kinds.is_array() || kinds.empty()) fail(path + "/kinds", "expected a list of ray kinds");
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+      f.kinds.push_back(named(kinds[i], path + "/kinds/" + std::to_string(i), kKinds, "ray kind"));
+  }
+  if (j.contains("max_depth")) f.maxDepth = integerAtLeast(j["max_depth"], path + "/max_depth", 0);
+  if (j.contains("reaching_light"))
+    f.reachingLight = boolean(j["reaching_light"], path + "/reaching_light");
+  if (j.contains("min_energy")) {
+    f.minEnergy = number(j["min_energy"], path + "/min_energy");
+    if (f.minEnergy < 0.0) fail(path + "/min_energy", "min_energy must not be negative");
+  }
+  return f;
+}
+
+json& Reader::namedEntry(json& doc, const char* list, const char* what, const json& name,
+                         const std::string& path, std::size_t& index) const {
+  const std::string wanted = string(name, path);
+  json& entries = doc[list];
+  std::string names;
+  if (entries.is_array()) {
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+      const json& n =
+          entries[i].is_object() && entries[i].contains("name") ? entries[i]["name"] : json();
+      if (n == wanted) {
+        index = i;
+        return entries[i];
+      }
+      if (n.is_string()) names += (names.empty() ? "" : ", ") + n.get<std::string>();
+    }
+  }
+  fail(path, std::string("no ") + what + " named \"" + wanted + "\" in " + m_scenePath + " (" +
+                 (names.empty() ? std::string("it has none") : "it has " + names) + ")");
+}
+
+ChangeMapping Reader::applyChange(json& doc, const json& c, const std::string& path) const {
+  static const char* const kTargets[] = {"material",   "object",         "point_light",
+                                         "camera",     "render",         "add_material",
+                                         "add_object", "add_point_light"};
+  if (!c.is_object())
+    fail(path,
+         "a scene change is an object, e.g. {\"material\": \"glass\", \"set\": {\"ior\": 1}}");
+  std::string target;
+  for (const char* t : kTargets)
+    if (c.contains(t)) {
+      if (!target.empty())
+        fail(path,
+             "a change edits one thing; this one names both \"" + target + "\" and \"" + t + "\"");
+      target = t;
+    }
+  if (target.empty())
+    fail(path,
+         "a change names what it edits: material, object, point_light, camera, render, "
+         "add_material, add_object or add_point_light");
+
+  // Whole blocks: merged into the camera or render block, or appended to a list.
+  if (target == "camera" || target == "render") {
+    const json& value = c[target];
+    if (c.size() != 1 || !value.is_object())
+      fail(path, "{\"" + target + "\": {...}} merges keys into the scene's " + target + " block");
+    json& block = doc[target];
+    if (!block.is_object()) block = json::object();
+    block.merge_patch(value);
+    return {"/" + target, path + "/" + target};
+  }
+  if (target.rfind("add_", 0) == 0) {
+    if (c.size() != 1 || !c[target].is_object())
+      fail(path, "{\"" + target + "\": {...}} adds one entry in the scene format");
+    const char* list = target == "add_material" ? "materials"
+                       : target == "add_object" ? "objects"
+                                                : "point_lights";
+    json& entries = doc[list];
+    if (!entries.is_array()) entries = json::array();
+    entries.push_back(c[target]);
+    return {"/" + std::string(list) + "/" + std::to_string(entries.size() - 1),
+            path + "/" + target};
+  }
+
+  // A named material, object or point light, and one operation on it.
+  const bool material = target == "material", object = target == "object";
+  if (material)
+    onlyKeys(c, path, {"material", "set"});
+  else if (object)
+    onlyKeys(c, path, {"object", "set", "translate", "rotate", "scale", "remove"});
+  else
+    onlyKeys(c, path, {"point_light", "set", "translate", "remove"});
+  if (c.size() != 2)
+    fail(path, "a change does one thing: " +
+                   std::string(material ? "set"
+                               : object ? "set, translate, rotate, scale or remove"
+                                        : "set, translate or remove"));
+  const char* list = material ? "materials" : object ? "objects" : "point_lights";
+  std::size_t index = 0;
+  json& entry = namedEntry(doc, list,
+                           material ? "material"
+                           : object ? "object"
+                                    : "point light",
+                           c[target], path + "/" + target, index);
+  const std::string scenePrefix = "/" + std::string(list) + "/" + std::to_string(index);
+  if (c.contains("set")) {
+    const json& set = c["set"];
+    if (!set.is_object()) fail(path + "/set", "expected an object of keys to set");
+    if (set.contains("name"))
+      fail(path + "/set/name", "a step cannot rename (other entries refer to it by name)");
+    entry.merge_patch(set);
+    return {scenePrefix, path + "/set"};
+  }
+  if (c.contains("remove")) {
+    if (c["remove"] != true) fail(path + "/remove", "write \"remove\": true");
+    doc[list].erase(index);
+    return {scenePrefix, path};
+  }
+  const std::string op = c.contains("translate") ? "translate"
+                         : c.contains("rotate")  ? "rotate"
+                                                 : "scale";
+  if (!object) {
+    // Point lights have a position, not a transform: translate moves it.
+    const json& v = c[op];
+    if (!v.is_array() || v.size() != 3)
+      fail(path + "/" + op, "expected [x, y, z], got " + v.dump());
+    json& position = entry["position"];
+    if (position.is_array() && position.size() == 3)
+      for (int i = 0; i < 3; ++i)
+        position[i] = number(position[i], scenePrefix + "/position") +
+                      number(v[i], path + "/" + op + "/" + std::to_string(i));
+    return {scenePrefix + "/position", path + "/" + op};
+  }
+  json& transform = entry["transform"];
+  if (!transform.is_array()) transform = json::array();
+  transform.push_back(json{{op, c[op]}});
+  return {scenePrefix + "/transform/" + std::to_string(transform.size() - 1) + "/" + op,
+          path + "/" + op};
+}
+
+std::shared_ptr<const Scene> Reader::changedScene(const json& changes, const std::string& path,
+                                                  std::vector<std::string>& written) const {
+  if (!changes.is_array()) fail(path, "expected a list of changes");
+  if (changes.empty()) return m_scene;
+  json doc = m_sceneDoc;
+  std::shared_ptr<const Scene> scene;
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    const std::string cp = path + "/" + std::to_string(k);
+    written.push_back(changes[k].dump());
+    const ChangeMapping mapping = applyChange(doc, changes[k], cp);
+    // The changed scene must pass the scene file's own rules.
+    try {
+      scene = std::make_shared<const Scene>(SceneIO::parse(doc.dump(), m_scenePath));
+    } catch (const SceneIO::LoadError& e) {
+      // SceneIO says "<scene>: at <path>: <problem>"; say it at the change's place.
+      std::string message = e.what();
+      const std::string head = m_scenePath + ": at ";
+      if (message.rfind(head, 0) == 0) message = message.substr(head.size());
+      const std::size_t colon = message.find(": ");
+      const std::string scenePath = colon == std::string::npos ? "" : message.substr(0, colon);
+      const std::string problem = colon == std::string::npos ? message : message.substr(colon + 2);
+      const std::string& prefix = mapping.scenePrefix;
+      if (!scenePath.empty() && scenePath.rfind(prefix, 0) == 0 &&
+          (scenePath.size() == prefix.size() || scenePath[prefix.size()] == '/'))
+        fail(mapping.lessonPrefix + scenePath.substr(prefix.size()), problem);
+      fail(cp, problem + (scenePath.empty() ? "" : " (at " + scenePath + " of the changed scene)"));
+    }
+  }
+  return scene;
+}
+
+LessonCheck Reader::check(const json& j, const std::string& path, const LessonStep& step) const {
+  const std::string quantityName = string(member(j, path, "quantity"), path + "/quantity");
+  const auto quantity = lookup(kQuantities, quantityName);
+  if (!quantity)
+    fail(path + "/quantity",
+         "unknown quantity \"" + quantityName + "\" (expected " + namesOf(kQuantities) + ")");
+  using Q = LessonCheck::Quantity;
+  switch (*quantity) {
+    case Q::TreeRays:
+      onlyKeys(j, path, {"quantity", "algorithm", "pixel", "sample", "kind", "end"});
+      break;
+    case Q::TreeDepth:
+    case Q::EstimateLuminance:
+      onlyKeys(j, path, {"quantity", "algorithm", "pixel", "sample"});
+      break;
+    case Q::PixelLuminance:
+      onlyKeys(j, path, {"quantity", "algorithm", "pixel", "spp"});
+      break;
+    case Q::RayLength:
+      onlyKeys(j, path, {"quantity", "algorithm", "pixel", "sample", "ray"});
+      break;
+    case Q::CameraRays:
+      onlyKeys(j, path, {"quantity"});
+      break;
+  }
+  LessonCheck c;
+  c.quantity = *quantity;
+  c.algorithm = j.contains("algorithm")
+                    ? named(j["algorithm"], path + "/algorithm", kAlgorithms, "algorithm")
+                    : step.algorithm;
+  c.sample = j.contains("sample") ? integerAtLeast(j["sample"], path + "/sample", 0) : step.sample;
+  if (j.contains("kind")) c.kind = named(j["kind"], path + "/kind", kKinds, "ray kind");
+  if (j.contains("end")) c.end = named(j["end"], path + "/end", kEnds, "end reason");
+  if (j.contains("ray")) c.ray = integerAtLeast(j["ray"], path + "/ray", 0);
+  if (j.contains("spp")) c.spp = integerAtLeast(j["spp"], path + "/spp", 1);
+  if (c.quantity != Q::CameraRays) {
+    std::pair<int, int> p;
+    if (j.contains("pixel")) {
+      p = pixel(j["pixel"], path + "/pixel");
+      pixelInside(p, *step.scene, path + "/pixel");
+    } else if (step.pixelX) {
+      p = {*step.pixelX, *step.pixelY};
+    } else {
+      fail(path, "the check needs a pixel (give \"pixel\" here or in the step)");
+    }
+    c.pixelX = p.first;
+    c.pixelY = p.second;
+  }
+  return c;
+}
+
+LessonQuestion Reader::question(const json& j, const std::string& path,
+                                const LessonStep& step) const {
+  const std::string type = string(member(j, path, "type"), path + "/type");
+  LessonQuestion q;
+  if (type == "choice") {
+    onlyKeys(j, path, {"type", "prompt", "choices", "answer", "explanation"});
+    q.type = LessonQuestion::Type::Choice;
+  } else if (type == "number") {
+    onlyKeys(j, path, {"type", "prompt", "answer", "tolerance", "check", "explanation"});
+    q.type = LessonQuestion::Type::Number;
+  } else {
+    fail(path + "/type", "unknown question type \"" + type + "\" (expected choice or number)");
+  }
+  q.prompt = text(member(j, path, "prompt"), path + "/prompt");
+  q.explanation = text(member(j, path, "explanation"), path + "/explanation");
+  const json& answer = member(j, path, "answer");
+  if (q.type == LessonQuestion::Type::Choice) {
+    const json& choices = member(j, path, "choices");
+    if (!choices.is_array() || choices.size() < 2)
+      fail(path + "/choices", "a choice question has a list of at least two choices");
+    for (std::size_t i = 0; i < choices.size(); ++i)
+      q.choices.push_back(text(choices[i], path + "/choices/" + std::to_string(i), false));
+    q.answerIndex = integer(answer, path + "/answer");
+    const int n = static_cast<int>(q.choices.size());
+    if (q.answerIndex < 0 || q.answerIndex >= n)
+      fail(path + "/answer", "answer " + std::to_string(q.answerIndex) + " is not one of the " +
+                                 std::to_string(n) + " choices (0.." + std::to_string(n - 1) + ")");
+    return q;
+  }
+  q.answer = number(answer, path + "/answer");
+  if (j.contains("tolerance")) q.tolerance = number(j["tolerance"], path + "/tolerance");
+  if (q.tolerance < 0.0) fail(path + "/tolerance", "tolerance must not be negative");
+  if (j.contains("check")) q.check = check(j["check"], path + "/check", step);
+  return q;
+}
+
+LessonStep Reader::step(const json& j, const std::string& path, const Display& defaults) {
+  // The title first, so that every later message can name the step by it.
+  LessonStep s;
+  s.title = text(member(j, path, "title"), path + "/title");
+  m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
+  onlyKeys(j, path,
+           {"title", "text", "view", "algorithm", "pixel", "sample", "reveal", "colour", "filters",
+            "camera_view", "select_ray", "samples", "scene_changes", "question", "teacher_notes",
+            "requires"});
+  s.text = text(member(j, path, "text"), path + "/text");
+  if (j.contains("teacher_notes"))
+    s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
+  if (j.contains("requires")) {
+    const json& r = j["requires"];
+    const json list = r.is_array() ? r : json::array({r});
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string rp = path + "/requires" + (r.is_array() ? "/" + std::to_string(i) : "");
+      s.needs.push_back(string(list[i], rp));
+      if (s.needs.back().empty()) fail(rp, "a required feature needs a name");
+    }
+  }
+
+  // The scene first: pixels and samples are checked against the step's own scene.
+  s.scene = j.contains("scene_changes")
+                ? changedScene(j["scene_changes"], path + "/scene_changes", s.sceneChanges)
+                : m_scene;
+  const Scene& scene = *s.scene;
+
+  const Display d = display(j, path).over(defaults);
+  s.view = d.view.value_or(LessonView::Scene);
+  s.algorithm = d.algorithm.value_or(scene.render.algorithm);
+  if (d.pixel) {
+    pixelInside(*d.pixel, scene, d.pixelPath);
+    s.pixelX = d.pixel->first;
+    s.pixelY = d.pixel->second;
+  }
+  s.sample = d.sample.value_or(0);
+  if (s.sample >= scene.render.samplesPerPixel)
+    fail(d.samplePath, "sample " + std::to_string(s.sample) +
+                           " is not a sample of the pixel: the scene renders " +
+                           std::to_string(scene.render.samplesPerPixel) +
+                           " samples per pixel (0.." +
+                           std::to_string(scene.render.samplesPerPixel - 1) + ")");
+  s.reveal = d.reveal.value_or(LessonReveal{});
+  s.colouring = d.colouring.value_or(LessonColouring::Energy);
+  s.filters = d.filters.value_or(LessonFilters{});
+  s.cameraView = d.cameraView.value_or(LessonCameraView::Default);
+
+  if (s.view == LessonView::Samples) {
+    const std::string sp = path + "/samples";
+    const json& sj = member(j, path, "samples");
+    onlyKeys(sj, sp, {"sampler", "count", "exponent"});
+    LessonSamples samples;
+    samples.sampler = named(member(sj, sp, "sampler"), sp + "/sampler", kSamplers, "sampler");
+    if (sj.contains("count")) samples.count = integerAtLeast(sj["count"], sp + "/count", 1);
+    if (samples.sampler == LessonSamples::Sampler::Phong) {
+      samples.exponent = number(member(sj, sp, "exponent"), sp + "/exponent");
+      if (!(samples.exponent > 0.0)) fail(sp + "/exponent", "exponent (Phong) must be positive");
+    } else if (sj.contains("exponent")) {
+      fail(sp + "/exponent", "only the phong sampler has an exponent");
+    }
+    s.samples = samples;
+  } else if (j.contains("samples")) {
+    fail(path + "/samples", "\"samples\" belongs to the samples view (this step's view is \"" +
+                                std::string(toString(s.view)) + "\")");
+  }
+
+  // A ray to select, or a tree to reveal, needs the pixel whose tree it is.
+  if (j.contains("select_ray"))
+    s.selectRay = integerAtLeast(j["select_ray"], path + "/select_ray", 0);
+  if (s.view == LessonView::Inspector && !s.selectRay) s.selectRay = 0;
+  if (!s.pixelX) {
+    if (s.view == LessonView::Inspector) fail(path, "the inspector view needs a pixel");
+    if (s.selectRay) fail(path + "/select_ray", "select_ray needs a pixel");
+    if (j.contains("reveal")) fail(path + "/reveal", "reveal needs a pixel");
+  }
+  if (s.selectRay) {
+    const Tracer tracer(scene, s.settings());
+    Stepper stepper(tracer, *s.pixelX, *s.pixelY, s.sample);
+    stepper.runToEnd();
+    const int rays = static_cast<int>(stepper.tree().segments.size());
+    if (*s.selectRay >= rays)
+      fail(j.contains("select_ray") ? path + "/select_ray" : path,
+           "ray " + std::to_string(*s.selectRay) + " is not in the " + toString(s.algorithm) +
+               " tree of pixel (" + std::to_string(*s.pixelX) + ", " + std::to_string(*s.pixelY) +
+               ") sample " + std::to_string(s.sample) + ": it has " + std::to_string(rays) +
+               " rays (0.." + std::to_string(rays - 1) + ")");
+  }
+
+  if (j.contains("question")) s.question = question(j["question"], path + "/question", s);
+  return s;
+}
+
+Lesson Reader::lesson(const json& root) {
+  if (!root.is_object()) fail("", "a lesson file is a JSON object");
+  if (!root.contains("raylab_lesson"))
+    fail("", "missing \"raylab_lesson\": <version> (is this a RayLab lesson file?)");
+  const int version = integer(root["raylab_lesson"], "/raylab_lesson");
+  if (version != LessonIO::kVersion)
+    fail("/raylab_lesson", "unsupported version " + std::to_string(version) +
+                               " (this RayLab reads version " + std::to_string(LessonIO::kVersion) +
+                               ")");
+  onlyKeys(root, "", {"raylab_lesson", "id", "title", "summary", "scene", "defaults", "steps"});
+  Lesson lesson;
+  lesson.file = m_origin;
+  lesson.id = string(member(root, "", "id"), "/id");
+  if (lesson.id.empty() || !std::all_of(lesson.id.begin(), lesson.id.end(), [](char ch) {
+        return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_';
+      }))
+    fail("/id", "an id is letters, digits, '-' and '_' (e.g. \"04-whitted\")");
+  lesson.title = text(member(root, "", "title"), "/title");
+  lesson.summary = text(member(root, "", "summary"), "/summary");
+
+  // The scene: relative to the lesson file, loaded (and so validated) by SceneIO.
+  const std::string scene = string(member(root, "", "scene"), "/scene");
+  if (scene.empty()) fail("/scene", "the scene file name is empty");
+  const std::filesystem::path scenePath(scene);
+  m_scenePath = (scenePath.is_absolute() ? scenePath : std::filesystem::path(m_baseDir) / scenePath)
+                    .lexically_normal()
+                    .string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(m_scenePath, ec))
+    fail("/scene", "scene file \"" + scene + "\" not found (looked for " + m_scenePath + ")");
+  std::ifstream in(m_scenePath, std::ios::binary);
+  std::ostringstream sceneText;
+  sceneText << in.rdbuf();
+  try {
+    m_scene = std::make_shared<const Scene>(SceneIO::parse(sceneText.str(), m_scenePath));
+  } catch (const SceneIO::LoadError& e) {
+    fail("/scene", std::string("the scene does not load: ") + e.what());
+  }
+  m_sceneDoc = json::parse(sceneText.str());
+  lesson.scenePath = m_scenePath;
+  lesson.scene = m_scene;
+
+  Display defaults;
+  if (root.contains("defaults")) {
+    const json& d = root["defaults"];
+    onlyKeys(
+        d, "/defaults",
+        {"view", "algorithm", "pixel", "sample", "reveal", "colour", "filters", "camera_view"});
+    defaults = display(d, "/defaults");
+  }
+
+  const json& steps = member(root, "", "steps");
+  if (!steps.is_array() || steps.empty()) fail("/steps", "expected a list of steps");
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    m_step = "step " + std::to_string(i + 1) + ": ";
+    lesson.steps.push_back(step(steps[i], "/steps/" + std::to_string(i), defaults));
+  }
+  m_step.clear();
+  return lesson;
+}
+
+}  // namespace
+
+const char* toString(Language language) { return nameOf(kLanguages, language); }
+std::optional<Language> parseLanguage(const std::string& code) { return lookup(kLanguages, code); }
+const char* toString(LessonView view) { return nameOf(kViews, view); }
+std::optional<LessonView> parseLessonView(const std::string& name) { return lookup(kViews, name); }
+const char* toString(LessonColouring colouring) { return nameOf(kColourings, colouring); }
+const char* toString(LessonCameraView view) { return nameOf(kCameraViews, view); }
+const char* toString(LessonSamples::Sampler sampler) { return nameOf(kSamplers, sampler); }
+const char* toString(LessonCheck::Quantity quantity) { return nameOf(kQuantities, quantity); }
+
+RenderSettings LessonStep::settings() const {
+  RenderSettings s = scene->render;
+  s.algorithm = algorithm;
+  return s;
+}
+
+int Lesson::questionCount() const {
+  return static_cast<int>(std::count_if(steps.begin(), steps.end(),
+                                        [](const LessonStep& s) { return bool(s.question); }));
+}
+
+std::vector<std::string> Lesson::requiredFeatures() const {
+  std::vector<std::string> features;
+  for (const LessonStep& s : steps)
+    for (const std::string& f : s.needs)
+      if (std::find(features.begin(), features.end(), f) == features.end()) features.push_back(f);
+  return features;
+}
+
+Lesson LessonIO::parse(const std::string& text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    const auto [line, column] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
+    std::string what = e.what();
+    // Keep only nlohmann's explanation after "[json.exception...] parse error at ...: ".
+    const auto colon = what.find(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    throw LoadError(origin + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                    ": JSON syntax error: " + what);
+  }
+  return Reader(origin).lesson(root);
+}
+
+Lesson LessonIO::load(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw LoadError(path + ": cannot open lesson file (does it exist and is it readable?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw LoadError(path + ": read error");
+  return parse(text.str(), path);
+}
+
+std::vector<std::string> LessonIO::list(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw LoadError(dir + ": not a folder (of lesson files)");
+  std::vector<std::string> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    const bool lessonName = name.size() > 8 && std::isdigit(static_cast<unsigned char>(name[0])) &&
+                            std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '-' &&
+                            e.path().extension() == ".json";
+    if (lessonName && e.is_regular_file(ec)) files.push_back((fs::path(dir) / name).string());
+  }
+  if (ec) throw LoadError(dir + ": cannot read the folder: " + ec.message());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace raylab

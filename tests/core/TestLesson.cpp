@@ -1,0 +1,472 @@
+// Lesson files: the format, error messages that name the file, the step and the place,
+// scene changes, and the shipped lessons (they load, both languages, answers computed).
+#include "raylab/core/Lesson.h"
+#include "raylab/core/Renderer.h"
+#include "raylab/core/SceneIO.h"
+#include "raylab/core/Sphere.h"
+#include "raylab/core/Tracer.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace raylab {
+namespace {
+
+using nlohmann::json;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+/// A folder with a small scene (glass sphere, floor, quad light, point light; 320x240,
+/// 4 spp) for the lessons the tests write.
+std::string fixtureDir() {
+  const fs::path dir = fs::path(RAYLAB_TEMP_DIR) / "lesson";
+  fs::create_directories(dir);
+  std::ofstream(dir / "scene.json") << R"({
+    "raylab_scene": 2,
+    "name": "lesson test",
+    "materials": [
+      {"name": "glass", "type": "dielectric", "ior": 1.5},
+      {"name": "white", "colour": [0.7, 0.7, 0.7]},
+      {"name": "lamp", "emission": [10, 10, 10]}],
+    "objects": [
+      {"name": "ball", "material": "glass",
+       "shape": {"type": "sphere", "centre": [0, 1, 0], "radius": 1}},
+      {"name": "floor", "material": "white",
+       "shape": {"type": "quad", "corner": [-5, 0, 5], "u": [10, 0, 0], "v": [0, 0, -10]}},
+      {"name": "light", "material": "lamp",
+       "shape": {"type": "quad", "corner": [-1, 4, 1], "u": [2, 0, 0], "v": [0, 0, -2]}}],
+    "point_lights": [{"name": "key", "position": [2, 5, 2], "intensity": [20, 20, 20]}],
+    "camera": {"position": [0, 1.5, 5], "look_at": [0, 1, 0], "width": 320, "height": 240},
+    "render": {"algorithm": "path", "spp": 4, "max_depth": 5}
+  })";
+  return dir.string();
+}
+
+/// A valid two-step lesson on the fixture scene; the error cases break one thing in it.
+json baseLesson() {
+  return json::parse(R"({
+    "raylab_lesson": 1,
+    "id": "04-test",
+    "title": {"en": "Test lesson", "zh": "测试课"},
+    "summary": {"en": "A lesson for the tests.", "zh": "供测试用的一课。"},
+    "scene": "scene.json",
+    "defaults": {"algorithm": "whitted", "pixel": [160, 100]},
+    "steps": [
+      {"title": {"en": "The scene", "zh": "场景"},
+       "text": {"en": "A glass ball on a floor.", "zh": "地板上有一个玻璃球。"},
+       "view": "image"},
+      {"title": {"en": "Snell's law", "zh": "斯涅尔定律"},
+       "text": {"en": "The ray bends towards the normal.", "zh": "光线向法线方向偏折。"},
+       "view": "scene", "colour": "kind", "reveal": {"depth": 2},
+       "filters": {"kinds": ["camera", "refraction"], "max_depth": 3},
+       "select_ray": 1,
+       "scene_changes": [{"material": "glass", "set": {"ior": 1.33}},
+                         {"object": "light", "translate": [0, 0.5, 0]},
+                         {"render": {"next_event_estimation": false}}],
+       "question": {"type": "choice",
+                    "prompt": {"en": "Which way does it bend?", "zh": "光线向哪边偏折？"},
+                    "choices": [{"en": "towards the normal", "zh": "靠近法线"},
+                                {"en": "away from it", "zh": "远离法线"}],
+                    "answer": 0,
+                    "explanation": {"en": "Glass is denser.", "zh": "玻璃的光密度更大。"}},
+       "teacher_notes": {"en": "Ask first.", "zh": "先提问。"}}
+    ]
+  })");
+}
+
+std::string fixtureOrigin() { return fixtureDir() + "/test.json"; }
+
+std::string loadError(const json& lesson) {
+  try {
+    LessonIO::parse(lesson.dump(), fixtureOrigin());
+  } catch (const LessonIO::LoadError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Lesson, 01_ReadsTheFormatAndInheritsTheDefaults) {
+  const Lesson lesson = LessonIO::parse(baseLesson().dump(), fixtureOrigin());
+  EXPECT_EQ(lesson.id, "04-test");
+  EXPECT_EQ(lesson.title.in(Language::Chinese), "测试课");
+  ASSERT_EQ(lesson.steps.size(), 2u);
+  const LessonStep& first = lesson.steps[0];
+  EXPECT_EQ(first.view, LessonView::Image);
+  EXPECT_EQ(first.algorithm, Algorithm::Whitted);  // from "defaults"
+  ASSERT_TRUE(first.pixelX);
+  EXPECT_EQ(*first.pixelX, 160);
+  EXPECT_EQ(*first.pixelY, 100);
+  EXPECT_FALSE(first.question);
+  EXPECT_EQ(first.scene, lesson.scene);  // no changes: the lesson's scene, shared
+  const LessonStep& second = lesson.steps[1];
+  EXPECT_EQ(second.view, LessonView::Scene);
+  EXPECT_EQ(second.colouring, LessonColouring::Kind);
+  EXPECT_EQ(second.reveal.by, LessonReveal::By::Depth);
+  EXPECT_EQ(second.reveal.value, 2);
+  EXPECT_EQ(second.filters.kinds, (std::vector<RayKind>{RayKind::Camera, RayKind::Refraction}));
+  EXPECT_EQ(second.filters.maxDepth, 3);
+  EXPECT_EQ(second.selectRay, 1);
+  ASSERT_TRUE(second.question);
+  EXPECT_EQ(second.question->choices.size(), 2u);
+  EXPECT_EQ(second.teacherNotes.en, "Ask first.");
+  EXPECT_EQ(second.sceneChanges.size(), 3u);
+  EXPECT_EQ(lesson.questionCount(), 1);
+  EXPECT_TRUE(lesson.requiredFeatures().empty());
+}
+
+TEST(Lesson, 02_SceneChangesApplyToTheirStepOnly) {
+  const Lesson lesson = LessonIO::parse(baseLesson().dump(), fixtureOrigin());
+  const Scene& before = *lesson.scene;
+  const Scene& after = lesson.sceneOfStep(1);
+  EXPECT_EQ(before.materials[before.findMaterial("glass")].ior, 1.5);
+  EXPECT_EQ(after.materials[after.findMaterial("glass")].ior, 1.33);
+  const Bounds3 lightBefore = before.objects[before.findObject("light")].shape->bounds();
+  const Bounds3 lightAfter = after.objects[after.findObject("light")].shape->bounds();
+  EXPECT_DOUBLE_EQ(lightAfter.lower.y - lightBefore.lower.y, 0.5);
+  EXPECT_TRUE(before.render.nextEventEstimation);
+  EXPECT_FALSE(after.render.nextEventEstimation);
+  EXPECT_FALSE(lesson.steps[1].settings().nextEventEstimation);
+  EXPECT_EQ(lesson.steps[1].settings().algorithm, Algorithm::Whitted);
+
+  // The other kinds of change, in the scene format's own key names.
+  json l = baseLesson();
+  l["steps"][1]["scene_changes"] = json::parse(R"([
+    {"object": "ball", "set": {"shape": {"radius": 0.5}, "velocity": [1, 0, 0]}},
+    {"camera": {"aperture": 0.1, "focus_distance": 4}},
+    {"point_light": "key", "translate": [1, 0, 0]},
+    {"add_material": {"name": "chrome", "type": "mirror"}},
+    {"add_object": {"name": "second", "material": "chrome",
+                    "shape": {"type": "sphere", "centre": [2, 1, 0], "radius": 0.5}}},
+    {"object": "floor", "remove": true}])");
+  const Lesson changed = LessonIO::parse(l.dump(), fixtureOrigin());
+  const Scene& s = changed.sceneOfStep(1);
+  const auto& ball = static_cast<const Sphere&>(*s.objects[s.findObject("ball")].shape);
+  EXPECT_EQ(ball.radius(), 0.5);
+  EXPECT_EQ(s.objects[s.findObject("ball")].velocity, Vec3(1, 0, 0));
+  EXPECT_EQ(s.camera.aperture, 0.1);
+  EXPECT_EQ(s.pointLights[0].position, Point3(3, 5, 2));
+  EXPECT_GE(s.findObject("second"), 0);
+  EXPECT_EQ(s.findObject("floor"), -1);
+  EXPECT_GE(changed.scene->findObject("floor"), 0);
+}
+
+struct ErrorCase {
+  const char* name;
+  std::function<void(json&)> breakIt;
+  const char* expected;  ///< Text the message must contain (besides the file name).
+};
+
+TEST(Lesson, 03_ErrorsNameTheFileTheStepAndThePlace) {
+  const ErrorCase cases[] = {
+      {"pixel outside",
+       [](json& l) {
+         l["steps"][1]["pixel"] = {400, 10};
+       },
+       "test.json: step 2 (\"Snell's law\"): at /steps/1/pixel: pixel (400, 10) is outside "
+       "the 320x240 image"},
+      {"default pixel outside",
+       [](json& l) {
+         l["defaults"]["pixel"] = {10, 240};
+       },
+       "step 1 (\"The scene\"): at /defaults/pixel: pixel (10, 240) is outside the 320x240"},
+      {"pixel outside after a size change",
+       [](json& l) {
+         l["steps"][1]["scene_changes"] = {{{"camera", {{"width", 100}}}}};
+       },
+       "step 2 (\"Snell's law\"): at /defaults/pixel: pixel (160, 100) is outside the "
+       "100x240 image"},
+      {"unknown view", [](json& l) { l["steps"][0]["view"] = "movie"; },
+       "step 1 (\"The scene\"): at /steps/0/view: unknown view \"movie\" (expected scene, "
+       "image, compare, plot, inspector or samples)"},
+      {"unknown algorithm", [](json& l) { l["steps"][1]["algorithm"] = "photon"; },
+       "at /steps/1/algorithm: unknown algorithm \"photon\""},
+      {"unknown colour", [](json& l) { l["steps"][1]["colour"] = "rainbow"; },
+       "at /steps/1/colour: unknown colouring \"rainbow\" (expected energy, kind or depth)"},
+      {"unknown ray kind", [](json& l) { l["steps"][1]["filters"]["kinds"][1] = "bounce"; },
+       "at /steps/1/filters/kinds/1: unknown ray kind \"bounce\""},
+      {"no Chinese text", [](json& l) { l["steps"][1]["text"].erase("zh"); },
+       "step 2 (\"Snell's law\"): at /steps/1/text: missing \"zh\" (the Chinese text)"},
+      {"no English text", [](json& l) { l["steps"][0]["text"].erase("en"); },
+       "at /steps/0/text: missing \"en\" (the English text)"},
+      {"Chinese text in English", [](json& l) { l["steps"][0]["text"]["zh"] = "A glass ball."; },
+       "at /steps/0/text/zh: the Chinese text has no Chinese characters"},
+      {"no title", [](json& l) { l["steps"][0].erase("title"); },
+       "step 1: at /steps/0: missing \"title\""},
+      {"unknown step key",
+       [](json& l) {
+         l["steps"][0]["pixels"] = {1, 1};
+       },
+       "at /steps/0/pixels: unknown key \"pixels\""},
+      {"unknown lesson key", [](json& l) { l["author"] = "me"; },
+       "test.json: at /author: unknown key \"author\""},
+      {"answer out of range", [](json& l) { l["steps"][1]["question"]["answer"] = 2; },
+       "at /steps/1/question/answer: answer 2 is not one of the 2 choices (0..1)"},
+      {"negative tolerance",
+       [](json& l) {
+         l["steps"][1]["question"] = json::parse(R"({"type": "number",
+           "prompt": {"en": "How many?", "zh": "多少条？"}, "answer": 3, "tolerance": -1,
+           "explanation": {"en": "Count.", "zh": "数一数。"}})");
+       },
+       "at /steps/1/question/tolerance: tolerance must not be negative"},
+      {"unknown check quantity",
+       [](json& l) {
+         l["steps"][1]["question"] = json::parse(R"({"type": "number",
+           "prompt": {"en": "How many?", "zh": "多少条？"}, "answer": 3,
+           "check": {"quantity": "photons"},
+           "explanation": {"en": "Count.", "zh": "数一数。"}})");
+       },
+       "at /steps/1/question/check/quantity: unknown quantity \"photons\""},
+      {"missing scene", [](json& l) { l["scene"] = "nowhere.json"; },
+       "test.json: at /scene: scene file \"nowhere.json\" not found"},
+      {"scene that does not load", [](json& l) { l["scene"] = "test-broken-scene.json"; },
+       "at /scene: the scene does not load: "},
+      {"unknown material", [](json& l) { l["steps"][1]["scene_changes"][0]["material"] = "gold"; },
+       "step 2 (\"Snell's law\"): at /steps/1/scene_changes/0/material: no material named "
+       "\"gold\""},
+      {"unknown object", [](json& l) { l["steps"][1]["scene_changes"][1]["object"] = "lamp"; },
+       "at /steps/1/scene_changes/1/object: no object named \"lamp\""},
+      {"invalid value", [](json& l) { l["steps"][1]["scene_changes"][0]["set"]["ior"] = -1; },
+       "at /steps/1/scene_changes/0/set/ior: ior (index of refraction) must be positive"},
+      {"unknown material key",
+       [](json& l) {
+         l["steps"][1]["scene_changes"][0]["set"] = {{"roughness", 0.2}};
+       },
+       "at /steps/1/scene_changes/0/set/roughness: unknown key \"roughness\""},
+      {"invalid translate",
+       [](json& l) {
+         l["steps"][1]["scene_changes"][1]["translate"] = {0, "up", 0};
+       },
+       "at /steps/1/scene_changes/1/translate/1: expected a number"},
+      {"invalid render value",
+       [](json& l) {
+         l["steps"][1]["scene_changes"][2]["render"] = {{"spp", 0}};
+       },
+       "at /steps/1/scene_changes/2/render/spp: must be at least 1"},
+      {"change naming nothing",
+       [](json& l) {
+         l["steps"][1]["scene_changes"][2] = {{"x", 1}};
+       },
+       "at /steps/1/scene_changes/2: a change names what it edits"},
+      {"renaming",
+       [](json& l) {
+         l["steps"][1]["scene_changes"][0]["set"] = {{"name", "g"}};
+       },
+       "at /steps/1/scene_changes/0/set/name: a step cannot rename"},
+      {"ray not in the tree", [](json& l) { l["steps"][1]["select_ray"] = 5000; },
+       "at /steps/1/select_ray: ray 5000 is not in the whitted tree of pixel (160, 100) "
+       "sample 0"},
+      {"sample beyond spp", [](json& l) { l["steps"][1]["sample"] = 4; },
+       "at /steps/1/sample: sample 4 is not a sample of the pixel: the scene renders 4 "
+       "samples per pixel (0..3)"},
+      {"samples outside the samples view",
+       [](json& l) {
+         l["steps"][0]["samples"] = {{"sampler", "cosine"}};
+       },
+       "at /steps/0/samples: \"samples\" belongs to the samples view"},
+      {"unknown sampler",
+       [](json& l) {
+         l["steps"][0]["view"] = "samples";
+         l["steps"][0]["samples"] = {{"sampler", "gaussian"}};
+       },
+       "at /steps/0/samples/sampler: unknown sampler \"gaussian\" (expected cosine, uniform, "
+       "sphere or phong)"},
+      {"inspector without a pixel",
+       [](json& l) {
+         l.erase("defaults");
+         l["steps"][0]["view"] = "inspector";
+       },
+       "step 1 (\"The scene\"): at /steps/0: the inspector view needs a pixel"},
+      {"version", [](json& l) { l["raylab_lesson"] = 2; },
+       "at /raylab_lesson: unsupported version 2"},
+      {"no version", [](json& l) { l.erase("raylab_lesson"); }, "missing \"raylab_lesson\""},
+      {"no steps", [](json& l) { l["steps"] = json::array(); },
+       "at /steps: expected a list of steps"},
+  };
+  std::ofstream(fs::path(fixtureDir()) / "test-broken-scene.json")
+      << R"({"raylab_scene": 2, "materials": [], "objects": [{"name": "x"}]})";
+  for (const ErrorCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    json lesson = baseLesson();
+    c.breakIt(lesson);
+    const std::string message = loadError(lesson);
+    EXPECT_THAT(message, HasSubstr("test.json")) << message;
+    EXPECT_THAT(message, HasSubstr(c.expected)) << message;
+  }
+}
+
+TEST(Lesson, 04_SyntaxErrorsAndMissingFilesAreNamed) {
+  try {
+    LessonIO::parse("{\n  \"raylab_lesson\": 1,\n  \"steps\": [,]\n}", "broken.json");
+    FAIL() << "no error";
+  } catch (const LessonIO::LoadError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("broken.json:3:"));
+  }
+  try {
+    LessonIO::load("/nonexistent/lessons/01-x.json");
+    FAIL() << "no error";
+  } catch (const LessonIO::LoadError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("/nonexistent/lessons/01-x.json: cannot open"));
+  }
+  EXPECT_THROW(LessonIO::list("/nonexistent/lessons"), LessonIO::LoadError);
+}
+
+TEST(Lesson, 05_RequiresIsAcceptedAndReported) {
+  json l = baseLesson();
+  l["steps"][0]["requires"] = "schlick-fresnel";
+  l["steps"][1]["requires"] = {"bvh-view", "schlick-fresnel"};
+  const Lesson lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  EXPECT_EQ(lesson.steps[0].needs, std::vector<std::string>{"schlick-fresnel"});
+  EXPECT_EQ(lesson.requiredFeatures(), (std::vector<std::string>{"schlick-fresnel", "bvh-view"}));
+}
+
+/// The shipped lessons: lessons/NN-topic.json in the source tree.
+std::vector<std::string> shippedLessons() {
+  return LessonIO::list(std::string(RAYLAB_SOURCE_DIR) + "/lessons");
+}
+
+TEST(Lesson, 06_EveryShippedLessonLoads) {
+  const std::vector<std::string> files = shippedLessons();
+  EXPECT_EQ(files.size(), 8u);
+  std::vector<std::string> ids;
+  for (const std::string& file : files) {
+    SCOPED_TRACE(file);
+    Lesson lesson;
+    ASSERT_NO_THROW(lesson = LessonIO::load(file));
+    // Issue 12: each lesson has 8 to 15 steps and at least 3 questions.
+    EXPECT_GE(lesson.steps.size(), 8u);
+    EXPECT_LE(lesson.steps.size(), 15u);
+    EXPECT_GE(lesson.questionCount(), 3);
+    // The id is the file's name, so lists and files agree.
+    EXPECT_EQ(lesson.id, fs::path(file).stem().string());
+    // Scenes come from lessons/scenes/.
+    EXPECT_EQ(fs::path(lesson.scenePath).parent_path().filename(), "scenes");
+    ids.push_back(lesson.id);
+  }
+}
+
+/// Every text of a lesson, with where it is, for the language checks.
+std::vector<std::pair<std::string, const LocalText*>> textsOf(const Lesson& lesson) {
+  std::vector<std::pair<std::string, const LocalText*>> texts = {{"title", &lesson.title},
+                                                                 {"summary", &lesson.summary}};
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+    const LessonStep& s = lesson.steps[i];
+    const std::string at = "step " + std::to_string(i + 1) + " ";
+    texts.push_back({at + "title", &s.title});
+    texts.push_back({at + "text", &s.text});
+    if (!s.teacherNotes.empty()) texts.push_back({at + "teacher notes", &s.teacherNotes});
+    if (s.question) {
+      texts.push_back({at + "prompt", &s.question->prompt});
+      texts.push_back({at + "explanation", &s.question->explanation});
+      for (const LocalText& c : s.question->choices) texts.push_back({at + "choice", &c});
+    }
+  }
+  return texts;
+}
+
+TEST(Lesson, 07_EveryStepHasBothLanguages) {
+  for (const std::string& file : shippedLessons()) {
+    const Lesson lesson = LessonIO::load(file);
+    for (const auto& [where, text] : textsOf(lesson)) {
+      SCOPED_TRACE(file + " " + where);
+      EXPECT_FALSE(text->en.empty());
+      EXPECT_FALSE(text->zh.empty());
+      // A Chinese text is not a copy of the English one.
+      EXPECT_TRUE(text->en != text->zh ||
+                  text->en.find_first_not_of("0123456789.,-+ ") == std::string::npos)
+          << text->en;
+    }
+  }
+}
+
+/// Rec. 709 luminance, as the ray-tree view's energy.
+double rec709Luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+/// The quantity a question's check names, computed by the program on the step's scene.
+double compute(const LessonStep& step, const LessonCheck& c) {
+  const Scene& scene = *step.scene;
+  RenderSettings settings = scene.render;
+  settings.algorithm = c.algorithm;
+  using Q = LessonCheck::Quantity;
+  if (c.quantity == Q::CameraRays) {
+    // Every algorithm sends the same camera rays; ray casting is the quickest to run.
+    settings.algorithm = Algorithm::RayCasting;
+    Renderer renderer(scene, settings);
+    renderer.render();
+    return double(renderer.stats().rays.byKind[static_cast<int>(RayKind::Camera)]);
+  }
+  const Tracer tracer(scene, settings);
+  if (c.quantity == Q::PixelLuminance) {
+    const int spp = c.spp > 0 ? c.spp : settings.samplesPerPixel;
+    double sum = 0.0;
+    for (int s = 0; s < spp; ++s) sum += rec709Luminance(tracer.trace(c.pixelX, c.pixelY, s));
+    return sum / spp;
+  }
+  Stepper stepper(tracer, c.pixelX, c.pixelY, c.sample);
+  stepper.runToEnd();
+  const RayTree& tree = stepper.tree();
+  EXPECT_FALSE(tree.truncated);
+  switch (c.quantity) {
+    case Q::TreeRays:
+      return double(
+          std::count_if(tree.segments.begin(), tree.segments.end(), [&](const RaySegment& r) {
+            return (!c.kind || r.kind == *c.kind) && (!c.end || r.endReason == *c.end);
+          }));
+    case Q::TreeDepth: {
+      int depth = 0;
+      for (const RaySegment& r : tree.segments) depth = std::max(depth, r.depth);
+      return depth;
+    }
+    case Q::EstimateLuminance:
+      return rec709Luminance(stepper.estimate());
+    case Q::RayLength: {
+      if (c.ray >= static_cast<int>(tree.segments.size())) {
+        ADD_FAILURE() << "ray " << c.ray << " is not in the tree";
+        return -1.0;
+      }
+      const RaySegment& r = tree.segments[c.ray];
+      EXPECT_TRUE(r.hit) << "ray " << c.ray << " hits nothing: its length is not defined";
+      return glm::length(r.endPoint - r.origin);
+    }
+    default:
+      return -1.0;
+  }
+}
+
+TEST(Lesson, 08_ComputedAnswersMatchTheProgram) {
+  int checked = 0;
+  for (const std::string& file : shippedLessons()) {
+    const Lesson lesson = LessonIO::load(file);
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+      const LessonStep& step = lesson.steps[i];
+      if (!step.question || !step.question->check) continue;
+      SCOPED_TRACE(file + " step " + std::to_string(i + 1) + " (" + step.title.en + ")");
+      const double value = compute(step, *step.question->check);
+      EXPECT_NEAR(step.question->answer, value, step.question->tolerance)
+          << toString(step.question->check->quantity);
+      ++checked;
+    }
+  }
+  // The lessons ask computed questions, not only typed ones.
+  EXPECT_GE(checked, 8);
+}
+
+TEST(Lesson, 09_ListFindsNumberedLessonFilesInOrder) {
+  const fs::path dir = fs::path(RAYLAB_TEMP_DIR) / "lesson-list";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* name : {"02-b.json", "01-a.json", "notes.json", "1-short.json", "03-c.txt"})
+    std::ofstream(dir / name) << "{}";
+  const std::vector<std::string> files = LessonIO::list(dir.string());
+  ASSERT_EQ(files.size(), 2u);
+  EXPECT_EQ(fs::path(files[0]).filename(), "01-a.json");
+  EXPECT_EQ(fs::path(files[1]).filename(), "02-b.json");
+}
+
+}  // namespace
+}  // namespace raylab
