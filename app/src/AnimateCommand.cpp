@@ -3,6 +3,8 @@
 #include "ExitCodes.h"
 #include "TraceCommand.h"
 
+#include "raylab/core/PixelTrace.h"
+
 #include "raylab/core/Exception.h"
 #include "raylab/vis/ImageIO.h"
 
@@ -102,9 +104,10 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   const RenderSettings settings = o.common.settings(scene);
 
   // Step 2: the tree, its view and the frames to write.
-  const RayTree tree = traceRayTree(scene, settings, o.pixel.first, o.pixel.second, o.sample);
-  const AnimationSettings animation = o.animation();
-  const int total = frameCount(tree, animation);
+  const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
+  const RayTree& tree = trace.tree;
+  const vis::AnimationSettings animation = o.animation();
+  const int total = vis::frameCount(tree, animation);
   const int first = range ? std::min(range->first, total - 1) : 0;
   const int last = range ? std::min(range->second, total - 1) : total - 1;
   std::vector<int> frames;
@@ -125,10 +128,10 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
 
   // Step 3: render frame after frame into the same view.
   const auto [width, height] = o.pictureSize();
-  const std::unique_ptr<SceneView> view = o.makeView(scene, tree);
+  const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree);
   ProgressBar progress("animate");
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    view->setReveal(revealFrame(tree, animation, frames[i]));
+    view->setReveal(vis::revealFrame(tree, animation, frames[i]));
     view->renderToPng(frameFile(frames[i]), width, height);
     progress.update(double(i + 1) / double(frames.size()),
                     std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " frames");
@@ -152,7 +155,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   std::cout << frames.size() << " of " << total << " frames (" << first << ".." << last
             << (options.every > 1 ? ", every " + std::to_string(options.every) : std::string())
             << "), " << toString(animation.order) << " order, " << toString(settings.algorithm)
-            << ": " << treeSummary(tree) << std::endl;
+            << ": " << trace.summary() << std::endl;
   return kExitOk;
 }
 

@@ -1,12 +1,12 @@
 #include "CompareCommand.h"
 
 #include "ExitCodes.h"
-#include "RenderCommand.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"
+#include "raylab/core/FilePaths.h"
 #include "raylab/core/Image.h"
-#include "raylab/core/Tracer.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/vis/ComparisonView.h"
 
 #include <cstdio>
@@ -17,9 +17,6 @@
 #include <optional>
 #include <sstream>
 #include <vector>
-
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace raylab::app {
 
@@ -86,19 +83,16 @@ int runCompare(const CompareOptions& options, const std::string& topLevelScene) 
   // Step 2: the renders, then the trees of the chosen pixel (sample 0, same seed).
   const ComparisonResult result =
       runComparison(scene, settings, compare, options.reference, "compare");
-  ComparisonViewOptions viewOptions;
+  vis::ComparisonViewOptions viewOptions;
   viewOptions.columns = options.columns;
   viewOptions.showTimes = !options.hideTimes;
-  ComparisonView view(result, viewOptions);
+  vis::ComparisonView view(result, viewOptions);
   if (!options.pixel.empty()) {
     std::vector<RayTree> trees;
     for (Algorithm algorithm : compare.algorithms) {
       RenderSettings traced = settings;
       traced.algorithm = algorithm;
-      const Tracer tracer(scene, traced);
-      Stepper stepper(tracer, options.pixel[0], options.pixel[1], 0);
-      stepper.runToEnd();
-      trees.push_back(stepper.tree());
+      trees.push_back(tracePixel(scene, traced, options.pixel[0], options.pixel[1]).tree);
     }
     view.setRayTrees(scene, trees, options.pixel[0], options.pixel[1]);
   }
@@ -173,7 +167,7 @@ void printFigures(const ComparisonResult& result, std::ostream& out) {
   out << (result.sceneName.empty() ? std::string("scene") : result.sceneName) << ", "
       << result.width << "x" << result.height << ", seed " << result.settings.seed << ", ";
   if (result.compare.equalTime())
-    out << "equal time " << formatSeconds(result.compare.secondsPerAlgorithm) << " each\n";
+    out << "equal time " << vis::formatSeconds(result.compare.secondsPerAlgorithm) << " each\n";
   else
     out << "equal samples " << result.compare.samplesPerPixel << " spp each\n";
   out << "reference: path tracing, ";
@@ -181,7 +175,7 @@ void printFigures(const ComparisonResult& result, std::ostream& out) {
     out << result.reference.file << "\n";
   else
     out << result.reference.samplesPerPixel << " spp, seed " << result.reference.seed << ", "
-        << formatSeconds(result.reference.seconds) << "\n";
+        << vis::formatSeconds(result.reference.seconds) << "\n";
   out << "error: RMSE of the picture (sRGB, 0..1) against the path-traced reference\n";
   out << std::left << std::setw(12) << "algorithm" << std::right << std::setw(8) << "spp"
       << std::setw(11) << "time" << std::setw(12) << "rays" << std::setw(10) << "error"
@@ -191,8 +185,8 @@ void printFigures(const ComparisonResult& result, std::ostream& out) {
     std::ostringstream error;
     error << std::setprecision(3) << figures.rmse;
     out << std::left << std::setw(12) << toString(figures.algorithm) << std::right << std::setw(8)
-        << stats.samplesPerPixel << std::setw(11) << formatSeconds(stats.seconds) << std::setw(12)
-        << stats.rays.total() << std::setw(10) << error.str() << " ";
+        << stats.samplesPerPixel << std::setw(11) << vis::formatSeconds(stats.seconds)
+        << std::setw(12) << stats.rays.total() << std::setw(10) << error.str() << " ";
     for (int k = 0; k < kRayKindCount; ++k)
       if (stats.rays.byKind[k] > 0)
         out << " " << toString(static_cast<RayKind>(k)) << " " << stats.rays.byKind[k];
@@ -203,11 +197,6 @@ void printFigures(const ComparisonResult& result, std::ostream& out) {
 
 void writeTextFile(const std::string& path, const std::string& text) {
   if (auto problem = writeFileAtomically(path, text)) throw WriteError(path + ": " + *problem);
-}
-
-std::string replaceExtension(const std::string& path, const std::string& extension) {
-  const std::string ext = lowerExtension(path);
-  return path.substr(0, path.size() - ext.size()) + extension;
 }
 
 Subcommand addCompareCommand(CLI::App& cli) {

@@ -46,7 +46,4 @@ void printFigures(const ComparisonResult& result, std::ostream& out);
 /// half written. Throws raylab::Exception naming the file when it cannot be written.
 void writeTextFile(const std::string& path, const std::string& text);
 
-/// `path` with its extension replaced by `extension` (".json").
-std::string replaceExtension(const std::string& path, const std::string& extension);
-
 }  // namespace raylab::app

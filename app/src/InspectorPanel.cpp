@@ -1,6 +1,7 @@
 #include "InspectorPanel.h"
 
 #include "raylab/core/RayInspector.h"
+#include "raylab/vis/SceneView.h"
 
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -15,8 +16,8 @@
 
 namespace raylab::app {
 
-InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget* parent)
-    : QWidget(parent), m_scene(scene), m_tree(tree) {
+InspectorPanel::InspectorPanel(const vis::SceneView& view, QWidget* parent)
+    : QWidget(parent), m_view(view) {
   // Step 1: which ray, and the way to its parent and children.
   m_number = new QSpinBox;
   m_number->setRange(-1, -1);
@@ -35,10 +36,12 @@ InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget*
   connect(m_number, qOverload<int>(&QSpinBox::valueChanged), this,
           [this](int id) { emit segmentRequested(id); });
   connect(m_parent, &QPushButton::clicked, this, [this] {
-    if (m_segment >= 0) emit segmentRequested(m_tree.segments[std::size_t(m_segment)].parent);
+    if (m_segment >= 0)
+      emit segmentRequested(m_view.rayTree().segments[std::size_t(m_segment)].parent);
   });
   connect(m_child, &QPushButton::clicked, this, [this] {
-    if (m_segment >= 0) emit segmentRequested(m_tree.segments[std::size_t(m_segment)].firstChild);
+    if (m_segment >= 0)
+      emit segmentRequested(m_view.rayTree().segments[std::size_t(m_segment)].firstChild);
   });
 
   // Step 2: the text, the ray's values then the oracle's check.
@@ -55,7 +58,7 @@ InspectorPanel::InspectorPanel(const Scene& scene, const RayTree& tree, QWidget*
 }
 
 void InspectorPanel::showSegment(int id) {
-  const int count = int(m_tree.segments.size());
+  const int count = int(m_view.rayTree().segments.size());
   if (id < -1 || id >= count) id = -1;
   m_segment = id;
   {
@@ -64,8 +67,8 @@ void InspectorPanel::showSegment(int id) {
     m_number->setValue(id);
   }
   m_number->setEnabled(count > 0);
-  m_parent->setEnabled(id >= 0 && m_tree.segments[std::size_t(id)].parent >= 0);
-  m_child->setEnabled(id >= 0 && m_tree.segments[std::size_t(id)].firstChild >= 0);
+  m_parent->setEnabled(id >= 0 && m_view.rayTree().segments[std::size_t(id)].parent >= 0);
+  m_child->setEnabled(id >= 0 && m_view.rayTree().segments[std::size_t(id)].firstChild >= 0);
   if (id < 0) {
     m_text->setPlainText(
         count == 0 ? tr("No ray tree yet: choose a pixel in the Ray tree tab and press Trace.")
@@ -74,7 +77,7 @@ void InspectorPanel::showSegment(int id) {
                         "oracle's check of its hit beside double precision."));
     return;
   }
-  const RayInspection inspection = RayInspector::inspect(m_scene, m_tree, id);
+  const RayInspection inspection = RayInspector::inspect(m_view.scene(), m_view.rayTree(), id);
   m_text->setPlainText(
       QString::fromStdString(inspection.rayText() + "\n" + inspection.oracleText()));
 }

@@ -10,6 +10,10 @@ class QPlainTextEdit;
 class QPushButton;
 class QSpinBox;
 
+namespace raylab::vis {
+class SceneView;
+}
+
 namespace raylab::app {
 
 /**
@@ -25,9 +29,9 @@ class InspectorPanel : public QWidget {
   Q_OBJECT
 
  public:
-  /// A panel for trees of `scene` held in `tree` (both must outlive the panel; the tree
-  /// object is reused by every trace).
-  InspectorPanel(const Scene& scene, const RayTree& tree, QWidget* parent = nullptr);
+  /// A panel for the ray tree shown in `view` (which must outlive the panel), read against
+  /// the view's scene.
+  explicit InspectorPanel(const vis::SceneView& view, QWidget* parent = nullptr);
 
   /// Shows ray `id` of the tree (-1: none, with a hint).
   void showSegment(int id);
@@ -45,8 +49,7 @@ class InspectorPanel : public QWidget {
   void segmentRequested(int id);
 
  private:
-  const Scene& m_scene;
-  const RayTree& m_tree;
+  const vis::SceneView& m_view;
   int m_segment = -1;
   QSpinBox* m_number = nullptr;
   QPushButton* m_parent = nullptr;

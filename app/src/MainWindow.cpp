@@ -26,7 +26,7 @@
 namespace raylab::app {
 
 MainWindow::MainWindow(const Scene& scene, QWidget* parent)
-    : QMainWindow(parent), m_view(std::make_unique<SceneView>(scene)) {
+    : QMainWindow(parent), m_view(std::make_unique<vis::SceneView>(scene)) {
   setWindowTitle(QStringLiteral("RayLab — %1").arg(QString::fromStdString(scene.name)));
   resize(1400, 860);
 
@@ -64,7 +64,7 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
 
   // Step 4: the inspector, in a tab beside the ray-tree panel (raised when a ray is chosen):
   // the 3D view keeps the whole height.
-  m_inspector = new InspectorPanel(m_view->scene(), m_rayPanel->tree());
+  m_inspector = new InspectorPanel(*m_view);
   QDockWidget* inspector = addDock(tr("Ray inspector"), QStringLiteral("inspector"), m_inspector,
                                    Qt::RightDockWidgetArea);
   tabifyDockWidget(rays, inspector);
@@ -76,7 +76,9 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
           [this](const QString& text) { statusBar()->showMessage(text); });
   connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this, inspector](int id) {
     m_inspector->showSegment(id);
-    inspector->raise();
+    // Only a ray actually picked brings the inspector forward; a new trace or a click on
+    // empty space leaves the panel the teacher is using in front.
+    if (id >= 0) inspector->raise();
   });
   connect(m_inspector, &InspectorPanel::segmentRequested, m_rayPanel,
           [this](int id) { m_rayPanel->selectSegment(id); });
@@ -111,7 +113,7 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
 MainWindow::~MainWindow() {
   m_rayPanel->pause();
   // The render window outlives us by a moment (Qt deletes children later): detach the
-  // renderer now so it never draws a SceneView that is gone.
+  // renderer now so it never draws a vis::SceneView that is gone.
   if (m_vtkWidget && m_vtkWidget->renderWindow()) {
     m_vtkWidget->renderWindow()->RemoveRenderer(m_view->renderer());
   }
@@ -140,7 +142,10 @@ void MainWindow::resetView() {
   render();
 }
 
-void MainWindow::render() { m_vtkWidget->renderWindow()->Render(); }
+void MainWindow::render() {
+  m_view->update();
+  m_vtkWidget->renderWindow()->Render();
+}
 
 int MainWindow::clickRay(const QPoint& position) {
   if (!m_view->hasRayTree()) return -1;

@@ -10,7 +10,7 @@ class QDockWidget;
 class QListWidget;
 class QVTKOpenGLNativeWidget;
 
-namespace raylab {
+namespace raylab::vis {
 class SceneView;
 }
 
@@ -40,7 +40,7 @@ class MainWindow : public QMainWindow {
   bool saveScreenshot(const QString& path);
 
   /// The 3D view shown (for tests and for the other panels).
-  SceneView& sceneView() { return *m_view; }
+  vis::SceneView& sceneView() { return *m_view; }
   /// The widget that shows the 3D view and turns mouse input into camera moves.
   QVTKOpenGLNativeWidget* viewWidget() const { return m_vtkWidget; }
   /// The list of the scene's objects, in Scene::objects order.
@@ -65,7 +65,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
                        Qt::DockWidgetArea area);
 
-  std::unique_ptr<SceneView> m_view;
+  std::unique_ptr<vis::SceneView> m_view;
   QVTKOpenGLNativeWidget* m_vtkWidget = nullptr;
   QListWidget* m_objectList = nullptr;
   RayTreePanel* m_rayPanel = nullptr;

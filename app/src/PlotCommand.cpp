@@ -2,9 +2,9 @@
 
 #include "CompareCommand.h"
 #include "ExitCodes.h"
-#include "RenderCommand.h"
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/FilePaths.h"
 #include "raylab/vis/ConvergencePlot.h"
 
 #include <iostream>
@@ -35,8 +35,8 @@ int runPlot(const PlotOptions& options, const std::string& topLevelScene) {
 
   // Step 2: the plot, then the series; each file complete or not at all.
   const auto picture = parseSize(options.reference.picture);
-  ConvergencePlot plot(result,
-                       options.x == "time" ? ConvergenceAxis::Time : ConvergenceAxis::Samples);
+  vis::ConvergencePlot plot(
+      result, options.x == "time" ? vis::ConvergenceAxis::Time : vis::ConvergenceAxis::Samples);
   plot.renderToPng(options.common.out, picture->first, picture->second);
   std::cout << options.common.out << "\n";
   if (!options.json.empty()) {

@@ -31,7 +31,7 @@ namespace raylab::app {
 
 namespace {
 
-/// Frames a ray front takes to travel its segment (AnimationSettings::framesPerStep).
+/// Frames a ray front takes to travel its segment (vis::AnimationSettings::framesPerStep).
 constexpr int kFramesPerStep = 12;
 /// Processing order: at most this many steps per animation when rays per step is chosen
 /// automatically (a bushy distributed tree still plays in about half a minute).
@@ -51,18 +51,12 @@ QIcon swatch(const Vec3& colour) {
   return QIcon(pixmap);
 }
 
-QString vecText(const Vec3& v) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "(%.3g, %.3g, %.3g)", v.x, v.y, v.z);
-  return QString::fromLatin1(buffer);
-}
-
 /// Frames advanced per timer tick at speed-slider value v (1..10).
 int framesPerTick(int v) { return std::max(1, v); }
 
 }  // namespace
 
-RayTreePanel::RayTreePanel(SceneView& view, QWidget* parent) : QWidget(parent), m_view(view) {
+RayTreePanel::RayTreePanel(vis::SceneView& view, QWidget* parent) : QWidget(parent), m_view(view) {
   auto* layout = new QVBoxLayout(this);
   layout->setSpacing(4);
   layout->setContentsMargins(6, 4, 6, 4);
@@ -140,9 +134,9 @@ QWidget* RayTreePanel::buildStyleGroup() {
 
   // Colouring.
   m_colouring = new QComboBox;
-  m_colouring->addItem(tr("Energy (grey, green, blue)"), int(RayColouring::Energy));
-  m_colouring->addItem(tr("Ray kind"), int(RayColouring::Kind));
-  m_colouring->addItem(tr("Depth"), int(RayColouring::Depth));
+  m_colouring->addItem(tr("Energy (grey, green, blue)"), QStringLiteral("energy"));
+  m_colouring->addItem(tr("Ray kind"), QStringLiteral("kind"));
+  m_colouring->addItem(tr("Depth"), QStringLiteral("depth"));
   m_colouring->setToolTip(
       tr("Energy: the share of the pixel's light that came back along the ray\n"
          "(light grey = none, green = some, blue = most)."));
@@ -159,7 +153,7 @@ QWidget* RayTreePanel::buildStyleGroup() {
     name[0] = name[0].toUpper();
     auto* box = new QCheckBox(name);
     box->setChecked(true);
-    box->setIcon(swatch(kindColour(kind)));
+    box->setIcon(swatch(vis::kindColour(kind)));
     box->setToolTip(tr("Draw %1 rays").arg(QString::fromLatin1(toString(kind))));
     connect(box, &QCheckBox::toggled, this, [this] { restyle(); });
     m_kinds[std::size_t(k)] = box;
@@ -191,13 +185,13 @@ QWidget* RayTreePanel::buildStyleGroup() {
 
   // What is drawn besides the rays.
   m_hitPoints = new QCheckBox(tr("Hit points"));
-  m_hitPoints->setChecked(RayTreeStyle{}.showHitPoints);
+  m_hitPoints->setChecked(vis::RayTreeStyle{}.showHitPoints);
   m_normals = new QCheckBox(tr("Normals"));
-  m_normals->setChecked(RayTreeStyle{}.showNormals);
+  m_normals->setChecked(vis::RayTreeStyle{}.showNormals);
   m_arrows = new QCheckBox(tr("Arrows"));
-  m_arrows->setChecked(RayTreeStyle{}.showArrows);
+  m_arrows->setChecked(vis::RayTreeStyle{}.showArrows);
   m_legend = new QCheckBox(tr("Legend"));
-  m_legend->setChecked(RayTreeStyle{}.showLegend);
+  m_legend->setChecked(vis::RayTreeStyle{}.showLegend);
   auto* toggles = new QGridLayout;
   toggles->setHorizontalSpacing(12);
   toggles->addWidget(m_hitPoints, 0, 0);
@@ -216,8 +210,8 @@ QWidget* RayTreePanel::buildAnimationGroup() {
 
   // Order and pace.
   m_order = new QComboBox;
-  m_order->addItem(tr("Depth by depth"), int(RevealOrder::Depth));
-  m_order->addItem(tr("Processing order"), int(RevealOrder::Processing));
+  m_order->addItem(tr("Depth by depth"), int(vis::RevealOrder::Depth));
+  m_order->addItem(tr("Processing order"), int(vis::RevealOrder::Processing));
   m_order->setToolTip(
       tr("Depth by depth: every ray of one depth travels at once.\n"
          "Processing order: ray after ray, as the engine's queue takes them."));
@@ -227,8 +221,8 @@ QWidget* RayTreePanel::buildAnimationGroup() {
   m_raysPerStep->setToolTip(tr("Processing order: rays that start together in one step"));
   form->addRow(tr("Rays per step"), m_raysPerStep);
   const auto reorder = [this] {
-    const bool wasDone = !m_tree.segments.empty() && m_frame >= frameCount() - 1;
-    m_raysPerStep->setEnabled(animation().order == RevealOrder::Processing);
+    const bool wasDone = !tree().segments.empty() && m_frame >= frameCount() - 1;
+    m_raysPerStep->setEnabled(animation().order == vis::RevealOrder::Processing);
     if (wasDone) m_frame = INT_MAX;
     showFrame();
   };
@@ -317,56 +311,46 @@ void RayTreePanel::setPixel(int x, int y) {
 
 void RayTreePanel::setSample(int sample) { m_sample->setValue(sample); }
 
+const RayTree& RayTreePanel::tree() const {
+  static const RayTree kNone;
+  return m_trace ? m_trace->tree : kNone;
+}
+
+const std::vector<std::string>& RayTreePanel::stepTexts() const {
+  static const std::vector<std::string> kNone;
+  return m_trace ? m_trace->stepTexts : kNone;
+}
+
 void RayTreePanel::trace() {
   pause();
   const Scene& scene = m_view.scene();
   RenderSettings settings = scene.render;
   settings.algorithm = algorithm();
-  const int x = m_pixelX->value(), y = m_pixelY->value(), sample = m_sample->value();
+  m_trace = std::make_shared<const PixelTrace>(
+      tracePixel(scene, settings, m_pixelX->value(), m_pixelY->value(), m_sample->value()));
+  const PixelTrace& trace = *m_trace;
 
-  // Run the real algorithm ray by ray, keeping what each step did for the status line.
-  const Tracer tracer(scene, settings);
-  Stepper stepper(tracer, x, y, sample);
-  m_stepTexts.clear();
-  while (stepper.step()) {
-    const StepEvent& event = stepper.lastEvent();
-    if (event.ray < 0) continue;
-    if (std::size_t(event.ray) >= m_stepTexts.size())
-      m_stepTexts.resize(std::size_t(event.ray) + 1);
-    m_stepTexts[std::size_t(event.ray)] = event.text;
-  }
-  m_tree = stepper.tree();
-  m_stepTexts.resize(m_tree.segments.size());
-
-  // Summarise: rays by kind and the sample's estimate.
-  const RayCounts& counts = stepper.counts();
-  QStringList byKind;
-  for (int k = 0; k < kRayKindCount; ++k)
-    if (counts.byKind[std::size_t(k)] > 0)
-      byKind
-          << QStringLiteral("%1 %2").arg(counts.byKind[std::size_t(k)]).arg(toString(RayKind(k)));
-  QString info = tr("%1: pixel (%2, %3), sample %4\n%5 rays (%6)\nestimate %7")
-                     .arg(QString::fromLatin1(toString(settings.algorithm)))
-                     .arg(x)
-                     .arg(y)
-                     .arg(sample)
-                     .arg(m_tree.segments.size())
-                     .arg(byKind.join(QStringLiteral(", ")))
-                     .arg(vecText(stepper.estimate()));
-  if (m_tree.truncated) info += QStringLiteral("\n") + QString::fromStdString(m_tree.message);
+  // Summarise: which sample, rays by kind, the estimate.
+  QString info = tr("%1: pixel (%2, %3), sample %4\n%5")
+                     .arg(QString::fromLatin1(toString(trace.algorithm)))
+                     .arg(trace.x)
+                     .arg(trace.y)
+                     .arg(trace.sample)
+                     .arg(QString::fromStdString(trace.summary()));
+  if (trace.tree.truncated)
+    info += QStringLiteral("\n") + QString::fromStdString(trace.tree.message);
   m_traceInfo->setText(info);
 
   // Pace the processing-order animation to the tree's size.
   {
     const QSignalBlocker block(m_raysPerStep);
-    const int n = int(m_tree.segments.size());
+    const int n = int(trace.tree.segments.size());
     m_raysPerStep->setValue(std::max(1, (n + kAutoMaxSteps - 1) / kAutoMaxSteps));
   }
 
-  // Show it whole, nothing selected.
+  // Show it whole, nothing selected (the view builds it once, at the next render).
   m_selected = -1;
-  m_view.setRayTree(m_tree, treeStyle());
-  m_view.setSelectedSegment(-1);
+  m_view.setRayTree(std::shared_ptr<const RayTree>(m_trace, &m_trace->tree), treeStyle());
   m_frame = frameCount() - 1;
   updateFrameControls();
   emit treeChanged();
@@ -374,9 +358,10 @@ void RayTreePanel::trace() {
   showFrame();
 }
 
-RayTreeStyle RayTreePanel::treeStyle() const {
-  RayTreeStyle s;
-  s.colouring = RayColouring(m_colouring->currentData().toInt());
+vis::RayTreeStyle RayTreePanel::treeStyle() const {
+  vis::RayTreeStyle s;
+  s.colouring = vis::parseColouring(m_colouring->currentData().toString().toStdString())
+                    .value_or(vis::RayColouring::Energy);
   for (int k = 0; k < kRayKindCount; ++k)
     s.filter.kinds[std::size_t(k)] = m_kinds[std::size_t(k)]->isChecked();
   s.filter.maxDepth = m_maxDepth->value() < 0 ? INT_MAX : m_maxDepth->value();
@@ -389,21 +374,21 @@ RayTreeStyle RayTreePanel::treeStyle() const {
   return s;
 }
 
-AnimationSettings RayTreePanel::animation() const {
-  AnimationSettings a;
-  a.order = RevealOrder(m_order->currentData().toInt());
+vis::AnimationSettings RayTreePanel::animation() const {
+  vis::AnimationSettings a;
+  a.order = vis::RevealOrder(m_order->currentData().toInt());
   a.framesPerStep = kFramesPerStep;
   a.raysPerStep = m_raysPerStep->value();
   return a;
 }
 
 void RayTreePanel::restyle() {
-  if (m_tree.segments.empty()) return;
+  if (tree().segments.empty()) return;
   m_view.setRayTreeStyle(treeStyle());
   showFrame();
 }
 
-int RayTreePanel::frameCount() const { return raylab::frameCount(m_tree, animation()); }
+int RayTreePanel::frameCount() const { return vis::frameCount(tree(), animation()); }
 
 int RayTreePanel::stepAt(int frame) const {
   // Frame 0 shows nothing; step s travels during frames s F + 1 .. (s + 1) F.
@@ -419,56 +404,16 @@ void RayTreePanel::setFrame(int frame) {
 void RayTreePanel::showFrame() {
   m_frame = std::clamp(m_frame, 0, frameCount() - 1);
   updateFrameControls();
-  if (m_tree.segments.empty()) return;
+  if (!m_trace) return;
 
-  // The picture: a function of the frame number only.
-  m_view.setReveal(revealFrame(m_tree, animation(), m_frame));
-
-  // The status line: what the step being played does.
-  const AnimationSettings a = animation();
-  const int last = frameCount() - 1;
-  const int steps = last / kFramesPerStep;
-  const int step = stepAt(m_frame);
-  QString text;
-  if (step < 0) {
-    text = tr("Frame 0: nothing revealed yet. Press Play or Step.");
-  } else if (a.order == RevealOrder::Processing) {
-    const int first = step * a.raysPerStep;
-    const int end = std::min(int(m_tree.segments.size()), first + a.raysPerStep);
-    const QString what = QString::fromStdString(m_stepTexts[std::size_t(first)]);
-    text = end - first == 1 ? tr("Step %1 of %2: %3.").arg(step + 1).arg(steps).arg(what)
-                            : tr("Step %1 of %2: rays #%3..#%4; first: %5.")
-                                  .arg(step + 1)
-                                  .arg(steps)
-                                  .arg(first)
-                                  .arg(end - 1)
-                                  .arg(what);
-  } else {
-    std::array<int, kRayKindCount> byKind{};
-    int count = 0;
-    for (const RaySegment& s : m_tree.segments)
-      if (s.depth == step) {
-        ++byKind[std::size_t(s.kind)];
-        ++count;
-      }
-    QStringList parts;
-    for (int k = 0; k < kRayKindCount; ++k)
-      if (byKind[std::size_t(k)] > 0)
-        parts << QStringLiteral("%1 %2").arg(byKind[std::size_t(k)]).arg(toString(RayKind(k)));
-    text = tr("Depth %1 of %2: %3 %4 (%5).")
-               .arg(step)
-               .arg(steps - 1)
-               .arg(count)
-               .arg(count == 1 ? tr("ray travels") : tr("rays travel"))
-               .arg(parts.join(QStringLiteral(", ")));
-  }
-  if (m_frame == last) text += tr(" The whole tree is shown.");
-  setStatus(text);
+  // The picture and the status line: functions of the frame number only.
+  m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), m_frame));
+  setStatus(QString::fromStdString(vis::stepCaption(*m_trace, animation(), m_frame)));
   emit viewChanged();
 }
 
 void RayTreePanel::updateFrameControls() {
-  const bool has = !m_tree.segments.empty();
+  const bool has = !tree().segments.empty();
   const int last = has ? frameCount() - 1 : 0;
   {
     const QSignalBlocker block(m_frameSlider);
@@ -486,7 +431,7 @@ void RayTreePanel::updateFrameControls() {
 }
 
 void RayTreePanel::play() {
-  if (m_tree.segments.empty()) return;
+  if (tree().segments.empty()) return;
   // From the end, play again from the start.
   if (m_frame >= frameCount() - 1) setFrame(0);
   m_timer->start();
@@ -521,7 +466,7 @@ void RayTreePanel::stepBack() {
 }
 
 void RayTreePanel::selectSegment(int id) {
-  if (id < -1 || id >= int(m_tree.segments.size())) id = -1;
+  if (id < -1 || id >= int(tree().segments.size())) id = -1;
   m_selected = id;
   m_view.setSelectedSegment(id);
   emit segmentSelected(id);

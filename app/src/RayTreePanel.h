@@ -1,12 +1,15 @@
 #pragma once
 
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
+#include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
 
 #include <QWidget>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,7 +22,7 @@ class QSlider;
 class QSpinBox;
 class QTimer;
 
-namespace raylab {
+namespace raylab::vis {
 class SceneView;
 }
 
@@ -29,12 +32,13 @@ namespace raylab::app {
  * \brief The ray-tree panel: trace one pixel sample with the chosen algorithm, draw its
  * tree in the 3D view, and play the bounce animation.
  *
- * Tracing runs the real algorithm one ray at a time (raylab::Stepper) and keeps what each
- * step did for the status line. The picture is always a function of the frame number:
- * `setFrame(n)` shows `revealFrame(tree, animation(), n)`; Play only starts a QTimer whose
- * ticks add `speed` frames to that number, Step forward / back jump to the next / previous
- * step boundary (a multiple of framesPerStep), and the frame slider sets it directly.
- * Colouring, filters and toggles redraw the tree with another RayTreeStyle.
+ * Tracing is core's tracePixel (the real algorithm, one ray at a time); the panel keeps
+ * the PixelTrace and shares its tree with the view. It holds widgets and bindings only:
+ * the captions come from vis::stepCaption, the reveal from vis::revealFrame. The picture is always
+ * a function of the frame number: `setFrame(n)` shows `vis::revealFrame(tree, animation(), n)`;
+ * Play only starts a QTimer whose ticks add `speed` frames to that number, Step forward / back jump
+ * to the next / previous step boundary (a multiple of framesPerStep), and the frame slider sets it
+ * directly. Colouring, filters and toggles redraw the tree with another vis::RayTreeStyle.
  */
 class RayTreePanel : public QWidget {
   Q_OBJECT
@@ -44,7 +48,7 @@ class RayTreePanel : public QWidget {
   static constexpr int kTickMs = 40;
 
   /// A panel drawing into `view` (which must outlive it), for the view's scene.
-  explicit RayTreePanel(SceneView& view, QWidget* parent = nullptr);
+  explicit RayTreePanel(vis::SceneView& view, QWidget* parent = nullptr);
   ~RayTreePanel() override;
 
   /// Chooses the algorithm, pixel and sample of the next trace (clamped to the film).
@@ -56,14 +60,14 @@ class RayTreePanel : public QWidget {
   /// Records the tree of the chosen (pixel, sample) and shows it whole.
   void trace();
   /// The tree shown (empty before the first trace).
-  const RayTree& tree() const { return m_tree; }
+  const RayTree& tree() const;
   /// What each processed ray did, by ray id (the stepper's narration).
-  const std::vector<std::string>& stepTexts() const { return m_stepTexts; }
+  const std::vector<std::string>& stepTexts() const;
 
   /// How the tree is drawn, read from the controls.
-  RayTreeStyle treeStyle() const;
+  vis::RayTreeStyle treeStyle() const;
   /// How the animation reveals it, read from the controls.
-  AnimationSettings animation() const;
+  vis::AnimationSettings animation() const;
 
   /// \name The bounce animation (frame 0 shows nothing, frameCount() - 1 the whole tree).
   /// @{
@@ -138,10 +142,9 @@ class RayTreePanel : public QWidget {
   void setStatus(const QString& text);
   void updateFrameControls();
 
-  SceneView& m_view;
-  RayTree m_tree;
-  std::vector<std::string> m_stepTexts;
-  std::string m_traceSummary;
+  vis::SceneView& m_view;
+  /// The last trace (null before the first); the view draws its tree without a copy.
+  std::shared_ptr<const PixelTrace> m_trace;
   int m_frame = 0;
   int m_selected = -1;
   QString m_status;

@@ -18,13 +18,6 @@ namespace raylab::app {
 
 namespace {
 
-/// The renderer's float image as vis's 8-bit picture (clamp, sRGB).
-Image toPicture(const FloatImage& image) {
-  Image picture(image.width, image.height);
-  picture.rgb = imageio::toSrgb8(image);
-  return picture;
-}
-
 struct RenderOptions {
   CommonOptions common;
   std::optional<int> spp;  ///< Samples per pixel; default the scene's.
@@ -53,14 +46,7 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   const FloatImage image = renderer.render();
 
   // Step 3: write the image in the format its extension names.
-  const std::string ext = lowerExtension(out);
-  if (ext == ".pfm") {
-    imageio::writePfm(image, out);
-  } else if (ext == ".ppm") {
-    imageio::writePpm(image, out);
-  } else {
-    ImageIO::writePng(toPicture(image), out);
-  }
+  vis::writeImage(image, out);
 
   // Step 4: the figures.
   const RenderStats& stats = renderer.stats();
@@ -89,21 +75,6 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
 
 }  // namespace
 
-std::string lowerExtension(const std::string& path) {
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-  std::string ext = path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-bool isRenderOutput(const std::string& path) {
-  const std::string ext = lowerExtension(path);
-  return ext == ".png" || ext == ".ppm" || ext == ".pfm";
-}
-
 Subcommand addRenderCommand(CLI::App& cli) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = cli.add_subcommand(
@@ -116,8 +87,8 @@ Subcommand addRenderCommand(CLI::App& cli) {
                       "Image size WIDTHxHEIGHT (default: the scene's)");
   command->get_option("--out")->check(CLI::Validator(
       [](const std::string& path) {
-        return isRenderOutput(path) ? std::string()
-                                    : "the file name must end in .png, .ppm or .pfm";
+        return vis::isImageFile(path) ? std::string()
+                                      : "the file name must end in .png, .ppm or .pfm";
       },
       "FILE"));
   command->add_option("--spp", options->spp, "Samples per pixel (default: the scene's)")

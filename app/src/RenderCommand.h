@@ -8,11 +8,6 @@
 
 namespace raylab::app {
 
-/// True when `path` ends in .png, .ppm or .pfm (any case): the formats `render` writes.
-bool isRenderOutput(const std::string& path);
-/// The lower-case extension of `path` with its dot (".png"), or "" when it has none.
-std::string lowerExtension(const std::string& path);
-
 /**
  * \brief `raylab render`: renders the scene with one of the four algorithms (core
  * Renderer, all threads, progressive) and writes the image (.png/.ppm 8-bit sRGB, .pfm

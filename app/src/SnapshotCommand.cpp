@@ -18,7 +18,7 @@ Subcommand addSnapshotCommand(CLI::App& cli) {
   return {command, [options](const std::string& topLevelScene) {
             const Scene scene = options->loadScene(topLevelScene);
             const auto [width, height] = options->size.value_or(std::make_pair(300, 300));
-            SceneView view(scene);
+            vis::SceneView view(scene);
             view.resetViewCamera(static_cast<double>(width) / height);
             view.renderToPng(options->out, width, height);
             std::cout << options->out << std::endl;

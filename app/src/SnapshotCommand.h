@@ -8,7 +8,7 @@ namespace raylab::app {
 
 /**
  * \brief `raylab snapshot`: renders the window's default 3D view of the scene offscreen
- * (same SceneView, same camera) into a PNG and prints the path written on stdout.
+ * (same vis::SceneView, same camera) into a PNG and prints the path written on stdout.
  * Errors are thrown (raylab::Exception subtypes naming the file).
  */
 Subcommand addSnapshotCommand(CLI::App& cli);

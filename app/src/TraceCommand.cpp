@@ -1,9 +1,10 @@
 #include "TraceCommand.h"
 
 #include "ExitCodes.h"
-#include "RenderCommand.h"
 #include "SceneSource.h"
 
+#include "raylab/core/FilePaths.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/ImageIO.h"
@@ -19,35 +20,11 @@ namespace raylab::app {
 
 namespace {
 
-const char* const kKindNames = "camera, reflection, refraction, diffuse, glossy, shadow";
-
-/// Splits "a,b,c" at commas (no empty items).
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
-
-std::optional<RayKind> parseKind(const std::string& name) {
-  for (int k = 0; k < kRayKindCount; ++k)
-    if (name == toString(RayKind(k))) return RayKind(k);
-  return std::nullopt;
-}
-
 struct TraceOptions {
   RayTreeOptions tree;
   std::string json;  ///< --json; default: --out with .json.
   int frame = -1;    ///< --frame: draw this frame of the animation; -1 the whole tree.
 };
-
-/// `path` with its extension replaced by `ext` (".json").
-std::string withExtension(const std::string& path, const std::string& ext) {
-  const std::string old = lowerExtension(path);
-  return path.substr(0, path.size() - old.size()) + ext;
-}
 
 int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the pixel.
@@ -60,20 +37,21 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   const RenderSettings settings = o.common.settings(scene);
 
   // Step 2: trace the sample, recording its tree.
-  const RayTree tree = traceRayTree(scene, settings, o.pixel.first, o.pixel.second, o.sample);
+  const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
+  const RayTree& tree = trace.tree;
 
   // Step 3: the 3D view with the tree, in memory first.
   const auto [width, height] = o.pictureSize();
-  const std::unique_ptr<SceneView> view = o.makeView(scene, tree);
-  if (options.frame >= 0) view->setReveal(revealFrame(tree, o.animation(), options.frame));
-  const Image picture = view->renderOffscreen(width, height);
+  const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree);
+  if (options.frame >= 0) view->setReveal(vis::revealFrame(tree, o.animation(), options.frame));
+  const SrgbImage picture = view->renderOffscreen(width, height);
 
   // Step 4: the dump, then the picture; either both files are written or neither.
   const std::string json =
-      options.json.empty() ? withExtension(o.common.out, ".json") : options.json;
+      options.json.empty() ? replaceExtension(o.common.out, ".json") : options.json;
   RayTreeJson::save(tree, scene, settings, json);
   try {
-    ImageIO::writePng(picture, o.common.out);
+    vis::writePng(picture, o.common.out);
   } catch (...) {
     std::remove(json.c_str());
     throw;
@@ -81,7 +59,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   std::cout << o.common.out << "\n" << json << "\n";
   std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample
             << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
-            << treeSummary(tree) << std::endl;
+            << trace.summary() << std::endl;
   if (tree.truncated) std::cerr << "raylab: warning: " << tree.message << std::endl;
   return kExitOk;
 }
@@ -107,7 +85,7 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
       ->capture_default_str();
   command
       ->add_option("--kinds", kinds,
-                   std::string("Draw only these ray kinds, comma-separated: ") + kKindNames)
+                   "Draw only these ray kinds, comma-separated: " + vis::rayKindNames())
       ->group("Filters");
   command->add_option("--max-depth", maxDepth, "Draw rays up to this depth (camera rays: 0)")
       ->check(CLI::Range(0, 1 << 20))
@@ -149,21 +127,22 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
       ->group("Animation");
 }
 
-AnimationSettings RayTreeOptions::animation() const {
-  AnimationSettings settings;
-  settings.order = order == "processing" ? RevealOrder::Processing : RevealOrder::Depth;
+vis::AnimationSettings RayTreeOptions::animation() const {
+  vis::AnimationSettings settings;
+  settings.order = order == "processing" ? vis::RevealOrder::Processing : vis::RevealOrder::Depth;
   settings.framesPerStep = framesPerStep;
   settings.raysPerStep = raysPerStep;
   return settings;
 }
 
-std::unique_ptr<SceneView> RayTreeOptions::makeView(const Scene& scene, const RayTree& tree) const {
-  auto result = std::make_unique<SceneView>(scene);
+std::unique_ptr<vis::SceneView> RayTreeOptions::makeView(const Scene& scene,
+                                                         const RayTree& tree) const {
+  auto result = std::make_unique<vis::SceneView>(scene);
   result->setRayTree(tree, style());
   const auto [width, height] = pictureSize();
   const double aspect = double(width) / height;
   if (view == "camera")
-    result->setViewCamera(behindCameraView(scene, aspect));
+    result->setViewCamera(vis::behindCameraView(scene, aspect));
   else
     result->resetViewCamera(aspect);
   return result;
@@ -179,31 +158,13 @@ Scene RayTreeOptions::loadScene(const std::string& topLevelScene) const {
 }
 
 std::optional<std::string> RayTreeOptions::usageError(const Scene& scene) const {
-  const int w = scene.camera.width, h = scene.camera.height;
-  if (pixel.first < 0 || pixel.first >= w || pixel.second < 0 || pixel.second >= h) {
-    std::ostringstream out;
-    out << "--pixel " << pixel.first << " " << pixel.second << " is outside the " << w << "x" << h
-        << " image (x in 0.." << w - 1 << ", y in 0.." << h - 1 << ")";
-    return out.str();
-  }
-  for (const std::string& kind : splitList(kinds)) {
-    if (!parseKind(kind))
-      return "--kinds: unknown ray kind '" + kind + "' (expected " + kKindNames + ")";
-  }
-  return std::nullopt;
+  return pixelUsageError(pixel.first, pixel.second, scene, "--pixel", kinds);
 }
 
-RayTreeStyle RayTreeOptions::style() const {
-  RayTreeStyle style;
-  style.colouring = colour == "kind"    ? RayColouring::Kind
-                    : colour == "depth" ? RayColouring::Depth
-                                        : RayColouring::Energy;
-  const std::vector<std::string> names = splitList(kinds);
-  if (!names.empty()) {
-    style.filter.kinds.fill(false);
-    for (const std::string& name : names)
-      if (const auto kind = parseKind(name)) style.filter.kinds[std::size_t(*kind)] = true;
-  }
+vis::RayTreeStyle RayTreeOptions::style() const {
+  vis::RayTreeStyle style;
+  style.colouring = vis::parseColouring(colour).value_or(vis::RayColouring::Energy);
+  style.filter.kinds = vis::parseRayKinds(kinds).kinds;
   if (maxDepth) style.filter.maxDepth = *maxDepth;
   style.filter.onlyReachingLight = reachingLight;
   style.filter.minEnergy = minEnergy;
@@ -218,50 +179,18 @@ std::pair<int, int> RayTreeOptions::pictureSize() const {
   return common.size.value_or(m_defaultSize);
 }
 
-RayTree traceRayTree(const Scene& scene, const RenderSettings& settings, int x, int y, int sample) {
-  const Tracer tracer(scene, settings);
-  Stepper stepper(tracer, x, y, sample);
-  stepper.runToEnd();
-  return stepper.tree();
-}
-
-ViewCamera behindCameraView(const Scene& scene, double aspect) {
-  const CameraSpec& camera = scene.camera;
-  const Vec3 toTarget = camera.lookAt - camera.position;
-  const double distance = glm::length(toTarget);
-  const Vec3 forward = distance > 0.0 ? toTarget / distance : Vec3(0.0, 0.0, -1.0);
-  const Vec3 up = glm::length(camera.up) > 0.0 ? glm::normalize(camera.up) : Vec3(0, 1, 0);
-  // Back along the view direction and up a little, by a share of the glyph scale, so the
-  // camera's body and frustum show at the bottom of the picture.
-  const double step = 4.0 * cameraGlyphSize(scene);
-  ViewCamera view;
-  view.eye = camera.position - step * forward + 1.2 * step * up;
-  view.focalPoint = camera.lookAt;
-  view.up = up;
-  // A wider angle than the scene camera's, wider still for a narrow picture.
-  view.viewAngle = std::min(120.0, camera.verticalFov * 1.25 * std::max(1.0, 1.2 / aspect));
-  return view;
-}
-
-std::string treeSummary(const RayTree& tree) {
-  std::array<int, kRayKindCount> byKind{};
-  int deepest = 0;
-  for (const RaySegment& s : tree.segments) {
-    ++byKind[std::size_t(s.kind)];
-    deepest = std::max(deepest, s.depth);
+std::optional<std::string> pixelUsageError(int x, int y, const Scene& scene,
+                                           const std::string& option, const std::string& kinds) {
+  const int w = scene.camera.width, h = scene.camera.height;
+  if (x < 0 || x >= w || y < 0 || y >= h) {
+    std::ostringstream out;
+    out << option << " " << x << " " << y << " is outside the " << w << "x" << h
+        << " image (x in 0.." << w - 1 << ", y in 0.." << h - 1 << ")";
+    return out.str();
   }
-  std::ostringstream out;
-  out << tree.segments.size() << (tree.segments.size() == 1 ? " ray (" : " rays (");
-  bool first = true;
-  for (int k = 0; k < kRayKindCount; ++k) {
-    if (byKind[std::size_t(k)] == 0) continue;
-    out << (first ? "" : ", ") << toString(RayKind(k)) << " " << byKind[std::size_t(k)];
-    first = false;
-  }
-  const Vec3 e = tree.estimate();
-  out << "), depth " << deepest << ", estimate (" << std::setprecision(6) << e.x << ", " << e.y
-      << ", " << e.z << ")";
-  return out.str();
+  const vis::ParsedKinds parsed = vis::parseRayKinds(kinds);
+  if (!parsed.error.empty()) return "--kinds: " + parsed.error;
+  return std::nullopt;
 }
 
 Subcommand addTraceCommand(CLI::App& cli) {

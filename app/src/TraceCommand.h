@@ -4,6 +4,7 @@
 
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
+#include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/SceneView.h"
 #include "raylab/vis/ViewCamera.h"
@@ -34,11 +35,11 @@ struct RayTreeOptions {
   bool reachingLight = false;         ///< --reaching-light.
   double minEnergy = 0.0;             ///< --min-energy.
   bool hitPoints = true, normals = false, arrows = false, legend = true;
-  std::string view = "default";                           ///< --view default|camera.
-  std::optional<std::pair<int, int>> imageSize;           ///< --image-size (the traced image).
-  std::string order = "depth";                            ///< --order processing|depth.
-  int framesPerStep = AnimationSettings{}.framesPerStep;  ///< --frames-per-step.
-  int raysPerStep = AnimationSettings{}.raysPerStep;      ///< --rays-per-step.
+  std::string view = "default";                                ///< --view default|camera.
+  std::optional<std::pair<int, int>> imageSize;                ///< --image-size (the traced image).
+  std::string order = "depth";                                 ///< --order processing|depth.
+  int framesPerStep = vis::AnimationSettings{}.framesPerStep;  ///< --frames-per-step.
+  int raysPerStep = vis::AnimationSettings{}.raysPerStep;      ///< --rays-per-step.
 
   /// Registers the options on `command`; `defaultSize` is the picture size without --size.
   void add(CLI::App* command, const std::string& outHelp, const std::string& defaultSize);
@@ -47,29 +48,27 @@ struct RayTreeOptions {
   /// Checks --pixel against the scene camera's image and --kinds; the message on failure.
   std::optional<std::string> usageError(const Scene& scene) const;
   /// The drawing style the options ask for (valid once usageError() is empty).
-  RayTreeStyle style() const;
+  vis::RayTreeStyle style() const;
   /// The picture size (--size, or the command's default).
   std::pair<int, int> pictureSize() const;
   /// The bounce animation's settings (--order, --frames-per-step, --rays-per-step).
-  AnimationSettings animation() const;
+  vis::AnimationSettings animation() const;
   /// A view of `scene` with `tree` drawn as the options ask, its camera set for a picture
   /// of pictureSize().
-  std::unique_ptr<SceneView> makeView(const Scene& scene, const RayTree& tree) const;
+  std::unique_ptr<vis::SceneView> makeView(const Scene& scene, const RayTree& tree) const;
 
  private:
   std::string m_imageSizeText;
   std::pair<int, int> m_defaultSize{1024, 768};
 };
 
-/// The recorded tree of sample `sample` of pixel (x, y) (core Stepper run to its end).
-RayTree traceRayTree(const Scene& scene, const RenderSettings& settings, int x, int y, int sample);
-
-/// A view from just behind and above the scene camera, looking at its look-at point with
-/// a slightly wider field of view: the rays leave the camera towards the viewer's scene.
-ViewCamera behindCameraView(const Scene& scene, double aspect);
-
-/// One line about a tree: "N rays (camera a, shadow b, ...), depth d, estimate (r, g, b)".
-std::string treeSummary(const RayTree& tree);
+/// The usage error of tracing pixel (x, y) of `scene`'s image with the ray kinds `kinds`
+/// (a comma-separated list, empty for all), named after `option` ("--pixel", "--trace"):
+/// a pixel outside the image (naming the image size) or an unknown kind. Shared by
+/// `trace`, `animate` and the window's --trace, which all exit 2 on it.
+std::optional<std::string> pixelUsageError(int x, int y, const Scene& scene,
+                                           const std::string& option,
+                                           const std::string& kinds = {});
 
 /**
  * \brief `raylab trace --pixel X Y`: traces one sample of one pixel with the chosen

@@ -4,6 +4,7 @@
 #include "MainWindow.h"
 #include "RayTreePanel.h"
 #include "SceneSource.h"
+#include "TraceCommand.h"
 
 #include "raylab/core/Exception.h"
 
@@ -32,21 +33,20 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     throw Exception("--select: the scene '" + scene.name + "' has no object named '" +
                     options.select + "'");
   }
-  const CameraSpec& film = scene.camera;
-  if (options.trace && (options.trace->first < 0 || options.trace->first >= film.width ||
-                        options.trace->second < 0 || options.trace->second >= film.height)) {
-    throw Exception("--trace: pixel (" + std::to_string(options.trace->first) + ", " +
-                    std::to_string(options.trace->second) + ") is outside the " +
-                    std::to_string(film.width) + "x" + std::to_string(film.height) +
-                    " film of the scene '" + scene.name + "'");
+  // The pixel to trace: a usage error (exit 2) with the words of `raylab trace`.
+  if (options.trace) {
+    if (const auto error =
+            pixelUsageError(options.trace->first, options.trace->second, scene, "--trace")) {
+      std::cerr << "raylab: " << *error << std::endl;
+      return kExitUsage;
+    }
   }
   const int samples = std::max(1, scene.render.samplesPerPixel);
   if (options.sample < 0 || options.sample >= samples) {
-    throw Exception("--sample: " + std::to_string(options.sample) +
-                    " is not a sample of the "
-                    "scene '" +
-                    scene.name + "' (it renders " + std::to_string(samples) + " per pixel: 0.." +
-                    std::to_string(samples - 1) + ")");
+    std::cerr << "raylab: --sample " << options.sample << " is not a sample of the scene '"
+              << scene.name << "' (it renders " << samples << " per pixel: 0.." << samples - 1
+              << ")" << std::endl;
+    return kExitUsage;
   }
 
   // Step 2: Qt, with the OpenGL surface format VTK's widget needs (set before the app).

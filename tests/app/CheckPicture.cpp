@@ -23,6 +23,7 @@
 namespace {
 
 using namespace raylab;
+using namespace raylab::vis;
 using namespace raylab::testing;
 
 int g_failures = 0;
@@ -32,7 +33,7 @@ void check(bool ok, const std::string& what) {
   if (!ok) ++g_failures;
 }
 
-void checkView(const Image& image, int width, int height) {
+void checkView(const SrgbImage& image, int width, int height) {
   check(image.width == width && image.height == height,
         "size " + std::to_string(image.width) + "x" + std::to_string(image.height) + " is " +
             std::to_string(width) + "x" + std::to_string(height));
@@ -66,7 +67,7 @@ void checkView(const Image& image, int width, int height) {
   }
 }
 
-void checkWindow(const Image& image) {
+void checkWindow(const SrgbImage& image) {
   check(image.width >= 640 && image.height >= 400, "window " + std::to_string(image.width) + "x" +
                                                        std::to_string(image.height) +
                                                        " at least 640x400");
@@ -96,7 +97,7 @@ int main(int argc, char** argv) {
   const std::string path = argv[1];
   const std::string mode = argv[2];
   try {
-    const Image image = ImageIO::readPng(path);
+    const SrgbImage image = vis::readPng(path);
     std::cout << path << ": " << image.toString() << "\n";
     if (mode == "--view" && argc == 5) {
       checkView(image, std::atoi(argv[3]), std::atoi(argv[4]));

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const raylab::Image image = raylab::ImageIO::readPng(argv[1]);
+    const raylab::SrgbImage image = raylab::vis::readPng(argv[1]);
     const int minimum = std::stoi(argv[2]);
     const int count = raylab::testing::countEnergyRayPixels(
         image.width, image.height,

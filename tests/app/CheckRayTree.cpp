@@ -31,6 +31,7 @@
 namespace {
 
 using namespace raylab;
+using namespace raylab::vis;
 
 int g_failures = 0;
 
@@ -88,7 +89,7 @@ void checkTree(const std::string& path, const std::string& scenePath, std::size_
 }
 
 void checkSame(const std::string& a, const std::string& b) {
-  const Image x = ImageIO::readPng(a), y = ImageIO::readPng(b);
+  const SrgbImage x = vis::readPng(a), y = vis::readPng(b);
   check(x.width == y.width && x.height == y.height,
         "same size " + x.toString() + " " + y.toString());
   if (x.width != y.width || x.height != y.height) return;
@@ -113,7 +114,7 @@ void checkFrames(const std::string& dir, int count, int width, int height) {
       check(false, path + " exists");
       continue;
     }
-    const Image image = ImageIO::readPng(path);
+    const SrgbImage image = vis::readPng(path);
     if (image.width != width || image.height != height)
       check(false, path + " is " + image.toString());
   }

@@ -20,6 +20,7 @@
 namespace {
 
 using namespace raylab;
+using namespace raylab::vis;
 
 int g_failures = 0;
 
@@ -55,7 +56,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const Image image = ImageIO::readPng(argv[1]);
+    const SrgbImage image = vis::readPng(argv[1]);
     const Scene scene = SceneIO::load(argv[2]);
 
     // Not black: the mean over all channels is well above zero.

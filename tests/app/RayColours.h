@@ -10,6 +10,8 @@
 
 namespace raylab::testing {
 
+using namespace raylab::vis;  // the tests speak vis's types unqualified
+
 /**
  * Pixels whose colour lies within `tolerance` (8-bit units, Euclidean) of the energy
  * scale between positions `from` and `to` (default 0.35 ... 1: green ... blue; the grey

@@ -35,6 +35,8 @@
 namespace raylab::app {
 namespace {
 
+using namespace raylab::vis;
+
 /// One QApplication for the whole suite (Qt allows only one per process).
 class MainWindowTest : public ::testing::Test {
  protected:

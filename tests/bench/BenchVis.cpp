@@ -13,7 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
 using testing::materialsScene;
@@ -58,7 +58,7 @@ void Animation(benchmark::State& state) {
   int frame = 0;
   for (auto _ : state) {
     view.setReveal(revealFrame(tree, settings, frame));
-    const Image image = view.renderOffscreen(1280, 720);
+    const SrgbImage image = view.renderOffscreen(1280, 720);
     benchmark::DoNotOptimize(image.rgb.data());
     frame = (frame + 1) % frames;
   }
@@ -69,6 +69,6 @@ void Animation(benchmark::State& state) {
 BENCHMARK(Animation)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis
 
 BENCHMARK_MAIN();

@@ -153,7 +153,7 @@ TEST(ImageIO, 07_PpmIsToneMappedTopRowFirst) {
   const unsigned char expected[] = {0, 188, 255, 255, 0, 10};
   for (int i = 0; i < 6; ++i)
     EXPECT_EQ(static_cast<unsigned char>(bytes[header.size() + i]), expected[i]) << i;
-  EXPECT_EQ(imageio::toSrgb8(image), std::vector<std::uint8_t>(expected, expected + 6));
+  EXPECT_EQ(imageio::toSrgb(image).rgb, std::vector<std::uint8_t>(expected, expected + 6));
 }
 
 TEST(ImageIO, 08_Rmse) {

@@ -68,27 +68,27 @@ TEST(RayInspector, 01_CameraRayHitsTheBallAtFour) {
   ASSERT_GE(tree.segments.size(), 2u);
   const RayInspection r = RayInspector::inspect(scene, tree, 0);
   const std::string text = r.toString();
-  EXPECT_EQ(r.kind, RayKind::Camera);
-  EXPECT_EQ(r.depth, 0);
-  EXPECT_EQ(r.parent, -1);
-  EXPECT_EQ(r.origin, Point3(0.0));
-  EXPECT_EQ(r.direction, Vec3(0, 0, -1));
-  ASSERT_TRUE(r.hit) << text;
+  EXPECT_EQ(r.segment.kind, RayKind::Camera);
+  EXPECT_EQ(r.segment.depth, 0);
+  EXPECT_EQ(r.segment.parent, -1);
+  EXPECT_EQ(r.segment.origin, Point3(0.0));
+  EXPECT_EQ(r.segment.direction, Vec3(0, 0, -1));
+  ASSERT_TRUE(r.segment.hit) << text;
   EXPECT_EQ(r.objectName, "ball");
   EXPECT_NEAR(r.distance, 4.0, 1e-12);  // 5 - radius 1
-  EXPECT_NEAR(glm::length(r.endPoint - Point3(0, 0, -4)), 0.0, 1e-12);
-  EXPECT_NEAR(glm::length(r.normal - Vec3(0, 0, 1)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(r.segment.endPoint - Point3(0, 0, -4)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(r.segment.normal - Vec3(0, 0, 1)), 0.0, 1e-12);
   ASSERT_TRUE(r.material.has_value());
   EXPECT_EQ(r.material->name, "red");
   EXPECT_EQ(r.material->type, MaterialType::Diffuse);
   EXPECT_TRUE(contains(r.material->parameters, "albedo (0.7, 0.1, 0.1)")) << r.material->parameters;
-  EXPECT_EQ(r.endReason, EndReason::Spawned);  // its shadow ray to the lamp
-  EXPECT_EQ(r.childCount, 1);
+  EXPECT_EQ(r.segment.endReason, EndReason::Spawned);  // its shadow ray to the lamp
+  EXPECT_EQ(r.segment.childCount, 1);
   // The camera ray's energy is the pixel's estimate: the lamp lights the ball.
   EXPECT_GT(r.energy, 0.0);
   const Vec3 e = tree.segments[0].throughput * tree.segments[0].radiance;
   EXPECT_DOUBLE_EQ(r.energy, 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z);
-  EXPECT_EQ(r.pdf, 0.0);
+  EXPECT_EQ(r.segment.pdf, 0.0);
   EXPECT_TRUE(contains(text, "Ray #0: camera ray, depth 0")) << text;
   EXPECT_TRUE(contains(text, "pdf         none (deterministic)")) << text;
   EXPECT_TRUE(contains(text, "object      'ball'\n  material    'red' (diffuse)\n")) << text;
@@ -131,12 +131,12 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   ASSERT_EQ(tree.segments.size(), 2u);
   const RayInspection shadow = RayInspector::inspect(open, tree, 1);
   const std::string text = shadow.toString();
-  EXPECT_EQ(shadow.kind, RayKind::Shadow);
-  EXPECT_EQ(shadow.parent, 0);
-  EXPECT_EQ(shadow.endReason, EndReason::ReachedLight);
-  EXPECT_FALSE(shadow.hit);
+  EXPECT_EQ(shadow.segment.kind, RayKind::Shadow);
+  EXPECT_EQ(shadow.segment.parent, 0);
+  EXPECT_EQ(shadow.segment.endReason, EndReason::ReachedLight);
+  EXPECT_FALSE(shadow.segment.hit);
   EXPECT_FALSE(shadow.oracle.has_value());
-  EXPECT_NEAR(glm::length(shadow.endPoint - Point3(0, 5, 0)), 0.0, 1e-6);
+  EXPECT_NEAR(glm::length(shadow.segment.endPoint - Point3(0, 5, 0)), 0.0, 1e-6);
   EXPECT_NEAR(shadow.distance, std::sqrt(41.0), 1e-6);
   EXPECT_GT(shadow.energy, 0.0);
   EXPECT_TRUE(contains(text, "Ray #1: shadow ray, depth 1, child of #0")) << text;
@@ -150,8 +150,8 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   ASSERT_EQ(blockedTree.segments.size(), 2u);
   const RayInspection blocked = RayInspector::inspect(closed, blockedTree, 1);
   const std::string blockedText = blocked.toString();
-  EXPECT_EQ(blocked.endReason, EndReason::Occluded);
-  EXPECT_TRUE(blocked.hit);
+  EXPECT_EQ(blocked.segment.endReason, EndReason::Occluded);
+  EXPECT_TRUE(blocked.segment.hit);
   EXPECT_EQ(blocked.objectName, "blocker");
   EXPECT_EQ(blocked.energy, 0.0);
   ASSERT_TRUE(blocked.oracle.has_value());
@@ -172,9 +172,9 @@ TEST(RayInspector, 04_EscapedRayHitsNothing) {
   ASSERT_EQ(tree.segments.size(), 1u);
   const RayInspection r = RayInspector::inspect(scene, tree, 0);
   const std::string text = r.toString();
-  EXPECT_EQ(r.endReason, EndReason::Escaped);
-  EXPECT_FALSE(r.hit);
-  EXPECT_EQ(r.object, -1);
+  EXPECT_EQ(r.segment.endReason, EndReason::Escaped);
+  EXPECT_FALSE(r.segment.hit);
+  EXPECT_EQ(r.segment.object, -1);
   EXPECT_FALSE(r.material.has_value());
   EXPECT_FALSE(r.oracle.has_value());
   EXPECT_EQ(r.energy, 0.0);  // black background
@@ -228,10 +228,10 @@ TEST(RayInspector, 07_SampledDirectionsShowTheirPdf) {
     for (const RaySegment& s : tree.segments) {
       if (s.kind != RayKind::Diffuse) continue;
       const RayInspection r = RayInspector::inspect(scene, tree, s.id, false);
-      EXPECT_GT(r.pdf, 0.0);
-      EXPECT_LE(r.pdf, 1.0 / kPi + 1e-12);  // cos / pi <= 1 / pi
+      EXPECT_GT(r.segment.pdf, 0.0);
+      EXPECT_LE(r.segment.pdf, 1.0 / kPi + 1e-12);  // cos / pi <= 1 / pi
       EXPECT_TRUE(contains(r.toString(), " per sr")) << r.toString();
-      EXPECT_TRUE(contains(r.toString(), "Exact oracle: not computed") || !r.hit);
+      EXPECT_TRUE(contains(r.toString(), "Exact oracle: not computed") || !r.segment.hit);
       found = true;
       break;
     }

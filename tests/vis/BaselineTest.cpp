@@ -8,7 +8,9 @@
 
 namespace raylab::testing {
 
-void expectMatchesBaseline(const Image& image, const std::string& name, double threshold) {
+using namespace raylab::vis;  // the tests speak vis's types unqualified
+
+void expectMatchesBaseline(const SrgbImage& image, const std::string& name, double threshold) {
   const std::filesystem::path baseline =
       std::filesystem::path(RAYLAB_BASELINE_DIR) / (name + ".png");
   const std::filesystem::path output = std::filesystem::path(RAYLAB_TEMP_DIR) / (name + ".png");
@@ -16,17 +18,17 @@ void expectMatchesBaseline(const Image& image, const std::string& name, double t
 
   // Step 1: no baseline yet: keep the output for a human to look at and bless.
   if (!std::filesystem::exists(baseline)) {
-    ImageIO::writePng(image, output.string());
+    vis::writePng(image, output.string());
     ADD_FAILURE() << "no baseline " << baseline << "; wrote " << output
                   << ". Look at it; if it is right, copy it to tests/baselines/ and commit it.";
     return;
   }
 
   // Step 2: compare on compareImages' scale; keep the output when it differs too much.
-  const Image expected = ImageIO::readPng(baseline.string());
+  const SrgbImage expected = vis::readPng(baseline.string());
   const double error = compareImages(image, expected);
   if (error > threshold) {
-    ImageIO::writePng(image, output.string());
+    vis::writePng(image, output.string());
     ADD_FAILURE() << "rendering differs from baseline " << baseline << ": error " << error
                   << " > threshold " << threshold << "; output " << image.width << "x"
                   << image.height << ", baseline " << expected.width << "x" << expected.height

@@ -6,6 +6,8 @@
 
 namespace raylab::testing {
 
+using namespace raylab::vis;  // the tests speak vis's types unqualified
+
 /// Default for expectMatchesBaseline, on compareImages' scale (see Image.h for the
 /// measurements it rests on): 2e-4 is ~18 pixels of a 300x300 picture completely wrong.
 /// It forgives a 1-degree turn of the view (6e-7) and driver noise up to 20 levels per
@@ -20,7 +22,7 @@ constexpr double kDefaultBaselineThreshold = 2e-4;
  * and fails, saying how to bless it. When compareImages exceeds `threshold`, writes the
  * image there too and fails, printing the error, the threshold and both sizes.
  */
-void expectMatchesBaseline(const Image& image, const std::string& name,
+void expectMatchesBaseline(const SrgbImage& image, const std::string& name,
                            double threshold = kDefaultBaselineThreshold);
 
 }  // namespace raylab::testing

@@ -17,6 +17,8 @@
 
 namespace raylab::testing {
 
+using namespace raylab::vis;  // the tests speak vis's types unqualified
+
 /// A colour class: true for the pixels that belong to it.
 using ColourClass = std::function<bool(const Rgb8&)>;
 
@@ -41,7 +43,7 @@ inline bool isYellow(const Rgb8& c) { return c[0] >= 180 && c[1] >= 150 && c[2] 
 
 /// Fraction of the pixels in the (2 radius + 1)^2 square around image point `centre`
 /// (clipped to the image) that belong to `colourClass`.
-inline double fractionNear(const Image& image, const Vec2& centre, int radius,
+inline double fractionNear(const SrgbImage& image, const Vec2& centre, int radius,
                            const ColourClass& colourClass) {
   const int cx = static_cast<int>(centre.x);
   const int cy = static_cast<int>(centre.y);
@@ -57,7 +59,7 @@ inline double fractionNear(const Image& image, const Vec2& centre, int radius,
 }
 
 /// Fraction of all pixels of the image that belong to `colourClass`.
-inline double fractionOf(const Image& image, const ColourClass& colourClass) {
+inline double fractionOf(const SrgbImage& image, const ColourClass& colourClass) {
   if (image.empty()) return 0.0;
   int inside = 0;
   for (int y = 0; y < image.height; ++y) {

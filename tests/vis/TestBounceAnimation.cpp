@@ -11,7 +11,7 @@
 
 #include <memory>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
 using testing::expectMatchesBaseline;
@@ -29,7 +29,7 @@ AnimationSettings settings() {
   return s;
 }
 
-Image renderFrame(SceneView& view, const RayTree& tree, int frame) {
+SrgbImage renderFrame(SceneView& view, const RayTree& tree, int frame) {
   view.setReveal(revealFrame(tree, settings(), frame));
   return view.renderOffscreen(kWidth, kHeight);
 }
@@ -66,13 +66,13 @@ TEST(BounceAnimation, 02_AFrameDoesNotDependOnTheFramesBefore) {
   const RayTree tree = traceGlassPixel(materialsScene(), Algorithm::Whitted);
   auto played = makeView(tree);
   for (int f = 0; f < 20; ++f) renderFrame(*played, tree, f);
-  const Image afterPlaying = renderFrame(*played, tree, 13);
+  const SrgbImage afterPlaying = renderFrame(*played, tree, 13);
   auto fresh = makeView(tree);
-  const Image direct = renderFrame(*fresh, tree, 13);
+  const SrgbImage direct = renderFrame(*fresh, tree, 13);
   EXPECT_EQ(afterPlaying.rgb, direct.rgb);
   // And successive frames differ while the fronts travel.
   EXPECT_NE(renderFrame(*fresh, tree, 12).rgb, direct.rgb);
 }
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -21,7 +21,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
 using testing::expectMatchesBaseline;
@@ -147,7 +147,7 @@ TEST(ComparisonView, 02_ImagesKeepTheirAspectAndShowEveryPixel) {
       ComparisonViewOptions options = baselineOptions();
       options.columns = columns;
       ComparisonView view(result, options);
-      const Image picture = view.renderOffscreen(width, height);
+      const SrgbImage picture = view.renderOffscreen(width, height);
       for (int panel = 0; panel < view.panelCount(); ++panel) {
         const PixelRect rect = view.imageRect(panel, width, height);
         const PixelRect box = view.panelRect(panel, width, height);
@@ -159,7 +159,7 @@ TEST(ComparisonView, 02_ImagesKeepTheirAspectAndShowEveryPixel) {
         EXPECT_GT(rect.width, kImageWidth / 2) << "image drawn too small";
         EXPECT_LE(std::abs(rect.width * kImageHeight - rect.height * kImageWidth), kImageWidth);
         // Each image pixel's centre shows that pixel's sRGB colour (nearest neighbour).
-        const std::vector<std::uint8_t> srgb = imageio::toSrgb8(result.algorithms[panel].image);
+        const std::vector<std::uint8_t> srgb = imageio::toSrgb(result.algorithms[panel].image).rgb;
         int wrong = 0;
         for (int j = 1; j < kImageHeight; j += 5)
           for (int i = 1; i < kImageWidth; i += 5) {
@@ -178,7 +178,7 @@ TEST(ComparisonView, 02_ImagesKeepTheirAspectAndShowEveryPixel) {
 TEST(ComparisonView, 03_TitleBandsInTheAlgorithmsColours) {
   const ComparisonResult result = syntheticComparison();
   ComparisonView view(result, baselineOptions());
-  const Image picture = view.renderOffscreen(960, 600);
+  const SrgbImage picture = view.renderOffscreen(960, 600);
   for (int panel = 0; panel < 4; ++panel) {
     const PixelRect box = view.panelRect(panel, 960, 600);
     // The right end of the band, clear of the left-aligned title text.
@@ -243,7 +243,7 @@ TEST(ComparisonView, 05_RayTreesBesideTheImagesShareOneCamera) {
               renderers[3]->GetActiveCamera());
   }
 
-  const Image picture = view.renderOffscreen(1280, 720);
+  const SrgbImage picture = view.renderOffscreen(1280, 720);
   for (int panel = 0; panel < 4; ++panel) {
     const PixelRect tree = view.treeRect(panel, 1280, 720);
     const PixelRect image = view.imageRect(panel, 1280, 720);
@@ -270,7 +270,7 @@ TEST(ConvergencePlot, 07_TimeAxisAndPointsThatCannotBeDrawn) {
   ConvergencePlot plot(result, ConvergenceAxis::Time);
   EXPECT_EQ(plot.pointCounts(), (std::vector<int>{4, 5, 5, 5}));
   // Ray casting's orange is on the picture; the curves are drawn on white.
-  const Image picture = plot.renderOffscreen(640, 480);
+  const SrgbImage picture = plot.renderOffscreen(640, 480);
   const Rgb8 orange = algorithmColour(Algorithm::RayCasting);
   int orangePixels = 0, whitePixels = 0;
   for (int y = 0; y < picture.height; ++y)
@@ -285,4 +285,4 @@ TEST(ConvergencePlot, 07_TimeAxisAndPointsThatCannotBeDrawn) {
 }
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -1,4 +1,4 @@
-// Image, PNG files, compareImages' scale, and the view camera's framing and projection.
+// SrgbImage, PNG files, compareImages' scale, and the view camera's framing and projection.
 // None of these opens a window, so they run without an X server.
 #include "raylab/core/Scene.h"
 #include "raylab/vis/Image.h"
@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <fstream>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
-Image filled(int width, int height, const Rgb8& colour) {
-  Image image(width, height);
+SrgbImage filled(int width, int height, const Rgb8& colour) {
+  SrgbImage image(width, height);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) image.set(x, y, colour);
   }
@@ -22,8 +22,8 @@ Image filled(int width, int height, const Rgb8& colour) {
 }
 
 /// Black 300x300 with a pure red 100x100 square whose left edge is at column `left`.
-Image redSquare(int left) {
-  Image image(300, 300);
+SrgbImage redSquare(int left) {
+  SrgbImage image(300, 300);
   for (int y = 100; y < 200; ++y) {
     for (int x = left; x < left + 100; ++x) image.set(x, y, {255, 0, 0});
   }
@@ -35,25 +35,25 @@ std::string temporary(const std::string& name) {
   return (std::filesystem::path(RAYLAB_TEMP_DIR) / name).string();
 }
 
-TEST(Image, 01_PixelsAreRowMajorFromTheTop) {
-  Image image(4, 3);
+TEST(SrgbImage, 01_PixelsAreRowMajorFromTheTop) {
+  SrgbImage image(4, 3);
   EXPECT_EQ(image.rgb.size(), 4u * 3u * 3u);
   image.set(3, 0, {1, 2, 3});
   EXPECT_EQ(image.rgb[9], 1);  // row 0, column 3
   EXPECT_EQ(image.at(3, 0), (Rgb8{1, 2, 3}));
   EXPECT_EQ(image.distinctColours(), 2);
   EXPECT_FALSE(image.empty());
-  EXPECT_TRUE(Image().empty());
+  EXPECT_TRUE(SrgbImage().empty());
 }
 
 TEST(ImageIO, 02_PngRoundTripKeepsPixelsAndOrientation) {
-  Image image(5, 4);
+  SrgbImage image(5, 4);
   image.set(0, 0, {255, 0, 0});  // top-left red
   image.set(4, 3, {0, 0, 255});  // bottom-right blue
   image.set(2, 1, {10, 20, 30});
   const std::string path = temporary("TestImage_roundtrip.png");
-  ImageIO::writePng(image, path);
-  const Image back = ImageIO::readPng(path);
+  vis::writePng(image, path);
+  const SrgbImage back = vis::readPng(path);
   EXPECT_EQ(back.width, 5);
   EXPECT_EQ(back.height, 4);
   EXPECT_EQ(back.rgb, image.rgb);
@@ -63,28 +63,28 @@ TEST(ImageIO, 03_ErrorsNameTheFile) {
   const std::string missing = temporary("no-such-picture.png");
   std::filesystem::remove(missing);
   try {
-    ImageIO::readPng(missing);
+    vis::readPng(missing);
     FAIL() << "no exception";
-  } catch (const ImageIO::Error& e) {
+  } catch (const vis::ImageError& e) {
     EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
   }
 
   const std::string text = temporary("not-a-picture.png");
   std::ofstream(text) << "hello";
-  EXPECT_THROW(ImageIO::readPng(text), ImageIO::Error);
+  EXPECT_THROW(vis::readPng(text), vis::ImageError);
 
   const std::string nowhere = temporary("no-such-folder/out.png");
   try {
-    ImageIO::writePng(Image(2, 2), nowhere);
+    vis::writePng(SrgbImage(2, 2), nowhere);
     FAIL() << "no exception";
-  } catch (const ImageIO::Error& e) {
+  } catch (const vis::ImageError& e) {
     EXPECT_NE(std::string(e.what()).find(nowhere), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(nowhere));
 }
 
 TEST(CompareImages, 04_ScaleIsAsDocumented) {
-  const Image black = filled(300, 300, {0, 0, 0});
+  const SrgbImage black = filled(300, 300, {0, 0, 0});
   // Identical, and shifted by one pixel (AllowShift): no error.
   EXPECT_EQ(compareImages(redSquare(100), redSquare(100)), 0.0);
   EXPECT_EQ(compareImages(redSquare(100), redSquare(101)), 0.0);
@@ -157,4 +157,4 @@ TEST(ViewCamera, 06_ProjectionPutsTheFocalPointInTheMiddle) {
 }
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -3,6 +3,7 @@
 #include "RayTreeFixtures.h"
 #include "RayTreeGeometry.h"
 
+#include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
 
 #include <vtkCellArray.h>
@@ -16,7 +17,7 @@
 #include <cmath>
 #include <map>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
 using testing::materialsScene;
@@ -95,13 +96,13 @@ TEST(RayTreeStyle, 02_SegmentEnergyIsLuminanceOfThroughputTimesRadiance) {
   RaySegment s;
   s.throughput = Vec3(0.5, 1.0, 2.0);
   s.radiance = Vec3(2.0, 0.0, 0.0);
-  EXPECT_NEAR(segmentEnergy(s), 0.2126 * 1.0, 1e-15);
+  EXPECT_NEAR(s.energy(), 0.2126 * 1.0, 1e-15);
   s.radiance = Vec3(0.0, 1.0, 0.5);
-  EXPECT_NEAR(segmentEnergy(s), 0.7152 + 0.0722, 1e-15);
+  EXPECT_NEAR(s.energy(), 0.7152 + 0.0722, 1e-15);
   const RayTree tree = smallTree();
   // The camera ray carries the estimate: 0.5 (reflection's throughput) * 0.2 = 0.1.
-  EXPECT_NEAR(segmentEnergy(tree.segments[0]), 0.1, 1e-15);
-  EXPECT_EQ(segmentEnergy(tree.segments[4]), 0.0);  // the blocked shadow ray
+  EXPECT_NEAR(tree.segments[0].energy(), 0.1, 1e-15);
+  EXPECT_EQ(tree.segments[4].energy(), 0.0);  // the blocked shadow ray
 }
 
 TEST(RayTreeStyle, 03_KindAndDepthColoursAreDistinct) {
@@ -291,7 +292,7 @@ TEST(RayTreeGeometry, 08_CellsAndColoursAreWhatTheFilterAndColouringSay) {
       EXPECT_EQ(d.colour, bytes(rayColour(s, style, deepest))) << toString(colouring) << " " << i;
       EXPECT_LT(glm::length(d.front - s.endPoint), 1e-5);
       // Width classes: thirds of the energy scale.
-      const int k = std::min(2, int(style.scale.position(segmentEnergy(s)) * 3.0));
+      const int k = std::min(2, int(style.scale.position(s.energy()) * 3.0));
       EXPECT_EQ(d.widthClass, k) << i;
     }
     EXPECT_EQ(g.drawnRays, expected);
@@ -358,4 +359,4 @@ TEST(RayTreeGeometry, 09_RevealedFractionsAndGlyphs) {
 }
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -17,7 +17,7 @@
 #include <filesystem>
 #include <string>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
 using testing::expectMatchesBaseline;
@@ -39,7 +39,7 @@ RayTreeStyle baselineStyle(RayColouring colouring = RayColouring::Energy) {
 }
 
 /// The view of the materials scene with `tree`, from the default view for 320x240.
-Image renderTree(const RayTree& tree, const RayTreeStyle& style) {
+SrgbImage renderTree(const RayTree& tree, const RayTreeStyle& style) {
   SceneView view(materialsScene());
   view.setRayTree(tree, style);
   view.resetViewCamera(double(kWidth) / kHeight);
@@ -51,7 +51,7 @@ std::string baselineName(Algorithm algorithm) {
 }
 
 /// The scene without a tree, as renderTree draws it.
-Image renderBare() {
+SrgbImage renderBare() {
   SceneView view(materialsScene());
   view.resetViewCamera(double(kWidth) / kHeight);
   return view.renderOffscreen(kWidth, kHeight);
@@ -59,7 +59,7 @@ Image renderBare() {
 
 /// Pixels drawn by the tree (they differ from `bare`) whose colour is within 40 levels per
 /// channel of `colour` (linear, shown as is).
-int pixelsNear(const Image& image, const Image& bare, const Vec3& colour) {
+int pixelsNear(const SrgbImage& image, const SrgbImage& bare, const Vec3& colour) {
   int count = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -85,7 +85,7 @@ TEST(RayTreeView, 02_TheBaselineCatchesAnotherColouringOrFilter) {
   const std::string baseline =
       std::string(RAYLAB_BASELINE_DIR) + "/" + baselineName(Algorithm::Whitted) + ".png";
   if (!std::filesystem::exists(baseline)) GTEST_SKIP() << "no baseline yet: see test 01";
-  const Image expected = ImageIO::readPng(baseline);
+  const SrgbImage expected = vis::readPng(baseline);
   const RayTree tree = traceGlassPixel(materialsScene(), Algorithm::Whitted);
   const double same = compareImages(renderTree(tree, baselineStyle()), expected);
   const double kinds = compareImages(renderTree(tree, baselineStyle(RayColouring::Kind)), expected);
@@ -101,8 +101,8 @@ TEST(RayTreeView, 02_TheBaselineCatchesAnotherColouringOrFilter) {
 
 TEST(RayTreeView, 03_RaysShowInTheirKindColours) {
   const RayTree tree = traceGlassPixel(materialsScene(), Algorithm::Whitted);
-  const Image image = renderTree(tree, baselineStyle(RayColouring::Kind));
-  const Image bare = renderBare();
+  const SrgbImage image = renderTree(tree, baselineStyle(RayColouring::Kind));
+  const SrgbImage bare = renderBare();
   // Whitted through glass: refraction (cyan) and shadow (yellow) rays, clearly visible
   // (their lengths in the picture, hence the counts, depend on where in the pixel sample 0
   // falls; 37 shadow-ray pixels here).
@@ -122,14 +122,14 @@ TEST(RayTreeView, 04_LegendShowsAndHides) {
   RayTreeStyle style;
   view.setRayTree(tree, style);
   view.resetViewCamera(640.0 / 480.0);
-  const Image with = view.renderOffscreen(640, 480);
+  const SrgbImage with = view.renderOffscreen(640, 480);
   EXPECT_EQ(view.renderOffscreen(640, 480).rgb, with.rgb) << "the first picture is not the next";
   style.showLegend = false;
   view.setRayTreeStyle(style);
-  const Image without = view.renderOffscreen(640, 480);
-  ImageIO::writePng(with, std::string(RAYLAB_TEMP_DIR) + "/TestRayTreeView_legend.png");
+  const SrgbImage without = view.renderOffscreen(640, 480);
+  vis::writePng(with, std::string(RAYLAB_TEMP_DIR) + "/TestRayTreeView_legend.png");
   // The legend sits in the top-left corner: bright title text and the colour bar.
-  auto brightIn = [](const Image& image) {
+  auto brightIn = [](const SrgbImage& image) {
     int bright = 0;
     for (int y = 0; y < 200; ++y)
       for (int x = 0; x < 150; ++x) bright += image.at(x, y)[0] > 150;
@@ -170,7 +170,7 @@ TEST(RayTreeView, 05_PickingAndSelection) {
 
   // Selecting ray 0 draws it magenta; clearing removes the colour.
   const Vec3 magenta(1.0, 0.2, 0.8);
-  const Image bare = renderBare();
+  const SrgbImage bare = renderBare();
   EXPECT_EQ(pixelsNear(view.renderOffscreen(kWidth, kHeight), bare, magenta), 0);
   view.setSelectedSegment(0);
   EXPECT_EQ(view.selectedSegment(), 0);
@@ -181,4 +181,4 @@ TEST(RayTreeView, 05_PickingAndSelection) {
 }
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -16,7 +16,7 @@
 #include <cmath>
 #include <filesystem>
 
-namespace raylab {
+namespace raylab::vis {
 namespace {
 
 using testing::fractionNear;
@@ -46,7 +46,7 @@ Vec2 whereIs(const SceneView& view, const std::string& name) {
 }
 
 /// Pixel bounding box (width, height) of the pixels of one colour class.
-Vec2 extentOf(const Image& image, const testing::ColourClass& colourClass) {
+Vec2 extentOf(const SrgbImage& image, const testing::ColourClass& colourClass) {
   int x0 = image.width, x1 = -1, y0 = image.height, y1 = -1;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
@@ -62,7 +62,7 @@ Vec2 extentOf(const Image& image, const testing::ColourClass& colourClass) {
 
 TEST(SceneView, 01_DrawsTheDefaultScene) {
   SceneView view(defaultScene());
-  const Image image = view.renderOffscreen(kSize, kSize);
+  const SrgbImage image = view.renderOffscreen(kSize, kSize);
   ASSERT_EQ(image.width, kSize);
   ASSERT_EQ(image.height, kSize);
 
@@ -75,8 +75,8 @@ TEST(SceneView, 01_DrawsTheDefaultScene) {
 
 TEST(SceneView, 02_ObjectsShowTheirColoursWhereTheyAre) {
   SceneView view(defaultScene());
-  const Image image = view.renderOffscreen(kSize, kSize);
-  ImageIO::writePng(image, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_02.png");
+  const SrgbImage image = view.renderOffscreen(kSize, kSize);
+  vis::writePng(image, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_02.png");
 
   // Project each object's world centre with the view camera; the 7x7 pixels there must
   // be (nearly all) of the object's colour. The light is visible only because the ceiling
@@ -108,7 +108,7 @@ TEST(SceneView, 02_ObjectsShowTheirColoursWhereTheyAre) {
 
 TEST(SceneView, 03_EmitterIsDrawnUnlitInItsHue) {
   SceneView view(defaultScene());
-  const Image image = view.renderOffscreen(kSize, kSize);
+  const SrgbImage image = view.renderOffscreen(kSize, kSize);
   // Emission 8 * (1.0, 0.8, 0.65), scaled to a peak of 1, unlit: exactly that colour.
   const Vec2 p = whereIs(view, "light");
   const Rgb8 c = image.at(static_cast<int>(p.x), static_cast<int>(p.y));
@@ -137,7 +137,7 @@ TEST(SceneView, 04_ProjectionAgreesWithVtkWorldToDisplay) {
 
 TEST(SceneView, 05_SelectionDrawsAYellowOutline) {
   SceneView view(defaultScene());
-  const Image plain = view.renderOffscreen(kSize, kSize);
+  const SrgbImage plain = view.renderOffscreen(kSize, kSize);
   EXPECT_EQ(fractionOf(plain, isYellow), 0.0);
 
   // The sphere's radius in pixels: project its rim seen from the view camera.
@@ -152,8 +152,8 @@ TEST(SceneView, 05_SelectionDrawsAYellowOutline) {
   // Selected: a yellow ring around the sphere, whose middle stays red.
   view.setHighlighted(sphere);
   EXPECT_EQ(view.highlighted(), sphere);
-  const Image selected = view.renderOffscreen(kSize, kSize);
-  ImageIO::writePng(selected, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_05.png");
+  const SrgbImage selected = view.renderOffscreen(kSize, kSize);
+  vis::writePng(selected, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_05.png");
   EXPECT_GT(fractionNear(selected, c, radius + 3, isYellow), 0.05);
   EXPECT_EQ(fractionNear(selected, c, radius / 2, isYellow), 0.0);
   EXPECT_GE(fractionNear(selected, c, 3, isRed), 0.9);
@@ -197,4 +197,4 @@ TEST(SceneView, 07_MatchesBaseline) {
 }
 
 }  // namespace
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -33,7 +33,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -56,9 +56,8 @@ double channel(std::uint8_t value) { return value / 255.0; }
 
 /// Black or white, whichever reads better on `background` (Rec. 709 luminance of sRGB).
 bool darkTextOn(const Rgb8& background) {
-  const double y = 0.2126 * channel(background[0]) + 0.7152 * channel(background[1]) +
-                   0.0722 * channel(background[2]);
-  return y > 0.45;
+  const Vec3 colour(channel(background[0]), channel(background[1]), channel(background[2]));
+  return luminance(colour) > 0.45;
 }
 
 /// Viewport of `rect` (pixels, y down) in a width x height window (normalised, y up).
@@ -339,9 +338,7 @@ void ComparisonView::Impl::build() {
     panel->figuresText->SetInput(joinLines({panel->lines.begin() + 1, panel->lines.end()}).c_str());
 
     // The image: sRGB bytes on a slice seen by a parallel camera that frames it exactly.
-    Image picture(figures.image.width, figures.image.height);
-    picture.rgb = imageio::toSrgb8(figures.image);
-    panel->imageActor->SetInputData(detail::toVtkImage(picture));
+    panel->imageActor->SetInputData(detail::toVtkImage(imageio::toSrgb(figures.image)));
     panel->imageActor->InterpolateOff();         // show the pixels: the noise is the lesson
     panel->imageActor->GetMapper()->BorderOn();  // cover whole pixels up to the edge
     panel->image->SetBackground(0.0, 0.0, 0.0);
@@ -369,9 +366,9 @@ void ComparisonView::Impl::build() {
   }
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis
 
-namespace raylab {
+namespace raylab::vis {
 
 ComparisonView::ComparisonView(const ComparisonResult& result, const ComparisonViewOptions& options)
     : m_impl(std::make_unique<Impl>()) {
@@ -516,7 +513,7 @@ bool ComparisonView::hasRayTrees() const {
   return !m_impl->panels.empty() && m_impl->panels.front()->tree != nullptr;
 }
 
-Image ComparisonView::renderOffscreen(int width, int height) {
+SrgbImage ComparisonView::renderOffscreen(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
   Impl& d = *m_impl;
   const std::vector<vtkRenderer*> all = renderers();
@@ -542,7 +539,7 @@ Image ComparisonView::renderOffscreen(int width, int height) {
 }
 
 void ComparisonView::renderToPng(const std::string& path, int width, int height) {
-  ImageIO::writePng(renderOffscreen(width, height), path);
+  writePng(renderOffscreen(width, height), path);
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -28,7 +28,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -214,7 +214,7 @@ void ConvergencePlot::layout(int width, int height) {
   chart->GetLegend()->SetLabelSize(base);
 }
 
-Image ConvergencePlot::renderOffscreen(int width, int height) {
+SrgbImage ConvergencePlot::renderOffscreen(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
   vtkRenderWindow* window = m_impl->view->GetRenderWindow();
   if (!m_impl->offscreen) {
@@ -230,7 +230,7 @@ Image ConvergencePlot::renderOffscreen(int width, int height) {
 }
 
 void ConvergencePlot::renderToPng(const std::string& path, int width, int height) {
-  ImageIO::writePng(renderOffscreen(width, height), path);
+  writePng(renderOffscreen(width, height), path);
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -14,40 +14,9 @@
 #include <cstring>
 #include <unordered_set>
 
-namespace raylab {
+namespace raylab::vis {
 
-Image::Image(int w, int h) : width(std::max(w, 0)), height(std::max(h, 0)) {
-  rgb.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0);
-}
-
-Rgb8 Image::at(int x, int y) const {
-  RAYLAB_DCHECK(x >= 0 && x < width && y >= 0 && y < height);
-  const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
-  return {rgb[i], rgb[i + 1], rgb[i + 2]};
-}
-
-void Image::set(int x, int y, const Rgb8& colour) {
-  RAYLAB_DCHECK(x >= 0 && x < width && y >= 0 && y < height);
-  const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
-  rgb[i] = colour[0];
-  rgb[i + 1] = colour[1];
-  rgb[i + 2] = colour[2];
-}
-
-int Image::distinctColours() const {
-  std::unordered_set<std::uint32_t> colours;
-  for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
-    colours.insert((std::uint32_t{rgb[i]} << 16) | (std::uint32_t{rgb[i + 1]} << 8) |
-                   std::uint32_t{rgb[i + 2]});
-  }
-  return static_cast<int>(colours.size());
-}
-
-std::string Image::toString() const {
-  return "Image(" + std::to_string(width) + "x" + std::to_string(height) + ")";
-}
-
-vtkSmartPointer<vtkImageData> detail::toVtkImage(const Image& image) {
+vtkSmartPointer<vtkImageData> detail::toVtkImage(const SrgbImage& image) {
   auto data = vtkSmartPointer<vtkImageData>::New();
   data->SetDimensions(image.width, image.height, 1);
   data->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
@@ -60,7 +29,7 @@ vtkSmartPointer<vtkImageData> detail::toVtkImage(const Image& image) {
   return data;
 }
 
-double compareImages(const Image& a, const Image& b) {
+double compareImages(const SrgbImage& a, const SrgbImage& b) {
   // Step 1: pictures of different sizes are as different as it gets.
   if (a.width != b.width || a.height != b.height) return 1.0;
   if (a.empty()) return 0.0;
@@ -76,7 +45,7 @@ double compareImages(const Image& a, const Image& b) {
   return difference->GetThresholdedError() / (static_cast<double>(a.width) * a.height);
 }
 
-Image detail::grabWindow(vtkRenderWindow* window, int width, int height) {
+SrgbImage detail::grabWindow(vtkRenderWindow* window, int width, int height) {
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(window);
   grab->SetInputBufferTypeToRGB();
@@ -89,7 +58,7 @@ Image detail::grabWindow(vtkRenderWindow* window, int width, int height) {
   RAYLAB_CHECK_EQ(dims[0], width);
   RAYLAB_CHECK_EQ(dims[1], height);
   RAYLAB_CHECK_EQ(data->GetNumberOfScalarComponents(), 3);
-  Image image(width, height);
+  SrgbImage image(width, height);
   const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
   const std::size_t rowBytes = std::size_t(width) * 3;
   for (int y = 0; y < height; ++y)
@@ -98,4 +67,4 @@ Image detail::grabWindow(vtkRenderWindow* window, int width, int height) {
   return image;
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -2,27 +2,30 @@
 
 #include "VtkImage.h"
 
+#include "raylab/core/AtomicFile.h"
+#include "raylab/core/FilePaths.h"
+
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
-namespace raylab {
+namespace raylab::vis {
 
-Image ImageIO::readPng(const std::string& path) {
+SrgbImage readPng(const std::string& path) {
   // Step 1: refuse what is not a readable PNG before VTK prints its own warnings.
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    throw Error(path + ": no such file");
+    throw ImageError(path + ": no such file");
   }
   vtkNew<vtkPNGReader> reader;
   if (!reader->CanReadFile(path.c_str())) {
-    throw Error(path + ": not a PNG file");
+    throw ImageError(path + ": not a PNG file");
   }
   reader->SetFileName(path.c_str());
   reader->Update();
@@ -32,11 +35,11 @@ Image ImageIO::readPng(const std::string& path) {
   const int channels = data->GetNumberOfScalarComponents();
   if (dims[0] <= 0 || dims[1] <= 0 || data->GetScalarType() != VTK_UNSIGNED_CHAR || channels < 1 ||
       channels > 4) {
-    throw Error(path + ": unsupported PNG (need 8-bit grey, grey+alpha, RGB or RGBA)");
+    throw ImageError(path + ": unsupported PNG (need 8-bit grey, grey+alpha, RGB or RGBA)");
   }
 
   // Step 2: copy, flipping VTK's bottom-up rows and dropping alpha / expanding grey.
-  Image image(dims[0], dims[1]);
+  SrgbImage image(dims[0], dims[1]);
   const auto* in = static_cast<const std::uint8_t*>(data->GetScalarPointer());
   for (int y = 0; y < image.height; ++y) {
     const std::uint8_t* row =
@@ -53,34 +56,43 @@ Image ImageIO::readPng(const std::string& path) {
   return image;
 }
 
-void ImageIO::writePng(const Image& image, const std::string& path) {
-  if (image.empty()) throw Error(path + ": cannot write an empty image");
+void writePng(const SrgbImage& image, const std::string& path) {
+  if (image.empty()) throw ImageError(path + ": cannot write an empty image");
 
-  // Step 1: VTK image data, rows bottom-up.
+  // Step 1: encode in memory (VTK image data has its rows bottom-up).
   const vtkSmartPointer<vtkImageData> data = detail::toVtkImage(image);
-
-  // Step 2: write beside the target, then rename, so a failure leaves no half file.
-  const std::filesystem::path target(path);
-  const std::filesystem::path parent = target.has_parent_path() ? target.parent_path() : ".";
-  std::error_code ec;
-  if (!std::filesystem::is_directory(parent, ec)) {
-    throw Error(path + ": cannot write: folder " + parent.string() + " does not exist");
-  }
-  const std::string temporary = path + ".part.png";
   vtkNew<vtkPNGWriter> writer;
-  writer->SetFileName(temporary.c_str());
+  writer->WriteToMemoryOn();
   writer->SetInputData(data);
   writer->Write();
-  if (writer->GetErrorCode() != 0 || !std::filesystem::is_regular_file(temporary, ec) ||
-      std::filesystem::file_size(temporary, ec) == 0) {
-    std::filesystem::remove(temporary, ec);
-    throw Error(path + ": cannot write the PNG file (permissions or disk space?)");
-  }
-  std::filesystem::rename(temporary, target, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw Error(path + ": cannot write: " + ec.message());
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (writer->GetErrorCode() != 0 || !bytes || bytes->GetNumberOfValues() == 0)
+    throw ImageError(path + ": cannot encode the PNG image");
+
+  // Step 2: write it beside the target, then rename: never a half-written file.
+  const std::string encoded(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                            std::size_t(bytes->GetNumberOfValues()));
+  if (const auto problem = writeFileAtomically(path, encoded))
+    throw ImageError(path + ": " + *problem);
+}
+
+bool isImageFile(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  return ext == ".png" || ext == ".ppm" || ext == ".pfm";
+}
+
+void writeImage(const FloatImage& image, const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".pfm") {
+    imageio::writePfm(image, path);
+  } else if (ext == ".ppm") {
+    imageio::writePpm(image, path);
+  } else if (ext == ".png") {
+    writePng(imageio::toSrgb(image), path);
+  } else {
+    throw ImageError(path + ": unknown image format '" + ext +
+                     "' (the file name must end in .png, .ppm or .pfm)");
   }
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

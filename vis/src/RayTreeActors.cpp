@@ -15,7 +15,7 @@
 #include <cmath>
 #include <string>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -52,7 +52,9 @@ void styleText(vtkTextProperty* text, const double colour[3]) {
 void layoutCallback(vtkObject* caller, unsigned long, void* clientData, void*) {
   auto* renderer = static_cast<vtkRenderer*>(caller);
   const int* size = renderer->GetSize();
-  static_cast<RayTreeActors*>(clientData)->layoutLegend(size[0], size[1]);
+  auto* actors = static_cast<RayTreeActors*>(clientData);
+  actors->ensureBuilt();
+  actors->layoutLegend(size[0], size[1]);
 }
 
 }  // namespace
@@ -83,6 +85,7 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_arrowGlyphs->SetSourceConnection(cone->GetOutputPort());
   m_arrowGlyphs->SetVectorModeToUseVector();
   m_arrowGlyphs->OrientOn();
+  m_arrowGlyphs->SetInputData(vtkSmartPointer<vtkPolyData>::New());  // until the first build
   m_arrowGlyphs->SetScaleModeToDataScalingOff();
   m_arrowGlyphs->SetColorModeToColorByScalar();
   vtkNew<vtkPolyDataMapper> arrowMapper;
@@ -148,9 +151,21 @@ void RayTreeActors::addTo(vtkRenderer* renderer) {
   }
 }
 
+const RayTree& RayTreeActors::drawnTree() const {
+  static const RayTree kNone;
+  return tree ? *tree : kNone;
+}
+
+void RayTreeActors::ensureBuilt() {
+  if (m_dirty) rebuild();
+}
+
 void RayTreeActors::rebuild() {
+  m_dirty = false;
+  ++m_builds;
+  const RayTree& drawn = drawnTree();
   const std::vector<float>* revealed = fraction.empty() ? nullptr : &fraction;
-  geometry = buildRayTreeGeometry(tree, style, reaches, revealed, glyphLength, m_background);
+  geometry = buildRayTreeGeometry(drawn, style, reaches, revealed, glyphLength, m_background);
   for (int k = 0; k < kRayWidthClasses; ++k) {
     vtkActor* actor = m_lines[std::size_t(k)];
     setInput(actor, geometry.lines[std::size_t(k)]);
@@ -175,8 +190,8 @@ void RayTreeActors::rebuild() {
   // The selected segment, as far as it is revealed, thick and magenta.
   auto selectionData = vtkSmartPointer<vtkPolyData>::New();
   bool selectionShown = false;
-  if (shown && selected >= 0 && selected < int(tree.segments.size())) {
-    const RaySegment& s = tree.segments[std::size_t(selected)];
+  if (shown && selected >= 0 && selected < int(drawn.segments.size())) {
+    const RaySegment& s = drawn.segments[std::size_t(selected)];
     const double f = fraction.empty() ? 1.0 : double(fraction[std::size_t(selected)]);
     if (f > 0.0) {
       const Point3 end = s.origin + f * (s.endPoint - s.origin);
@@ -273,4 +288,4 @@ void RayTreeActors::layoutLegend(int width, int height) {
   m_energyBar->Modified();
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

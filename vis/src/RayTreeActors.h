@@ -14,6 +14,7 @@
 #include <vtkTextActor.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 class vtkProp;
@@ -22,7 +23,7 @@ class vtkRenderer;
 /// \file RayTreeActors.h
 /// The actors of the ray tree in SceneView (private to vis).
 
-namespace raylab {
+namespace raylab::vis {
 
 /// Most entries the kind or depth legend lists (deeper trees show every few depths).
 constexpr int kLegendEntries = 10;
@@ -32,10 +33,11 @@ constexpr int kLegendEntries = 10;
  * class in one polydata), the dimmed dashes of blocked shadow rays, hit points, travelling
  * fronts, normals, arrow heads, the selected ray and the legend.
  *
- * Created once per view and fed new polydata by rebuild() whenever the tree, the style,
- * the revealed fractions or the selection change. The legend is text laid out in pixels
- * before every render (a StartEvent observer), so it reads the same at 320x240 and on a
- * projector.
+ * Created once per view. Changing the tree, the style, the revealed fractions or the
+ * selection only marks the actors dirty (markDirty); the polydata are built once, just
+ * before the next render (or the next pick), however many changes came before it. The legend is
+ * text laid out in pixels before every render (a StartEvent observer), so it reads the same at
+ * 320x240 and on a projector.
  */
 class RayTreeActors {
  public:
@@ -44,7 +46,8 @@ class RayTreeActors {
   RayTreeActors& operator=(const RayTreeActors&) = delete;
   ~RayTreeActors();
 
-  RayTree tree;
+  /// The tree drawn, shared with whoever traced it (never copied); empty when none.
+  std::shared_ptr<const RayTree> tree;
   bool shown = false;
   RayTreeStyle style;
   std::vector<bool> reaches;    ///< reachesLight(tree).
@@ -56,8 +59,15 @@ class RayTreeActors {
   /// Adds every actor to `renderer` (again after RemoveAllViewProps) and lays the legend
   /// out before each of its renders.
   void addTo(vtkRenderer* renderer);
-  /// Rebuilds the polydata and the legend from tree, style, fraction and selection.
-  void rebuild();
+  /// The tree drawn, or an empty one.
+  const RayTree& drawnTree() const;
+  /// Something changed: build again before the next render.
+  void markDirty() { m_dirty = true; }
+  /// Builds the polydata and the legend from tree, style, fraction and selection when
+  /// something changed since the last build (called before every render and pick).
+  void ensureBuilt();
+  /// How many times the polydata were built (one per render after changes, at most).
+  int buildCount() const { return m_builds; }
   /// Places and sizes the legend for a viewport of width x height pixels.
   void layoutLegend(int width, int height);
 
@@ -74,8 +84,12 @@ class RayTreeActors {
   vtkRenderer* m_observed = nullptr;
   unsigned long m_observer = 0;
 
+  bool m_dirty = true;
+  int m_builds = 0;
+
+  void rebuild();
   void updateLegend();
   std::vector<vtkProp*> props() const;
 };
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -117,7 +117,7 @@ double rayLineWidth(const RayTreeStyle& style, int widthClass) {
 Vec3 rayColour(const RaySegment& segment, const RayTreeStyle& style, int deepest) {
   switch (style.colouring) {
     case RayColouring::Energy:
-      return EnergyScale::colour(style.scale.position(segmentEnergy(segment)));
+      return EnergyScale::colour(style.scale.position(segment.energy()));
     case RayColouring::Kind:
       return kindColour(segment.kind);
     case RayColouring::Depth:
@@ -145,7 +145,7 @@ RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& st
     if (!(f > 0.0f)) continue;
     if (!style.filter.passes(tree, int(i), reachesLightFlags)) continue;
     const RaySegment& s = tree.segments[i];
-    const double position = needEnergy ? style.scale.position(segmentEnergy(s)) : 0.0;
+    const double position = needEnergy ? style.scale.position(s.energy()) : 0.0;
     const int k = style.widthFollowsEnergy
                       ? std::min(kRayWidthClasses - 1, int(position * kRayWidthClasses))
                       : 0;
@@ -229,4 +229,4 @@ RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& st
   return out;
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -2,6 +2,7 @@
 
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Types.h"
+#include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
 
 #include <vtkPolyData.h>
@@ -14,7 +15,7 @@
 /// A recorded ray tree as VTK polydata (world space), ready for SceneView's actors.
 /// Private to vis: the public API speaks RayTree and RayTreeStyle only.
 
-namespace raylab {
+namespace raylab::vis {
 
 /// Width classes of drawn rays when RayTreeStyle::widthFollowsEnergy is on: bottom, middle
 /// and top third of the energy scale. Without it every ray is in class 0.
@@ -66,4 +67,4 @@ RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& st
                                      const std::vector<float>* fraction, double glyphLength,
                                      const Vec3& background);
 
-}  // namespace raylab
+}  // namespace raylab::vis

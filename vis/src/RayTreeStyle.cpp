@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
-
-/// Rec. 709 luminance of a linear RGB triple.
-double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 /// Linear interpolation between colour stops spaced evenly over [0, 1].
 template <std::size_t N>
@@ -33,16 +31,6 @@ const char* toString(RayColouring colouring) {
   return "unknown";
 }
 
-const char* toString(RevealOrder order) {
-  switch (order) {
-    case RevealOrder::Processing:
-      return "processing";
-    case RevealOrder::Depth:
-      return "depth";
-  }
-  return "unknown";
-}
-
 double EnergyScale::position(double energy) const {
   // Log scale: 0 at low, 1 at high; zero and negative energies sit at the bottom.
   if (!(energy > low)) return 0.0;
@@ -59,11 +47,6 @@ Vec3 EnergyScale::colour(double position) {
       Vec3(0.2, 0.5, 1.0),     // high: a light blue (pure blue vanishes on the background)
   };
   return ramp(kStops, position);
-}
-
-double segmentEnergy(const RaySegment& segment) {
-  // The share of the pixel's estimate that came back along this ray: beta * L.
-  return luminance(segment.throughput * segment.radiance);
 }
 
 Vec3 kindColour(RayKind kind) {
@@ -105,7 +88,7 @@ bool RayFilter::passes(const RayTree& tree, int id,
   if (onlyReachingLight &&
       (std::size_t(id) >= reachesLightFlags.size() || !reachesLightFlags[std::size_t(id)]))
     return false;
-  if (minEnergy > 0.0 && segmentEnergy(s) < minEnergy) return false;
+  if (minEnergy > 0.0 && s.energy() < minEnergy) return false;
   return true;
 }
 
@@ -121,54 +104,38 @@ std::vector<bool> reachesLight(const RayTree& tree) {
   return found;
 }
 
-namespace {
+std::optional<RayColouring> parseColouring(const std::string& name) {
+  for (RayColouring c : {RayColouring::Energy, RayColouring::Kind, RayColouring::Depth})
+    if (name == toString(c)) return c;
+  return std::nullopt;
+}
 
-/// Steps of the animation: processing order groups `raysPerStep` ids, depth order has
-/// one step per depth from 0 to the deepest.
-int stepCount(const RayTree& tree, const AnimationSettings& settings) {
-  const int n = int(tree.segments.size());
-  if (n == 0) return 0;
-  if (settings.order == RevealOrder::Processing) {
-    const int perStep = std::max(1, settings.raysPerStep);
-    return (n + perStep - 1) / perStep;
+std::string rayKindNames() {
+  std::string names;
+  for (int k = 0; k < kRayKindCount; ++k)
+    names += (k ? ", " : "") + std::string(toString(RayKind(k)));
+  return names;
+}
+
+ParsedKinds parseRayKinds(const std::string& list) {
+  ParsedKinds parsed;
+  std::stringstream in(list);
+  std::string name;
+  bool any = false;
+  std::array<bool, kRayKindCount> chosen{};
+  while (std::getline(in, name, ',')) {
+    if (name.empty()) continue;
+    bool known = false;
+    for (int k = 0; k < kRayKindCount; ++k)
+      if (name == toString(RayKind(k))) chosen[std::size_t(k)] = known = true;
+    if (!known) {
+      parsed.error = "unknown ray kind '" + name + "' (expected " + rayKindNames() + ")";
+      return parsed;
+    }
+    any = true;
   }
-  int deepest = 0;
-  for (const RaySegment& s : tree.segments) deepest = std::max(deepest, s.depth);
-  return deepest + 1;
+  if (any) parsed.kinds = chosen;
+  return parsed;
 }
 
-}  // namespace
-
-int frameCount(const RayTree& tree, const AnimationSettings& settings) {
-  // Frame 0 shows nothing, then each step plays framesPerStep frames.
-  const long long frames =
-      1LL + static_cast<long long>(stepCount(tree, settings)) * std::max(1, settings.framesPerStep);
-  return int(std::min<long long>(frames, INT_MAX));
-}
-
-RevealFrame revealFrame(const RayTree& tree, const AnimationSettings& settings, int frame) {
-  const int frames = frameCount(tree, settings);
-  frame = std::clamp(frame, 0, frames - 1);
-  const int perFrame = std::max(1, settings.framesPerStep);
-  const int steps = stepCount(tree, settings);
-
-  RevealFrame out;
-  out.fraction.assign(tree.segments.size(), 0.0f);
-  out.done = frame == frames - 1;
-  out.step = steps == 0 ? 0 : std::min(frame / perFrame, steps - 1);
-
-  // How far step s has travelled at this frame: 0 before it starts, 1 once it is over.
-  auto progress = [&](int step) {
-    const double t = double(frame - step * perFrame) / double(perFrame);
-    return float(std::clamp(t, 0.0, 1.0));
-  };
-  const int perStep = std::max(1, settings.raysPerStep);
-  for (std::size_t i = 0; i < tree.segments.size(); ++i) {
-    const int step =
-        settings.order == RevealOrder::Processing ? int(i) / perStep : tree.segments[i].depth;
-    out.fraction[i] = progress(step);
-  }
-  return out;
-}
-
-}  // namespace raylab
+}  // namespace raylab::vis

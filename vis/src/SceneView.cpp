@@ -28,7 +28,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -212,7 +212,7 @@ void SceneView::setScene(const Scene& scene) {
   // Step 3c: the ray tree (kept across scene changes: re-trace and setRayTree to update).
   m_impl->rays.glyphLength = 0.5 * cameraGlyphSize(m_scene);
   m_impl->rays.addTo(renderer);
-  m_impl->rays.rebuild();
+  m_impl->rays.markDirty();
   seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
 
   // Step 4: look at it all from outside.
@@ -269,13 +269,17 @@ void SceneView::setViewCamera(const ViewCamera& view) {
 }
 
 void SceneView::resetViewCamera(double aspect) {
+  update();
   setViewCamera(defaultViewCamera(m_scene, aspect));
 }
 
 vtkRenderer* SceneView::renderer() const { return m_impl->renderer; }
 
-Image SceneView::renderOffscreen(int width, int height) {
+void SceneView::update() { m_impl->rays.ensureBuilt(); }
+
+SrgbImage SceneView::renderOffscreen(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
+  update();
   vtkRenderer* renderer = m_impl->renderer;
   // The renderer can live in one window only: not while a widget shows it.
   RAYLAB_CHECK(renderer->GetRenderWindow() == nullptr ||
@@ -302,64 +306,62 @@ Image SceneView::renderOffscreen(int width, int height) {
 }
 
 void SceneView::renderToPng(const std::string& path, int width, int height) {
-  ImageIO::writePng(renderOffscreen(width, height), path);
+  writePng(renderOffscreen(width, height), path);
 }
 
 void SceneView::setRayTree(const RayTree& tree, const RayTreeStyle& style) {
-  RayTreeActors& rays = m_impl->rays;
-  rays.tree = tree;
-  rays.style = style;
-  rays.reaches = reachesLight(rays.tree);
-  rays.fraction.clear();
-  rays.selected = -1;
-  rays.shown = true;
-  rays.rebuild();
-  seeThroughGlass(m_scene, m_impl->objects, true);
+  setRayTree(std::make_shared<const RayTree>(tree), style);
 }
 
-void SceneView::clearRayTree() {
+void SceneView::setRayTree(std::shared_ptr<const RayTree> tree, const RayTreeStyle& style) {
   RayTreeActors& rays = m_impl->rays;
-  rays.tree = RayTree{};
-  rays.reaches.clear();
+  rays.tree = std::move(tree);
+  rays.style = style;
+  rays.reaches = reachesLight(rays.drawnTree());
   rays.fraction.clear();
   rays.selected = -1;
-  rays.shown = false;
-  rays.rebuild();
-  seeThroughGlass(m_scene, m_impl->objects, false);
+  rays.shown = rays.tree != nullptr;
+  rays.markDirty();
+  seeThroughGlass(m_scene, m_impl->objects, rays.shown);
 }
+
+void SceneView::clearRayTree() { setRayTree(std::shared_ptr<const RayTree>(), m_impl->rays.style); }
 
 bool SceneView::hasRayTree() const { return m_impl->rays.shown; }
 
-const RayTree& SceneView::rayTree() const { return m_impl->rays.tree; }
+const RayTree& SceneView::rayTree() const { return m_impl->rays.drawnTree(); }
 
 void SceneView::setRayTreeStyle(const RayTreeStyle& style) {
   m_impl->rays.style = style;
-  m_impl->rays.rebuild();
+  m_impl->rays.markDirty();
 }
 
 const RayTreeStyle& SceneView::rayTreeStyle() const { return m_impl->rays.style; }
 
 void SceneView::setReveal(const RevealFrame& frame) {
   RayTreeActors& rays = m_impl->rays;
-  RAYLAB_CHECK_EQ(frame.fraction.size(), rays.tree.segments.size());
+  RAYLAB_CHECK_EQ(frame.fraction.size(), rays.drawnTree().segments.size());
   rays.fraction = frame.fraction;
-  rays.rebuild();
+  rays.markDirty();
 }
 
 void SceneView::revealAll() {
   m_impl->rays.fraction.clear();
-  m_impl->rays.rebuild();
+  m_impl->rays.markDirty();
 }
 
 void SceneView::setSelectedSegment(int id) {
   RayTreeActors& rays = m_impl->rays;
-  rays.selected = id >= 0 && id < int(rays.tree.segments.size()) ? id : -1;
-  rays.rebuild();
+  rays.selected = id >= 0 && id < int(rays.drawnTree().segments.size()) ? id : -1;
+  rays.markDirty();
 }
 
 int SceneView::selectedSegment() const { return m_impl->rays.selected; }
 
+int SceneView::rayTreeBuildCount() const { return m_impl->rays.buildCount(); }
+
 int SceneView::segmentAt(double x, double y, int width, int height, double tolerance) const {
+  m_impl->rays.ensureBuilt();
   const RayTreeActors& rays = m_impl->rays;
   if (!rays.shown || width <= 0 || height <= 0) return -1;
   // Project with the view camera's matrix once, then test every drawn line in 2D.
@@ -368,7 +370,7 @@ int SceneView::segmentAt(double x, double y, int width, int height, double toler
   double e[16];
   for (int r = 0; r < 4; ++r)
     for (int c = 0; c < 4; ++c) e[4 * r + c] = m->GetElement(r, c);
-  // Image coordinates (y down) of a world point; w <= 0 when behind the eye.
+  // SrgbImage coordinates (y down) of a world point; w <= 0 when behind the eye.
   auto project = [&](const float* p, double& px, double& py) {
     const double w = e[12] * p[0] + e[13] * p[1] + e[14] * p[2] + e[15];
     if (w <= 1e-12) return false;
@@ -405,4 +407,4 @@ std::optional<Vec2> SceneView::worldToImage(const Point3& world, int width, int 
   return projectToImage(viewCamera(), world, width, height);
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -22,7 +22,7 @@
 #include <cmath>
 #include <vector>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -274,4 +274,4 @@ vtkSmartPointer<vtkPolyData> cameraFrustumGeometry(const CameraSpec& camera, dou
   return data;
 }
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -13,7 +13,7 @@
 /// Triangle/line geometry (VTK polydata, world space) for every kind of scene shape and
 /// for the scene camera's glyph. Private to vis: the public API never shows vtkPolyData.
 
-namespace raylab {
+namespace raylab::vis {
 
 /// Depth of the drawn frustum in camera glyph sizes (see cameraGlyphSize): long enough to
 /// read as "the camera looks this way", short enough to stay inside a room around it.
@@ -58,4 +58,4 @@ vtkSmartPointer<vtkPolyData> cameraBodyGeometry(const CameraSpec& camera, double
 /// rectangle has the camera's aspect (width / height) and vertical field of view.
 vtkSmartPointer<vtkPolyData> cameraFrustumGeometry(const CameraSpec& camera, double length);
 
-}  // namespace raylab
+}  // namespace raylab::vis

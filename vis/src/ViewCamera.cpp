@@ -14,7 +14,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace raylab {
+namespace raylab::vis {
 
 namespace {
 
@@ -164,4 +164,22 @@ std::optional<Vec2> projectToImage(const ViewCamera& camera, const Point3& world
   return Vec2(dx, height - dy);
 }
 
-}  // namespace raylab
+ViewCamera behindCameraView(const Scene& scene, double aspect) {
+  const CameraSpec& camera = scene.camera;
+  const Vec3 toTarget = camera.lookAt - camera.position;
+  const double distance = glm::length(toTarget);
+  const Vec3 forward = distance > 0.0 ? toTarget / distance : Vec3(0.0, 0.0, -1.0);
+  const Vec3 up = glm::length(camera.up) > 0.0 ? glm::normalize(camera.up) : Vec3(0, 1, 0);
+  // Back along the view direction and up a little, by a share of the glyph scale, so the
+  // camera's body and frustum show at the bottom of the picture.
+  const double step = 4.0 * vis::cameraGlyphSize(scene);
+  vis::ViewCamera view;
+  view.eye = camera.position - step * forward + 1.2 * step * up;
+  view.focalPoint = camera.lookAt;
+  view.up = up;
+  // A wider angle than the scene camera's, wider still for a narrow picture.
+  view.viewAngle = std::min(120.0, camera.verticalFov * 1.25 * std::max(1.0, 1.2 / aspect));
+  return view;
+}
+
+}  // namespace raylab::vis

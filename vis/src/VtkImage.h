@@ -6,14 +6,14 @@
 #include <vtkRenderWindow.h>
 #include <vtkSmartPointer.h>
 
-namespace raylab::detail {
+namespace raylab::vis::detail {
 
 /// VTK image data with the same pixels (unsigned char RGB). VTK's rows run bottom-up,
-/// Image's top-down, so the rows are flipped. Private to vis.
-vtkSmartPointer<vtkImageData> toVtkImage(const Image& image);
+/// SrgbImage's top-down, so the rows are flipped. Private to vis.
+vtkSmartPointer<vtkImageData> toVtkImage(const SrgbImage& image);
 
-/// The back buffer of `window` (already rendered at width x height) as an Image, rows
+/// The back buffer of `window` (already rendered at width x height) as an SrgbImage, rows
 /// flipped to top-down. Private to vis: every offscreen picture is read through here.
-Image grabWindow(vtkRenderWindow* window, int width, int height);
+SrgbImage grabWindow(vtkRenderWindow* window, int width, int height);
 
-}  // namespace raylab::detail
+}  // namespace raylab::vis::detail

@@ -1,5 +1,6 @@
 #include "integrators/LocalShading.h"
 
+#include "raylab/core/Bsdf.h"
 #include "raylab/core/RayOffset.h"
 
 #include <algorithm>
@@ -11,8 +12,6 @@ namespace {
 /// Shadow rays to a surface point stop this fraction of the distance short of it, so the
 /// light's own surface never blocks them.
 constexpr double kShadowShortening = 1e-6;
-
-bool isBlack(const Vec3& v) { return v.x <= 0.0 && v.y <= 0.0 && v.z <= 0.0; }
 }  // namespace
 
 Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
@@ -24,11 +23,8 @@ Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const V
   const double ks = glossy ? std::clamp(m.specular, 0.0, 1.0) : 0.0;
   Vec3 f = (1.0 - ks) / kPi * m.colour;
   // Phong highlight around the mirror direction of wo (white, as Phong's).
-  if (glossy && lobes == Lobes::All) {
-    const Vec3 mirror = 2.0 * glm::dot(wo, n) * n - wo;
-    const double cosAlpha = std::max(0.0, glm::dot(mirror, wi));
-    f += Vec3(ks * (m.exponent + 2.0) / (2.0 * kPi) * std::pow(cosAlpha, m.exponent));
-  }
+  if (glossy && lobes == Lobes::All)
+    f += Vec3(bsdf::phongLobe(m, glm::dot(bsdf::reflect(wo, n), wi)));
   return f * cosThetaI;
 }
 
@@ -41,14 +37,12 @@ QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, cons
   child.depth = context.ray.depth + 1;
   child.weight = weight;
   child.pdf = pdf;
-  child.previousPdf = pdf;
-  child.specularChain = context.ray.specularChain && pdf == 0.0 && kind != RayKind::Shadow;
   return child;
 }
 
 Vec3 emitterSeen(const HitContext& context) {
   if (!context.material.isEmitter()) return Vec3(0.0);
-  return context.scene.emitted(context.hit.object, context.hit.si, context.ray.ray.direction);
+  return context.intersector.emitted(context.hit.object, context.hit.si, context.ray.ray.direction);
 }
 
 QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
@@ -67,7 +61,6 @@ QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3&
   child.depth = context.ray.depth + 1;
   child.weight = weight;
   child.shadowLe = Le;
-  child.specularChain = false;
   return child;
 }
 
@@ -75,14 +68,14 @@ void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<Queue
   const SurfaceInteraction& si = context.hit.si;
   const Normal3 n = si.facingNormal();
   const Vec3 wo = -context.ray.ray.direction;
-  for (const PointLight& light : context.scene.scene().pointLights) {
+  for (const PointLight& light : context.intersector.scene().pointLights) {
     // Direction and distance to the light; it lights the side it is on.
     const Vec3 d = light.position - si.p;
     const double distance2 = glm::dot(d, d);
     if (!(distance2 > 0.0)) continue;
     const Vec3 wi = d / std::sqrt(distance2);
     const Vec3 fCos = classicShading(context.material, n, wo, wi, lobes);
-    if (isBlack(fCos)) continue;
+    if (isNonPositive(fCos)) continue;
     // Radiance arriving from a point light: I / d^2 (weight f cos).
     children.push_back(
         shadowRay(context, light.position, fCos, light.intensity / distance2, false));
@@ -100,17 +93,17 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
   // does: si.p lies on its surface up to rounding, so a sphere light's test of which side
   // of a spherical surface the point is on could go either way at si.p itself.
   const Point3 ref = offsetRayOrigin(si, n);
-  for (int object : context.scene.areaLights()) {
+  for (int object : context.intersector.areaLights()) {
     if (object == context.hit.object) continue;  // a surface does not light itself
     for (int k = 0; k < samplesPerLight; ++k) {
       // A random point on the light (soft shadows): by solid angle for round sphere
       // lights, by area for other shapes, as next-event estimation samples them.
       const Vec2 u = context.sampler.next2D();
       const std::optional<LightSample> ls =
-          context.scene.sampleLightObject(object, ref, u, context.ray.ray.time);
+          context.intersector.sampleLightObject(object, ref, u, context.ray.ray.time);
       if (!ls) continue;
       const Vec3 fCos = classicShading(context.material, n, wo, ls->wi, lobes);
-      if (isBlack(fCos) || isBlack(ls->Le)) continue;
+      if (isNonPositive(fCos) || isNonPositive(ls->Le)) continue;
       // Monte Carlo estimate of the light's integral: f cos Le / pdf, averaged over N.
       children.push_back(shadowRay(context, ls->p, fCos * (invN / ls->pdf), ls->Le, true));
     }
@@ -121,13 +114,13 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
   const SurfaceInteraction& si = context.hit.si;
   const Normal3 n = si.facingNormal();
   const Vec3 wo = -context.ray.ray.direction;
-  const Scene& scene = context.scene.scene();
-  for (int object : context.scene.areaLights()) {
+  const Scene& scene = context.intersector.scene();
+  for (int object : context.intersector.areaLights()) {
     if (object == context.hit.object) continue;  // a surface does not light itself
     const SceneObject& light = scene.objects[std::size_t(object)];
     if (light.shape->kind() == ShapeKind::Plane) continue;  // no centre to aim at
     // The light where it is at this shutter time, and the direction to its centre.
-    const Vec3 shift = context.ray.ray.time * light.velocity;
+    const Vec3 shift = light.displacementAt(context.ray.ray.time);
     const Point3 centre = light.shape->bounds().centre() + shift;
     const Vec3 d = centre - si.p;
     const double distance2 = glm::dot(d, d);
@@ -146,7 +139,7 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
       projectedArea = area * cosLight;
     }
     const Vec3 fCos = classicShading(context.material, n, wo, wi, lobes);
-    if (isBlack(fCos) || isBlack(Le)) continue;
+    if (isNonPositive(fCos) || isNonPositive(Le)) continue;
 
     // Aim at the light's centre but stop where the ray enters the light.
     Ray probe = Ray::make(si.p - shift, wi);
@@ -154,6 +147,26 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
     const Point3 target = entry ? si.p + entry->t * wi : centre;
     children.push_back(shadowRay(context, target, fCos, Le * (projectedArea / distance2), true));
   }
+}
+
+void addClassicLightRays(const HitContext& context, std::vector<QueuedRay>& children) {
+  addPointLightRays(context, Lobes::All, children);
+  addCentreLightRays(context, Lobes::All, children);
+}
+
+EndReason addSpecularChildren(const HitContext& context, std::vector<QueuedRay>& children) {
+  // The recursion stops at the maximum depth.
+  if (context.ray.depth >= context.settings.maxDepth) return EndReason::MaxDepth;
+  // One child per specular lobe: reflection and refraction with their weights.
+  const SpecularLobes lobes =
+      bsdf::specularLobes(context.material, context.hit.si, -context.ray.ray.direction);
+  const std::size_t before = children.size();
+  for (int i = 0; i < lobes.count; ++i) {
+    const BsdfSample& lobe = lobes.lobe[i];
+    if (isNonPositive(lobe.weight)) continue;
+    children.push_back(childRay(context, lobe.wi, lobe.kind, lobe.weight, 0.0));
+  }
+  return children.size() == before ? EndReason::Absorbed : EndReason::Spawned;
 }
 
 }  // namespace raylab::shading

@@ -6,9 +6,11 @@
 #include <vector>
 
 /// \file LocalShading.h
-/// What the classic algorithms (ray casting, Whitted, distributed) share: the Phong-era
-/// local shading model, shadow rays to point and area lights, and the child-ray factory
-/// every rule uses. Private to the integrators.
+/// The shading helpers the four rules are written with, and the only file a rule needs
+/// besides its own: the Phong-era local shading model, shadow rays to point and area
+/// lights, the specular children of mirrors and glass, and the child-ray factory every
+/// rule uses. No rule includes another rule; each names the helpers it calls. Private to
+/// the integrators.
 
 namespace raylab::shading {
 
@@ -31,8 +33,9 @@ Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const V
                     Lobes lobes);
 
 /// A child leaving the hit of `context` in unit world direction `wi`: origin offset by the
-/// RayOffset rule, the parent's time, depth + 1, the given kind, weight and pdf (0 for a
-/// deterministic direction), t in [0, tMax].
+/// RayOffset rule, the parent's time, depth + 1, the given kind, weight and pdf (the
+/// solid-angle density it was sampled with, 0 for a deterministic direction; path tracing
+/// weighs emitters it finds by it), t in [0, tMax].
 QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
                    double pdf, double tMax = kInfinity);
 
@@ -61,5 +64,16 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
 /// The shadow ray stops where it enters the light, so the light never shadows itself.
 /// Hard shadows, deterministic, no sampling.
 void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children);
+
+/// The classic local shading of ray casting and Whitted at a Diffuse or Glossy hit:
+/// addPointLightRays and addCentreLightRays with both lobes. Deterministic.
+void addClassicLightRays(const HitContext& context, std::vector<QueuedRay>& children);
+
+/// Whitted's recursion at a Mirror or Dielectric hit (also distributed tracing's): one
+/// Reflection / Refraction child per specular lobe with a positive weight
+/// (bsdf::specularLobes: the original course program's rates, or Fresnel), while the ray's
+/// depth is below maxDepth. Returns MaxDepth at maxDepth, Absorbed when no lobe carries
+/// anything, Spawned otherwise.
+EndReason addSpecularChildren(const HitContext& context, std::vector<QueuedRay>& children);
 
 }  // namespace raylab::shading

@@ -1,5 +1,6 @@
 #include "raylab/core/RayTree.h"
 
+#include <iterator>
 #include <sstream>
 
 namespace raylab {
@@ -22,28 +23,73 @@ const char* toString(RayKind kind) {
   return "unknown";
 }
 
-const char* toString(EndReason reason) {
-  switch (reason) {
-    case EndReason::Pending:
-      return "pending";
-    case EndReason::Escaped:
-      return "escaped";
+namespace {
+
+// One row per EndReason, in enum order.
+constexpr EndReasonWords kEndReasonWords[] = {
+    {EndReason::Pending, "pending", "pending", "waits in the queue"},
+    {EndReason::Escaped, "escaped", "escaped",
+     "escaped the scene: it gets the background radiance"},
+    {EndReason::HitLight, "hit_light", "hit a light", "hit a light: the path ends there"},
+    {EndReason::MaxDepth, "max_depth", "max depth",
+     "reached the maximum depth: the path ends there"},
+    {EndReason::RussianRoulette, "russian_roulette", "Russian roulette",
+     "was stopped by Russian roulette"},
+    {EndReason::Absorbed, "absorbed", "absorbed",
+     "was absorbed: the material scatters nothing here"},
+    {EndReason::Occluded, "occluded", "occluded", "was blocked before reaching its light"},
+    {EndReason::ReachedLight, "reached_light", "reached its light",
+     "reached its light unblocked and delivers its radiance"},
+    {EndReason::Spawned, "spawned", "spawned children", "spawned children"},
+};
+
+}  // namespace
+
+constexpr bool rowsInEnumOrder() {
+  for (std::size_t i = 0; i < std::size(kEndReasonWords); ++i)
+    if (kEndReasonWords[i].reason != EndReason(i)) return false;
+  return std::size(kEndReasonWords) == std::size_t(EndReason::Spawned) + 1;
+}
+static_assert(rowsInEnumOrder(), "one row of words per end reason, in enum order");
+
+const EndReasonWords& words(EndReason reason) { return kEndReasonWords[std::size_t(reason)]; }
+
+const char* toString(EndReason reason) { return words(reason).label; }
+
+std::optional<EndReason> endReasonFromJson(const std::string& json) {
+  for (const EndReasonWords& row : kEndReasonWords)
+    if (json == row.json) return row.reason;
+  return std::nullopt;
+}
+
+std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames) {
+  const bool named = s.object >= 0 && s.object < int(objectNames.size());
+  const std::string object = named ? "'" + objectNames[std::size_t(s.object)] + "'" : "";
+  switch (s.endReason) {
+    case EndReason::Spawned: {
+      std::string text = named ? "hit " + object + " and spawned " : "spawned ";
+      text += std::to_string(s.childCount) + (s.childCount == 1 ? " ray" : " rays");
+      if (s.childCount > 0) {
+        text += " (#" + std::to_string(s.firstChild);
+        if (s.childCount > 1) text += "..#" + std::to_string(s.firstChild + s.childCount - 1);
+        text += ")";
+      }
+      return text;
+    }
     case EndReason::HitLight:
-      return "hit a light";
-    case EndReason::MaxDepth:
-      return "max depth";
-    case EndReason::RussianRoulette:
-      return "Russian roulette";
-    case EndReason::Absorbed:
-      return "absorbed";
+      return named ? "hit the light " + object + ": the path ends there"
+                   : words(s.endReason).clause;
     case EndReason::Occluded:
-      return "occluded";
-    case EndReason::ReachedLight:
-      return "reached its light";
-    case EndReason::Spawned:
-      return "spawned children";
+      return named ? "was blocked by " + object + " before reaching its light"
+                   : words(s.endReason).clause;
+    case EndReason::MaxDepth:
+    case EndReason::RussianRoulette:
+    case EndReason::Absorbed:
+      return named ? "hit " + object + " and " + words(s.endReason).clause
+                   : words(s.endReason).clause;
+    default:
+      return words(s.endReason).clause;
   }
-  return "unknown";
 }
 
 void RayTree::propagate() {

@@ -1,5 +1,7 @@
 #include "raylab/core/MeshIO.h"
 
+#include "raylab/core/FilePaths.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -183,13 +185,6 @@ std::optional<Located> locateOffError(const std::string& path) {
     }
   }
   return std::nullopt;
-}
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
 }
 
 /// A closed mesh (every edge shared by exactly two triangles) whose signed volume is

@@ -18,11 +18,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr std::array<EndReason, 9> kEndReasons = {
-    EndReason::Pending,  EndReason::Escaped,         EndReason::HitLight,
-    EndReason::MaxDepth, EndReason::RussianRoulette, EndReason::Absorbed,
-    EndReason::Occluded, EndReason::ReachedLight,    EndReason::Spawned};
-
 json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 
 /// Reads the field `key` of segment object `s` (of segment `index`) as T.
@@ -50,29 +45,7 @@ Vec3 vecField(const json& s, const char* key, std::size_t index, const std::stri
 
 }  // namespace
 
-const char* RayTreeJson::endReasonName(EndReason reason) {
-  switch (reason) {
-    case EndReason::Pending:
-      return "pending";
-    case EndReason::Escaped:
-      return "escaped";
-    case EndReason::HitLight:
-      return "hit_light";
-    case EndReason::MaxDepth:
-      return "max_depth";
-    case EndReason::RussianRoulette:
-      return "russian_roulette";
-    case EndReason::Absorbed:
-      return "absorbed";
-    case EndReason::Occluded:
-      return "occluded";
-    case EndReason::ReachedLight:
-      return "reached_light";
-    case EndReason::Spawned:
-      return "spawned";
-  }
-  return "unknown";
-}
+const char* RayTreeJson::endReasonName(EndReason reason) { return words(reason).json; }
 
 std::string RayTreeJson::serialize(const RayTree& tree, const Scene& scene,
                                    const RenderSettings& settings) {
@@ -194,16 +167,11 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
     s.emitted = vecField(j, "emitted", i, origin);
     s.radiance = vecField(j, "radiance", i, origin);
     const auto reason = field<std::string>(j, "end_reason", i, origin);
-    bool known = false;
-    for (EndReason r : kEndReasons) {
-      if (reason == endReasonName(r)) {
-        s.endReason = r;
-        known = true;
-      }
-    }
+    const std::optional<EndReason> known = endReasonFromJson(reason);
     if (!known)
       throw Error(origin + ": /segments/" + std::to_string(i) + "/end_reason: unknown '" + reason +
                   "'");
+    s.endReason = *known;
     read.objectNames.push_back(j.value("object_name", std::string()));
   }
   if (info) *info = std::move(read);

@@ -23,11 +23,6 @@ namespace raylab::bsdf {
 
 namespace {
 
-/// Rec. 709 luminance of a linear RGB colour: how lobes are weighed against each other.
-double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
-
-bool isBlack(const Vec3& c) { return c.x == 0.0 && c.y == 0.0 && c.z == 0.0; }
-
 /// Probability that Glossy sampling picks the Phong lobe: its share of the energy,
 /// `specular` against the diffuse part's (1 - specular) * luminance(colour).
 double glossyLobeProbability(const Material& m) {
@@ -45,8 +40,7 @@ Vec3 glossyEval(const Material& m, const Normal3& nf, const Vec3& wo, const Vec3
   const double cosI = glm::dot(wi, nf);
   if (cosI <= 0.0) return Vec3(0.0);
   const double spec = std::clamp(m.specular, 0.0, 1.0);
-  const double cosAlpha = std::max(0.0, glm::dot(reflect(wo, nf), wi));
-  const double lobe = spec * (m.exponent + 2.0) / (2.0 * kPi) * std::pow(cosAlpha, m.exponent);
+  const double lobe = phongLobe(m, glm::dot(reflect(wo, nf), wi));
   return ((1.0 - spec) * m.colour / kPi + Vec3(lobe)) * cosI;
 }
 
@@ -73,6 +67,12 @@ BsdfSample specularLobe(const Vec3& wi, const Vec3& weight, RayKind kind) {
 }  // namespace
 
 Vec3 reflect(const Vec3& wo, const Normal3& n) { return 2.0 * glm::dot(wo, n) * n - wo; }
+
+double phongLobe(const Material& m, double cosAlpha) {
+  // The normalised Phong highlight ks (n + 2) / (2 pi) cos^n(alpha), white; 0 behind.
+  const double ks = std::clamp(m.specular, 0.0, 1.0);
+  return ks * (m.exponent + 2.0) / (2.0 * kPi) * std::pow(std::max(0.0, cosAlpha), m.exponent);
+}
 
 std::optional<Vec3> refract(const Vec3& wo, const Normal3& n, double eta) {
   // Snell's law: sin theta_t = eta sin theta_i; no transmitted ray when that exceeds 1.
@@ -156,9 +156,9 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
   }
 
   // Keep the lobes that carry energy: reflection first, then refraction.
-  if (!isBlack(reflected))
+  if (!isZero(reflected))
     lobes.lobe[lobes.count++] = specularLobe(wr, reflected, RayKind::Reflection);
-  if (wt && !isBlack(refracted))
+  if (wt && !isZero(refracted))
     lobes.lobe[lobes.count++] = specularLobe(*wt, refracted, RayKind::Refraction);
   return lobes;
 }

@@ -10,9 +10,6 @@ namespace raylab {
 
 namespace {
 
-/// Rec. 709 luminance: lights are picked by the luminance of their power.
-double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
-
 /// The ray in the frame of an object moving with `velocity`: at ray time tau the object
 /// is displaced by tau * velocity, which is the same as moving the ray origin back.
 Ray toObjectFrame(const Ray& ray, const Vec3& velocity) {
@@ -143,7 +140,7 @@ std::optional<LightSample> SceneIntersector::sampleLightAt(std::size_t k, const 
 
   // Work where the light is at rest: a light displaced by time * velocity sees ref
   // displaced the other way.
-  const Vec3 shift = time * object.velocity;
+  const Vec3 shift = object.displacementAt(time);
   const Point3 localRef = ref - shift;
   std::optional<LightSample> ls;
   if (m_sphereLights[k]) {
@@ -184,7 +181,7 @@ double SceneIntersector::lightPdf(const Point3& ref, int object, const SurfaceIn
 
   // Back to where the light is at rest, as sampleLight does.
   const SceneObject& light = m_scene->objects[static_cast<std::size_t>(object)];
-  const Vec3 shift = time * light.velocity;
+  const Vec3 shift = light.displacementAt(time);
   const Point3 localRef = ref - shift;
   const Point3 p = hit.p - shift;
   if (m_sphereLights[k]) return m_sphereLights[k]->pdf(localRef, p, hit.n) * pick;

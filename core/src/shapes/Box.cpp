@@ -7,10 +7,6 @@ namespace raylab {
 
 namespace {
 
-bool isFinite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 Transform boxTransform(const Point3& centre, const Vec3& size, const Vec3& ax, const Vec3& ay,
                        const Vec3& az) {
   if (!isFinite(centre)) throw Shape::InvalidGeometry("box centre must be finite");

@@ -10,10 +10,6 @@ namespace raylab {
 
 namespace {
 
-bool isFinite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 /// Spherical parameters of a unit vector about the z axis: u = azimuth / 2pi, v = polar / pi.
 Vec2 sphericalUv(const Vec3& unit) {
   double phi = std::atan2(unit.y, unit.x);

@@ -61,6 +61,12 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
 
 /// Perfect mirror direction of wo about n (both unit, same side or not).
 Vec3 reflect(const Vec3& wo, const Normal3& n);
+/// The normalised Phong highlight of a Glossy material, per steradian:
+/// `ks (n + 2) / (2 pi) cos^n(alpha)` with ks = m.specular (clamped to [0, 1]), n =
+/// m.exponent and alpha the angle between wi and the mirror direction of wo (0 when
+/// cosAlpha <= 0). White, as Phong's highlight; the one place this lobe is written (local
+/// shading, distributed tracing's glossy rays and eval use it).
+double phongLobe(const Material& m, double cosAlpha);
 /// Refracted direction of wo through a surface with normal n facing wo, for the ratio
 /// eta = eta_incident / eta_transmitted; nothing on total internal reflection.
 std::optional<Vec3> refract(const Vec3& wo, const Normal3& n, double eta);

@@ -3,6 +3,7 @@
 #include "raylab/core/Exception.h"
 #include "raylab/core/Types.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,8 +13,8 @@ namespace raylab {
 /**
  * \brief A float RGB image of linear radiance: what the renderer produces.
  *
- * Row 0 is the top row, pixels left to right. Named FloatImage so it can live beside
- * vis's 8-bit `raylab::Image` (the PNG picture) in one program.
+ * Row 0 is the top row, pixels left to right. SrgbImage is its 8-bit, display-encoded
+ * counterpart (imageio::toSrgb).
  */
 struct FloatImage {
   int width = 0;                  ///< Pixels across.
@@ -27,6 +28,38 @@ struct FloatImage {
   glm::vec3& at(int x, int y) { return pixels[std::size_t(y) * width + x]; }
   /// Pixel at column x, row y (row 0 at the top).
   const glm::vec3& at(int x, int y) const { return pixels[std::size_t(y) * width + x]; }
+};
+
+/// One 8-bit sRGB pixel as stored in PNG files.
+using Rgb8 = std::array<std::uint8_t, 3>;
+
+/**
+ * \brief An 8-bit sRGB picture: what the 3D view renders, what PNG files hold and what
+ * tests inspect.
+ *
+ * Rows are stored from the top of the picture down (as in PNG files and Qt), pixels from
+ * left to right, three bytes (r, g, b) per pixel. Image coordinates (x, y) have x to the
+ * right and y down from the top-left corner; pixel (i, j) covers [i, i + 1) x [j, j + 1).
+ */
+struct SrgbImage {
+  int width = 0;                  ///< Pixels across.
+  int height = 0;                 ///< Pixels down.
+  std::vector<std::uint8_t> rgb;  ///< 3 * width * height bytes, row-major from the top.
+
+  SrgbImage() = default;
+  /// A black image of the given size (both at least 0).
+  SrgbImage(int width, int height);
+
+  /// True when the image has no pixel.
+  bool empty() const { return width <= 0 || height <= 0; }
+  /// Pixel at column x, row y (row 0 at the top). Both must be inside the image.
+  Rgb8 at(int x, int y) const;
+  /// Sets the pixel at column x, row y (row 0 at the top).
+  void set(int x, int y, const Rgb8& colour);
+  /// Number of distinct colours, a cheap "is anything drawn" measure.
+  int distinctColours() const;
+  /// "SrgbImage(300x300)".
+  std::string toString() const;
 };
 
 /// Image files. Errors throw imageio::WriteError / ReadError naming the path; files are
@@ -56,8 +89,8 @@ void writePpm(const FloatImage& image, const std::string& path);
 double srgbFromLinear(double linear);
 /// One channel to 8 bits: round(255 * srgbFromLinear(linear)).
 std::uint8_t toSrgb8(double linear);
-/// 8-bit sRGB bytes, RGBRGB..., top row first (clamp to [0, 1] then the sRGB curve).
-std::vector<std::uint8_t> toSrgb8(const FloatImage& image);
+/// The 8-bit picture of a linear image: clamp to [0, 1], then the sRGB curve.
+SrgbImage toSrgb(const FloatImage& image);
 /// Root-mean-square error over all channels of two images of the same size (throws
 /// std::invalid_argument when the sizes differ).
 double rmse(const FloatImage& a, const FloatImage& b);

@@ -47,33 +47,16 @@ struct OracleCheck {
  * exact-oracle check of its hit. Vectors are world space, radiance linear RGB.
  */
 struct RayInspection {
-  int id = -1;          ///< Segment id (processing order).
-  int parent = -1;      ///< Parent id, -1 for the camera ray.
-  int firstChild = -1;  ///< First child id, -1 when none.
-  int childCount = 0;   ///< Number of children.
-  RayKind kind = RayKind::Camera;
-  int depth = 0;           ///< Bounces from the camera ray.
-  Point3 origin{0.0};      ///< Start point.
-  Vec3 direction{0.0};     ///< Unit direction.
-  double time = 0.0;       ///< Shutter time in [0, 1].
-  bool hit = false;        ///< Ended on a surface (a shadow ray: on its blocker).
-  Point3 endPoint{0.0};    ///< Hit point, the light point of a shadow ray, or the drawn end.
+  RaySegment segment;      ///< The ray as the tree recorded it: ids, geometry (world space),
+                           ///< weight, pdf, throughput, emitted and radiance (linear RGB), end.
   Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (else endPoint).
   double distance = 0.0;   ///< |endPoint - origin|, world units.
-  Normal3 normal{0.0};     ///< Unit geometric normal at the hit (zero when no hit).
-  int object = -1;         ///< Object hit (Scene::objects index), -1 when none.
-  std::string objectName;  ///< Its name, empty when none.
+  std::string objectName;  ///< Name of the object hit, empty when none.
   std::optional<MaterialSummary> material;  ///< The object's material, when it hit one.
-  Vec3 weight{1.0};      ///< Factor of this ray's radiance in its parent's estimate.
-  double pdf = 0.0;      ///< Solid-angle pdf of its direction, 0 = deterministic.
-  Vec3 throughput{1.0};  ///< Product of weights from the camera ray (beta).
-  Vec3 emitted{0.0};     ///< Radiance found at its end itself.
-  Vec3 radiance{0.0};    ///< Radiance it brings back (emitted + weighted children).
-  double energy = 0.0;   ///< Luminance (Rec. 709) of throughput * radiance: its share of
-                         ///< the pixel (the energy the ray-tree view colours by).
-  EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
-  std::string ended;                         ///< The same as a sentence.
-  std::optional<OracleCheck> oracle;         ///< The exact check, when it hit an object.
+  double energy = 0.0;  ///< RaySegment::energy: its share of the pixel (the energy the
+                        ///< ray-tree view colours by).
+  std::string ended;    ///< Why it ended, as a sentence (describeEnd).
+  std::optional<OracleCheck> oracle;  ///< The exact check, when it hit an object.
 
   /// Multi-line text for the window's panel and the command line: one "label  value"
   /// line per field (rayText), then the oracle block (oracleText).
@@ -111,8 +94,6 @@ class RayInspector {
   /// The exact check of a ray that hit `object` of `scene` at recorded point `hitPoint`.
   static OracleCheck checkHit(const Scene& scene, int object, const Point3& origin,
                               const Vec3& direction, double time, const Point3& hitPoint);
-  /// Rec. 709 luminance of throughput * radiance (the ray-tree view's energy).
-  static double energy(const RaySegment& segment);
 };
 
 }  // namespace raylab

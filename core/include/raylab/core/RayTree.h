@@ -3,6 +3,7 @@
 #include "raylab/core/Types.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,13 +26,30 @@ enum class EndReason {
   ReachedLight,     ///< Shadow ray reached its light unblocked.
   Spawned,          ///< Ended by spawning children (an inner node of the tree).
 };
+/// The short label of an end reason ("hit a light"): EndReasonWords::label.
 const char* toString(EndReason reason);
+
+/**
+ * \brief How one end reason is named and told: the one vocabulary of the JSON dump, the
+ * window's lists and legends, the stepper's narration and the ray inspector.
+ */
+struct EndReasonWords {
+  EndReason reason;
+  const char* json;    ///< Name in JSON dumps and scripts: "hit_light".
+  const char* label;   ///< Short label for lists and legends: "hit a light".
+  const char* clause;  ///< What the ray did, after its subject: "hit a light: the path ends
+                       ///< there" (describeEnd adds the object and the children).
+};
+/// The words of `reason` (a row of one table, in enum order).
+const EndReasonWords& words(EndReason reason);
+/// The reason whose JSON name is `json`, nothing when none is.
+std::optional<EndReason> endReasonFromJson(const std::string& json);
 
 /**
  * \brief One ray of a recorded tree: where it went, what it hit, what it carried.
  *
- * Energy bookkeeping (the seed's propagation to parents): a ray's `radiance` is what it
- * brings back along itself, `emitted + sum over children of child.weight * child.radiance`;
+ * Energy bookkeeping (the original course program's propagation to parents): a ray's `radiance` is
+ * what it brings back along itself, `emitted + sum over children of child.weight * child.radiance`;
  * the camera ray's radiance is the sample's estimate. `throughput` is the product of the
  * weights from the camera ray down to this one (beta), so `throughput * emitted` is this
  * ray's own contribution to the pixel. Children of one ray have consecutive ids.
@@ -62,7 +80,16 @@ struct RaySegment {
   EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
   Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (the far end);
                            ///< when Occluded, endPoint is where the blocker was hit.
+
+  /// The ray's energy: the luminance of `throughput * radiance`, the share of the pixel's
+  /// light this ray carries (what the ray-tree view colours by and the inspector shows).
+  double energy() const { return luminance(throughput * radiance); }
 };
+
+/// How segment `s` ended, as a clause after its subject ("reflection ray #3 ..."), naming
+/// the object hit or blocking (from `objectNames`, indexed by RaySegment::object) and the
+/// children spawned: "hit 'glass ball' and spawned 2 rays (#4..#5)".
+std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames);
 
 /// The rays of one (pixel, sample), in the engine's processing order.
 struct RayTree {

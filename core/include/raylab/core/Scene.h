@@ -27,6 +27,11 @@ struct SceneObject {
   /// moving objects with apply().
   Mat4 worldFromSource{1.0};
 
+  /// How far the object has moved at shutter time `time` in [0, 1]: time * velocity, world
+  /// units. The one rule of motion: a ray at time tau meets the object where it rests when
+  /// the ray's origin is moved back by this much.
+  Vec3 displacementAt(double time) const { return time * velocity; }
+
   SceneObject() = default;
   SceneObject(std::string objectName, std::unique_ptr<Shape> objectShape, int materialIndex)
       : name(std::move(objectName)), shape(std::move(objectShape)), material(materialIndex) {}

@@ -28,15 +28,14 @@ struct RayCounts {
 struct QueuedRay {
   Ray ray;  ///< World space, unit direction.
   RayKind kind = RayKind::Camera;
-  int depth = 0;              ///< Camera ray: 0.
-  int parent = -1;            ///< Recorded id of the parent (-1 for the camera ray).
-  int id = -1;                ///< Recorded id of this ray (-1 when not recording).
-  Vec3 weight{1.0};           ///< Factor of its radiance in the parent's estimate.
-  Vec3 throughput{1.0};       ///< Product of weights from the camera ray (beta).
-  double pdf = 0.0;           ///< Solid-angle pdf it was sampled with (0: deterministic).
-  bool specularChain = true;  ///< Only specular bounces so far (emitters count fully).
-  Vec3 shadowLe{0.0};         ///< Shadow rays: radiance delivered when unoccluded.
-  double previousPdf = 0.0;   ///< Path tracing MIS: BSDF pdf of this direction.
+  int depth = 0;         ///< Camera ray: 0.
+  int parent = -1;       ///< Recorded id of the parent (-1 for the camera ray).
+  int id = -1;           ///< Recorded id of this ray (-1 when not recording).
+  Vec3 weight{1.0};      ///< Factor of its radiance in the parent's estimate.
+  Vec3 throughput{1.0};  ///< Product of weights from the camera ray (beta).
+  double pdf = 0.0;      ///< Solid-angle pdf it was sampled with (0: deterministic);
+                         ///< path tracing MIS-weighs the emitter it finds by it.
+  Vec3 shadowLe{0.0};    ///< Shadow rays: radiance delivered when unoccluded.
 };
 
 /// What the last step of the engine did, for the front end's narration.
@@ -49,15 +48,19 @@ struct StepEvent {
 
 class SpawnRule;
 
+/// Bytes of ray segments a recorded tree may use by default (Stepper, tracePixel).
+constexpr std::size_t kDefaultTreeBudget = std::size_t(256) << 20;
+
 /**
- * \brief The one engine of the four algorithms (the seed's renderer): a queue of rays;
- * take the first, intersect it, ask the algorithm which child rays the hit spawns
- * (the seed's BRDF(intersection) factory), append them; a ray that ends adds its
- * radiance, weighted by its throughput, to the estimate — which equals propagating the
- * energy up the recorded tree to the camera ray (RayTree::propagate).
+ * \brief The one engine of the four algorithms (the original course program's renderer):
+ * a queue of rays; take the first, intersect it, ask the algorithm's SpawnRule which child
+ * rays the hit spawns (the original's BRDF(intersection) factory), append them; a ray that
+ * ends adds its radiance, weighted by its throughput, to the estimate — which equals
+ * propagating the energy up the recorded tree to the camera ray (RayTree::propagate).
  *
- * `trace` renders one (pixel, sample) with no recording (the image renderer's path);
- * `Stepper` runs the same loop one ray at a time and records the tree.
+ * The step itself is `engineStep` in core/src/integrators/Tracer.cpp, one screen long.
+ * `trace` runs it for one (pixel, sample) with no recording (the image renderer's path);
+ * `Stepper` runs the same step one ray at a time with a TreeRecorder, which keeps the tree.
  */
 class Tracer {
  public:
@@ -76,6 +79,10 @@ class Tracer {
   const RenderSettings& settings() const { return m_settings; }
   const Camera& camera() const { return m_camera; }
   const SpawnRule& rule() const { return *m_rule; }
+  /// The material of object `object` (an index into Scene::objects).
+  const Material& materialOf(int object) const;
+  /// The objects' names, indexed like Scene::objects (for narration).
+  const std::vector<std::string>& objectNames() const { return m_objectNames; }
   /// Length at which recorded escaped rays are drawn: the diagonal of the bounds of the
   /// scene's finite objects and the camera, world units (1 for an empty scene).
   double escapeLength() const { return m_escapeLength; }
@@ -87,6 +94,7 @@ class Tracer {
   Camera m_camera;
   std::unique_ptr<SpawnRule> m_rule;
   double m_escapeLength = 1.0;
+  std::vector<std::string> m_objectNames;
 };
 
 /**
@@ -104,7 +112,7 @@ class Stepper {
   /// Prepares sample `sample` of pixel (x, y) of `tracer` (which must outlive the stepper):
   /// the camera ray waits in the queue. `memoryBudget` bounds the recorded segments, bytes.
   Stepper(const Tracer& tracer, int x, int y, int sample,
-          std::size_t memoryBudget = std::size_t(256) << 20);
+          std::size_t memoryBudget = kDefaultTreeBudget);
 
   /// Processes the first ray of the queue. Returns false when the queue was empty.
   /// The step that empties the queue also propagates the tree.

@@ -2,6 +2,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -29,5 +30,18 @@ constexpr double radians(double degrees) { return degrees * (kPi / 180.0); }
 
 /// "(x, y, z)" with full round-trip precision, for messages and toString().
 std::string toString(const Vec3& v);
+
+/// Luminance of a linear RGB colour with the Rec. 709 weights: how bright it looks. The one
+/// place these weights are written (lobe and light choice, ray energy, text contrast).
+constexpr double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+/// True when no component is NaN or infinite.
+bool isFinite(const Vec3& v);
+
+/// True when every component is exactly 0 (a lobe or light that carries nothing).
+constexpr bool isZero(const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
+
+/// True when no component is positive (nothing to deliver: zero or negative weights).
+constexpr bool isNonPositive(const Vec3& v) { return v.x <= 0.0 && v.y <= 0.0 && v.z <= 0.0; }
 
 }  // namespace raylab

@@ -1,7 +1,9 @@
+// Distributed ray tracing (Cook 1984): the rule is in DistributedRule.h; the helpers it
+// names are in ../LocalShading.h; the engine that runs it is Tracer.cpp's engineStep.
 #include "integrators/distributed/DistributedRule.h"
 
 #include "integrators/LocalShading.h"
-#include "integrators/whitted/WhittedRule.h"
+#include "raylab/core/Bsdf.h"
 #include "raylab/core/Sampling.h"
 
 #include <cmath>
@@ -15,8 +17,7 @@ void addGlossyRays(const HitContext& context, int count, std::vector<QueuedRay>&
   const Material& m = context.material;
   const Normal3 n = context.hit.si.facingNormal();
   const Vec3 wo = -context.ray.ray.direction;
-  const Vec3 mirror = 2.0 * glm::dot(wo, n) * n - wo;
-  const Frame lobeFrame(mirror);
+  const Frame lobeFrame(bsdf::reflect(wo, n));
   const double invN = 1.0 / double(count);
   for (int k = 0; k < count; ++k) {
     // Draw a direction around the mirror direction, distributed as cos^n(alpha).
@@ -27,9 +28,7 @@ void addGlossyRays(const HitContext& context, int count, std::vector<QueuedRay>&
     // Below the surface the sample contributes nothing (it still counts in N).
     if (cosThetaI <= 0.0 || !(pdf > 0.0) || !std::isfinite(pdf)) continue;
     // Weight f cos / pdf / N with the highlight f = ks (n+2)/(2 pi) cos^n(alpha).
-    const double f = m.specular * (m.exponent + 2.0) / (2.0 * kPi) *
-                     std::pow(std::max(0.0, local.z), m.exponent);
-    const Vec3 weight(f * cosThetaI / pdf * invN);
+    const Vec3 weight(bsdf::phongLobe(m, local.z) * cosThetaI / pdf * invN);
     children.push_back(shading::childRay(context, wi, RayKind::Glossy, weight, pdf));
   }
 }
@@ -42,7 +41,7 @@ HitDecision DistributedRule::onHit(const HitContext& context,
   // An emitter, seen directly, through glass and mirrors, or by a glossy ray.
   if (m.isEmitter()) return {shading::emitterSeen(context), EndReason::HitLight};
   // Mirror and glass: every specular child, as in Whitted.
-  if (m.isSpecular()) return {Vec3(0.0), WhittedRule::addSpecularChildren(context, children)};
+  if (m.isSpecular()) return {Vec3(0.0), shading::addSpecularChildren(context, children)};
 
   // Point lights as in Whitted; soft shadows: several shadow rays per area light.
   shading::addPointLightRays(context, shading::Lobes::All, children);

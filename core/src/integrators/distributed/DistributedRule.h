@@ -21,7 +21,8 @@ namespace raylab {
  *   highlight of area lights comes from these rays hitting the lights, so shadow rays to
  *   area lights carry the Lambert part only (nothing is counted twice); a point light
  *   cannot be hit, so its shadow ray carries the highlight as in Whitted.
- * - Mirror / Dielectric: all specular children, as in Whitted. Emitters count when hit.
+ * - Mirror / Dielectric: all specular children, as in Whitted
+ *   (shading::addSpecularChildren). Emitters count when hit.
  *
  * There is no diffuse interreflection: light reaches a diffuse surface only through
  * shadow rays (classic distributed ray tracing; path tracing adds indirect light).
@@ -32,6 +33,8 @@ namespace raylab {
 class DistributedRule final : public SpawnRule {
  public:
   Algorithm kind() const override { return Algorithm::Distributed; }
+  /// Jittered film position, a point on the lens (depth of field), a shutter time.
+  bool samplesLensAndShutter() const override { return true; }
   HitDecision onHit(const HitContext& context, std::vector<QueuedRay>& children) const override;
 };
 

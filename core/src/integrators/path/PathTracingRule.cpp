@@ -1,3 +1,5 @@
+// Path tracing (Kajiya 1986): the rule is in PathTracingRule.h; the helpers it names are
+// in ../LocalShading.h; the engine that runs it is Tracer.cpp's engineStep.
 #include "integrators/path/PathTracingRule.h"
 
 #include "integrators/LocalShading.h"
@@ -12,9 +14,9 @@ namespace raylab {
 
 namespace {
 
+/// A weight or radiance worth a ray: finite, nowhere negative, somewhere positive.
 bool isUsable(const Vec3& w) {
-  return std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z) && w.x >= 0.0 &&
-         w.y >= 0.0 && w.z >= 0.0 && (w.x > 0.0 || w.y > 0.0 || w.z > 0.0);
+  return isFinite(w) && w.x >= 0.0 && w.y >= 0.0 && w.z >= 0.0 && !isNonPositive(w);
 }
 
 double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
@@ -34,21 +36,20 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
   if (m.isEmitter()) {
     const Vec3 Le = shading::emitterSeen(context);
     double w = 1.0;
-    const bool deterministic = ray.kind == RayKind::Camera || ray.previousPdf <= 0.0;
+    const bool deterministic = ray.kind == RayKind::Camera || ray.pdf <= 0.0;
     if (settings.nextEventEstimation && !deterministic) {
       if (settings.multipleImportance) {
         // The density light sampling at the previous hit had for this point: asked from
         // this ray's origin, the point next-event estimation samples from (step 4).
         const double lightPdf =
-            context.scene.lightPdf(ray.ray.origin, context.hit.object, si, ray.ray.time);
-        w = powerHeuristic(ray.previousPdf, lightPdf);
+            context.intersector.lightPdf(ray.ray.origin, context.hit.object, si, ray.ray.time);
+        w = powerHeuristic(ray.pdf, lightPdf);
       } else {
         w = 0.0;
       }
     }
     if (w > 0.0) emitted = w * Le;
-    if (m.colour.x <= 0.0 && m.colour.y <= 0.0 && m.colour.z <= 0.0)
-      return {emitted, EndReason::HitLight};
+    if (isNonPositive(m.colour)) return {emitted, EndReason::HitLight};
   }
 
   // 2. The longest path allowed ends here.
@@ -64,15 +65,15 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
 
   // 4. Next-event estimation: a shadow ray to a sampled light point, and to point lights.
   if (settings.nextEventEstimation && !m.isSpecular()) {
-    if (!context.scene.areaLights().empty()) {
+    if (!context.intersector.areaLights().empty()) {
       const Vec2 uLight = context.sampler.next2D();
       const double uPick = context.sampler.next1D();
-      // Lights are sampled from the origin every ray leaving this hit on the side wo is on
-      // has (the offset hit point), so that the emitter's MIS weight in step 1 asks
-      // lightPdf about exactly the same point; and where they are at this ray's time.
+      // Sample the light from offsetRayOrigin(si, n), the origin every ray leaving this side
+      // of the surface will have, so that step 1's MIS weight asks lightPdf about the same
+      // point; and sample it where it is at this ray's time.
       const Point3 ref = offsetRayOrigin(si, si.facingNormal());
       const std::optional<LightSample> ls =
-          context.scene.sampleLight(ref, uLight, uPick, ray.ray.time);
+          context.intersector.sampleLight(ref, uLight, uPick, ray.ray.time);
       if (ls && ls->pdf > 0.0 && std::isfinite(ls->pdf)) {
         const Vec3 fCos = bsdf::eval(m, si, wo, ls->wi);
         const double w = settings.multipleImportance
@@ -83,7 +84,7 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
           children.push_back(shading::shadowRay(context, ls->p, weight, ls->Le, true));
       }
     }
-    for (const PointLight& light : context.scene.scene().pointLights) {
+    for (const PointLight& light : context.intersector.scene().pointLights) {
       const Vec3 d = light.position - si.p;
       const double distance2 = glm::dot(d, d);
       if (!(distance2 > 0.0)) continue;
@@ -98,11 +99,9 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
   const std::optional<BsdfSample> bs = bsdf::sample(m, si, wo, context.sampler);
   if (bs && (bs->specular || (bs->pdf > 0.0 && std::isfinite(bs->pdf)))) {
     const Vec3 weight = bs->weight * rouletteScale;
-    if (isUsable(weight)) {
-      QueuedRay child =
-          shading::childRay(context, bs->wi, bs->kind, weight, bs->specular ? 0.0 : bs->pdf);
-      children.push_back(child);
-    }
+    if (isUsable(weight))
+      children.push_back(
+          shading::childRay(context, bs->wi, bs->kind, weight, bs->specular ? 0.0 : bs->pdf));
   }
   return {emitted, children.empty() ? EndReason::Absorbed : EndReason::Spawned};
 }

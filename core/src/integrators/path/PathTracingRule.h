@@ -36,6 +36,8 @@ namespace raylab {
 class PathTracingRule final : public SpawnRule {
  public:
   Algorithm kind() const override { return Algorithm::PathTracing; }
+  /// Jittered film position, a point on the lens (depth of field), a shutter time.
+  bool samplesLensAndShutter() const override { return true; }
   HitDecision onHit(const HitContext& context, std::vector<QueuedRay>& children) const override;
 };
 

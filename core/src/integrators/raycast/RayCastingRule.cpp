@@ -1,13 +1,10 @@
+// Ray casting (Appel 1968): the rule is in RayCastingRule.h; the helpers it names are in
+// ../LocalShading.h; the engine that runs it is Tracer.cpp's engineStep.
 #include "integrators/raycast/RayCastingRule.h"
 
 #include "integrators/LocalShading.h"
 
 namespace raylab {
-
-void RayCastingRule::addLocalShading(const HitContext& context, std::vector<QueuedRay>& children) {
-  shading::addPointLightRays(context, shading::Lobes::All, children);
-  shading::addCentreLightRays(context, shading::Lobes::All, children);
-}
 
 HitDecision RayCastingRule::onHit(const HitContext& context,
                                   std::vector<QueuedRay>& children) const {
@@ -15,8 +12,8 @@ HitDecision RayCastingRule::onHit(const HitContext& context,
   if (context.material.isEmitter()) return {shading::emitterSeen(context), EndReason::HitLight};
   // Perfect specular surfaces have no local shading model.
   if (context.material.isSpecular()) return {Vec3(0.0), EndReason::Absorbed};
-  // Local shading: one shadow ray per light.
-  addLocalShading(context, children);
+  // Local shading: one shadow ray per light, carrying f cos.
+  shading::addClassicLightRays(context, children);
   return {Vec3(0.0), EndReason::Spawned};
 }
 

@@ -14,7 +14,8 @@ namespace raylab {
  * - Diffuse and Glossy surfaces get the classic local shading (Lambert + the normalised
  *   Phong highlight, see shading::classicShading) from every point light (one shadow ray,
  *   weight f cos, delivering intensity / d^2) and from every area light through ONE
- *   shadow ray to its fixed sample u = (0.5, 0.5) (weight f cos / pdf);
+ *   shadow ray to its centre, as if it were a point light there
+ *   (shading::addClassicLightRays): hard shadows, no sampling;
  * - Mirror and Dielectric surfaces have no local model here: they come out black
  *   (Absorbed); Whitted's recursion is what makes them visible.
  *
@@ -25,11 +26,9 @@ namespace raylab {
 class RayCastingRule final : public SpawnRule {
  public:
   Algorithm kind() const override { return Algorithm::RayCasting; }
+  /// One ray through the film position, from the lens centre at time 0.
+  bool samplesLensAndShutter() const override { return false; }
   HitDecision onHit(const HitContext& context, std::vector<QueuedRay>& children) const override;
-
-  /// The local shading both ray casting and Whitted use at a Diffuse or Glossy hit:
-  /// shadow rays to every point light and one to each area light's fixed sample.
-  static void addLocalShading(const HitContext& context, std::vector<QueuedRay>& children);
 };
 
 }  // namespace raylab

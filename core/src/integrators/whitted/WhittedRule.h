@@ -11,11 +11,11 @@ namespace raylab {
  *
  * At a hit:
  * - an emitter: its radiance (also when seen through mirrors and glass), then HitLight;
- * - Diffuse and Glossy: exactly ray casting's local shading (RayCastingRule::addLocalShading),
+ * - Diffuse and Glossy: exactly ray casting's local shading (shading::addClassicLightRays),
  *   so both algorithms agree pixel for pixel on scenes without specular surfaces;
  * - Mirror and Dielectric: every specular lobe (bsdf::specularLobes: reflection and
- *   refraction, weighted by the seed's rates or by Fresnel, total internal reflection
- *   included) becomes a Reflection / Refraction child, while the ray's depth is below
+ *   refraction, weighted by the original course program's rates or by Fresnel, total internal
+ * reflection included) becomes a Reflection / Refraction child, while the ray's depth is below
  *   maxDepth; at maxDepth the ray ends (MaxDepth) and contributes nothing.
  *
  * Parameters (RenderSettings): maxDepth (default 5; the camera ray has depth 0),
@@ -24,11 +24,9 @@ namespace raylab {
 class WhittedRule final : public SpawnRule {
  public:
   Algorithm kind() const override { return Algorithm::Whitted; }
+  /// One ray through the film position, from the lens centre at time 0.
+  bool samplesLensAndShutter() const override { return false; }
   HitDecision onHit(const HitContext& context, std::vector<QueuedRay>& children) const override;
-
-  /// Appends the specular children of a Mirror / Dielectric hit below maxDepth (shared
-  /// with distributed tracing); returns MaxDepth, Absorbed or Spawned.
-  static EndReason addSpecularChildren(const HitContext& context, std::vector<QueuedRay>& children);
 };
 
 }  // namespace raylab

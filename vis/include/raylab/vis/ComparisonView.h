@@ -12,7 +12,7 @@
 
 class vtkRenderer;
 
-namespace raylab {
+namespace raylab::vis {
 
 /// The colour that stands for an algorithm in every comparison picture and plot (the
 /// Okabe-Ito palette, told apart with any colour vision): ray casting orange, Whitted
@@ -102,8 +102,8 @@ class ComparisonView {
    * vtkRenderWindow (no multisampling, so pictures are repeatable). Needs an X server
    * (Debian's VTK, use xvfb-run). Must not be called while a window shows the renderers.
    */
-  Image renderOffscreen(int width, int height);
-  /// renderOffscreen, then ImageIO::writePng (throws ImageIO::Error naming the file).
+  SrgbImage renderOffscreen(int width, int height);
+  /// renderOffscreen, then vis::writePng (throws vis::ImageError naming the file).
   void renderToPng(const std::string& path, int width, int height);
 
  private:
@@ -116,4 +116,4 @@ std::string formatSeconds(double seconds);
 /// "950", "12.3 k", "4.56 M", "1.23 G": a count for the figures.
 std::string formatCount(std::uint64_t count);
 
-}  // namespace raylab
+}  // namespace raylab::vis

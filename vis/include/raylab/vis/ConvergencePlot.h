@@ -8,7 +8,7 @@
 
 class vtkRenderer;
 
-namespace raylab {
+namespace raylab::vis {
 
 /// What the convergence plot puts across.
 enum class ConvergenceAxis {
@@ -47,8 +47,8 @@ class ConvergencePlot {
   /// Font sizes for a picture of width x height pixels (call when a window resizes).
   void layout(int width, int height);
   /// Renders the plot offscreen (own window, no multisampling; needs an X server).
-  Image renderOffscreen(int width, int height);
-  /// renderOffscreen, then ImageIO::writePng (throws ImageIO::Error naming the file).
+  SrgbImage renderOffscreen(int width, int height);
+  /// renderOffscreen, then vis::writePng (throws vis::ImageError naming the file).
   void renderToPng(const std::string& path, int width, int height);
 
  private:
@@ -59,4 +59,4 @@ class ConvergencePlot {
   ConvergenceAxis m_axis;
 };
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -1,42 +1,8 @@
 #pragma once
 
-#include <array>
-#include <cstdint>
-#include <string>
-#include <vector>
+#include "raylab/core/Image.h"
 
-namespace raylab {
-
-/// One 8-bit sRGB pixel as stored in PNG files.
-using Rgb8 = std::array<std::uint8_t, 3>;
-
-/**
- * \brief An 8-bit RGB picture: what the 3D view renders and what tests inspect.
- *
- * Rows are stored from the top of the picture down (as in PNG files and Qt), pixels from
- * left to right, three bytes (r, g, b) per pixel. Image coordinates (x, y) have x to the
- * right and y down from the top-left corner; pixel (i, j) covers [i, i + 1) x [j, j + 1).
- */
-struct Image {
-  int width = 0;                  ///< Pixels across.
-  int height = 0;                 ///< Pixels down.
-  std::vector<std::uint8_t> rgb;  ///< 3 * width * height bytes, row-major from the top.
-
-  Image() = default;
-  /// A black image of the given size (both at least 0).
-  Image(int width, int height);
-
-  /// True when the image has no pixel.
-  bool empty() const { return width <= 0 || height <= 0; }
-  /// Pixel at column x, row y (row 0 at the top). Both must be inside the image.
-  Rgb8 at(int x, int y) const;
-  /// Sets the pixel at column x, row y (row 0 at the top).
-  void set(int x, int y, const Rgb8& colour);
-  /// Number of distinct colours, a cheap "is anything drawn" measure.
-  int distinctColours() const;
-  /// "Image(300x300)".
-  std::string toString() const;
-};
+namespace raylab::vis {
 
 /// Per-channel difference (0..255) that compareImages forgives as shading noise. VTK's
 /// default, 105, forgives far too much: it scores a missing flesh-coloured light in front
@@ -65,6 +31,6 @@ constexpr int kCompareChannelTolerance = 20;
  * Images of different sizes give 1.0. When Debian ships VTK >= 9.4, switch to
  * `vtkImageSSIM` and rescale the thresholds.
  */
-double compareImages(const Image& a, const Image& b);
+double compareImages(const SrgbImage& a, const SrgbImage& b);
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -1,27 +1,34 @@
 #pragma once
 
 #include "raylab/core/Exception.h"
-#include "raylab/vis/Image.h"
+#include "raylab/core/Image.h"
 
 #include <string>
 
-namespace raylab {
+/// \file ImageIO.h
+/// Image files, written in the format their extension names: the one writer of pictures
+/// (PNG through VTK's PNG codec; PPM and PFM through core's imageio).
 
-/// Reading and writing PNG files (through VTK's PNG reader and writer).
-class ImageIO {
+namespace raylab::vis {
+
+/// An image file that cannot be read or written; the message names the file and the reason.
+class ImageError : public Exception {
  public:
-  /// A PNG that cannot be read or written; the message names the file and the reason.
-  class Error : public Exception {
-   public:
-    explicit Error(const std::string& message) : Exception(message) {}
-  };
-
-  /// Reads an 8-bit RGB, RGBA, grey or grey+alpha PNG; alpha is dropped, grey expanded.
-  /// Throws Error naming the file when it is missing or not a PNG.
-  static Image readPng(const std::string& path);
-  /// Writes an RGB PNG. Throws Error naming the file when it cannot be written; never
-  /// leaves a partial file under `path` (writes a temporary file, then renames it).
-  static void writePng(const Image& image, const std::string& path);
+  using Exception::Exception;
 };
 
-}  // namespace raylab
+/// Reads an 8-bit RGB, RGBA, grey or grey+alpha PNG; alpha is dropped, grey expanded.
+/// Throws ImageError naming the file when it is missing or not a PNG.
+SrgbImage readPng(const std::string& path);
+/// Writes an RGB PNG: encoded in memory, then written atomically (writeFileAtomically), so
+/// `path` is either unchanged or complete. Throws ImageError naming the file.
+void writePng(const SrgbImage& image, const std::string& path);
+
+/// True when `path` ends in an extension writeImage knows: .png, .ppm or .pfm.
+bool isImageFile(const std::string& path);
+/// Writes a rendered image in the format `path`'s extension names: .png (8-bit sRGB),
+/// .ppm (8-bit sRGB) or .pfm (linear float). Throws ImageError (or imageio::WriteError)
+/// naming the file; the target is never left half written.
+void writeImage(const FloatImage& image, const std::string& path);
+
+}  // namespace raylab::vis

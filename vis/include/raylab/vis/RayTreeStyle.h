@@ -5,19 +5,22 @@
 
 #include <array>
 #include <climits>
+#include <optional>
 #include <string>
 #include <vector>
 
 /// \file RayTreeStyle.h
-/// How a recorded ray tree is drawn and revealed: colouring, filters, the shared energy
-/// scale and the bounce animation. Pure C++ (no VTK): the window's controls, the command
-/// line and the tests all speak these types; RayTreeActor turns them into VTK data.
+/// How a recorded ray tree is drawn: colouring, filters and the shared energy scale (the
+/// bounce animation that reveals it is BounceAnimation.h). Pure C++ (no VTK): the window's
+/// controls, the command line and the tests all speak these types; RayTreeActors (private)
+/// turns them into VTK data.
 
-namespace raylab {
+namespace raylab::vis {
 
 /// What the colour of a drawn ray means.
 enum class RayColouring {
-  Energy,  ///< The seed's convention: light grey low, green medium, blue high.
+  Energy,  ///< The original course program's convention: light grey low, green medium,
+           ///< blue high.
   Kind,    ///< Camera, reflection, refraction, diffuse, glossy, shadow (see kindColour).
   Depth,   ///< Bounces from the camera ray, on a sequential scale.
 };
@@ -26,7 +29,7 @@ const char* toString(RayColouring colouring);
 /**
  * \brief The one energy scale of every algorithm's trees.
  *
- * A segment's energy is the luminance (Rec. 709 weights) of `throughput * radiance`:
+ * A segment's energy (RaySegment::energy) is the luminance of `throughput * radiance`:
  * the share of the pixel's estimate that came back along this ray (the camera ray's
  * energy is the sample's estimate; a path that never reaches a light carries 0). Energies
  * map to [0, 1] on a log scale between `low` and `high` (fixed numbers, the same for the
@@ -46,8 +49,6 @@ struct EnergyScale {
   static Vec3 colour(double position);
 };
 
-/// Energy of a recorded segment (see EnergyScale).
-double segmentEnergy(const RaySegment& segment);
 /// Colour of a ray kind in the Kind colouring (distinct hues, readable on the dark view).
 Vec3 kindColour(RayKind kind);
 /// Colour of a depth in the Depth colouring (0 = camera rays), `maxDepth` the deepest drawn.
@@ -82,38 +83,16 @@ struct RayTreeStyle {
   bool showLegend = true;          ///< The colour legend in a corner of the view.
 };
 
-/// In which order the bounce animation reveals a tree.
-enum class RevealOrder {
-  Processing,  ///< The engine's processing order (segment ids), `raysPerStep` at a time.
-  Depth,       ///< Depth by depth: every ray of depth d travels at once.
+/// The colouring named `name` ("energy", "kind" or "depth"), nothing for another name.
+std::optional<RayColouring> parseColouring(const std::string& name);
+/// The ray kinds of a comma-separated list of kind names ("camera,shadow"), as a filter's
+/// `kinds`; an empty list means every kind. The message names the first unknown kind.
+struct ParsedKinds {
+  std::array<bool, kRayKindCount> kinds{true, true, true, true, true, true};
+  std::string error;  ///< Empty when every name is known.
 };
-const char* toString(RevealOrder order);
+ParsedKinds parseRayKinds(const std::string& list);
+/// Every ray kind's name, comma-separated, for messages and help texts.
+std::string rayKindNames();
 
-/// Settings of the bounce animation.
-struct AnimationSettings {
-  RevealOrder order = RevealOrder::Depth;
-  int framesPerStep = 12;  ///< Frames for a ray front to travel its segment.
-  int raysPerStep = 1;     ///< Processing order: segments that start together.
-};
-
-/**
- * \brief What frame `frame` of the animation shows: a pure function of (tree, settings,
- * frame), never of the clock, so any frame renders offscreen the same every time.
- *
- * `fraction[i]` is how much of segment i is drawn from its origin: 0 hidden, 1 whole,
- * in between the ray front is travelling (drawn at origin + fraction * (end - origin)).
- * Frame 0 shows nothing; frameCount() - 1 shows the whole tree.
- */
-struct RevealFrame {
-  std::vector<float> fraction;
-  int step = 0;       ///< Step being played (processing: first ray id / raysPerStep;
-                      ///< depth: the depth travelling).
-  bool done = false;  ///< Every segment is whole.
-};
-
-/// Number of frames of the animation of `tree` (at least 1).
-int frameCount(const RayTree& tree, const AnimationSettings& settings);
-/// Frame `frame` (clamped to [0, frameCount - 1]).
-RevealFrame revealFrame(const RayTree& tree, const AnimationSettings& settings, int frame);
-
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -3,6 +3,7 @@
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
+#include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/Image.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/ViewCamera.h"
@@ -14,7 +15,7 @@
 
 class vtkRenderer;
 
-namespace raylab {
+namespace raylab::vis {
 
 /**
  * \brief The 3D view of a scene: one VTK renderer holding an actor per scene object, the
@@ -66,11 +67,16 @@ class SceneView {
   void resetViewCamera(double aspect = 1.0);
 
   /// \name The ray tree drawn in the view (one polydata, one actor for all its rays).
+  /// The setters below only record what to draw; the polydata are built once, before the
+  /// next render or pick, however many setters were called (rayTreeBuildCount counts).
   /// @{
-  /// Shows `tree` (replacing any other) with `style`, wholly revealed. `tree` is copied.
-  /// The tree stays through setScene (trace again and call this to update it).
-  /// While a tree is shown, glass (dielectric) objects are drawn see-through (opacity
-  /// 0.3) so that the rays refracted and reflected inside them can be followed.
+  /// Shows `tree` (replacing any other) with `style`, wholly revealed; the view shares
+  /// the tree, never copies it (null: no tree). The tree stays through setScene (trace
+  /// again and call this to update it). While a tree is shown, glass (dielectric) objects
+  /// are drawn see-through (opacity 0.3) so that the rays refracted and reflected inside
+  /// them can be followed.
+  void setRayTree(std::shared_ptr<const RayTree> tree, const RayTreeStyle& style = {});
+  /// The same with a copy of `tree` (for one-off pictures).
   void setRayTree(const RayTree& tree, const RayTreeStyle& style = {});
   /// Removes the ray tree from the view.
   void clearRayTree();
@@ -88,6 +94,9 @@ class SceneView {
   /// Marks segment `id` (drawn thick, in magenta, as far as it is revealed); -1 clears.
   void setSelectedSegment(int id);
   int selectedSegment() const;
+  /// How many times the tree's polydata have been built (for tests: one per render after
+  /// any number of changes).
+  int rayTreeBuildCount() const;
   /// The drawn segment nearest to image point (x, y) (pixels, y down) of a width x height
   /// picture of the current view, within `tolerance` pixels; -1 when none.
   int segmentAt(double x, double y, int width, int height, double tolerance = 6.0) const;
@@ -95,6 +104,10 @@ class SceneView {
 
   /// The VTK renderer, for a window to show (at most one window at a time).
   vtkRenderer* renderer() const;
+  /// Builds what changed since the last render (the ray tree's polydata). Offscreen
+  /// renders and picks call it themselves; a widget showing renderer() calls it before
+  /// each render (a render without it still builds, but after the clipping range is set).
+  void update();
 
   /**
    * \brief Renders the view offscreen into a width x height image.
@@ -104,8 +117,8 @@ class SceneView {
    * GL context through GLX even offscreen; use xvfb-run). Must not be called while the
    * renderer is shown in another window (checked).
    */
-  Image renderOffscreen(int width, int height);
-  /// renderOffscreen, then ImageIO::writePng (throws ImageIO::Error naming the file).
+  SrgbImage renderOffscreen(int width, int height);
+  /// renderOffscreen, then vis::writePng (throws vis::ImageError naming the file).
   void renderToPng(const std::string& path, int width, int height);
 
   /// Where a world point appears in a width x height rendering of the current view, in
@@ -119,4 +132,4 @@ class SceneView {
   int m_highlighted = -1;
 };
 
-}  // namespace raylab
+}  // namespace raylab::vis

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace raylab {
+namespace raylab::vis {
 
 /**
  * \brief The camera of the 3D view (the teacher's eye on the scene), not the scene's own
@@ -59,4 +59,9 @@ ViewCamera defaultViewCamera(const Scene& scene, double aspect = 1.0);
 std::optional<Vec2> projectToImage(const ViewCamera& camera, const Point3& world, int width,
                                    int height);
 
-}  // namespace raylab
+/// A view from just behind and above the scene camera, looking at its look-at point with
+/// a slightly wider field of view: the rays leave the camera towards the viewer's scene
+/// (`raylab trace --view camera`).
+ViewCamera behindCameraView(const Scene& scene, double aspect);
+
+}  // namespace raylab::vis

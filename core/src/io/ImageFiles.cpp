@@ -1,5 +1,7 @@
 #include "raylab/core/Image.h"
+
 #include "raylab/core/AtomicFile.h"
+#include "raylab/core/Check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +9,42 @@
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
+#include <unordered_set>
 
-#include <sys/stat.h>
-#include <unistd.h>
+namespace raylab {
 
-namespace raylab::imageio {
+SrgbImage::SrgbImage(int w, int h) : width(std::max(w, 0)), height(std::max(h, 0)) {
+  rgb.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0);
+}
+
+Rgb8 SrgbImage::at(int x, int y) const {
+  RAYLAB_DCHECK(x >= 0 && x < width && y >= 0 && y < height);
+  const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+  return {rgb[i], rgb[i + 1], rgb[i + 2]};
+}
+
+void SrgbImage::set(int x, int y, const Rgb8& colour) {
+  RAYLAB_DCHECK(x >= 0 && x < width && y >= 0 && y < height);
+  const std::size_t i = (static_cast<std::size_t>(y) * width + x) * 3;
+  rgb[i] = colour[0];
+  rgb[i + 1] = colour[1];
+  rgb[i + 2] = colour[2];
+}
+
+int SrgbImage::distinctColours() const {
+  std::unordered_set<std::uint32_t> colours;
+  for (std::size_t i = 0; i + 2 < rgb.size(); i += 3) {
+    colours.insert((std::uint32_t{rgb[i]} << 16) | (std::uint32_t{rgb[i + 1]} << 8) |
+                   std::uint32_t{rgb[i + 2]});
+  }
+  return static_cast<int>(colours.size());
+}
+
+std::string SrgbImage::toString() const {
+  return "SrgbImage(" + std::to_string(width) + "x" + std::to_string(height) + ")";
+}
+
+namespace imageio {
 
 namespace {
 
@@ -105,20 +138,20 @@ std::uint8_t toSrgb8(double linear) {
   return static_cast<std::uint8_t>(std::lround(255.0 * srgbFromLinear(linear)));
 }
 
-std::vector<std::uint8_t> toSrgb8(const FloatImage& image) {
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(image.pixels.size() * 3);
+SrgbImage toSrgb(const FloatImage& image) {
+  SrgbImage picture(image.width, image.height);
+  std::size_t i = 0;
   for (const glm::vec3& p : image.pixels)
-    for (int c = 0; c < 3; ++c) bytes.push_back(toSrgb8(p[c]));
-  return bytes;
+    for (int c = 0; c < 3; ++c) picture.rgb[i++] = toSrgb8(p[c]);
+  return picture;
 }
 
 void writePpm(const FloatImage& image, const std::string& path) {
   checkSize(image, path);
-  const std::vector<std::uint8_t> rgb = toSrgb8(image);
+  const SrgbImage picture = toSrgb(image);
   std::string bytes =
       "P6\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n255\n";
-  bytes.append(reinterpret_cast<const char*>(rgb.data()), rgb.size());
+  bytes.append(reinterpret_cast<const char*>(picture.rgb.data()), picture.rgb.size());
   writeAtomically(path, bytes);
 }
 
@@ -137,4 +170,5 @@ double rmse(const FloatImage& a, const FloatImage& b) {
   return std::sqrt(sum / (3.0 * double(a.pixels.size())));
 }
 
-}  // namespace raylab::imageio
+}  // namespace imageio
+}  // namespace raylab

@@ -1,0 +1,62 @@
+#include "raylab/core/PixelTrace.h"
+
+#include <algorithm>
+#include <array>
+#include <iomanip>
+#include <sstream>
+
+namespace raylab {
+
+int PixelTrace::depth() const {
+  int deepest = 0;
+  for (const RaySegment& s : tree.segments) deepest = std::max(deepest, s.depth);
+  return deepest;
+}
+
+std::string PixelTrace::summary() const {
+  std::array<int, kRayKindCount> byKind{};
+  for (const RaySegment& s : tree.segments) ++byKind[std::size_t(s.kind)];
+  std::ostringstream out;
+  out << tree.segments.size() << (tree.segments.size() == 1 ? " ray (" : " rays (");
+  bool first = true;
+  for (int k = 0; k < kRayKindCount; ++k) {
+    if (byKind[std::size_t(k)] == 0) continue;
+    out << (first ? "" : ", ") << toString(RayKind(k)) << " " << byKind[std::size_t(k)];
+    first = false;
+  }
+  const Vec3 e = tree.estimate();
+  out << "), depth " << depth() << ", estimate (" << std::setprecision(6) << e.x << ", " << e.y
+      << ", " << e.z << ")";
+  return out.str();
+}
+
+PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, std::size_t memoryBudget) {
+  PixelTrace trace;
+  trace.algorithm = tracer.settings().algorithm;
+  trace.x = x;
+  trace.y = y;
+  trace.sample = sample;
+
+  // Run the real algorithm ray by ray, keeping what each step did.
+  Stepper stepper(tracer, x, y, sample, memoryBudget);
+  while (stepper.step()) {
+    const StepEvent& event = stepper.lastEvent();
+    if (event.ray < 0) continue;
+    if (std::size_t(event.ray) >= trace.stepTexts.size())
+      trace.stepTexts.resize(std::size_t(event.ray) + 1);
+    trace.stepTexts[std::size_t(event.ray)] = event.text;
+  }
+  trace.tree = stepper.tree();
+  trace.stepTexts.resize(trace.tree.segments.size());
+  trace.counts = stepper.counts();
+  trace.estimate = stepper.estimate();
+  return trace;
+}
+
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y, int sample,
+                      std::size_t memoryBudget) {
+  const Tracer tracer(scene, settings);
+  return tracePixel(tracer, x, y, sample, memoryBudget);
+}
+
+}  // namespace raylab

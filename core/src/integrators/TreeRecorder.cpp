@@ -1,0 +1,113 @@
+#include "integrators/TreeRecorder.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace raylab {
+
+TreeRecorder::TreeRecorder(const Tracer& tracer, RayTree& tree, StepEvent& event,
+                           std::size_t budget)
+    : m_tracer(tracer), m_tree(tree), m_event(event), m_budget(budget) {}
+
+int TreeRecorder::reserve(std::size_t count) {
+  if (m_tree.truncated) return -1;
+  const std::size_t needed = m_tree.segments.size() + count;
+  const std::size_t limit = m_budget / sizeof(RaySegment);
+  if (needed > limit) {
+    m_tree.truncated = true;
+    std::ostringstream out;
+    out << "ray tree truncated at " << m_tree.segments.size() << " rays (" << std::setprecision(3)
+        << double(m_budget) / double(1 << 20) << " MiB budget); the estimate is still exact";
+    m_tree.message = out.str();
+    return -1;
+  }
+  if (needed > m_tree.segments.capacity())
+    m_tree.segments.reserve(std::min(limit, std::max(needed, 2 * m_tree.segments.capacity())));
+  const int first = int(m_tree.segments.size());
+  m_tree.segments.resize(needed);
+  return first;
+}
+
+void TreeRecorder::startSegment(const QueuedRay& ray) {
+  RaySegment& seg = m_tree.segments[std::size_t(ray.id)];
+  seg = RaySegment{};
+  seg.id = ray.id;
+  seg.parent = ray.parent;
+  seg.kind = ray.kind;
+  seg.depth = ray.depth;
+  seg.origin = ray.ray.origin;
+  seg.direction = ray.ray.direction;
+  seg.time = ray.ray.time;
+  seg.weight = ray.weight;
+  seg.pdf = ray.pdf;
+  seg.throughput = ray.throughput;
+}
+
+void TreeRecorder::recordCamera(QueuedRay& camera) {
+  camera.id = reserve(1);
+  if (camera.id >= 0) startSegment(camera);
+  m_event = StepEvent{};
+  m_event.text = "camera ray through pixel (" + std::to_string(m_tree.pixelX) + ", " +
+                 std::to_string(m_tree.pixelY) + "), sample " + std::to_string(m_tree.sample) +
+                 ", " + words(EndReason::Pending).clause;
+}
+
+void TreeRecorder::setFarEnd(RaySegment& seg, const QueuedRay& ray, EndReason end) const {
+  if (ray.kind != RayKind::Shadow) {
+    // Escaped: drawn out to the size of the scene.
+    seg.endPoint = ray.ray.origin + m_tracer.escapeLength() * ray.ray.direction;
+    return;
+  }
+  seg.endPoint = ray.ray.at(ray.ray.tMax);
+  seg.lightPoint = seg.endPoint;
+  if (end != EndReason::Occluded) return;
+  // Find the blocker, for drawing only.
+  if (const std::optional<SceneHit> blocker = m_tracer.intersector().intersect(ray.ray)) {
+    seg.hit = true;
+    seg.endPoint = blocker->si.p;
+    seg.object = blocker->object;
+    seg.normal = blocker->si.n;
+  }
+}
+
+void TreeRecorder::recordStep(const QueuedRay& ray, const std::optional<SceneHit>& hit,
+                              EndReason end, const Vec3& emitted,
+                              std::vector<QueuedRay>& children) {
+  // Number the children: consecutive ids after everything recorded so far.
+  const int firstId = ray.id >= 0 && !children.empty() ? reserve(children.size()) : -1;
+  for (std::size_t i = 0; i < children.size(); ++i) {
+    children[i].id = firstId >= 0 ? firstId + int(i) : -1;
+    if (firstId >= 0) startSegment(children[i]);
+  }
+
+  m_event.ray = ray.id;
+  m_event.end = end;
+  m_event.spawned = int(children.size());
+  std::string subject = std::string(toString(ray.kind)) + " ray #" + std::to_string(ray.id) + " ";
+  if (ray.id < 0) {
+    // Past the memory budget: the step still happens, but nothing is kept.
+    m_event.text = subject + words(end).clause;
+    return;
+  }
+
+  // How the ray ended, and what it found there.
+  RaySegment& seg = m_tree.segments[std::size_t(ray.id)];
+  seg.emitted = emitted;
+  seg.endReason = end;
+  if (firstId >= 0) {
+    seg.firstChild = firstId;
+    seg.childCount = int(children.size());
+  }
+  if (hit) {
+    seg.hit = true;
+    seg.endPoint = hit->si.p;
+    seg.object = hit->object;
+    seg.normal = hit->si.n;
+  } else {
+    setFarEnd(seg, ray, end);
+  }
+  m_event.text = subject + describeEnd(seg, m_tracer.objectNames());
+}
+
+}  // namespace raylab
