@@ -4,12 +4,14 @@
 #include "raylab/core/Tracer.h"
 
 #include "TransportScenes.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/SpawnRule.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <thread>
 
 namespace raylab {
@@ -47,19 +49,42 @@ TEST(Tracer, 01_RayCountsAddAndTotal) {
   EXPECT_EQ(RayCounts{}.total(), 0u);
 }
 
-TEST(Tracer, 02_KindAndEndReasonNames) {
-  EXPECT_STREQ(toString(RayKind::Camera), "camera");
-  EXPECT_STREQ(toString(RayKind::Reflection), "reflection");
-  EXPECT_STREQ(toString(RayKind::Refraction), "refraction");
-  EXPECT_STREQ(toString(RayKind::Diffuse), "diffuse");
-  EXPECT_STREQ(toString(RayKind::Glossy), "glossy");
-  EXPECT_STREQ(toString(RayKind::Shadow), "shadow");
-  EXPECT_STREQ(toString(EndReason::Escaped), "escaped");
-  EXPECT_STREQ(toString(EndReason::RussianRoulette), "Russian roulette");
-  EXPECT_STREQ(toString(EndReason::ReachedLight), "reached its light");
+// One vocabulary for how a ray ended: every reason has its own JSON name, label and
+// clause, the JSON name reads back as the same reason, and describeEnd names the object
+// hit and the children spawned.
+TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
+  std::set<std::string> jsonNames, labels, clauses;
+  for (int r = 0; r <= int(EndReason::Spawned); ++r) {
+    const EndReasonWords& w = words(EndReason(r));
+    EXPECT_EQ(w.reason, EndReason(r));
+    EXPECT_EQ(endReasonFromJson(w.json), EndReason(r)) << w.json;
+    EXPECT_STREQ(toString(EndReason(r)), w.label);
+    jsonNames.insert(w.json);
+    labels.insert(w.label);
+    clauses.insert(w.clause);
+  }
+  EXPECT_EQ(jsonNames.size(), std::size_t(EndReason::Spawned) + 1);
+  EXPECT_EQ(labels.size(), jsonNames.size());
+  EXPECT_EQ(clauses.size(), jsonNames.size());
+  EXPECT_FALSE(endReasonFromJson("hit a light"));  // a label is not a JSON name
+
+  const std::vector<std::string> names = {"floor", "lamp"};
+  RaySegment s;
+  s.object = 0;
+  s.hit = true;
+  s.endReason = EndReason::Spawned;
+  s.firstChild = 4;
+  s.childCount = 2;
+  EXPECT_EQ(describeEnd(s, names), "hit 'floor' and spawned 2 rays (#4..#5)");
+  s.object = 1;
+  s.endReason = EndReason::HitLight;
+  EXPECT_EQ(describeEnd(s, names), "hit the light 'lamp': the path ends there");
+  s.endReason = EndReason::Occluded;
+  EXPECT_EQ(describeEnd(s, names), "was blocked by 'lamp' before reaching its light");
+  s.object = -1;
+  s.endReason = EndReason::Escaped;
+  EXPECT_EQ(describeEnd(s, names), words(EndReason::Escaped).clause);
   EXPECT_EQ(SpawnRule::create(settingsFor(Algorithm::Whitted, 1))->kind(), Algorithm::Whitted);
-  EXPECT_EQ(SpawnRule::create(settingsFor(Algorithm::PathTracing, 1))->kind(),
-            Algorithm::PathTracing);
 }
 
 // The recorded tree's estimate (propagated bottom-up) equals Tracer::trace for the same
@@ -354,6 +379,64 @@ TEST(Tracer, 09_TraceIsDeterministic) {
     if (otherSeed.trace(i % 16, i / 16 + 4, i % 4) != first[std::size_t(i)]) ++differs;
   }
   EXPECT_GT(differs, 24);
+}
+
+// One traced pixel (tracePixel), as the window, `trace`, `animate` and `compare` use it:
+// its estimate is the image renderer's value bit for bit, every recorded ray has its step
+// text (the engine's narration), and the summary counts the rays of the tree.
+TEST(Tracer, 10_PixelTraceIsTheRenderersSampleWithItsNarration) {
+  const Scene scene = allMaterialsScene();
+  for (Algorithm algorithm : kAlgorithms) {
+    RenderSettings settings = settingsFor(algorithm, 4, 3);
+    settings.shadowSamples = 2;
+    settings.glossySamples = 2;
+    const Tracer tracer(scene, settings);
+    const PixelTrace trace = tracePixel(scene, settings, 8, 6, 1);
+    EXPECT_EQ(trace.estimate, tracer.trace(8, 6, 1)) << toString(algorithm);
+    EXPECT_EQ(trace.algorithm, algorithm);
+    ASSERT_EQ(trace.stepTexts.size(), trace.tree.segments.size());
+    for (std::size_t i = 0; i < trace.stepTexts.size(); ++i) {
+      const RaySegment& seg = trace.tree.segments[i];
+      const std::string subject =
+          std::string(toString(seg.kind)) + " ray #" + std::to_string(seg.id) + " ";
+      EXPECT_EQ(trace.stepTexts[i].rfind(subject, 0), 0u) << trace.stepTexts[i];
+      EXPECT_NE(trace.stepTexts[i].find(describeEnd(seg, tracer.objectNames())), std::string::npos)
+          << trace.stepTexts[i];
+    }
+    EXPECT_EQ(trace.counts.total(), trace.tree.segments.size());
+    const std::string summary = trace.summary();
+    EXPECT_EQ(summary.rfind(std::to_string(trace.tree.segments.size()) + " ray", 0), 0u) << summary;
+    EXPECT_NE(summary.find("depth " + std::to_string(trace.depth())), std::string::npos);
+  }
+}
+
+// Each rule says whether its camera rays sample the lens and the shutter: through a thin
+// lens, ray casting and Whitted always leave from the lens centre at time 0; distributed
+// and path tracing spread over the lens and the shutter.
+TEST(Tracer, 11_EachRuleSaysWhetherItSamplesLensAndShutter) {
+  Scene scene = allMaterialsScene();
+  scene.camera.aperture = 0.2;
+  scene.camera.focusDistance = 4.0;
+  for (Algorithm algorithm : kAlgorithms) {
+    const RenderSettings settings = settingsFor(algorithm, 8, 5);
+    const Tracer tracer(scene, settings);
+    const bool sampled = SpawnRule::create(settings)->samplesLensAndShutter();
+    EXPECT_EQ(sampled, algorithm == Algorithm::Distributed || algorithm == Algorithm::PathTracing);
+    double spread = 0.0, latest = 0.0;
+    for (int sample = 0; sample < 8; ++sample) {
+      Stepper stepper(tracer, 5, 5, sample);
+      const RaySegment& camera = stepper.tree().segments.at(0);
+      spread = std::max(spread, glm::length(camera.origin - scene.camera.position));
+      latest = std::max(latest, camera.time);
+    }
+    if (sampled) {
+      EXPECT_GT(spread, 1e-3) << toString(algorithm);
+      EXPECT_GT(latest, 0.0) << toString(algorithm);
+    } else {
+      EXPECT_EQ(spread, 0.0) << toString(algorithm);
+      EXPECT_EQ(latest, 0.0) << toString(algorithm);
+    }
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
 #include "raylab/core/Scene.h"
@@ -33,15 +34,18 @@ inline Scene materialsScene() {
   return SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/materials.json");
 }
 
-/// The recorded tree of sample 0 of pixel (x, y) under `algorithm`, seed 1.
-inline RayTree traceTree(const Scene& scene, Algorithm algorithm, int x, int y, int sample = 0) {
+/// Sample `sample` of pixel (x, y) under `algorithm`, seed 1, traced as the window does.
+inline PixelTrace tracePixelOf(const Scene& scene, Algorithm algorithm, int x, int y,
+                               int sample = 0) {
   RenderSettings settings = scene.render;
   settings.algorithm = algorithm;
   settings.seed = 1;
-  const Tracer tracer(scene, settings);
-  Stepper stepper(tracer, x, y, sample);
-  stepper.runToEnd();
-  return stepper.tree();
+  return tracePixel(scene, settings, x, y, sample);
+}
+
+/// The recorded tree of sample 0 of pixel (x, y) under `algorithm`, seed 1.
+inline RayTree traceTree(const Scene& scene, Algorithm algorithm, int x, int y, int sample = 0) {
+  return tracePixelOf(scene, algorithm, x, y, sample).tree;
 }
 
 inline RayTree traceGlassPixel(const Scene& scene, Algorithm algorithm) {

@@ -74,5 +74,64 @@ TEST(BounceAnimation, 02_AFrameDoesNotDependOnTheFramesBefore) {
   EXPECT_NE(renderFrame(*fresh, tree, 12).rgb, direct.rgb);
 }
 
+// The caption of a frame tells what the engine did in that step: nothing at frame 0, the
+// engine's own sentence for the ray leaving (processing order), the rays of the depth by
+// kind (depth order), and the whole tree at the last frame.
+TEST(BounceAnimation, 03_CaptionsTellWhatEachStepDoes) {
+  const PixelTrace trace = testing::tracePixelOf(materialsScene(), Algorithm::Whitted,
+                                                 testing::kGlassPixelX, testing::kGlassPixelY);
+  AnimationSettings processing;
+  processing.order = RevealOrder::Processing;
+  processing.framesPerStep = 4;
+  const int last = frameCount(trace.tree, processing) - 1;
+  EXPECT_NE(stepCaption(trace, processing, 0).find("nothing revealed"), std::string::npos);
+  EXPECT_EQ(stepCaption(trace, processing, 1),
+            "Step 1 of " + std::to_string(last / 4) + ": " + trace.stepTexts[0] + ".");
+  EXPECT_EQ(stepCaption(trace, processing, 4 + 2).find("Step 2 of"), 0u);
+  EXPECT_NE(stepCaption(trace, processing, 4 + 2).find(trace.stepTexts[1]), std::string::npos);
+  const std::string end = stepCaption(trace, processing, last);
+  EXPECT_EQ(end.substr(end.size() - 24), "The whole tree is shown.");
+
+  // Depth 1 of the Whitted glass tree: its rays counted by kind, as in the tree.
+  const AnimationSettings depth = settings();
+  int reflection = 0, refraction = 0, shadow = 0, count = 0;
+  for (const RaySegment& s : trace.tree.segments) {
+    if (s.depth != 1) continue;
+    ++count;
+    reflection += s.kind == RayKind::Reflection;
+    refraction += s.kind == RayKind::Refraction;
+    shadow += s.kind == RayKind::Shadow;
+  }
+  const std::string caption = stepCaption(trace, depth, 4 + 1);
+  EXPECT_EQ(caption.find("Depth 1 of 8: " + std::to_string(count)), 0u) << caption;
+  EXPECT_NE(caption.find(std::to_string(refraction) + " refraction"), std::string::npos) << caption;
+  if (reflection > 0) {
+    EXPECT_NE(caption.find(std::to_string(reflection) + " reflection"), std::string::npos);
+  }
+  if (shadow > 0) {
+    EXPECT_NE(caption.find(std::to_string(shadow) + " shadow"), std::string::npos);
+  }
+}
+
+// Any number of changes to the tree, its style, its reveal and the selection cost one
+// build of its polydata, at the next render; a render without changes builds nothing.
+TEST(BounceAnimation, 04_ManyChangesOneBuildAtTheNextRender) {
+  const RayTree tree = traceGlassPixel(materialsScene(), Algorithm::Whitted);
+  auto view = makeView(tree);
+  view->renderOffscreen(kWidth, kHeight);
+  const int before = view->rayTreeBuildCount();
+  RayTreeStyle style = view->rayTreeStyle();
+  view->setRayTree(tree, style);
+  style.colouring = RayColouring::Kind;
+  view->setRayTreeStyle(style);
+  view->setReveal(revealFrame(tree, settings(), 9));
+  view->setSelectedSegment(1);
+  EXPECT_EQ(view->rayTreeBuildCount(), before);  // nothing built yet
+  view->renderOffscreen(kWidth, kHeight);
+  EXPECT_EQ(view->rayTreeBuildCount(), before + 1);
+  view->renderOffscreen(kWidth, kHeight);
+  EXPECT_EQ(view->rayTreeBuildCount(), before + 1);
+}
+
 }  // namespace
 }  // namespace raylab::vis

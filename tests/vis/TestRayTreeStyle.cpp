@@ -358,5 +358,23 @@ TEST(RayTreeGeometry, 09_RevealedFractionsAndGlyphs) {
   }
 }
 
+// The command line and the window read colourings and kind lists with the same parser.
+TEST(RayTreeStyle, 10_ColouringAndKindListsParseOneWay) {
+  EXPECT_EQ(parseColouring("energy"), RayColouring::Energy);
+  EXPECT_EQ(parseColouring("kind"), RayColouring::Kind);
+  EXPECT_EQ(parseColouring("depth"), RayColouring::Depth);
+  EXPECT_FALSE(parseColouring("Energy"));
+  const ParsedKinds all = parseRayKinds("");
+  EXPECT_TRUE(all.error.empty());
+  for (bool k : all.kinds) EXPECT_TRUE(k);
+  const ParsedKinds two = parseRayKinds("camera,,shadow");
+  EXPECT_TRUE(two.error.empty());
+  for (int k = 0; k < kRayKindCount; ++k)
+    EXPECT_EQ(two.kinds[std::size_t(k)],
+              RayKind(k) == RayKind::Camera || RayKind(k) == RayKind::Shadow);
+  EXPECT_EQ(parseRayKinds("camera,photon").error,
+            "unknown ray kind 'photon' (expected " + rayKindNames() + ")");
+}
+
 }  // namespace
 }  // namespace raylab::vis
