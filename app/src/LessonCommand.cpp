@@ -4,10 +4,12 @@
 
 #include "raylab/core/Lesson.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace raylab::app {
 
@@ -46,23 +48,27 @@ int runList(const LessonOptions& o) {
   const Language language = *parseLanguage(o.lang);
   const bool zh = language == Language::Chinese;
   int failed = 0;
-  int listed = 0;
+  std::vector<Lesson> lessons;
   for (const std::string& path : LessonIO::list(o.dir)) {
     try {
-      const Lesson lesson = LessonIO::load(path);
-      const int steps = static_cast<int>(lesson.steps.size());
-      std::cout << lesson.id << "  " << lesson.title.in(language) << "  "
-                << (zh ? std::to_string(steps) + " 步"
-                       : std::to_string(steps) + (steps == 1 ? " step" : " steps"))
-                << "\n";
-      ++listed;
+      lessons.push_back(LessonIO::load(path));
     } catch (const LessonIO::LoadError& e) {
       // List the others; the broken one is reported and makes the exit code 1.
       std::cerr << "raylab: error: " << e.what() << "\n";
       ++failed;
     }
   }
-  if (listed == 0 && failed == 0)
+  std::size_t idWidth = 0;
+  for (const Lesson& lesson : lessons) idWidth = std::max(idWidth, lesson.id.size());
+  for (const Lesson& lesson : lessons) {
+    const int steps = static_cast<int>(lesson.steps.size());
+    std::cout << lesson.id << std::string(idWidth - lesson.id.size() + 2, ' ')
+              << lesson.title.in(language) << "  ("
+              << (zh ? std::to_string(steps) + " 步"
+                     : std::to_string(steps) + (steps == 1 ? " step" : " steps"))
+              << ")\n";
+  }
+  if (lessons.empty() && failed == 0)
     std::cerr << "raylab: no lesson files (NN-topic.json) in " << o.dir << "\n";
   std::cout.flush();
   return failed ? kExitRuntimeError : kExitOk;

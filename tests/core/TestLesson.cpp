@@ -276,6 +276,14 @@ TEST(Lesson, 03_ErrorsNameTheFileTheStepAndThePlace) {
        },
        "at /steps/0/samples/sampler: unknown sampler \"gaussian\" (expected cosine, uniform, "
        "sphere or phong)"},
+      {"measure outside compare and plot", [](json& l) { l["steps"][0]["measure"] = "time"; },
+       "at /steps/0/measure: \"measure\" belongs to the compare and plot views"},
+      {"unknown measure",
+       [](json& l) {
+         l["steps"][0]["view"] = "compare";
+         l["steps"][0]["measure"] = "money";
+       },
+       "at /steps/0/measure: unknown measure \"money\" (expected samples or time)"},
       {"inspector without a pixel",
        [](json& l) {
          l.erase("defaults");

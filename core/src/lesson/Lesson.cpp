@@ -34,6 +34,8 @@ const Named<LessonColouring> kColourings[] = {{"energy", LessonColouring::Energy
                                               {"depth", LessonColouring::Depth}};
 const Named<LessonCameraView> kCameraViews[] = {{"default", LessonCameraView::Default},
                                                 {"camera", LessonCameraView::Camera}};
+const Named<LessonMeasure> kMeasures[] = {{"samples", LessonMeasure::Samples},
+                                          {"time", LessonMeasure::Time}};
 const Named<LessonSamples::Sampler> kSamplers[] = {{"cosine", LessonSamples::Sampler::Cosine},
                                                    {"uniform", LessonSamples::Sampler::Uniform},
                                                    {"sphere", LessonSamples::Sampler::Sphere},
@@ -574,8 +576,8 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
   onlyKeys(j, path,
            {"title", "text", "view", "algorithm", "pixel", "sample", "reveal", "colour", "filters",
-            "camera_view", "select_ray", "samples", "scene_changes", "question", "teacher_notes",
-            "requires"});
+            "camera_view", "select_ray", "samples", "measure", "scene_changes", "question",
+            "teacher_notes", "requires"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
@@ -632,6 +634,15 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   } else if (j.contains("samples")) {
     fail(path + "/samples", "\"samples\" belongs to the samples view (this step's view is \"" +
                                 std::string(toString(s.view)) + "\")");
+  }
+
+  if (j.contains("measure")) {
+    if (s.view != LessonView::Compare && s.view != LessonView::Plot)
+      fail(path + "/measure",
+           "\"measure\" belongs to the compare and plot views (this step's "
+           "view is \"" +
+               std::string(toString(s.view)) + "\")");
+    s.measure = named(j["measure"], path + "/measure", kMeasures, "measure");
   }
 
   // A ray to select, or a tree to reveal, needs the pixel whose tree it is.
@@ -729,6 +740,7 @@ const char* toString(LessonView view) { return nameOf(kViews, view); }
 std::optional<LessonView> parseLessonView(const std::string& name) { return lookup(kViews, name); }
 const char* toString(LessonColouring colouring) { return nameOf(kColourings, colouring); }
 const char* toString(LessonCameraView view) { return nameOf(kCameraViews, view); }
+const char* toString(LessonMeasure measure) { return nameOf(kMeasures, measure); }
 const char* toString(LessonSamples::Sampler sampler) { return nameOf(kSamplers, sampler); }
 const char* toString(LessonCheck::Quantity quantity) { return nameOf(kQuantities, quantity); }
 

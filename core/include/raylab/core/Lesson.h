@@ -60,6 +60,14 @@ enum class LessonCameraView {
 };
 const char* toString(LessonCameraView view);
 
+/// What the comparison and the convergence plot hold equal (as `raylab compare --spp` /
+/// `--time` and `raylab plot --x`).
+enum class LessonMeasure {
+  Samples,  ///< "samples": equal samples per pixel; the plot's x axis is samples.
+  Time,     ///< "time": equal rendering time; the plot's x axis is seconds.
+};
+const char* toString(LessonMeasure measure);
+
 /// How much of the ray tree a step reveals: all of it, up to an animation frame, or up
 /// to a depth (every ray of depth <= value).
 struct LessonReveal {
@@ -143,8 +151,9 @@ struct LessonStep {
   LessonColouring colouring = LessonColouring::Energy;
   LessonFilters filters;
   LessonCameraView cameraView = LessonCameraView::Default;
-  std::optional<int> selectRay;          ///< Segment id to select (inspector: default 0).
-  std::optional<LessonSamples> samples;  ///< The "samples" view's sampler.
+  std::optional<int> selectRay;                    ///< Segment id to select (inspector: default 0).
+  std::optional<LessonSamples> samples;            ///< The "samples" view's sampler.
+  LessonMeasure measure = LessonMeasure::Samples;  ///< Compare and plot views only.
   /// The step's scene changes as written (compact JSON, one per change), for captions.
   std::vector<std::string> sceneChanges;
   std::optional<LessonQuestion> question;
@@ -197,7 +206,7 @@ struct Lesson {
  *          "reveal": {"depth": 2}, "colour": "kind",
  *          "filters": {"kinds": ["camera", "refraction"], "max_depth": 3,
  *                      "reaching_light": false, "min_energy": 0},
- *          "camera_view": "default", "select_ray": 1,
+ *          "camera_view": "default", "select_ray": 1, "measure": "samples",
  *          "scene_changes": [{"material": "glass", "set": {"ior": 1.0}}],
  *          "question": {"type": "number",
  *                       "prompt": {"en": "How many rays ...?", "zh": "..."},
@@ -222,7 +231,9 @@ struct Lesson {
  *   camera, reflection, refraction, diffuse, glossy, shadow; max_depth; reaching_light;
  *   min_energy); camera_view: default | camera; select_ray: a segment id of the pixel's
  *   tree (checked by tracing it); samples (view "samples" only): {"sampler": cosine |
- *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; teacher_notes {en, zh};
+ *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; measure (views compare
+ *   and plot only): samples | time, what the comparison holds equal and the plot's x axis
+ *   (default samples); teacher_notes {en, zh};
  *   requires: a feature name or a list of them (the step needs something RayLab does not
  *   have yet; the loader accepts it and Lesson::requiredFeatures lists it).
  * - scene_changes: edits for this step only, applied in order to a copy of the scene
