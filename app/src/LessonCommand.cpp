@@ -80,7 +80,8 @@ int runCheck(const LessonOptions& o) {
   const Lesson lesson = LessonIO::load(path);
   const int steps = static_cast<int>(lesson.steps.size());
   std::cout << path << ": OK (" << steps << (steps == 1 ? " step, " : " steps, ")
-            << lesson.questionCount() << " questions" << needsNote(lesson) << ")" << std::endl;
+            << lesson.questionCount() << (lesson.questionCount() == 1 ? " question" : " questions")
+            << needsNote(lesson) << ")" << std::endl;
   return kExitOk;
 }
 
