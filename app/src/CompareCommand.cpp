@@ -7,6 +7,7 @@
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/PixelTrace.h"
+#include "raylab/vis/ComparisonCaptions.h"
 #include "raylab/vis/ComparisonView.h"
 
 #include <cstdio>
@@ -165,11 +166,8 @@ ComparisonResult runComparison(const Scene& scene, const RenderSettings& setting
 
 void printFigures(const ComparisonResult& result, std::ostream& out) {
   out << (result.sceneName.empty() ? std::string("scene") : result.sceneName) << ", "
-      << result.width << "x" << result.height << ", seed " << result.settings.seed << ", ";
-  if (result.compare.equalTime())
-    out << "equal time " << vis::formatSeconds(result.compare.secondsPerAlgorithm) << " each\n";
-  else
-    out << "equal samples " << result.compare.samplesPerPixel << " spp each\n";
+      << result.width << "x" << result.height << ", seed " << result.settings.seed << ", "
+      << vis::budgetPhrase(result) << "\n";
   out << "reference: path tracing, ";
   if (!result.reference.file.empty())
     out << result.reference.file << "\n";

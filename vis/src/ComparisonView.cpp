@@ -1,5 +1,9 @@
 #include "raylab/vis/ComparisonView.h"
 
+#include "raylab/vis/ComparisonCaptions.h"
+
+#include "ComparisonLayout.h"
+
 #include "VtkImage.h"
 
 #include "raylab/core/Check.h"
@@ -45,13 +49,6 @@ constexpr double kTextColour[3] = {0.93, 0.93, 0.93};
 /// Colour of the mark around the traced pixel.
 constexpr double kPixelMark[3] = {1.0, 0.9, 0.0};
 
-/// A number with `digits` significant digits ("0.0234", "1.23").
-std::string significant(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*g", digits, value);
-  return text;
-}
-
 double channel(std::uint8_t value) { return value / 255.0; }
 
 /// Black or white, whichever reads better on `background` (Rec. 709 luminance of sRGB).
@@ -84,29 +81,6 @@ void styleText(vtkTextProperty* p, int size, const double colour[3], bool bold) 
   p->SetVerticalJustificationToTop();
   p->SetLineSpacing(1.15);
   p->ShadowOff();
-}
-
-/// The lines of a panel's figures, below its title.
-std::vector<std::string> figureLines(const ComparisonResult& result,
-                                     const AlgorithmFigures& figures, bool showTimes) {
-  std::vector<std::string> lines;
-  const RenderStats& stats = figures.stats;
-  std::string samples = std::to_string(stats.samplesPerPixel) + " spp";
-  if (result.compare.equalTime()) samples += " reached";
-  if (showTimes)
-    samples += (result.compare.equalTime() ? " in " : " in ") + formatSeconds(stats.seconds);
-  lines.push_back(samples);
-  lines.push_back("error " + significant(figures.rmse, 3) + " vs path ref");
-  std::string rays = "rays " + formatCount(stats.rays.total());
-  if (showTimes && stats.seconds > 0.0)
-    rays += " (" + formatCount(std::uint64_t(double(stats.rays.total()) / stats.seconds)) + "/s)";
-  lines.push_back(rays);
-  for (int k = 0; k < kRayKindCount; ++k) {
-    if (stats.rays.byKind[k] == 0) continue;
-    lines.push_back(std::string("   ") + toString(static_cast<RayKind>(k)) + " " +
-                    formatCount(stats.rays.byKind[k]));
-  }
-  return lines;
 }
 
 std::string joinLines(const std::vector<std::string>& lines) {
@@ -158,19 +132,6 @@ std::string ComparisonViewOptions::toString() const {
          ", showHeader=" + (showHeader ? "on" : "off") + "]";
 }
 
-std::string formatSeconds(double seconds) {
-  if (seconds < 1.0) return significant(seconds * 1000.0, 3) + " ms";
-  return significant(seconds, 3) + " s";
-}
-
-std::string formatCount(std::uint64_t count) {
-  if (count < 10000) return std::to_string(count);
-  const double value = double(count);
-  if (value < 1e6) return significant(value / 1e3, 3) + " k";
-  if (value < 1e9) return significant(value / 1e6, 3) + " M";
-  return significant(value / 1e9, 3) + " G";
-}
-
 /// One algorithm's panel: its renderers and actors.
 struct Panel {
   vtkNew<vtkRenderer> background;  ///< The whole panel; holds the figures text.
@@ -203,7 +164,10 @@ struct ComparisonView::Impl {
   }
 
   void build();
-  std::string headerLine() const;
+  /// The header band's text, empty when it is hidden.
+  std::string headerCaption() const {
+    return options.showHeader ? headerLine(result) : std::string();
+  }
   void layoutPanel(Panel& panel, const PixelRect& rect, int width, int height) const;
   /// Takes every renderer out of the offscreen window (before renderers change).
   void detach();
@@ -211,23 +175,6 @@ struct ComparisonView::Impl {
   const Panel& laidOut(int panel, int width, int height);
   ComparisonView* owner = nullptr;
 };
-
-std::string ComparisonView::Impl::headerLine() const {
-  if (!options.showHeader) return {};
-  std::ostringstream out;
-  out << (result.sceneName.empty() ? std::string("scene") : result.sceneName) << "  "
-      << result.width << "x" << result.height << "  |  ";
-  if (result.compare.equalTime())
-    out << "equal time: " << formatSeconds(result.compare.secondsPerAlgorithm) << " each";
-  else
-    out << "equal samples: " << result.compare.samplesPerPixel << " spp each";
-  out << "  |  error: RMSE of the picture against path tracing ";
-  if (!result.reference.file.empty())
-    out << "(" << result.reference.file << ")";
-  else
-    out << "at " << result.reference.samplesPerPixel << " spp";
-  return out.str();
-}
 
 void ComparisonView::Impl::detach() {
   if (!offscreen) return;
@@ -238,80 +185,35 @@ void ComparisonView::Impl::detach() {
 
 void ComparisonView::Impl::layoutPanel(Panel& panel, const PixelRect& rect, int width,
                                        int height) const {
-  const bool trees = panel.tree != nullptr;
-  const double imageW = std::max(1, result.width);
-  const double imageH = std::max(1, result.height);
-  panel.panelRect = rect;
-  setViewport(panel.background, rect, width, height);
-
-  // Step 1: sizes that follow the panel: margin, text, title band.
-  const int margin = std::max(4, int(std::lround(std::min(rect.width, rect.height) / 40.0)));
-  int font = std::clamp(int(std::lround(std::min(rect.width / 30.0, rect.height / 17.0))), 8, 40);
-  const int titleFont = int(std::lround(font * 1.25));
-  const int titleBand = int(std::lround(titleFont * 1.7));
-  const PixelRect titleRect{rect.x, rect.y, rect.width, titleBand};
-  setViewport(panel.title, titleRect, width, height);
-  const PixelRect content{rect.x + margin, rect.y + titleBand + margin, rect.width - 2 * margin,
-                          rect.height - titleBand - 2 * margin};
-
-  // Step 2: the largest image (and tree view beside it) that leaves room for the figures,
-  // either to their right or below them; the text shrinks when the image would get small.
-  // The text measured is the largest of all panels', so every panel is laid out alike.
-  const auto scaleFor = [&](int boxW, int boxH) {
-    if (boxW <= 0 || boxH <= 0) return 0.0;
-    const double across = trees ? (boxW - margin) / (2.0 * imageW) : boxW / imageW;
-    return std::max(0.0, std::min(across, boxH / imageH));
-  };
+  // The rectangles, from the panel's size and the figures' measured text.
   vtkTextProperty* figures = panel.figuresText->GetTextProperty();
-  int textW = 0, textH = 0;
-  double scale = 0.0;
-  bool side = true;
-  for (;; --font) {
+  const auto measure = [&](int font) {
     styleText(figures, font, kTextColour, false);
-    textW = textH = 0;
+    std::pair<int, int> largest{0, 0};
     for (const auto& other : panels) {
       const char* text = other->figuresText->GetInput();
       const auto [w, h] = textSize(figures, text ? text : "");
-      textW = std::max(textW, w);
-      textH = std::max(textH, h);
+      largest = {std::max(largest.first, w), std::max(largest.second, h)};
     }
-    const double sideScale = scaleFor(content.width - textW - margin, content.height);
-    const double belowScale = scaleFor(content.width, content.height - textH - margin);
-    side = sideScale >= belowScale;
-    scale = std::max(sideScale, belowScale);
-    if (font <= 8 || scale * imageH >= 0.5 * content.height) break;
-  }
+    return largest;
+  };
+  const bool trees = panel.tree != nullptr;
+  const PanelLayout laid = layoutComparisonPanel(rect, result.width, result.height, trees, measure);
 
-  // Step 3: place the block (image, tree, figures) centred in the content area.
-  const int w = std::max(1, int(std::floor(scale * imageW)));
-  const int h = std::max(1, int(std::floor(scale * imageH)));
-  const int visualW = trees ? 2 * w + margin : w;
-  int textX = 0, textY = 0;
-  if (side) {
-    const int blockW = visualW + margin + textW;
-    const int x0 = content.x + std::max(0, (content.width - blockW) / 2);
-    const int y0 = content.y + std::max(0, (content.height - std::max(h, textH)) / 2);
-    panel.imageRect = {x0, y0, w, h};
-    textX = x0 + visualW + margin;
-    textY = y0;
-  } else {
-    const int blockH = h + margin + textH;
-    const int x0 = content.x + std::max(0, (content.width - visualW) / 2);
-    const int y0 = content.y + std::max(0, (content.height - blockH) / 2);
-    panel.imageRect = {x0, y0, w, h};
-    textX = x0;
-    textY = y0 + h + margin;
-  }
-  panel.treeRect = {panel.imageRect.x + w + margin, panel.imageRect.y, w, h};
+  // Viewports and text, in VTK's coordinates.
+  panel.panelRect = rect;
+  panel.imageRect = laid.imageRect;
+  panel.treeRect = laid.treeRect;
+  setViewport(panel.background, rect, width, height);
+  setViewport(panel.title, laid.titleRect, width, height);
   setViewport(panel.image, panel.imageRect, width, height);
   if (trees) setViewport(panel.tree->renderer(), panel.treeRect, width, height);
-
-  // Step 4: the text, in the coordinates of its renderer's viewport (pixels, y up).
-  panel.figuresText->SetPosition(textX - rect.x, rect.height - (textY - rect.y));
+  styleText(figures, laid.figuresFont, kTextColour, false);
+  panel.figuresText->SetPosition(laid.textX - rect.x, rect.height - (laid.textY - rect.y));
   vtkTextProperty* title = panel.titleText->GetTextProperty();
-  styleText(title, titleFont, panel.titleColour, true);
+  styleText(title, laid.titleFont, panel.titleColour, true);
   title->SetVerticalJustificationToCentered();
-  panel.titleText->SetPosition(margin, titleBand / 2.0);
+  panel.titleText->SetPosition(laid.margin, laid.titleRect.height / 2.0);
 }
 
 void ComparisonView::Impl::build() {
@@ -319,7 +221,7 @@ void ComparisonView::Impl::build() {
   header->RemoveAllViewProps();
   header->SetBackground(kHeaderBackground[0], kHeaderBackground[1], kHeaderBackground[2]);
   header->AddViewProp(headerText);
-  headerText->SetInput(headerLine().c_str());
+  headerText->SetInput(headerCaption().c_str());
   for (const AlgorithmFigures& figures : result.algorithms) {
     auto panel = std::make_unique<Panel>();
     panel->background->SetBackground(kPanelBackground[0], kPanelBackground[1], kPanelBackground[2]);
@@ -411,7 +313,7 @@ void ComparisonView::layout(int width, int height) {
     int size = std::clamp(int(std::lround(std::min(width / 55.0, height / 28.0))), 9, 30);
     for (;; --size) {
       styleText(p, size, kTextColour, false);
-      if (size <= 8 || textSize(p, d.headerLine()).first <= width - 2 * margin) break;
+      if (size <= 8 || textSize(p, d.headerCaption()).first <= width - 2 * margin) break;
     }
     p->SetVerticalJustificationToCentered();
     headerHeight = int(std::lround(size * 1.9));
@@ -472,7 +374,7 @@ std::vector<std::string> ComparisonView::panelText(int panel) const {
   return m_impl->panels[std::size_t(panel)]->lines;
 }
 
-std::string ComparisonView::headerText() const { return m_impl->headerLine(); }
+std::string ComparisonView::headerText() const { return m_impl->headerCaption(); }
 
 void ComparisonView::setRayTrees(const Scene& scene, const std::vector<RayTree>& trees, int pixelX,
                                  int pixelY, const RayTreeStyle& style) {

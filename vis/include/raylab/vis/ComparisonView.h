@@ -111,9 +111,4 @@ class ComparisonView {
   std::unique_ptr<Impl> m_impl;
 };
 
-/// "12.3 ms", "0.52 s", "12.5 s": a duration for the figures.
-std::string formatSeconds(double seconds);
-/// "950", "12.3 k", "4.56 M", "1.23 G": a count for the figures.
-std::string formatCount(std::uint64_t count);
-
 }  // namespace raylab::vis
