@@ -21,7 +21,7 @@ class RayTreePanel;
 
 /**
  * \brief RayLab's main window: the scene's 3D view (drag to rotate, wheel to zoom, as in
- * the seed program); on the left the list of the scene's objects (selecting one
+ * the original course program); on the left the list of the scene's objects (selecting one
  * highlights it in the view); on the right, in two tabs, the ray-tree panel (trace a
  * pixel, colours and filters, the bounce animation) and the ray inspector. Clicking a ray in the
  * view (a press and release without dragging) selects it and shows it in the inspector.

@@ -395,7 +395,8 @@ TEST(Algorithms, 07_RayCastingEqualsWhittedOnADiffuseScene) {
 
 // Distributed tracing with one sample per pixel (pixel centres), one shadow sample and
 // only a point light is Whitted: same rays, same weights, bit for bit — on a scene with
-// mirrors, glass and the seed's mirror (no glossy surface: Whitted has no gloss).
+// mirrors, glass and the original course program's mirror (no glossy surface: Whitted
+// has no gloss).
 TEST(Algorithms, 08_DistributedWithOneSampleEqualsWhitted) {
   Scene scene = allMaterialsScene(16, 12);
   for (Material& m : scene.materials) {

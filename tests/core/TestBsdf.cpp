@@ -268,8 +268,8 @@ TEST(Bsdf, 09_SpecularSamplingPicksLobesByLuminance) {
   }
   // Binomial standard deviation sqrt(n R (1 - R)) = 170; allow 5 of them.
   EXPECT_NEAR(reflections, n * r, 5.0 * std::sqrt(n * r * (1.0 - r)));
-  // A tinted seed mirror: weights 0.3 c and 0.6 c, so reflections are picked a third of
-  // the time with weight 0.9 c, and the mean weight is the sum 0.9 c.
+  // A tinted mirror of the original course program: weights 0.3 c and 0.6 c, so reflections
+  // are picked a third of the time with weight 0.9 c, and the mean weight is the sum 0.9 c.
   Material mirror = material(MaterialType::Mirror);
   mirror.colour = Vec3(0.5, 1.0, 0.2);
   mirror.reflectionRate = 0.3;

@@ -200,7 +200,7 @@ TEST(Box, 04_SeedStyleVerticesAndMatrix) {
   const auto v = box.vertices();
   // Corner (+1, +1, +1) in box coordinates = centre + 2*(0,1,0) + 1*(-1,0,0) + 1*(0,0,1).
   expectNear(v[7], {0, 4, 4});
-  // The seed's T maps world to box coordinates.
+  // The original course program's T maps world to box coordinates.
   const Mat4 t = box.boxFromWorld();
   expectNear(Point3(t * glm::dvec4(v[7], 1.0)), {1, 1, 1});
   // Along world +y the box is 4 long: from y = -10 the hit is at y = 0, t = 10.

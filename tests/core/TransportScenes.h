@@ -88,8 +88,9 @@ inline Scene furnaceScene(double albedo, double Le) {
 
 /**
  * A room with every material: diffuse walls, a black area light on the ceiling, a point
- * light, a mirror sphere, a glass sphere, a glossy sphere, the seed's mirror (reflection
- * and refraction rates) on a box, and a diffuse box. Room [-2, 2] x [0, 3] x [-3, 1].
+ * light, a mirror sphere, a glass sphere, a glossy sphere, the original course program's
+ * mirror (reflection and refraction rates) on a box, and a diffuse box.
+ * Room [-2, 2] x [0, 3] x [-3, 1].
  */
 inline Scene allMaterialsScene(int width = 16, int height = 12) {
   Scene scene;

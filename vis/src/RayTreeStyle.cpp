@@ -39,8 +39,9 @@ double EnergyScale::position(double energy) const {
 }
 
 Vec3 EnergyScale::colour(double position) {
-  // The seed's convention, brightened so every stop reads on the dark view background:
-  // light grey (no light came back), green (some), blue (most of the pixel's light).
+  // The original course program's convention, brightened so every stop reads on the dark
+  // view background: light grey (no light came back), green (some), blue (most of the
+  // pixel's light).
   static const Vec3 kStops[] = {
       Vec3(0.78, 0.78, 0.78),  // low: light grey
       Vec3(0.15, 0.85, 0.25),  // medium: green

@@ -40,7 +40,7 @@ constexpr double kHighlight[3] = {1.0, 0.85, 0.0};
 constexpr double kCameraBody[3] = {0.85, 0.88, 0.95};
 constexpr double kCameraBodyOpacity = 0.45;
 constexpr double kFrustum[3] = {0.9, 0.9, 0.9};
-/// Colour of a point light's glyph: the seed's flesh-coloured light.
+/// Colour of a point light's glyph: the original course program's flesh-coloured light.
 constexpr double kPointLight[3] = {1.0, 0.8, 0.65};
 
 /// Display colour of a material: emitters show their emission's hue at full brightness,

@@ -79,7 +79,7 @@ vtkSmartPointer<vtkMatrix4x4> toVtk(const Mat4& m) {
 
 vtkSmartPointer<vtkPolyData> sphereGeometry(const Sphere& sphere) {
   // Step 1: the round sphere in object space; VTK's theta runs around the z axis (n
-  // slices) and phi from pole to pole (m slices), as the seed's m, n.
+  // slices) and phi from pole to pole (m slices), as the original course program's m, n.
   vtkNew<vtkSphereSource> source;
   source->SetCenter(sphere.centre().x, sphere.centre().y, sphere.centre().z);
   source->SetRadius(sphere.radius());

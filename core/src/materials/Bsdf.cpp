@@ -141,7 +141,8 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
   // Split the energy between the two lobes.
   Vec3 reflected, refracted;
   if (m.type == MaterialType::Mirror) {
-    // The seed's rates; on total internal reflection the refracted share is reflected.
+    // The original course program's rates; on total internal reflection the refracted
+    // share is reflected.
     reflected = m.reflectionRate * m.colour;
     refracted = m.refractionRate * m.colour;
   } else {

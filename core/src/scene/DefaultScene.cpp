@@ -10,7 +10,8 @@ Scene defaultScene() {
   Scene scene;
   scene.name = "RayLab default scene";
 
-  // Materials: the seed's red sphere, blue cube and flesh-coloured light, grey walls.
+  // Materials: the original course program's red sphere, blue cube and flesh-coloured
+  // light, grey walls.
   const Vec3 flesh(1.0, 0.8, 0.65);
   auto makeMaterial = [](std::string name, const Vec3& colour, const Vec3& emission) {
     Material m;
@@ -38,7 +39,7 @@ Scene defaultScene() {
   add("left wall", std::make_unique<Quad>(Point3(-5, 0, 4), Vec3(0, 0, -10), Vec3(0, 6, 0)), wall);
   add("right wall", std::make_unique<Quad>(Point3(5, 0, -6), Vec3(0, 0, 10), Vec3(0, 6, 0)), wall);
 
-  // The seed's objects.
+  // The original course program's objects.
   add("red sphere", std::make_unique<Sphere>(Point3(-1.6, 1.2, -2.2), 1.2, 24, 32), red);
   auto cube = std::make_unique<Box>(Point3(0.0), Vec3(2.0));
   // Turn the cube 30 degrees about y, then lift it onto the floor (rotation first).

@@ -8,13 +8,14 @@
 namespace raylab {
 
 /**
- * \brief The seed's oriented cube: a box with three axes, extents and a centre.
+ * \brief The original course program's oriented cube: a box with three axes, extents and a
+ * centre.
  *
  * Stored as the affine map `worldFromBox` that takes the canonical cube [-1, 1]^3 to the
  * box: its columns are `axis_i * extent_i / 2` and its translation is the centre. Any
  * affine `apply` (including non-uniform scale after a rotation) composes exactly onto
  * it; the result is then a parallelepiped, which is what a scaled rotated box is.
- * `boxFromWorld()` is the seed's matrix T (world -> cube coordinates).
+ * `boxFromWorld()` is the original course program's matrix T (world -> cube coordinates).
  * Intersection is the slab test (Kay & Kajiya 1986) against the three pairs of face
  * planes, kept in world units (unit normal, centre offset, half width) so that an
  * axis-aligned box with exactly representable planes gives exact t.
@@ -47,7 +48,7 @@ class Box final : public Shape {
   Point3 centre() const;
   /// Unit direction of box axis i (0, 1, 2), world space.
   Vec3 axis(int i) const;
-  /// Full edge lengths along the three axes (the seed's "extend").
+  /// Full edge lengths along the three axes (the original course program's "extend").
   Vec3 size() const;
   /// The 8 corners in world space; corner k has box coordinates
   /// ((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1).
@@ -57,7 +58,7 @@ class Box final : public Shape {
   /// Face f = 2 * axis + (positive side ? 1 : 0); unit outward normal, world space.
   Normal3 faceNormal(int face) const;
   const Transform& worldFromBox() const { return m_worldFromBox; }
-  /// The seed's T: world coordinates -> box coordinates in [-1, 1]^3.
+  /// The original course program's T: world coordinates -> box coordinates in [-1, 1]^3.
   const Mat4& boxFromWorld() const { return m_worldFromBox.inverseMatrix(); }
 
  private:

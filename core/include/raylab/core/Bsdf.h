@@ -14,7 +14,8 @@ class Sampler;
 struct BsdfSample {
   Vec3 wi{0.0};           ///< Unit direction away from the surface, world space.
   Vec3 weight{0.0};       ///< f(wo, wi) |cos theta_i| / pdf; for specular lobes the lobe's
-                          ///< weight (reflectance R, transmittance T, or the seed's rates).
+                          ///< weight (reflectance R, transmittance T, or the original course
+                          ///< program's rates).
   double pdf = 0.0;       ///< Solid-angle density of wi; 0 for specular (delta) lobes.
   bool specular = false;  ///< True for a discrete (delta) direction.
   RayKind kind = RayKind::Diffuse;  ///< Reflection, Refraction, Diffuse or Glossy.

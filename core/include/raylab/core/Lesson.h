@@ -47,7 +47,7 @@ std::optional<LessonView> parseLessonView(const std::string& name);
 
 /// How the ray tree is coloured (the ray-tree view's colourings, named as in `raylab trace`).
 enum class LessonColouring {
-  Energy,  ///< "energy": the seed's grey-green-blue energy scale.
+  Energy,  ///< "energy": the original course program's grey-green-blue energy scale.
   Kind,    ///< "kind": camera, reflection, refraction, diffuse, glossy, shadow.
   Depth,   ///< "depth": bounces from the camera ray.
 };

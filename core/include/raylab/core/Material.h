@@ -6,12 +6,13 @@
 
 namespace raylab {
 
-/// The scattering model of a material. The seed's distributions: diffuse, mirror (with its
-/// reflection / refraction rates), Phong; plus physically based dielectrics.
+/// The scattering model of a material. The original course program's distributions: diffuse,
+/// mirror (with its reflection / refraction rates), Phong; plus physically based dielectrics.
 enum class MaterialType {
   Diffuse,     ///< Lambertian: f = colour / pi.
-  Mirror,      ///< The seed's mirror_distribution: perfect reflection weighted by
-               ///< reflectionRate and refraction (index `ior`) weighted by refractionRate.
+  Mirror,      ///< The original course program's mirror_distribution: perfect reflection
+               ///< weighted by reflectionRate and refraction (index `ior`) weighted by
+               ///< refractionRate.
   Dielectric,  ///< Glass: reflection and refraction weighted by the Fresnel equations,
                ///< total internal reflection included.
   Glossy,      ///< Normalised Phong lobe around the mirror direction, plus a diffuse part.
@@ -20,7 +21,7 @@ const char* toString(MaterialType type);
 
 /// Surface appearance. Any material with non-zero emission makes its object an area
 /// light that emits `emission` (radiance, W sr^-1 m^-2) equally in all directions from
-/// its front side (the seed's light cube).
+/// its front side (the original course program's light cube).
 struct Material {
   std::string name;                           ///< Unique name, referenced by objects.
   MaterialType type = MaterialType::Diffuse;  ///< Scattering model.

@@ -87,7 +87,7 @@ struct Scene {
 };
 
 /**
- * \brief The built-in scene, after the seed program's: a red sphere, a blue cube and a
+ * \brief The built-in scene, after the original course program's: a red sphere, a blue cube and a
  * flesh-coloured light cube inside a room (floor, back, left and right walls, ceiling,
  * open towards the viewer), seen by a camera in front of the room.
  */

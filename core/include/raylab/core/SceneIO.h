@@ -48,10 +48,10 @@ namespace raylab {
  * (vertices [p0, p1, p2]), mesh (file: OBJ, PLY, OFF or STL read with MeshIO, the path
  * relative to the scene file's folder). "transform" steps apply in the order listed
  * (first listed first); a step is translate, scale, rotate {axis, degrees} or matrix
- * (4 rows of 4). Materials: type diffuse (default), mirror (the seed's reflection_rate
- * and refraction_rate, each in [0, 1], summing to at most 1, and ior > 0), dielectric
- * (Fresnel glass of index ior), glossy (Phong exponent > 0, specular fraction in [0, 1]);
- * any material with a non-zero emission is an area light (not allowed on a plane).
+ * (4 rows of 4). Materials: type diffuse (default), mirror (the original course program's
+ * reflection_rate and refraction_rate, each in [0, 1], summing to at most 1, and ior > 0),
+ * dielectric (Fresnel glass of index ior), glossy (Phong exponent > 0, specular fraction in
+ * [0, 1]); any material with a non-zero emission is an area light (not allowed on a plane).
  * "velocity" is the object's motion over the shutter interval (motion blur).
  * Everything but "raylab_scene", "materials" and "objects" is optional and defaults to
  * the values of Material, CameraSpec and RenderSettings; unknown keys are errors (a

@@ -13,8 +13,8 @@ namespace raylab {
  * \brief A sphere (centre, radius), optionally mapped by an affine transform into an
  * ellipsoid.
  *
- * The seed's Sphere, with its tessellation hints for drawing: `m` slices along the
- * polar (z) direction and `n` around the axis. `apply` with a similarity (rotation,
+ * The original course program's Sphere, with its tessellation hints for drawing: `m` slices
+ * along the polar (z) direction and `n` around the axis. `apply` with a similarity (rotation,
  * translation, uniform scale) updates centre and radius directly, so textbook rays stay
  * exact; any other affine map (non-uniform scale) is kept as `worldFromObject`, and rays
  * are intersected in object space. Intersection uses the numerically careful quadratic

@@ -10,8 +10,9 @@
 /// Geometric vocabulary of the core. Everything is double precision (glm::dvec3).
 ///
 /// GLM is column-major: `M * v` transforms a column vector, and `T * R * S` applies S
-/// first, then R, then T. Keep that in mind when composing transforms (the seed's authors
-/// lost time on it). The world is right-handed with y up; cameras look down their local -z.
+/// first, then R, then T. Keep that in mind when composing transforms (the authors of the
+/// original course program lost time on it). The world is right-handed with y up; cameras
+/// look down their local -z.
 
 namespace raylab {
 
