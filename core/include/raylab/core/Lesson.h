@@ -206,7 +206,7 @@ struct Lesson {
  *          "reveal": {"depth": 2}, "colour": "kind",
  *          "filters": {"kinds": ["camera", "refraction"], "max_depth": 3,
  *                      "reaching_light": false, "min_energy": 0},
- *          "camera_view": "default", "select_ray": 1, "measure": "samples",
+ *          "camera_view": "default", "select_ray": 1,
  *          "scene_changes": [{"material": "glass", "set": {"ior": 1.0}}],
  *          "question": {"type": "number",
  *                       "prompt": {"en": "How many rays ...?", "zh": "..."},
