@@ -3,6 +3,7 @@
 #include "AnimateCommand.h"
 #include "CompareCommand.h"
 #include "ExitCodes.h"
+#include "LessonCommand.h"
 #include "PlotCommand.h"
 #include "RenderCommand.h"
 #include "SnapshotCommand.h"
@@ -81,6 +82,7 @@ int runCommandLine(int argc, char** argv) {
   const std::vector<Subcommand> subcommands = {
       addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
       addCompareCommand(cli),  addPlotCommand(cli),   addAnimateCommand(cli),
+      addLessonCommand(cli),
   };
 
   try {
