@@ -392,9 +392,6 @@ TEST(Lesson, 07_EveryStepHasBothLanguages) {
   }
 }
 
-/// Rec. 709 luminance, as the ray-tree view's energy.
-double rec709Luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
-
 /// The quantity a question's check names, computed by the program on the step's scene.
 double compute(const LessonStep& step, const LessonCheck& c) {
   const Scene& scene = *step.scene;
@@ -412,7 +409,7 @@ double compute(const LessonStep& step, const LessonCheck& c) {
   if (c.quantity == Q::PixelLuminance) {
     const int spp = c.spp > 0 ? c.spp : settings.samplesPerPixel;
     double sum = 0.0;
-    for (int s = 0; s < spp; ++s) sum += rec709Luminance(tracer.trace(c.pixelX, c.pixelY, s));
+    for (int s = 0; s < spp; ++s) sum += luminance(tracer.trace(c.pixelX, c.pixelY, s));
     return sum / spp;
   }
   Stepper stepper(tracer, c.pixelX, c.pixelY, c.sample);
@@ -431,7 +428,7 @@ double compute(const LessonStep& step, const LessonCheck& c) {
       return depth;
     }
     case Q::EstimateLuminance:
-      return rec709Luminance(stepper.estimate());
+      return luminance(stepper.estimate());
     case Q::RayLength: {
       if (c.ray >= static_cast<int>(tree.segments.size())) {
         ADD_FAILURE() << "ray " << c.ray << " is not in the tree";
