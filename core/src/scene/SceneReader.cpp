@@ -1,5 +1,4 @@
 #include "raylab/core/SceneIO.h"
-#include "raylab/core/AtomicFile.h"
 
 #include "raylab/core/Box.h"
 #include "raylab/core/MeshIO.h"
@@ -9,18 +8,22 @@
 #include "raylab/core/Transform.h"
 #include "raylab/core/Triangle.h"
 
+#include "io/PrettyJson.h"
+#include "scene/SceneKeys.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <initializer_list>
 #include <sstream>
+#include <vector>
 
-#include <sys/stat.h>
-#include <unistd.h>
+// SceneIO's validating reader: JSON text -> Scene, or a LoadError naming the file and
+// the place (line:column for syntax, the JSON path for content). The writer is
+// SceneWriter.cpp.
 
 namespace raylab {
 
@@ -70,9 +73,11 @@ class Reader {
     return j.get<bool>();
   }
 
-  /// Rejects members not in `known`: a misspelt key would otherwise be ignored silently.
+  /// Rejects members not in `known` (a list of SceneKeys.h): a misspelt key would otherwise
+  /// be ignored silently.
+  template <std::size_t N>
   void onlyKeys(const json& j, const std::string& path,
-                std::initializer_list<const char*> known) const {
+                const std::array<const char*, N>& known) const {
     if (!j.is_object()) fail(path, "expected an object");
     for (auto it = j.begin(); it != j.end(); ++it) {
       if (std::find_if(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }) !=
@@ -119,7 +124,7 @@ class Reader {
     const std::string type = string(member(j, path, "type"), path + "/type");
     try {
       if (type == "mesh") {
-        onlyKeys(j, path, {"type", "file"});
+        onlyKeys(j, path, kMeshKeys);
         const std::string file = string(member(j, path, "file"), path + "/file");
         if (file.empty()) fail(path + "/file", "mesh file name is empty");
         // Mesh paths are relative to the scene file's folder.
@@ -137,7 +142,7 @@ class Reader {
         }
       }
       if (type == "sphere") {
-        onlyKeys(j, path, {"type", "centre", "radius", "m", "n"});
+        onlyKeys(j, path, kSphereKeys);
         const double radius = number(member(j, path, "radius"), path + "/radius");
         if (radius <= 0.0)
           fail(path + "/radius", "radius must be positive, got " + j["radius"].dump());
@@ -149,7 +154,7 @@ class Reader {
                                         m, n);
       }
       if (type == "box") {
-        onlyKeys(j, path, {"type", "centre", "size", "axes", "matrix"});
+        onlyKeys(j, path, kBoxKeys);
         if (j.contains("matrix"))
           return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
         const Vec3 centre = vec3(member(j, path, "centre"), path + "/centre");
@@ -166,18 +171,18 @@ class Reader {
         return std::make_unique<Box>(centre, size, a[0], a[1], a[2]);
       }
       if (type == "plane") {
-        onlyKeys(j, path, {"type", "point", "normal"});
+        onlyKeys(j, path, kPlaneKeys);
         return std::make_unique<Plane>(vec3(member(j, path, "point"), path + "/point"),
                                        nonZero(member(j, path, "normal"), path + "/normal"));
       }
       if (type == "quad") {
-        onlyKeys(j, path, {"type", "corner", "u", "v"});
+        onlyKeys(j, path, kQuadKeys);
         return std::make_unique<Quad>(vec3(member(j, path, "corner"), path + "/corner"),
                                       nonZero(member(j, path, "u"), path + "/u"),
                                       nonZero(member(j, path, "v"), path + "/v"));
       }
       if (type == "triangle") {
-        onlyKeys(j, path, {"type", "vertices"});
+        onlyKeys(j, path, kTriangleKeys);
         const json& v = member(j, path, "vertices");
         if (!v.is_array() || v.size() != 3) fail(path + "/vertices", "expected three points");
         return std::make_unique<Triangle>(vec3(v[0], path + "/vertices/0"),
@@ -224,9 +229,7 @@ class Reader {
   }
 
   Material material(const json& j, const std::string& p) const {
-    onlyKeys(j, p,
-             {"name", "type", "colour", "emission", "reflection_rate", "refraction_rate", "ior",
-              "exponent", "specular", "opacity"});
+    onlyKeys(j, p, kMaterialKeys);
     Material m;
     m.name = string(member(j, p, "name"), p + "/name");
     if (j.contains("type")) {
@@ -271,9 +274,7 @@ class Reader {
   }
 
   void camera(const json& c, CameraSpec& cam) const {
-    onlyKeys(c, "/camera",
-             {"position", "look_at", "up", "vertical_fov", "width", "height", "aperture",
-              "focus_distance", "near_clip"});
+    onlyKeys(c, "/camera", kCameraKeys);
     if (c.contains("position")) cam.position = vec3(c["position"], "/camera/position");
     if (c.contains("look_at")) cam.lookAt = vec3(c["look_at"], "/camera/look_at");
     if (c.contains("up")) cam.up = nonZero(c["up"], "/camera/up");
@@ -301,10 +302,7 @@ class Reader {
 
   void render(const json& r, RenderSettings& s) const {
     const std::string p = "/render";
-    onlyKeys(
-        r, p,
-        {"algorithm", "spp", "max_depth", "seed", "shadow_samples", "glossy_samples",
-         "russian_roulette_depth", "next_event_estimation", "multiple_importance", "background"});
+    onlyKeys(r, p, kRenderKeys);
     if (r.contains("algorithm")) {
       const std::string name = string(r["algorithm"], p + "/algorithm");
       const auto algorithm = parseAlgorithm(name);
@@ -338,6 +336,51 @@ class Reader {
     }
   }
 
+  /// One entry of "objects"; the scene's materials are read already (objects name them).
+  SceneObject object(const json& j, const std::string& p, const Scene& scene) const {
+    onlyKeys(j, p, kObjectKeys);
+    SceneObject o;
+    o.name = string(member(j, p, "name"), p + "/name");
+    if (scene.findObject(o.name) >= 0) fail(p + "/name", "duplicate object \"" + o.name + "\"");
+    const std::string material = string(member(j, p, "material"), p + "/material");
+    o.material = scene.findMaterial(material);
+    if (o.material < 0) fail(p + "/material", "unknown material \"" + material + "\"");
+    o.shape = shape(member(j, p, "shape"), p + "/shape", o.source);
+    if (j.contains("transform")) {
+      const Mat4 m = transform(j["transform"], p + "/transform");
+      try {
+        o.apply(m);
+      } catch (const Shape::InvalidGeometry& e) {
+        fail(p + "/transform", e.what());
+      }
+    }
+    if (j.contains("velocity")) o.velocity = vec3(j["velocity"], p + "/velocity");
+    // An area light must have a finite area to sample.
+    if (scene.materials[o.material].isEmitter() && o.shape->kind() == ShapeKind::Plane)
+      fail(p + "/material", "emitting material \"" + material +
+                                "\" on a plane: an area light needs a finite shape "
+                                "(use a quad)");
+    return o;
+  }
+
+  /// One entry of "point_lights"; `others` are the lights read before it.
+  PointLight pointLight(const json& j, const std::string& p,
+                        const std::vector<PointLight>& others) const {
+    onlyKeys(j, p, kPointLightKeys);
+    PointLight light;
+    light.name = string(member(j, p, "name"), p + "/name");
+    for (const PointLight& other : others)
+      if (other.name == light.name)
+        fail(p + "/name", "duplicate point light \"" + light.name + "\"");
+    light.position = vec3(member(j, p, "position"), p + "/position");
+    if (j.contains("intensity")) light.intensity = vec3(j["intensity"], p + "/intensity");
+    for (int c = 0; c < 3; ++c)
+      if (light.intensity[c] < 0.0) fail(p + "/intensity", "intensity must not be negative");
+    return light;
+  }
+
+  /// The whole document, in the order of the checks: version, keys, materials, objects,
+  /// point lights, camera, render.
   Scene scene(const json& root) const {
     if (!root.is_object()) fail("", "a scene file is a JSON object");
     if (!root.contains("raylab_scene"))
@@ -348,8 +391,7 @@ class Reader {
                                 " (this RayLab reads versions " +
                                 std::to_string(SceneIO::kFirstVersion) + " to " +
                                 std::to_string(SceneIO::kVersion) + ")");
-    onlyKeys(root, "",
-             {"raylab_scene", "name", "materials", "objects", "point_lights", "camera", "render"});
+    onlyKeys(root, "", kSceneKeys);
     Scene scene;
     scene.name = root.contains("name") ? string(root["name"], "/name") : "untitled";
 
@@ -366,52 +408,15 @@ class Reader {
 
     const json& objects = member(root, "", "objects");
     if (!objects.is_array()) fail("/objects", "expected a list");
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-      const std::string p = "/objects/" + std::to_string(i);
-      const json& j = objects[i];
-      onlyKeys(j, p, {"name", "material", "shape", "transform", "velocity"});
-      SceneObject o;
-      o.name = string(member(j, p, "name"), p + "/name");
-      if (scene.findObject(o.name) >= 0) fail(p + "/name", "duplicate object \"" + o.name + "\"");
-      const std::string material = string(member(j, p, "material"), p + "/material");
-      o.material = scene.findMaterial(material);
-      if (o.material < 0) fail(p + "/material", "unknown material \"" + material + "\"");
-      o.shape = shape(member(j, p, "shape"), p + "/shape", o.source);
-      if (j.contains("transform")) {
-        const Mat4 m = transform(j["transform"], p + "/transform");
-        try {
-          o.apply(m);
-        } catch (const Shape::InvalidGeometry& e) {
-          fail(p + "/transform", e.what());
-        }
-      }
-      if (j.contains("velocity")) o.velocity = vec3(j["velocity"], p + "/velocity");
-      // An area light must have a finite area to sample.
-      if (scene.materials[o.material].isEmitter() && o.shape->kind() == ShapeKind::Plane)
-        fail(p + "/material", "emitting material \"" + material +
-                                  "\" on a plane: an area light needs a finite shape "
-                                  "(use a quad)");
-      scene.objects.push_back(std::move(o));
-    }
+    for (std::size_t i = 0; i < objects.size(); ++i)
+      scene.objects.push_back(object(objects[i], "/objects/" + std::to_string(i), scene));
 
     if (root.contains("point_lights")) {
       const json& lights = root["point_lights"];
       if (!lights.is_array()) fail("/point_lights", "expected a list");
-      for (std::size_t i = 0; i < lights.size(); ++i) {
-        const std::string p = "/point_lights/" + std::to_string(i);
-        const json& j = lights[i];
-        onlyKeys(j, p, {"name", "position", "intensity"});
-        PointLight light;
-        light.name = string(member(j, p, "name"), p + "/name");
-        for (const PointLight& other : scene.pointLights)
-          if (other.name == light.name)
-            fail(p + "/name", "duplicate point light \"" + light.name + "\"");
-        light.position = vec3(member(j, p, "position"), p + "/position");
-        if (j.contains("intensity")) light.intensity = vec3(j["intensity"], p + "/intensity");
-        for (int c = 0; c < 3; ++c)
-          if (light.intensity[c] < 0.0) fail(p + "/intensity", "intensity must not be negative");
-        scene.pointLights.push_back(light);
-      }
+      for (std::size_t i = 0; i < lights.size(); ++i)
+        scene.pointLights.push_back(
+            pointLight(lights[i], "/point_lights/" + std::to_string(i), scene.pointLights));
     }
 
     if (root.contains("camera")) camera(root["camera"], scene.camera);
@@ -423,156 +428,6 @@ class Reader {
   std::string m_origin;
   std::string m_baseDir;  ///< Folder of the scene file: mesh paths are relative to it.
 };
-
-using ojson = nlohmann::ordered_json;
-
-ojson toJson(const Vec3& v) { return ojson::array({v.x, v.y, v.z}); }
-
-ojson toJson(const Mat4& m) {
-  ojson rows = ojson::array();
-  for (int r = 0; r < 4; ++r) rows.push_back(ojson::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
-  return rows;
-}
-
-/// Pretty JSON for people: objects one member per line, arrays of scalars on one line.
-void prettyPrint(const ojson& j, int indent, std::string& out) {
-  const auto scalarArray = [](const ojson& a) {
-    for (const ojson& e : a)
-      if (e.is_structured() &&
-          !(e.is_array() && e.size() <= 4 &&
-            std::all_of(e.begin(), e.end(), [](const ojson& x) { return x.is_primitive(); })))
-        return false;
-    return true;
-  };
-  const std::string pad(indent + 2, ' ');
-  if (j.is_object() && !j.empty()) {
-    out += "{\n";
-    std::size_t i = 0;
-    for (auto it = j.begin(); it != j.end(); ++it, ++i) {
-      out += pad + ojson(it.key()).dump() + ": ";
-      prettyPrint(it.value(), indent + 2, out);
-      out += i + 1 < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(indent, ' ') + "}";
-  } else if (j.is_array() && !j.empty() && !scalarArray(j)) {
-    out += "[\n";
-    for (std::size_t i = 0; i < j.size(); ++i) {
-      out += pad;
-      prettyPrint(j[i], indent + 2, out);
-      out += i + 1 < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(indent, ' ') + "]";
-  } else if (j.is_array()) {
-    out += "[";
-    for (std::size_t i = 0; i < j.size(); ++i) {
-      out += i ? ", " : "";
-      prettyPrint(j[i], indent, out);
-    }
-    out += "]";
-  } else {
-    out += j.dump();
-  }
-}
-
-ojson shapeToJson(const Shape& shape, ojson& transform) {
-  switch (shape.kind()) {
-    case ShapeKind::Sphere: {
-      const auto& s = static_cast<const Sphere&>(shape);
-      if (!s.worldFromObject().isIdentity())
-        transform = ojson::array({ojson{{"matrix", toJson(s.worldFromObject().matrix())}}});
-      return {{"type", "sphere"},
-              {"centre", toJson(s.centre())},
-              {"radius", s.radius()},
-              {"m", s.m()},
-              {"n", s.n()}};
-    }
-    case ShapeKind::Box: {
-      const auto& b = static_cast<const Box&>(shape);
-      const Box readable(b.centre(), b.size(), b.axis(0), b.axis(1), b.axis(2));
-      // Prefer centre/size/axes; fall back to the exact matrix when they do not
-      // reproduce the box bit for bit.
-      if (readable.worldFromBox().matrix() == b.worldFromBox().matrix()) {
-        ojson box = {{"type", "box"}, {"centre", toJson(b.centre())}, {"size", toJson(b.size())}};
-        if (b.axis(0) != Vec3(1, 0, 0) || b.axis(1) != Vec3(0, 1, 0) || b.axis(2) != Vec3(0, 0, 1))
-          box["axes"] = ojson::array({toJson(b.axis(0)), toJson(b.axis(1)), toJson(b.axis(2))});
-        return box;
-      }
-      return {{"type", "box"}, {"matrix", toJson(b.worldFromBox().matrix())}};
-    }
-    case ShapeKind::Plane: {
-      const auto& p = static_cast<const Plane&>(shape);
-      return {{"type", "plane"}, {"point", toJson(p.point())}, {"normal", toJson(p.planeNormal())}};
-    }
-    case ShapeKind::Quad: {
-      const auto& q = static_cast<const Quad&>(shape);
-      return {{"type", "quad"},
-              {"corner", toJson(q.corner())},
-              {"u", toJson(q.edgeU())},
-              {"v", toJson(q.edgeV())}};
-    }
-    case ShapeKind::Triangle: {
-      const auto& t = static_cast<const Triangle&>(shape);
-      return {{"type", "triangle"},
-              {"vertices",
-               ojson::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))})}};
-    }
-    case ShapeKind::TriangleMesh:
-      break;
-  }
-  throw SceneIO::SaveError(std::string("cannot save shape of kind ") + toString(shape.kind()));
-}
-
-/// A material as JSON: always name, type, colour, emission and opacity; the parameters
-/// the type uses; and any other parameter that differs from its default (so nothing is
-/// lost in a round trip).
-ojson materialToJson(const Material& m) {
-  const Material defaults;
-  const bool mirror = m.type == MaterialType::Mirror;
-  const bool dielectric = m.type == MaterialType::Dielectric;
-  const bool glossy = m.type == MaterialType::Glossy;
-  ojson j = {{"name", m.name},
-             {"type", toString(m.type)},
-             {"colour", toJson(m.colour)},
-             {"emission", toJson(m.emission)}};
-  if (mirror || m.reflectionRate != defaults.reflectionRate)
-    j["reflection_rate"] = m.reflectionRate;
-  if (mirror || m.refractionRate != defaults.refractionRate)
-    j["refraction_rate"] = m.refractionRate;
-  if (mirror || dielectric || m.ior != defaults.ior) j["ior"] = m.ior;
-  if (glossy || m.exponent != defaults.exponent) j["exponent"] = m.exponent;
-  if (glossy || m.specular != defaults.specular) j["specular"] = m.specular;
-  j["opacity"] = m.opacity;
-  return j;
-}
-
-/// The path to write for a mesh file `source` (see SceneObject::source) in a scene file
-/// in folder `sceneDir` ("" = the current directory): relative to that folder, as the
-/// format says.
-std::string meshPathFrom(const std::string& source, const std::string& sceneDir) {
-  namespace fs = std::filesystem;
-  fs::path file = fs::path(source).lexically_normal();
-  fs::path base = fs::path(sceneDir.empty() ? "." : sceneDir).lexically_normal();
-  if (file.is_absolute() || base.is_absolute()) {
-    file = fs::absolute(file).lexically_normal();
-    base = fs::absolute(base).lexically_normal();
-  }
-  const fs::path relative = file.lexically_relative(base);
-  return relative.empty() ? file.generic_string() : relative.generic_string();
-}
-
-/// 1-based line and column of a byte offset.
-std::pair<int, int> lineColumn(const std::string& text, std::size_t offset) {
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
-}
 
 }  // namespace
 
@@ -600,74 +455,6 @@ Scene SceneIO::load(const std::string& path) {
   text << in.rdbuf();
   if (in.bad()) throw LoadError(path + ": read error");
   return parse(text.str(), path);
-}
-
-std::string SceneIO::serialize(const Scene& scene, const std::string& sceneDir) {
-  ojson root;
-  root["raylab_scene"] = kVersion;
-  root["name"] = scene.name;
-  root["materials"] = ojson::array();
-  for (const Material& m : scene.materials) root["materials"].push_back(materialToJson(m));
-  root["objects"] = ojson::array();
-  for (const SceneObject& o : scene.objects) {
-    if (!o.shape) throw SaveError("object \"" + o.name + "\" has no shape");
-    if (o.material < 0 || o.material >= static_cast<int>(scene.materials.size()))
-      throw SaveError("object \"" + o.name + "\" refers to a missing material");
-    ojson transform;
-    ojson shape;
-    if (o.shape->kind() == ShapeKind::TriangleMesh) {
-      // Meshes are saved by reference: the file and the transform applied to it.
-      if (o.source.empty())
-        throw SaveError("mesh object \"" + o.name +
-                        "\" has no source file (meshes are saved as a path to their file)");
-      shape = {{"type", "mesh"}, {"file", meshPathFrom(o.source, sceneDir)}};
-      if (o.worldFromSource != Mat4(1.0))
-        transform = ojson::array({ojson{{"matrix", toJson(o.worldFromSource)}}});
-    } else {
-      shape = shapeToJson(*o.shape, transform);
-    }
-    ojson object = {
-        {"name", o.name}, {"material", scene.materials[o.material].name}, {"shape", shape}};
-    if (!transform.is_null()) object["transform"] = transform;
-    if (o.velocity != Vec3(0.0)) object["velocity"] = toJson(o.velocity);
-    root["objects"].push_back(object);
-  }
-  root["point_lights"] = ojson::array();
-  for (const PointLight& l : scene.pointLights)
-    root["point_lights"].push_back(
-        {{"name", l.name}, {"position", toJson(l.position)}, {"intensity", toJson(l.intensity)}});
-  const CameraSpec& c = scene.camera;
-  root["camera"] = {{"position", toJson(c.position)},
-                    {"look_at", toJson(c.lookAt)},
-                    {"up", toJson(c.up)},
-                    {"vertical_fov", c.verticalFov},
-                    {"width", c.width},
-                    {"height", c.height},
-                    {"aperture", c.aperture},
-                    {"focus_distance", c.focusDistance}};
-  if (c.nearClip != 0.0) root["camera"]["near_clip"] = c.nearClip;
-  const RenderSettings& r = scene.render;
-  root["render"] = {{"algorithm", toString(r.algorithm)},
-                    {"spp", r.samplesPerPixel},
-                    {"max_depth", r.maxDepth},
-                    {"seed", r.seed},
-                    {"shadow_samples", r.shadowSamples},
-                    {"glossy_samples", r.glossySamples},
-                    {"russian_roulette_depth", r.russianRouletteDepth},
-                    {"next_event_estimation", r.nextEventEstimation},
-                    {"multiple_importance", r.multipleImportance},
-                    {"background", toJson(r.background)}};
-  // nlohmann prints doubles with enough digits to round-trip exactly.
-  std::string text;
-  prettyPrint(root, 0, text);
-  return text + "\n";
-}
-
-void SceneIO::save(const Scene& scene, const std::string& path) {
-  // Mesh paths are written relative to the folder of the new file.
-  const std::string text = serialize(scene, std::filesystem::path(path).parent_path().string());
-  // A temporary file beside the target, then a rename: the old file or the whole new one.
-  if (auto problem = writeFileAtomically(path, text)) throw SaveError(path + ": " + *problem);
 }
 
 }  // namespace raylab

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <array>
+
+namespace raylab {
+
+/**
+ * \brief The keys of each kind of JSON object in a scene file (see SceneIO.h), one list per
+ * kind, in the order the writer emits them.
+ *
+ * The reader rejects any key missing from its object's list (SceneReader.cpp, `onlyKeys`),
+ * and the writer can only add keys of the list, in list order (SceneWriter.cpp,
+ * `ObjectWriter`); so a file RayLab writes always passes its own key check. Adding a field
+ * means adding its key here, where the reader and the writer both see it.
+ */
+
+/// The document itself.
+inline constexpr std::array kSceneKeys = {"raylab_scene", "name",   "materials", "objects",
+                                          "point_lights", "camera", "render"};
+/// One entry of "materials".
+inline constexpr std::array kMaterialKeys = {
+    "name", "type",     "colour",   "emission", "reflection_rate", "refraction_rate",
+    "ior",  "exponent", "specular", "opacity"};
+/// One entry of "objects".
+inline constexpr std::array kObjectKeys = {"name", "material", "shape", "transform", "velocity"};
+/// One step of an object's "transform" (a step has exactly one of these keys).
+inline constexpr std::array kTransformStepKeys = {"translate", "scale", "rotate", "matrix"};
+/// One entry of "point_lights".
+inline constexpr std::array kPointLightKeys = {"name", "position", "intensity"};
+/// The "camera" object.
+inline constexpr std::array kCameraKeys = {"position",     "look_at",        "up",
+                                           "vertical_fov", "width",          "height",
+                                           "aperture",     "focus_distance", "near_clip"};
+/// The "render" object.
+inline constexpr std::array kRenderKeys = {"algorithm",
+                                           "spp",
+                                           "max_depth",
+                                           "seed",
+                                           "shadow_samples",
+                                           "glossy_samples",
+                                           "russian_roulette_depth",
+                                           "next_event_estimation",
+                                           "multiple_importance",
+                                           "background"};
+
+/// An object's "shape", per value of "type".
+inline constexpr std::array kSphereKeys = {"type", "centre", "radius", "m", "n"};
+inline constexpr std::array kBoxKeys = {"type", "centre", "size", "axes", "matrix"};
+inline constexpr std::array kPlaneKeys = {"type", "point", "normal"};
+inline constexpr std::array kQuadKeys = {"type", "corner", "u", "v"};
+inline constexpr std::array kTriangleKeys = {"type", "vertices"};
+inline constexpr std::array kMeshKeys = {"type", "file"};
+
+}  // namespace raylab
