@@ -2,67 +2,19 @@
 
 #include "raylab/core/Sampling.h"
 #include "raylab/core/Transform.h"
+#include "shapes/WatertightTriangle.h"
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
 
 namespace raylab {
 
-namespace {
-
-int maxDimension(const Vec3& v) { return v.x > v.y ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }
-
-}  // namespace
-
 std::optional<TriangleHit> intersectTriangle(const Ray& ray, const Point3& p0, const Point3& p1,
                                              const Point3& p2) {
-  const Vec3& d = ray.direction;
-  // Choose the ray-aligned frame: z is the dominant axis of d, x and y follow it;
-  // swap x and y when d.z is negative to keep the triangle's winding.
-  const int kz = maxDimension(glm::abs(d));
-  int kx = (kz + 1) % 3;
-  int ky = (kx + 1) % 3;
-  if (d[kz] < 0.0) std::swap(kx, ky);
-
-  // Shear constants that take d to (0, 0, 1).
-  const double sx = d[kx] / d[kz];
-  const double sy = d[ky] / d[kz];
-  const double sz = 1.0 / d[kz];
-
-  // Vertices relative to the ray origin, sheared into the ray's frame.
-  const Vec3 a = p0 - ray.origin;
-  const Vec3 b = p1 - ray.origin;
-  const Vec3 c = p2 - ray.origin;
-  const double ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
-  const double bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
-  const double cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
-
-  // 2D edge functions. A shared edge gives exactly opposite values in both triangles,
-  // which is what makes the test watertight.
-  double u = cx * by - cy * bx;
-  double v = ax * cy - ay * cx;
-  double w = bx * ay - by * ax;
-  if (u == 0.0 || v == 0.0 || w == 0.0) {
-    // On an edge in double precision: recompute in extended precision (the paper's
-    // fallback), symmetrically for both triangles of the edge.
-    using Wide = long double;
-    u = static_cast<double>(Wide(cx) * Wide(by) - Wide(cy) * Wide(bx));
-    v = static_cast<double>(Wide(ax) * Wide(cy) - Wide(ay) * Wide(cx));
-    w = static_cast<double>(Wide(bx) * Wide(ay) - Wide(by) * Wide(ax));
-  }
-
-  // The ray passes the triangle when all edge functions have the same sign (zero counts
-  // as inside, so edges and vertices are hit).
-  if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return std::nullopt;
-  const double det = u + v + w;
-  if (det == 0.0) return std::nullopt;  // ray in the triangle's plane, or degenerate
-
-  // Scaled hit distance, then divide once.
-  const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
-  const double tScaled = u * az + v * bz + w * cz;
-  const double invDet = 1.0 / det;
-  const double t = tScaled * invDet;
-  if (!(t >= ray.tMin && t <= ray.tMax)) return std::nullopt;
-  return TriangleHit{t, u * invDet, v * invDet, w * invDet};
+  // The ray's frame and shear for this one triangle; the Bvh computes them once per ray.
+  return hitTriangle(ShearedRay(ray), glm::value_ptr(p0), glm::value_ptr(p1), glm::value_ptr(p2),
+                     ray.tMax);
 }
 
 Triangle::Triangle(const Point3& p0, const Point3& p1, const Point3& p2) : m_p{p0, p1, p2} {

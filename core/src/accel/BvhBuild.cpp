@@ -1,0 +1,373 @@
+#include "raylab/core/Bvh.h"
+
+#include "raylab/core/Check.h"
+
+#include "accel/BvhLimits.h"
+
+#include <tbb/parallel_invoke.h>
+
+#include <algorithm>
+#include <atomic>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+// Bvh construction: the binned-SAH build over primitive references, the depth-first
+// layout with its statistics, and the interleaving of sibling pairs into cache lines.
+// The queries are in BvhTraverse.cpp.
+
+namespace raylab {
+
+namespace {
+
+/// Ranges larger than this are built on their own oneTBB task.
+constexpr int kParallelGrain = 8192;
+
+float roundDown(double d) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) > d) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+  return f;
+}
+
+float roundUp(double d) {
+  float f = static_cast<float>(d);
+  if (static_cast<double>(f) < d) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+  return f;
+}
+
+void setBox(BvhNode& node, const Bounds3& b) {
+  for (int a = 0; a < 3; ++a) {
+    node.box[a] = roundDown(b.lower[a]);
+    node.box[3 + a] = roundUp(b.upper[a]);
+  }
+}
+
+double boxArea(const BvhNode& n) {
+  const double dx = double(n.box[3]) - n.box[0];
+  const double dy = double(n.box[4]) - n.box[1];
+  const double dz = double(n.box[5]) - n.box[2];
+  return 2.0 * (dx * dy + dy * dz + dz * dx);
+}
+
+/// Stores the depth-first node array as cache-line pairs: node i becomes lane i % 2 of
+/// pair i / 2 (see BvhNodePair; Bvh::node undoes it).
+std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat) {
+  std::vector<BvhNodePair> pairs(flat.size() / 2);
+  for (std::size_t i = 0; i < flat.size(); ++i) {
+    BvhNodePair& pair = pairs[i / 2];
+    const int lane = static_cast<int>(i % 2);
+    for (int k = 0; k < 6; ++k) pair.box[k][lane] = flat[i].box[k];
+    pair.offset[lane] = flat[i].offset;
+    pair.count[lane] = flat[i].count;
+    pair.axis[lane] = flat[i].axis;
+  }
+  return pairs;
+}
+
+}  // namespace
+
+/// The build state: primitive references sorted in place, nodes allocated in pairs.
+struct Bvh::Builder {
+  struct PrimRef {
+    double lower[3];
+    double upper[3];
+    double centroid[3];
+    int id;
+  };
+
+  struct Bin {
+    Bounds3 box;
+    int count = 0;
+  };
+
+  const BvhSettings& settings;
+  const std::vector<Point3>& vertices;
+  const std::vector<Index3>& triangles;
+  std::vector<PrimRef> prims;
+  std::vector<BvhNode> nodes;  // unordered build nodes: 0 root, 1 padding, then pairs
+  std::atomic<int> nextNode{2};
+
+  Builder(const BvhSettings& s, const std::vector<Point3>& v, const std::vector<Index3>& t)
+      : settings(s),
+        vertices(v),
+        triangles(t),
+        prims(triangles.size()),
+        nodes(std::max<std::size_t>(2, 2 * triangles.size() + 2)) {
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      const Index3& tri = triangles[i];
+      Bounds3 b(vertices[tri[0]], vertices[tri[1]]);
+      b.extend(vertices[tri[2]]);
+      PrimRef& r = prims[i];
+      for (int a = 0; a < 3; ++a) {
+        r.lower[a] = b.lower[a];
+        r.upper[a] = b.upper[a];
+        r.centroid[a] = 0.5 * (b.lower[a] + b.upper[a]);
+      }
+      r.id = static_cast<int>(i);
+    }
+    nodes[1] = BvhNode{};
+    setBox(nodes[1], Bounds3{});
+  }
+
+  /// Step 1: the tree over all triangles (for none, a lone empty leaf).
+  void buildTree() {
+    const int n = static_cast<int>(prims.size());
+    if (n > 0)
+      build(0, 0, n, 0);
+    else {
+      setBox(nodes[0], Bounds3{});
+      makeLeaf(nodes[0], 0, 0);
+    }
+  }
+
+  /// Step 2: the triangles in leaf order (slot i is prims[i]): each slot's caller index and
+  /// vertices, so a leaf reads its triangles contiguously, and the exact bounds of all.
+  void copyTriangles(std::vector<int>& primIds, std::vector<std::array<double, 9>>& triVerts,
+                     Bounds3& bounds) const {
+    const int n = static_cast<int>(prims.size());
+    primIds.resize(static_cast<std::size_t>(n));
+    triVerts.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      const PrimRef& r = prims[i];
+      primIds[i] = r.id;
+      for (int k = 0; k < 3; ++k) {
+        const Point3& p = vertices[triangles[r.id][k]];
+        for (int a = 0; a < 3; ++a) triVerts[i][3 * k + a] = p[a];
+      }
+      bounds.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
+                            Point3(r.upper[0], r.upper[1], r.upper[2])));
+    }
+  }
+
+  /// Step 3: the nodes laid out depth first, each pair of children right after the
+  /// subtree that precedes it (the left subtree first), slot 1 the padding. Counts nodes,
+  /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way.
+  std::vector<BvhNode> flatten(BvhStats& stats) const {
+    const bool empty = prims.empty();
+    const int used = nextNode.load();
+    std::vector<BvhNode> flat(static_cast<std::size_t>(used));
+    flat[1] = nodes[1];
+    int next = 2;
+    struct Item {
+      int newIndex, oldIndex, depth;
+    };
+    std::vector<Item> stack{{0, 0, 0}};
+    const double rootArea = boxArea(nodes[0]);
+    double sah = 0.0;
+    while (!stack.empty()) {
+      const Item item = stack.back();
+      stack.pop_back();
+      BvhNode& node = flat[item.newIndex];
+      node = nodes[item.oldIndex];
+      // Each node's share of the SAH cost is weighted by its area relative to the root's.
+      const double rel = rootArea > 0.0 ? boxArea(node) / rootArea : 1.0;
+      stats.nodeCount++;
+      stats.depth = std::max(stats.depth, item.depth);
+      if (node.count > 0 || empty) {
+        stats.leafCount++;
+        stats.maxLeafSize = std::max<int>(stats.maxLeafSize, node.count);
+        sah += settings.intersectionCost * node.count * rel;
+        continue;
+      }
+      const int oldChild = node.offset;
+      node.offset = next;
+      next += 2;
+      sah += settings.traversalCost * rel;
+      // Push the right child first so the left subtree is laid out next.
+      stack.push_back({node.offset + 1, oldChild + 1, item.depth + 1});
+      stack.push_back({node.offset, oldChild, item.depth + 1});
+    }
+    RAYLAB_CHECK_EQ(next, used);
+    stats.sahCost = sah;
+    return flat;
+  }
+
+  void makeLeaf(BvhNode& node, int begin, int end) {
+    node.offset = begin;
+    node.count = static_cast<std::uint16_t>(end - begin);
+    node.axis = 0;
+  }
+
+  /// Builds the subtree of `nodeIndex` over prims[begin, end).
+  void build(int nodeIndex, int begin, int end, int depth) {
+    BvhNode& node = nodes[nodeIndex];
+    const int count = end - begin;
+
+    // Bounds of the triangles and of their centroids.
+    Bounds3 box, centroids;
+    for (int i = begin; i < end; ++i) {
+      const PrimRef& r = prims[i];
+      box.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
+                         Point3(r.upper[0], r.upper[1], r.upper[2])));
+      centroids.extend(Point3(r.centroid[0], r.centroid[1], r.centroid[2]));
+    }
+    setBox(node, box);
+    if (count <= settings.maxLeafSize) return makeLeaf(node, begin, end);
+
+    // Choose the split: SAH over bins, the median, or (degenerate centroids, very deep
+    // trees) the middle of the index range.
+    int mid = -1;
+    int axis = centroids.maxAxis();
+    const bool flat = centroids.extent()[axis] <= 0.0;
+    if (flat || depth >= kBvhSahDepthLimit) {
+      if (!flat && settings.split == BvhSettings::Split::Sah && count <= settings.maxSahLeafSize)
+        return makeLeaf(node, begin, end);
+      mid = begin + count / 2;
+      if (!flat) partitionMedian(axis, begin, mid, end);
+    } else if (settings.split == BvhSettings::Split::Median) {
+      mid = begin + count / 2;
+      partitionMedian(axis, begin, mid, end);
+    } else {
+      mid = partitionSah(box, centroids, begin, end, axis);
+      if (mid < 0) return makeLeaf(node, begin, end);
+    }
+
+    // Allocate the two children side by side and build them (in parallel when large).
+    const int child = nextNode.fetch_add(2);
+    node.offset = child;
+    node.count = 0;
+    node.axis = static_cast<std::uint8_t>(axis);
+    if (settings.parallel && count > kParallelGrain) {
+      tbb::parallel_invoke([&] { build(child, begin, mid, depth + 1); },
+                           [&] { build(child + 1, mid, end, depth + 1); });
+    } else {
+      build(child, begin, mid, depth + 1);
+      build(child + 1, mid, end, depth + 1);
+    }
+  }
+
+  void partitionMedian(int axis, int begin, int mid, int end) {
+    std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end,
+                     [axis](const PrimRef& a, const PrimRef& b) {
+                       return a.centroid[axis] < b.centroid[axis] ||
+                              (a.centroid[axis] == b.centroid[axis] && a.id < b.id);
+                     });
+  }
+
+  /// Binned SAH: returns the partition point, or -1 when a leaf is cheaper (and allowed).
+  /// `axis` receives the chosen split axis.
+  int partitionSah(const Bounds3& box, const Bounds3& centroids, int begin, int end, int& axis) {
+    const int binCount = settings.binCount;
+    const int count = end - begin;
+    const double area = box.surfaceArea();
+    double bestCost = kInfinity;
+    int bestAxis = -1, bestBin = -1;
+    Bin bins[64];
+    double rightArea[64];
+    int rightCount[64];
+    for (int a = 0; a < 3; ++a) {
+      const double lo = centroids.lower[a], extent = centroids.extent()[a];
+      if (!(extent > 0.0)) continue;
+      const double scale = binCount / extent;
+      // Count the centroids per bin and grow the bins' boxes.
+      for (int b = 0; b < binCount; ++b) bins[b] = Bin{};
+      for (int i = begin; i < end; ++i) {
+        const PrimRef& r = prims[i];
+        const int b = std::min(binCount - 1, static_cast<int>((r.centroid[a] - lo) * scale));
+        bins[b].count++;
+        bins[b].box.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
+                                   Point3(r.upper[0], r.upper[1], r.upper[2])));
+      }
+      // Sweep from the right to get the area and count right of each plane ...
+      Bounds3 acc;
+      int n = 0;
+      for (int b = binCount - 1; b > 0; --b) {
+        acc.extend(bins[b].box);
+        n += bins[b].count;
+        rightArea[b] = acc.surfaceArea();
+        rightCount[b] = n;
+      }
+      // ... then from the left, evaluating the cost of the plane left of bin b.
+      acc = Bounds3{};
+      n = 0;
+      for (int b = 1; b < binCount; ++b) {
+        acc.extend(bins[b - 1].box);
+        n += bins[b - 1].count;
+        if (n == 0 || rightCount[b] == 0) continue;
+        const double cost = settings.traversalCost +
+                            settings.intersectionCost *
+                                (acc.surfaceArea() * n + rightArea[b] * rightCount[b]) / area;
+        if (cost < bestCost) {
+          bestCost = cost;
+          bestAxis = a;
+          bestBin = b;
+        }
+      }
+    }
+
+    // Keep a leaf when splitting is no cheaper and the leaf is small enough.
+    const double leafCost = settings.intersectionCost * count;
+    if (bestAxis < 0) {
+      if (count <= settings.maxSahLeafSize) return -1;
+      axis = centroids.maxAxis();
+      const int mid = begin + count / 2;
+      partitionMedian(axis, begin, mid, end);
+      return mid;
+    }
+    if (bestCost >= leafCost && count <= settings.maxSahLeafSize) return -1;
+
+    // Partition by the same bin computation, so the counts match the sweep.
+    axis = bestAxis;
+    const double lo = centroids.lower[axis];
+    const double scale = binCount / centroids.extent()[axis];
+    auto it = std::partition(prims.begin() + begin, prims.begin() + end, [&](const PrimRef& r) {
+      return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - lo) * scale)) < bestBin;
+    });
+    return static_cast<int>(it - prims.begin());
+  }
+};
+
+std::string BvhSettings::toString() const {
+  std::ostringstream out;
+  out << "BvhSettings[split=" << (split == Split::Sah ? "sah" : "median") << ", bins=" << binCount
+      << ", maxLeafSize=" << maxLeafSize << ", maxSahLeafSize=" << maxSahLeafSize
+      << ", traversalCost=" << traversalCost << ", intersectionCost=" << intersectionCost
+      << ", parallel=" << parallel << "]";
+  return out.str();
+}
+
+std::string BvhStats::toString() const {
+  std::ostringstream out;
+  out << "BvhStats[triangles=" << triangleCount << ", nodes=" << nodeCount
+      << ", leaves=" << leafCount << ", depth=" << depth << ", maxLeafSize=" << maxLeafSize
+      << ", averageLeafSize=" << averageLeafSize << ", sahCost=" << sahCost << "]";
+  return out.str();
+}
+
+Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangles,
+         const BvhSettings& settings)
+    : m_settings(settings) {
+  RAYLAB_CHECK(settings.binCount >= 2 && settings.binCount <= 64);
+  RAYLAB_CHECK(settings.maxLeafSize >= 1 && settings.maxLeafSize <= 255);
+  RAYLAB_CHECK(settings.maxSahLeafSize >= settings.maxLeafSize && settings.maxSahLeafSize <= 255);
+  RAYLAB_CHECK(triangles.size() < static_cast<std::size_t>(INT_MAX / 2));
+  const int n = static_cast<int>(triangles.size());
+  m_stats.triangleCount = n;
+
+  // Step 1: build the tree over primitive references.
+  Builder builder(m_settings, vertices, triangles);
+  builder.buildTree();
+  // Step 2: copy the triangles' vertices in leaf order.
+  builder.copyTriangles(m_primIds, m_triVerts, m_bounds);
+  // Step 3: lay the nodes out depth first, measuring the tree.
+  const std::vector<BvhNode> flat = builder.flatten(m_stats);
+  RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
+  m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
+  // Step 4: interleave sibling pairs into cache-line pairs.
+  m_pairs = interleave(flat);
+}
+
+BvhNode Bvh::node(int index) const {
+  const BvhNodePair& pair = m_pairs[static_cast<std::size_t>(index / 2)];
+  const int lane = index % 2;
+  BvhNode n;
+  for (int k = 0; k < 6; ++k) n.box[k] = pair.box[k][lane];
+  n.offset = pair.offset[lane];
+  n.count = pair.count[lane];
+  n.axis = pair.axis[lane];
+  return n;
+}
+
+}  // namespace raylab
