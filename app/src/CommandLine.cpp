@@ -10,6 +10,8 @@
 #include "Subcommand.h"
 #include "TraceCommand.h"
 
+#include "raylab/core/FilePaths.h"
+
 #if RAYLAB_WITH_GUI
 #include "WindowCommand.h"
 #endif
@@ -41,7 +43,19 @@ int runCommandLine(int argc, char** argv) {
 
   // The window (no subcommand).
   std::string windowScene;
-  cli.add_option("--scene", windowScene, "Scene file to open (default: the built-in scene)");
+  CLI::Option* sceneOption = cli.add_option(
+      "--scene", windowScene,
+      "Scene file to open (default: the scene open last time, else the built-in scene)");
+  cli.add_option("file", windowScene, "Scene file to open (the same as --scene FILE)")
+      ->excludes(sceneOption)
+      ->type_name("FILE.json")
+      ->check(CLI::Validator(
+          [](const std::string& path) {
+            return lowerExtension(path) == ".json"
+                       ? std::string()
+                       : "'" + path + "' is neither a subcommand nor a scene file (.json)";
+          },
+          "FILE.json"));
   int quitAfterMs = -1;
   std::string screenshot;
   cli.add_option("--quit-after-ms", quitAfterMs,

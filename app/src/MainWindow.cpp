@@ -1,66 +1,129 @@
 #include "MainWindow.h"
 
+#include "EditPanel.h"
 #include "InspectorPanel.h"
+#include "InteractorStyle.h"
+#include "PropertiesPanel.h"
 #include "RayTreePanel.h"
+#include "SceneDocument.h"
 
+#include "raylab/core/SceneEdit.h"
+#include "raylab/core/SceneIO.h"
 #include "raylab/core/Shape.h"
 #include "raylab/vis/SceneView.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkNew.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <QAction>
+#include <QCloseEvent>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QKeySequence>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QPixmap>
+#include <QRegularExpression>
 #include <QScrollArea>
+#include <QSettings>
+#include <QShortcut>
 #include <QStatusBar>
 #include <QTimer>
 
 namespace raylab::app {
 
-MainWindow::MainWindow(const Scene& scene, QWidget* parent)
-    : QMainWindow(parent), m_view(std::make_unique<vis::SceneView>(scene)) {
-  setWindowTitle(QStringLiteral("RayLab — %1").arg(QString::fromStdString(scene.name)));
-  resize(1400, 860);
+namespace {
 
-  // Step 1: the 3D view, with the trackball interaction (drag rotates, wheel zooms); a
-  // click without a drag picks a ray (eventFilter).
+/// How many files Open Recent lists.
+constexpr int kRecentFiles = 10;
+
+/// RayLab's settings (an INI file in the user's configuration folder).
+QSettings settings() {
+  return QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("RayLab"),
+                   QStringLiteral("RayLab"));
+}
+
+/// `text` with every number written with 4 significant digits, for people
+/// ("(-1.6000000000000001, 1.2, ...)" -> "(-1.6, 1.2, ...)").
+QString forPeople(const std::string& text) {
+  static const QRegularExpression number(
+      QStringLiteral("-?\\d+\\.\\d+(?:[eE][-+]?\\d+)?|-?\\d+[eE][-+]?\\d+"));
+  QString in = QString::fromStdString(text), out;
+  int last = 0;
+  auto it = number.globalMatch(in);
+  while (it.hasNext()) {
+    const QRegularExpressionMatch m = it.next();
+    out += in.mid(last, m.capturedStart() - last) + number4(m.captured().toDouble());
+    last = m.capturedEnd();
+  }
+  return out + in.mid(last);
+}
+
+/// `widget` in a scroll area (for low windows); `fitWidth` keeps it at least as wide as
+/// it wants to be, else it may be squeezed (and scrolls sideways).
+QScrollArea* scrolling(QWidget* widget, bool fitWidth = true) {
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(widget);
+  scroll->setWidgetResizable(true);
+  if (fitWidth) {
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setMinimumWidth(widget->sizeHint().width() + 24);
+  }
+  return scroll;
+}
+
+}  // namespace
+
+MainWindow::MainWindow(const Scene& scene, QWidget* parent)
+    : QMainWindow(parent),
+      m_document(std::make_unique<SceneDocument>()),
+      m_view(std::make_unique<vis::SceneView>(scene)) {
+  m_document->adopt(scene, {});
+  resize(1400, 860);
+  setAcceptDrops(true);
+
+  // Step 1: the 3D view, with the trackball interaction (drag rotates, wheel zooms) and no
+  // VTK keys; a click without a drag picks a ray or an object (eventFilter).
   m_vtkWidget = new QVTKOpenGLNativeWidget(this);
   vtkNew<vtkGenericOpenGLRenderWindow> window;
   m_vtkWidget->setRenderWindow(window);
   window->AddRenderer(m_view->renderer());
-  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  vtkNew<vtkRaylabInteractorStyle> style;
   m_vtkWidget->interactor()->SetInteractorStyle(style);
   m_vtkWidget->installEventFilter(this);
   setCentralWidget(m_vtkWidget);
 
-  // Step 2: the object list, in a dock on the left.
+  // Step 2: on the left the objects, and the selection's operations and values as tabs.
   m_objectList = new QListWidget;
-  for (const SceneObject& object : scene.objects) {
-    auto* item = new QListWidgetItem(QString::fromStdString(object.name), m_objectList);
-    item->setToolTip(QString::fromStdString(object.shape ? object.shape->toString() : ""));
-  }
+  m_objectList->setToolTip(tr("The scene's objects: select one to edit it (Esc: none)"));
   QDockWidget* objects =
       addDock(tr("Objects"), QStringLiteral("objects"), m_objectList, Qt::LeftDockWidgetArea);
   connect(m_objectList, &QListWidget::currentRowChanged, this,
           [this](int row) { showSelection(row); });
+  m_editPanel = new EditPanel(*m_document);
+  QDockWidget* edit =
+      addDock(tr("Edit"), QStringLiteral("edit"), scrolling(m_editPanel), Qt::LeftDockWidgetArea);
+  m_properties = new PropertiesPanel(*m_document);
+  QDockWidget* properties = addDock(tr("Properties"), QStringLiteral("properties"),
+                                    scrolling(m_properties, false), Qt::LeftDockWidgetArea);
+  tabifyDockWidget(edit, properties);
+  edit->raise();
+  connect(m_editPanel, &EditPanel::editRefused, this,
+          [this](const QString& message) { showError(tr("Edit refused"), message); });
+  connect(m_properties, &PropertiesPanel::editRefused, this,
+          [this](const QString& message) { showError(tr("Value refused"), message); });
+  connect(m_editPanel, &EditPanel::selectionRequested, this,
+          [this](int row) { selectObject(row); });
 
   // Step 3: the ray-tree panel on the right, scrolling when the window is low.
   m_rayPanel = new RayTreePanel(*m_view);
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(m_rayPanel);
-  scroll->setWidgetResizable(true);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(m_rayPanel->sizeHint().width() + 24);
-  QDockWidget* rays =
-      addDock(tr("Ray tree"), QStringLiteral("raytree"), scroll, Qt::RightDockWidgetArea);
+  QDockWidget* rays = addDock(tr("Ray tree"), QStringLiteral("raytree"), scrolling(m_rayPanel),
+                              Qt::RightDockWidgetArea);
 
   // Step 4: the inspector, in a tab beside the ray-tree panel (raised when a ray is chosen):
   // the 3D view keeps the whole height.
@@ -70,7 +133,8 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   tabifyDockWidget(rays, inspector);
   m_raysDock = rays;
   m_inspectorDock = inspector;
-  resizeDocks({objects}, {170}, Qt::Horizontal);
+  resizeDocks({objects, edit, properties}, {330, 330, 330}, Qt::Horizontal);
+  resizeDocks({objects, edit}, {220, 560}, Qt::Vertical);
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this,
           [this](const QString& text) { statusBar()->showMessage(text); });
@@ -83,20 +147,102 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   connect(m_inspector, &InspectorPanel::segmentRequested, m_rayPanel,
           [this](int id) { m_rayPanel->selectSegment(id); });
 
-  // Step 5: menus and the hint line.
+  // Step 5: the document drives the view, the list and the title.
+  connect(m_document.get(), &SceneDocument::sceneChanged, this, [this] { sceneChanged(); });
+  connect(m_document.get(), &SceneDocument::fileStateChanged, this, [this] { updateTitle(); });
+  buildMenus();
+  sceneChanged();
+  updateTitle();
+  statusBar()->showMessage(tr(
+      "Drag to rotate, wheel to zoom, click an object to select it; trace a pixel on the right"));
+}
+
+void MainWindow::buildMenus() {
+  // File: the scene files, with the standard shortcuts.
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  QAction* quit = file->addAction(tr("&Quit"));
-  quit->setShortcut(QKeySequence::Quit);
-  connect(quit, &QAction::triggered, this, [this] { close(); });
+  const auto action = [this](QMenu* menu, const QString& text, const QString& tip,
+                             const QList<QKeySequence>& keys, auto slot) {
+    QAction* a = menu->addAction(text);
+    a->setToolTip(tip);
+    a->setStatusTip(tip);
+    a->setShortcuts(keys);
+    connect(a, &QAction::triggered, this, slot);
+    return a;
+  };
+  action(file, tr("&New"), tr("Start again from the built-in default scene"), {QKeySequence::New},
+         [this] { newScene(); });
+  action(file, tr("&Open…"), tr("Open a scene file (.json)"), {QKeySequence::Open}, [this] {
+    if (!maybeSave()) return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open a scene"), QString(),
+                                                      tr("RayLab scenes (*.json)"));
+    if (!path.isEmpty()) {
+      m_document->undoStack().setClean();  // already asked
+      openFile(path);
+    }
+  });
+  m_recentMenu = file->addMenu(tr("Open &Recent"));
+  action(file, tr("&Save"), tr("Save the scene to its file"), {QKeySequence::Save},
+         [this] { save(); });
+  action(file, tr("Save &As…"), tr("Save the scene to another file"),
+         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)}, [this] { saveAs(); });
+  action(file, tr("Re&vert"), tr("Read the scene's file again, dropping every edit"), {},
+         [this] { revert(); });
+  file->addSeparator();
+  action(file, tr("&Quit"), tr("Close RayLab"), {QKeySequence::Quit}, [this] { close(); });
+  updateRecentMenu();
+
+  // Edit: undo, the selection's operations, and new objects.
+  QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = m_document->undoStack().createUndoAction(this, tr("&Undo"));
+  undo->setShortcuts({QKeySequence::Undo});
+  QAction* redo = m_document->undoStack().createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+  editMenu->addAction(undo);
+  editMenu->addAction(redo);
+  editMenu->addSeparator();
+  action(editMenu, tr("&Delete"), tr("Delete the selected object"), {QKeySequence::Delete},
+         [this] { m_editPanel->remove(); });
+  action(editMenu, tr("D&uplicate"), tr("Copy the selected object"),
+         {QKeySequence(Qt::CTRL | Qt::Key_D)}, [this] { m_editPanel->duplicate(); });
+  action(editMenu, tr("Clear the selection"), tr("Select no object"),
+         {QKeySequence(Qt::Key_Escape)}, [this] { selectObject(-1); });
+  m_addMenu = editMenu->addMenu(tr("&Add"));
+  const std::pair<edit::NewShape, QString> shapes[] = {{edit::NewShape::Sphere, tr("Sphere")},
+                                                       {edit::NewShape::Box, tr("Box")},
+                                                       {edit::NewShape::Plane, tr("Plane")},
+                                                       {edit::NewShape::Quad, tr("Quad")},
+                                                       {edit::NewShape::Triangle, tr("Triangle")}};
+  for (const auto& [shape, name] : shapes) {
+    const edit::NewShape kind = shape;
+    action(m_addMenu, name, tr("Add a %1 where the camera looks").arg(name.toLower()), {},
+           [this, kind, name = name] {
+             const std::string origin = m_document->origin();
+             addObject(tr("Add %1").arg(name.toLower()),
+                       [kind, origin](const Scene& s) { return edit::addShape(s, kind, origin); });
+           });
+  }
+  action(m_addMenu, tr("Mesh from a file…"), tr("Add a mesh (OBJ, PLY, OFF, STL)"), {}, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Add a mesh"), QString(),
+                                                      tr("Meshes (*.obj *.ply *.off *.stl)"));
+    if (path.isEmpty()) return;
+    const std::string origin = m_document->origin(), mesh = path.toStdString();
+    addObject(tr("Add mesh %1").arg(QFileInfo(path).fileName()),
+              [origin, mesh](const Scene& s) { return edit::addMesh(s, mesh, origin); });
+  });
+  action(m_addMenu, tr("Point light"), tr("Add a point light above where the camera looks"), {},
+         [this] {
+           const std::string origin = m_document->origin();
+           addObject(tr("Add point light"),
+                     [origin](const Scene& s) { return edit::addPointLight(s, origin); });
+         });
+
+  // View.
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-  QAction* reset = viewMenu->addAction(tr("&Reset view"));
-  reset->setShortcut(QKeySequence(Qt::Key_R));
-  connect(reset, &QAction::triggered, this, [this] { resetView(); });
+  action(viewMenu, tr("&Reset view"), tr("Look at the whole scene again"),
+         {QKeySequence(Qt::Key_R)}, [this] { resetView(); });
   viewMenu->addSeparator();
-  for (QDockWidget* dock : {objects, rays, inspector})
+  for (QDockWidget* dock : findChildren<QDockWidget*>())
     viewMenu->addAction(dock->toggleViewAction());
-  statusBar()->showMessage(
-      tr("Drag to rotate, wheel to zoom, pick an object in the list; trace a pixel on the right"));
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
@@ -119,19 +265,72 @@ MainWindow::~MainWindow() {
   }
 }
 
+void MainWindow::sceneChanged() {
+  const Scene& scene = m_document->scene();
+  m_view->updateScene(scene);
+  // The list of objects, the selection kept where it still exists.
+  const int selected = m_selected < int(scene.objects.size()) ? m_selected : -1;
+  {
+    const QSignalBlocker block(m_objectList);
+    m_objectList->clear();
+    for (const SceneObject& object : scene.objects) {
+      auto* item = new QListWidgetItem(QString::fromStdString(object.name), m_objectList);
+      item->setToolTip(forPeople(object.shape ? object.shape->toString() : ""));
+    }
+  }
+  // A tree traced before the change is traced again: never silently wrong.
+  m_rayPanel->retrace();
+  selectObject(selected);
+  updateTitle();
+}
+
+void MainWindow::adoptScene(const Scene& scene, const QString& path) {
+  m_document->adopt(scene, path);
+  if (!path.isEmpty()) rememberFile(path);
+  resetView();
+}
+
+void MainWindow::updateTitle() {
+  const QString name = m_document->path().isEmpty()
+                           ? QString::fromStdString(m_document->scene().name)
+                           : QFileInfo(m_document->path()).fileName();
+  setWindowTitle(QStringLiteral("%1[*] — RayLab").arg(name));
+  setWindowModified(m_document->isModified());
+}
+
 void MainWindow::selectObject(int row) {
-  // The list's currentRowChanged signal then highlights it in the view.
-  m_objectList->setCurrentRow(row);
+  // The list's currentRowChanged signal then highlights it in the view and the panels.
+  if (row < 0 || row >= m_objectList->count()) {
+    m_objectList->setCurrentRow(-1);
+    m_objectList->clearSelection();
+    showSelection(-1);
+  } else {
+    m_objectList->setCurrentRow(row);
+    showSelection(row);
+  }
 }
 
 void MainWindow::showSelection(int row) {
-  m_view->setHighlighted(row);
-  if (row >= 0 && row < m_view->objectCount()) {
-    const SceneObject& object = m_view->scene().objects[static_cast<std::size_t>(row)];
-    statusBar()->showMessage(QString::fromStdString(
-        object.name + ": " + (object.shape ? object.shape->toString() : std::string())));
+  const Scene& scene = m_document->scene();
+  m_selected = row >= 0 && row < int(scene.objects.size()) ? row : -1;
+  m_view->setHighlighted(m_selected);
+  m_editPanel->setSelection(m_selected);
+  if (m_properties->object() != m_selected) m_properties->showObject(m_selected);
+  if (m_selected >= 0) {
+    const SceneObject& object = scene.objects[static_cast<std::size_t>(m_selected)];
+    statusBar()->showMessage(QString::fromStdString(object.name) + QStringLiteral(": ") +
+                             forPeople(object.shape ? object.shape->toString() : std::string()));
   }
   render();
+}
+
+void MainWindow::addObject(const QString& what, const std::function<Scene(const Scene&)>& edit) {
+  try {
+    m_document->apply(what, edit);
+    selectObject(int(m_document->scene().objects.size()) - 1);
+  } catch (const Exception& e) {
+    showError(tr("Cannot add"), QString::fromStdString(e.what()));
+  }
 }
 
 void MainWindow::resetView() {
@@ -148,13 +347,21 @@ void MainWindow::render() {
 }
 
 int MainWindow::clickRay(const QPoint& position) {
-  if (!m_view->hasRayTree()) return -1;
-  const int id =
-      m_view->segmentAt(position.x(), position.y(), m_vtkWidget->width(), m_vtkWidget->height());
-  m_rayPanel->selectSegment(id);
-  statusBar()->showMessage(id >= 0 ? tr("Ray #%1 selected: see the Ray inspector tab").arg(id)
-                                   : tr("No ray under the cursor"));
-  return id;
+  const int w = m_vtkWidget->width(), h = m_vtkWidget->height();
+  // A ray under the cursor first; else the object there.
+  if (m_view->hasRayTree()) {
+    const int id = m_view->segmentAt(position.x(), position.y(), w, h);
+    if (id >= 0) {
+      m_rayPanel->selectSegment(id);
+      statusBar()->showMessage(tr("Ray #%1 selected: see the Ray inspector tab").arg(id));
+      return id;
+    }
+    m_rayPanel->selectSegment(-1);
+  }
+  const int object = m_view->objectAt(position.x(), position.y(), w, h);
+  selectObject(object);
+  if (object < 0) statusBar()->showMessage(tr("Nothing under the cursor"));
+  return -1;
 }
 
 void MainWindow::showEvent(QShowEvent* event) {
@@ -167,7 +374,8 @@ void MainWindow::showEvent(QShowEvent* event) {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
-  // A left click that does not drag picks a ray; the trackball still sees every event.
+  // A left click that does not drag picks a ray or an object; the trackball still sees
+  // every event.
   if (watched == m_vtkWidget) {
     if (event->type() == QEvent::MouseButtonPress) {
       const auto* mouse = static_cast<QMouseEvent*>(event);
@@ -187,6 +395,156 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 bool MainWindow::saveScreenshot(const QString& path) {
   const QPixmap picture = grab();
   return !picture.isNull() && picture.save(path, "PNG");
+}
+
+void MainWindow::showError(const QString& title, const QString& text) {
+  m_lastError = text;
+  // Window-modal but not blocking: the event loop (and a test) goes on.
+  auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  box->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  box->open();
+  statusBar()->showMessage(text.section(QLatin1Char('\n'), 0, 0));
+}
+
+bool MainWindow::maybeSave() {
+  if (!m_document->isModified()) return true;
+  const QMessageBox::StandardButton answer =
+      m_unsavedAnswer
+          ? *m_unsavedAnswer
+          : QMessageBox::question(this, tr("Unsaved changes"),
+                                  tr("The scene has changes that are not saved. Save them?"),
+                                  QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                  QMessageBox::Save);
+  if (answer == QMessageBox::Save) return save();
+  return answer == QMessageBox::Discard;
+}
+
+bool MainWindow::openFile(const QString& path) {
+  if (!maybeSave()) return false;
+  try {
+    m_document->open(path);
+  } catch (const Exception& e) {
+    showError(tr("Cannot open the scene"), QString::fromStdString(e.what()));
+    return false;
+  }
+  rememberFile(path);
+  m_view->resetViewCamera(
+      m_vtkWidget->height() > 0 ? double(m_vtkWidget->width()) / m_vtkWidget->height() : 1.0);
+  statusBar()->showMessage(tr("Opened %1").arg(path));
+  render();
+  return true;
+}
+
+bool MainWindow::saveFile(const QString& path) {
+  try {
+    m_document->saveAs(path);
+  } catch (const Exception& e) {
+    showError(tr("Cannot save the scene"), QString::fromStdString(e.what()));
+    return false;
+  }
+  rememberFile(path);
+  statusBar()->showMessage(tr("Saved %1").arg(path));
+  return true;
+}
+
+bool MainWindow::save() {
+  return m_document->path().isEmpty() ? saveAs() : saveFile(m_document->path());
+}
+
+bool MainWindow::saveAs() {
+  QString path = QFileDialog::getSaveFileName(this, tr("Save the scene"), m_document->path(),
+                                              tr("RayLab scenes (*.json)"));
+  if (path.isEmpty()) return false;
+  if (!path.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) path += QStringLiteral(".json");
+  return saveFile(path);
+}
+
+void MainWindow::newScene() {
+  if (!maybeSave()) return;
+  m_document->newDefault();
+  resetView();
+  statusBar()->showMessage(tr("The built-in default scene"));
+}
+
+void MainWindow::revert() {
+  if (m_document->isModified() && !m_unsavedAnswer &&
+      QMessageBox::question(this, tr("Revert"), tr("Drop every change since the file was saved?"),
+                            QMessageBox::Yes | QMessageBox::Cancel) != QMessageBox::Yes)
+    return;
+  try {
+    m_document->revert();
+  } catch (const Exception& e) {
+    showError(tr("Cannot read the scene again"), QString::fromStdString(e.what()));
+  }
+}
+
+void MainWindow::startUp() {
+  const QString last = settings().value(QStringLiteral("lastScene")).toString();
+  if (last.isEmpty()) {
+    statusBar()->showMessage(tr("The built-in default scene (no scene was open last time)"));
+    return;
+  }
+  try {
+    m_document->open(last);
+    rememberFile(last);
+    statusBar()->showMessage(tr("Opened %1, the scene open last time").arg(last));
+  } catch (const Exception& e) {
+    statusBar()->showMessage(
+        tr("The built-in default scene: the scene open last time could not be read (%1)")
+            .arg(QString::fromStdString(e.what())));
+  }
+}
+
+QStringList MainWindow::recentFiles() const {
+  return settings().value(QStringLiteral("recentFiles")).toStringList();
+}
+
+void MainWindow::rememberFile(const QString& path) {
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  QStringList files = recentFiles();
+  files.removeAll(absolute);
+  files.prepend(absolute);
+  while (files.size() > kRecentFiles) files.removeLast();
+  QSettings s = settings();
+  s.setValue(QStringLiteral("recentFiles"), files);
+  s.setValue(QStringLiteral("lastScene"), absolute);
+  updateRecentMenu();
+}
+
+void MainWindow::updateRecentMenu() {
+  if (!m_recentMenu) return;
+  m_recentMenu->clear();
+  const QStringList files = recentFiles();
+  for (const QString& path : files) {
+    QAction* a = m_recentMenu->addAction(QFileInfo(path).fileName());
+    a->setToolTip(path);
+    a->setStatusTip(path);
+    connect(a, &QAction::triggered, this, [this, path] { openFile(path); });
+  }
+  m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  if (maybeSave())
+    event->accept();
+  else
+    event->ignore();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.front().isLocalFile() &&
+      urls.front().toLocalFile().endsWith(QStringLiteral(".json"), Qt::CaseInsensitive))
+    event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.size() == 1 && urls.front().isLocalFile()) {
+    event->acceptProposedAction();
+    openFile(urls.front().toLocalFile());
+  }
 }
 
 }  // namespace raylab::app

@@ -3,11 +3,15 @@
 #include "raylab/core/Scene.h"
 
 #include <QMainWindow>
+#include <QMessageBox>
+#include <QStringList>
 
 #include <memory>
+#include <optional>
 
 class QDockWidget;
 class QListWidget;
+class QMenu;
 class QVTKOpenGLNativeWidget;
 
 namespace raylab::vis {
@@ -16,63 +20,134 @@ class SceneView;
 
 namespace raylab::app {
 
+class EditPanel;
 class InspectorPanel;
+class PropertiesPanel;
 class RayTreePanel;
+class SceneDocument;
 
 /**
- * \brief RayLab's main window: the scene's 3D view (drag to rotate, wheel to zoom, as in
- * the original course program); on the left the list of the scene's objects (selecting one
- * highlights it in the view); on the right, in two tabs, the ray-tree panel (trace a
- * pixel, colours and filters, the bounce animation) and the ray inspector. Clicking a ray in the
- * view (a press and release without dragging) selects it and shows it in the inspector.
+ * \brief RayLab's main window, the original course program whole and more: the scene's 3D
+ * view (drag to rotate, wheel to zoom); on the left the list of the scene's objects (a
+ * click in the list or on an object in the view selects it), the original program's
+ * object operations (rotate by an angle about an axis, and move, scale, delete, duplicate,
+ * rename) and every value of the selection (or, with nothing selected, of the camera and
+ * the render settings); on the right the ray-tree panel (trace a pixel, Simulate a grid of
+ * rays, colours and filters, the bounce animation) and the ray inspector.
+ *
+ * The scene is a SceneDocument: File opens, saves (atomically), reverts and remembers the
+ * last ten files; every edit is an undo step; the title shows the file and a modified
+ * marker, and closing, opening or New with unsaved changes asks Save / Discard / Cancel.
+ * A file that fails to load or save is reported in a dialog with the whole message, and
+ * the scene that was open stays open.
  */
 class MainWindow : public QMainWindow {
   Q_OBJECT
 
  public:
-  /// A window showing `scene`; its title names the scene.
+  /// A window showing `scene` (no file: a new, unmodified document).
   explicit MainWindow(const Scene& scene, QWidget* parent = nullptr);
+  /// Shows `scene`, read from `path`, as the window's document (nothing to undo).
+  void adoptScene(const Scene& scene, const QString& path);
   ~MainWindow() override;
 
-  /// Selects object `row` (index into Scene::objects) in the list and the view; -1 none.
+  /// \name Files (the File menu's actions, for tests and the command line)
+  /// @{
+  /// Opens `path` (asking about unsaved changes first). On failure: a dialog with the
+  /// loader's message, the open scene unchanged; returns false.
+  bool openFile(const QString& path);
+  /// Writes the scene to `path` and makes it the document's file; a dialog on failure.
+  bool saveFile(const QString& path);
+  /// Save to the document's file, or Save As when it has none.
+  bool save();
+  /// Asks for a file name, then saveFile.
+  bool saveAs();
+  /// The built-in default scene, no file (asking about unsaved changes first).
+  void newScene();
+  /// The file again, without the edits (asking first when there are some).
+  void revert();
+  /// What the window opens when started without a file: the last scene it had open, or
+  /// the built-in default when there is none or it cannot be read; the status bar says
+  /// which (and why the last one failed).
+  void startUp();
+  /// Files opened or saved, newest first (at most 10).
+  QStringList recentFiles() const;
+  /// The text of the last error dialog (for tests).
+  QString lastError() const { return m_lastError; }
+  /// For tests: the answer to "Save changes?" without showing the question.
+  void setUnsavedChangesAnswer(std::optional<QMessageBox::StandardButton> answer) {
+    m_unsavedAnswer = answer;
+  }
+  /// Asks Save / Discard / Cancel when the scene has unsaved changes; true to go on.
+  bool maybeSave();
+  /// @}
+
+  /// Selects object `row` (index into Scene::objects) in the list, the view and the
+  /// panels; -1 clears the selection.
   void selectObject(int row);
+  /// The selected object, -1 when none.
+  int selectedObject() const { return m_selected; }
   /// Grabs the whole window, 3D view included, into a PNG file. False when it cannot.
   bool saveScreenshot(const QString& path);
 
+  SceneDocument& document() { return *m_document; }
   /// The 3D view shown (for tests and for the other panels).
   vis::SceneView& sceneView() { return *m_view; }
   /// The widget that shows the 3D view and turns mouse input into camera moves.
   QVTKOpenGLNativeWidget* viewWidget() const { return m_vtkWidget; }
   /// The list of the scene's objects, in Scene::objects order.
   QListWidget* objectList() const { return m_objectList; }
-  /// The ray-tree panel (trace, style, animation).
   RayTreePanel* rayTreePanel() const { return m_rayPanel; }
-  /// The ray inspector.
   InspectorPanel* inspectorPanel() const { return m_inspector; }
+  EditPanel* editPanel() const { return m_editPanel; }
+  PropertiesPanel* propertiesPanel() const { return m_properties; }
+  QMenu* addMenu() const { return m_addMenu; }
 
   /// What a click at `position` (view widget pixels) does: selects the drawn ray nearest
-  /// to it (or clears the selection when there is none). Returns the ray id or -1.
+  /// to it when there is one (returns its id), else the object under it in the list
+  /// (returns -1; no object: clears the selection).
   int clickRay(const QPoint& position);
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
   void showEvent(QShowEvent* event) override;
+  void closeEvent(QCloseEvent* event) override;
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
+  void buildMenus();
   void showSelection(int row);
   void resetView();
   void render();
+  /// After any change of the scene: the view, the list, a traced tree retraced.
+  void sceneChanged();
+  void updateTitle();
+  void rememberFile(const QString& path);
+  void updateRecentMenu();
+  /// A dialog (not blocking the event loop) with `text`; kept for lastError().
+  void showError(const QString& title, const QString& text);
+  /// Adds a shape, a mesh or a point light through `edit` and selects it.
+  void addObject(const QString& what, const std::function<Scene(const Scene&)>& edit);
   QDockWidget* addDock(const QString& title, const QString& name, QWidget* widget,
                        Qt::DockWidgetArea area);
 
+  std::unique_ptr<SceneDocument> m_document;
   std::unique_ptr<vis::SceneView> m_view;
   QVTKOpenGLNativeWidget* m_vtkWidget = nullptr;
   QListWidget* m_objectList = nullptr;
   RayTreePanel* m_rayPanel = nullptr;
   InspectorPanel* m_inspector = nullptr;
+  EditPanel* m_editPanel = nullptr;
+  PropertiesPanel* m_properties = nullptr;
   QDockWidget* m_raysDock = nullptr;       ///< Tab of the ray-tree panel.
   QDockWidget* m_inspectorDock = nullptr;  ///< Tab of the inspector, beside it.
-  QPoint m_pressPosition;                  ///< Where the left button went down in the view.
+  QMenu* m_recentMenu = nullptr;
+  QMenu* m_addMenu = nullptr;
+  int m_selected = -1;
+  QString m_lastError;
+  std::optional<QMessageBox::StandardButton> m_unsavedAnswer;
+  QPoint m_pressPosition;  ///< Where the left button went down in the view.
   bool m_pressed = false;
 };
 

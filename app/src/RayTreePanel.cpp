@@ -51,8 +51,9 @@ QIcon swatch(const Vec3& colour) {
   return QIcon(pixmap);
 }
 
-/// Frames advanced per timer tick at speed-slider value v (1..10).
-int framesPerTick(int v) { return std::max(1, v); }
+/// Frames the animation moves on per timer tick, by speed-slider position: slower than
+/// one frame a tick for following a single bounce, faster for a bushy tree.
+constexpr double kSpeeds[] = {0.125, 0.25, 0.5, 1.0, 2.0, 3.0, 4.0, 8.0, 16.0};
 
 }  // namespace
 
@@ -90,6 +91,8 @@ QWidget* RayTreePanel::buildTraceGroup() {
          "Distributed: many rays per bounce (soft shadows, gloss).\n"
          "Path tracing: one sampled continuation per bounce, Russian roulette."));
   setAlgorithm(scene.render.algorithm);
+  // A tree on screen always belongs to the algorithm chosen: trace it again.
+  connect(m_algorithm, qOverload<int>(&QComboBox::activated), this, [this] { retrace(); });
   form->addRow(tr("Algorithm"), m_algorithm);
 
   const int width = std::max(1, scene.camera.width), height = std::max(1, scene.camera.height);
@@ -125,6 +128,28 @@ QWidget* RayTreePanel::buildTraceGroup() {
   m_traceInfo = new QLabel;
   m_traceInfo->setWordWrap(true);
   form->addRow(m_traceInfo);
+
+  // Step 3: the original program's Simulate: a grid of camera rays over the image.
+  m_across = new QSpinBox;
+  m_across->setRange(1, 64);
+  m_across->setValue(3);
+  m_across->setToolTip(tr("Rays across the image (the original program's 光线横向数量)"));
+  m_down = new QSpinBox;
+  m_down->setRange(1, 64);
+  m_down->setValue(3);
+  m_down->setToolTip(tr("Rays down the image (光线纵向数量)"));
+  m_simulateButton = new QPushButton(tr("Simulate"));
+  m_simulateButton->setToolTip(
+      tr("Trace a grid of camera rays spread evenly over the image and draw all their ray "
+         "trees, coloured by energy (1 x 1: the centre pixel)"));
+  connect(m_simulateButton, &QPushButton::clicked, this, [this] { simulate(); });
+  auto* grid = new QHBoxLayout;
+  grid->addWidget(new QLabel(tr("across")));
+  grid->addWidget(m_across, 1);
+  grid->addWidget(new QLabel(tr("down")));
+  grid->addWidget(m_down, 1);
+  grid->addWidget(m_simulateButton);
+  form->addRow(tr("Rays"), grid);
   return group;
 }
 
@@ -231,15 +256,14 @@ QWidget* RayTreePanel::buildAnimationGroup() {
   m_raysPerStep->setEnabled(false);
 
   m_speed = new QSlider(Qt::Horizontal);
-  m_speed->setRange(1, 10);
-  m_speed->setValue(2);
-  m_speed->setToolTip(
-      tr("Frames the animation moves on per tick (%1 ticks a second)").arg(1000 / kTickMs));
+  m_speed->setRange(0, int(std::size(kSpeeds)) - 1);
+  m_speed->setValue(4);  // 2x
+  m_speed->setToolTip(tr("How fast the rays travel: frames the animation moves on per tick "
+                         "(%1 ticks a second), from 1/8 to 16")
+                          .arg(1000 / kTickMs));
   m_speedLabel = new QLabel;
-  m_speedLabel->setMinimumWidth(QFontMetrics(font()).horizontalAdvance(QStringLiteral("10x  ")));
-  const auto speedText = [this] {
-    m_speedLabel->setText(QStringLiteral("%1x").arg(framesPerTick(m_speed->value())));
-  };
+  m_speedLabel->setMinimumWidth(QFontMetrics(font()).horizontalAdvance(QStringLiteral("0.125x  ")));
+  const auto speedText = [this] { m_speedLabel->setText(QStringLiteral("%1x").arg(speed())); };
   speedText();
   connect(m_speed, &QSlider::valueChanged, this, speedText);
   auto* speed = new QHBoxLayout;
@@ -328,6 +352,7 @@ void RayTreePanel::trace() {
   settings.algorithm = algorithm();
   m_trace = std::make_shared<const PixelTrace>(
       tracePixel(scene, settings, m_pixelX->value(), m_pixelY->value(), m_sample->value()));
+  m_grid = false;
   const PixelTrace& trace = *m_trace;
 
   // Summarise: which sample, rays by kind, the estimate.
@@ -340,6 +365,67 @@ void RayTreePanel::trace() {
   if (trace.tree.truncated)
     info += QStringLiteral("\n") + QString::fromStdString(trace.tree.message);
   m_traceInfo->setText(info);
+  showTrace();
+}
+
+void RayTreePanel::simulate() {
+  pause();
+  const Scene& scene = m_view.scene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = algorithm();
+  const int across = m_across->value(), down = m_down->value();
+  const GridTrace grid = traceGrid(scene, settings, across, down);
+
+  // The grid as one trace: every tree's rays, narration and counts together.
+  auto combined = std::make_shared<PixelTrace>();
+  combined->algorithm = settings.algorithm;
+  combined->x = combined->y = -1;
+  combined->tree = grid.combined;
+  for (const PixelTrace& t : grid.traces) {
+    combined->stepTexts.insert(combined->stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
+    combined->counts += t.counts;
+  }
+  m_trace = combined;
+  m_grid = true;
+
+  // Coloured by energy, as the original program drew its trees.
+  m_colouring->setCurrentIndex(m_colouring->findData(QStringLiteral("energy")));
+  QString info = tr("%1: Simulate %2 x %3, %4 pixels, %5 rays")
+                     .arg(QString::fromStdString(algorithmTitle(settings.algorithm)))
+                     .arg(across)
+                     .arg(down)
+                     .arg(grid.traces.size())
+                     .arg(grid.combined.segments.size());
+  if (grid.truncated) info += QStringLiteral("\n") + QString::fromStdString(grid.message);
+  m_traceInfo->setText(info);
+  showTrace();
+  if (grid.truncated) setStatus(QString::fromStdString(grid.message));
+}
+
+void RayTreePanel::retrace() {
+  if (!m_trace) return;
+  if (m_grid)
+    simulate();
+  else
+    trace();
+}
+
+void RayTreePanel::clearTrace() {
+  pause();
+  m_trace.reset();
+  m_grid = false;
+  m_selected = -1;
+  m_view.clearRayTree();
+  m_traceInfo->clear();
+  updateFrameControls();
+  emit treeChanged();
+  emit segmentSelected(-1);
+  setStatus(tr("Choose a pixel and press Trace to record its ray tree."));
+  emit viewChanged();
+}
+
+void RayTreePanel::showTrace() {
+  const PixelTrace& trace = *m_trace;
 
   // Pace the processing-order animation to the tree's size.
   {
@@ -446,8 +532,23 @@ void RayTreePanel::pause() {
 
 bool RayTreePanel::playing() const { return m_timer && m_timer->isActive(); }
 
+double RayTreePanel::speed() const {
+  return kSpeeds[std::clamp(m_speed->value(), 0, int(std::size(kSpeeds)) - 1)];
+}
+
+void RayTreePanel::setSpeed(double framesPerTick) {
+  int best = 0;
+  for (int i = 0; i < int(std::size(kSpeeds)); ++i)
+    if (std::abs(kSpeeds[i] - framesPerTick) < std::abs(kSpeeds[best] - framesPerTick)) best = i;
+  m_speed->setValue(best);
+}
+
 void RayTreePanel::tick() {
-  m_frame += framesPerTick(m_speed->value());
+  // Fractions of a frame add up over ticks: at 1/4 a frame moves every fourth tick.
+  m_phase += speed();
+  const int frames = int(std::floor(m_phase));
+  m_phase -= frames;
+  m_frame += frames;
   if (m_frame >= frameCount() - 1) {
     m_frame = frameCount() - 1;
     m_timer->stop();

@@ -59,6 +59,16 @@ class RayTreePanel : public QWidget {
 
   /// Records the tree of the chosen (pixel, sample) and shows it whole.
   void trace();
+  /// The original program's Simulate: traces the grid of rays across x down (sample 0 of
+  /// each pixel, core traceGrid) and shows all their trees together, coloured by energy.
+  void simulate();
+  /// Traces again what is shown (the pixel or the grid), after the scene or the algorithm
+  /// changed; nothing when nothing is shown. A tree on screen is never stale.
+  void retrace();
+  /// Removes the tree from the view.
+  void clearTrace();
+  /// True when the tree shown is a Simulate grid.
+  bool showsGrid() const { return m_trace && m_grid; }
   /// The tree shown (empty before the first trace).
   const RayTree& tree() const;
   /// What each processed ray did, by ray id (the stepper's narration).
@@ -81,8 +91,12 @@ class RayTreePanel : public QWidget {
   void stepForward();
   /// Back to the end of the previous step.
   void stepBack();
-  /// One timer tick: `speed` frames on; pauses at the last frame.
+  /// One timer tick: `speed` frames on (fractions add up over ticks); pauses at the end.
   void tick();
+  /// Frames per tick (1/8 to 16).
+  double speed() const;
+  /// Chooses the speed nearest to `framesPerTick`.
+  void setSpeed(double framesPerTick);
   /// The step being played at `frame` (0-based), -1 at frame 0.
   int stepAt(int frame) const;
   /// @}
@@ -115,6 +129,9 @@ class RayTreePanel : public QWidget {
   QPushButton* stepForwardButton() const { return m_stepForward; }
   QPushButton* stepBackButton() const { return m_stepBack; }
   QSlider* speedSlider() const { return m_speed; }
+  QSpinBox* acrossBox() const { return m_across; }
+  QSpinBox* downBox() const { return m_down; }
+  QPushButton* simulateButton() const { return m_simulateButton; }
   QComboBox* orderBox() const { return m_order; }
   QSpinBox* raysPerStepBox() const { return m_raysPerStep; }
   QSlider* frameSlider() const { return m_frameSlider; }
@@ -140,11 +157,15 @@ class RayTreePanel : public QWidget {
   /// Shows frame m_frame (reveal, slider, labels, status).
   void showFrame();
   void setStatus(const QString& text);
+  /// Shows m_trace whole, nothing selected.
+  void showTrace();
   void updateFrameControls();
 
   vis::SceneView& m_view;
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
+  bool m_grid = false;   ///< m_trace is a Simulate grid.
+  double m_phase = 0.0;  ///< Fraction of a frame the animation has moved on.
   int m_frame = 0;
   int m_selected = -1;
   QString m_status;
@@ -169,6 +190,9 @@ class RayTreePanel : public QWidget {
   QPushButton* m_stepForward = nullptr;
   QPushButton* m_stepBack = nullptr;
   QSlider* m_speed = nullptr;
+  QSpinBox* m_across = nullptr;
+  QSpinBox* m_down = nullptr;
+  QPushButton* m_simulateButton = nullptr;
   QLabel* m_speedLabel = nullptr;
   QComboBox* m_order = nullptr;
   QSpinBox* m_raysPerStep = nullptr;

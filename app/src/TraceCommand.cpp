@@ -3,6 +3,7 @@
 #include "ExitCodes.h"
 #include "SceneSource.h"
 
+#include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTreeJson.h"
@@ -20,16 +21,81 @@ namespace raylab::app {
 
 namespace {
 
+/// Most rays across or down of a Simulate grid (the window's spin boxes allow as many).
+constexpr int kMaxGrid = 64;
+
+/// "NxM" as (N, M), each in 1..kMaxGrid; nothing otherwise.
+std::optional<std::pair<int, int>> gridSize(const std::string& text) {
+  int across = 0, down = 0;
+  char x = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &across, &x, &down, &rest) != 3) return std::nullopt;
+  if ((x != 'x' && x != 'X') || across < 1 || down < 1 || across > kMaxGrid || down > kMaxGrid)
+    return std::nullopt;
+  return std::make_pair(across, down);
+}
+
 struct TraceOptions {
   RayTreeOptions tree;
   std::string json;  ///< --json; default: --out with .json.
   int frame = -1;    ///< --frame: draw this frame of the animation; -1 the whole tree.
+  std::string grid;  ///< --grid NxM: the Simulate grid instead of --pixel.
 };
+
+/// `raylab trace --grid NxM`: the window's Simulate, headless. Every tree of the grid in
+/// one picture, and one JSON document holding every tree's dump.
+int runGrid(const TraceOptions& options, const Scene& scene, const RenderSettings& settings) {
+  const RayTreeOptions& o = options.tree;
+  const auto grid = gridSize(options.grid);
+  const GridTrace traced = traceGrid(scene, settings, grid->first, grid->second);
+
+  const auto [width, height] = o.pictureSize();
+  const std::unique_ptr<vis::SceneView> view = o.makeView(scene, traced.combined);
+  const SrgbImage picture = view->renderOffscreen(width, height);
+
+  std::string dump = "{\n\"raylab_ray_trees\": 1,\n\"grid\": [" + std::to_string(grid->first) +
+                     ", " + std::to_string(grid->second) + "],\n\"trees\": [\n";
+  for (std::size_t i = 0; i < traced.traces.size(); ++i)
+    dump += (i ? ",\n" : "") + RayTreeJson::serialize(traced.traces[i].tree, scene, settings);
+  dump += "\n]\n}\n";
+  const std::string json =
+      options.json.empty() ? replaceExtension(o.common.out, ".json") : options.json;
+  if (const auto problem = writeFileAtomically(json, dump))
+    throw RayTreeJson::Error(json + ": " + *problem);
+  try {
+    vis::writePng(picture, o.common.out);
+  } catch (...) {
+    std::remove(json.c_str());
+    throw;
+  }
+  std::size_t rays = 0;
+  for (const PixelTrace& t : traced.traces) rays += t.tree.segments.size();
+  std::cout << o.common.out << "\n" << json << "\n";
+  std::cout << "grid " << grid->first << "x" << grid->second << " (" << traced.traces.size()
+            << " pixels), " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
+            << rays << " rays" << std::endl;
+  if (traced.truncated) std::cerr << "raylab: warning: " << traced.message << std::endl;
+  return kExitOk;
+}
 
 int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the pixel.
   const RayTreeOptions& o = options.tree;
   const Scene scene = o.loadScene(topLevelScene);
+  if (!options.grid.empty()) {
+    if (o.pixel.first >= 0 || o.pixel.second >= 0) {
+      std::cerr << "raylab trace: --grid and --pixel exclude each other" << std::endl;
+      return kExitUsage;
+    }
+    if (options.frame >= 0) {
+      std::cerr << "raylab trace: --frame needs --pixel (a grid is drawn whole)" << std::endl;
+      return kExitUsage;
+    }
+    return runGrid(options, scene, o.common.settings(scene));
+  }
+  if (o.pixel.first < 0 && o.pixel.second < 0) {
+    std::cerr << "raylab trace: --pixel X Y (or --grid NxM) is required" << std::endl;
+    return kExitUsage;
+  }
   if (const auto error = o.usageError(scene)) {
     std::cerr << "raylab trace: " << *error << std::endl;
     return kExitUsage;
@@ -67,11 +133,12 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
 }  // namespace
 
 void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
-                         const std::string& defaultSize) {
+                         const std::string& defaultSize, bool pixelRequired) {
   m_defaultSize = parseSize(defaultSize).value_or(m_defaultSize);
   common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
-  command->add_option("--pixel", pixel, "Pixel X Y of the scene camera's image to trace (y down)")
-      ->required();
+  CLI::Option* pixelOption = command->add_option(
+      "--pixel", pixel, "Pixel X Y of the scene camera's image to trace (y down)");
+  if (pixelRequired) pixelOption->required();
   command->add_option("--sample", sample, "Which sample of the pixel (its random numbers)")
       ->check(CLI::Range(0, 1 << 24))
       ->capture_default_str();
@@ -201,7 +268,18 @@ Subcommand addTraceCommand(CLI::App& cli) {
       "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable output),\n"
       "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.");
-  options->tree.add(command, "PNG file of the 3D view to write", "1024x768");
+  options->tree.add(command, "PNG file of the 3D view to write", "1024x768", false);
+  command
+      ->add_option("--grid", options->grid,
+                   "Trace a grid of N x M camera rays spread over the image (the window's "
+                   "Simulate) instead of one --pixel; all trees in one picture")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            return gridSize(text) ? std::string()
+                                  : "expected ACROSSxDOWN with each side in 1.." +
+                                        std::to_string(kMaxGrid) + ", e.g. 4x3";
+          },
+          "NxM"));
   command->add_option("--json", options->json,
                       "JSON dump of the tree to write (default: --out with .json)");
   command

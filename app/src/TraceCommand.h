@@ -42,7 +42,9 @@ struct RayTreeOptions {
   int raysPerStep = vis::AnimationSettings{}.raysPerStep;      ///< --rays-per-step.
 
   /// Registers the options on `command`; `defaultSize` is the picture size without --size.
-  void add(CLI::App* command, const std::string& outHelp, const std::string& defaultSize);
+  /// `pixelRequired` false lets the command trace something else instead (trace --grid).
+  void add(CLI::App* command, const std::string& outHelp, const std::string& defaultSize,
+           bool pixelRequired = true);
   /// The scene with --image-size applied (not --size: that is the picture).
   Scene loadScene(const std::string& topLevelScene) const;
   /// Checks --pixel against the scene camera's image and --kinds; the message on failure.
@@ -76,7 +78,9 @@ std::optional<std::string> pixelUsageError(int x, int y, const Scene& scene,
  * JSON dump of the tree (RayTreeJson; --json, default beside the PNG). Prints the files
  * and a one-line summary (rays by kind, estimate). A pixel outside the image is a usage
  * error (exit 2) naming the pixel and the image size. `--frame N` draws the tree as in
- * frame N of `raylab animate` with the same options.
+ * frame N of `raylab animate` with the same options. `--grid NxM` traces the window's
+ * Simulate grid instead of one pixel (N rays across, M down, spread evenly over the
+ * image) and draws all the trees together; the JSON holds every tree.
  */
 Subcommand addTraceCommand(CLI::App& cli);
 

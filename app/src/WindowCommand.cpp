@@ -3,6 +3,7 @@
 #include "ExitCodes.h"
 #include "MainWindow.h"
 #include "RayTreePanel.h"
+#include "SceneDocument.h"
 #include "SceneSource.h"
 #include "TraceCommand.h"
 
@@ -54,7 +55,12 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   QApplication application(argc, argv);
   QApplication::setApplicationName(QStringLiteral("RayLab"));
   MainWindow window(scene);
-  window.selectObject(selected);
+  if (!options.scene.empty())
+    window.adoptScene(scene, QString::fromStdString(options.scene));
+  else
+    window.startUp();  // the scene open last time, or the default (the status bar says)
+  window.selectObject(
+      options.select.empty() ? selected : window.document().scene().findObject(options.select));
   window.show();
 
   // The ray-tree panel: algorithm, and a pixel traced, animated and inspected.

@@ -4,33 +4,51 @@
 // with GLX (QVTKOpenGLNativeWidget needs real OpenGL): runs under xvfb with xcb.
 #include "MainWindow.h"
 
+#include "EditPanel.h"
 #include "InspectorPanel.h"
+#include "PropertiesPanel.h"
 #include "RayColours.h"
 #include "RayTreePanel.h"
+#include "SceneDocument.h"
 
+#include "raylab/core/Box.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
+#include "raylab/core/SceneIO.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/SceneView.h"
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QImage>
+#include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QSurfaceFormat>
+#include <QTest>
 #include <QTimer>
 #include <QWheelEvent>
 
 #include <gtest/gtest.h>
 
 #include <memory>
+
+#include <signal.h>
+#include <sys/resource.h>
 
 namespace raylab::app {
 namespace {
@@ -49,9 +67,22 @@ class MainWindowTest : public ::testing::Test {
     s_app = new QApplication(argc, argv);
   }
 
+  /// A fresh folder for this test's files.
+  static QString scratch(const QString& name) {
+    QDir dir(QString::fromLatin1(RAYLAB_TEMP_DIR) + QStringLiteral("/TestMainWindow-") + name);
+    dir.removeRecursively();
+    QDir().mkpath(dir.path());
+    return dir.path();
+  }
+
   void SetUp() override {
+    // The window's settings (last scene, recent files) in a folder of this test's own:
+    // the tests run side by side in separate processes.
+    const QString dir = scratch(QStringLiteral("settings-") +
+                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, dir);
     m_window = std::make_unique<MainWindow>(defaultScene());
-    m_window->resize(900, 600);
+    m_window->resize(1260, 860);
     m_window->show();
     settle();
   }
@@ -91,6 +122,14 @@ class MainWindowTest : public ::testing::Test {
     settle();
   }
 
+  /// Makes the window the active one, so its shortcuts see key presses (no window manager
+  /// under Xvfb activates it), with the keyboard focus in the 3D view.
+  void activate() {
+    QApplication::setActiveWindow(m_window.get());
+    m_window->viewWidget()->setFocus();
+    settle();
+  }
+
   /// The 3D view as drawn now.
   QImage grabView() {
     settle();
@@ -108,26 +147,38 @@ class MainWindowTest : public ::testing::Test {
                                          });
   }
 
-  /// The first pixel (on a coarse grid) whose camera ray hits object `name` (Whitted).
+  /// A pixel on object `name` where it faces the light best: of the pixels (on a coarse
+  /// grid) whose camera ray hits it, one whose hit normal points most upwards (the lights
+  /// hang from the ceiling), the middle one of those.
   static std::pair<int, int> pixelOn(const Scene& scene, const std::string& name) {
     RenderSettings settings = scene.render;
     settings.algorithm = Algorithm::Whitted;
     const Tracer tracer(scene, settings);
     const int object = scene.findObject(name);
-    for (int y = 0; y < scene.camera.height; y += 8)
-      for (int x = 0; x < scene.camera.width; x += 8) {
+    std::vector<std::pair<double, std::pair<int, int>>> hits;
+    for (int y = 0; y < scene.camera.height; y += 4)
+      for (int x = 0; x < scene.camera.width; x += 4) {
         Stepper stepper(tracer, x, y, 0);
         stepper.step();
-        if (stepper.tree().segments[0].object == object) return {x, y};
+        const RaySegment& camera = stepper.tree().segments[0];
+        if (camera.object == object) hits.push_back({-std::round(camera.normal.y * 100.0), {x, y}});
       }
-    ADD_FAILURE() << "no pixel sees " << name;
-    return {0, 0};
+    if (hits.empty()) {
+      ADD_FAILURE() << "no pixel sees " << name;
+      return {0, 0};
+    }
+    std::stable_sort(hits.begin(), hits.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::size_t best = 0;
+    while (best < hits.size() && hits[best].first == hits.front().first) ++best;
+    return hits[best / 2].second;
   }
 
-  /// Traces the pixel on the red sphere with Whitted's algorithm through the panel.
-  RayTreePanel& traceSphere() {
+  /// Traces a pixel on the blue (glossy) cube with Whitted's algorithm through the panel:
+  /// a camera ray, shaded locally with a shadow ray to the light.
+  RayTreePanel& traceCube() {
     RayTreePanel& panel = *m_window->rayTreePanel();
-    const auto [x, y] = pixelOn(defaultScene(), "red sphere");
+    const auto [x, y] = pixelOn(defaultScene(), "blue cube");
     panel.setAlgorithm(Algorithm::Whitted);
     panel.setPixel(x, y);
     panel.traceButton()->click();
@@ -190,7 +241,7 @@ TEST_F(MainWindowTest, 04_WheelZoomsIn) {
 TEST_F(MainWindowTest, 05_TracingAPixelShowsItsTree) {
   const QImage before = grabView();
   EXPECT_FALSE(m_window->sceneView().hasRayTree());
-  RayTreePanel& panel = traceSphere();
+  RayTreePanel& panel = traceCube();
 
   const Scene scene = defaultScene();
   RenderSettings settings = scene.render;
@@ -214,14 +265,14 @@ TEST_F(MainWindowTest, 05_TracingAPixelShowsItsTree) {
 
 // Play starts the timer, whose ticks move the frame on; the picture follows the frame.
 TEST_F(MainWindowTest, 06_PlayAdvancesFramesWithTheTimer) {
-  RayTreePanel& panel = traceSphere();
+  RayTreePanel& panel = traceCube();
   panel.setFrame(0);
   EXPECT_EQ(panel.frame(), 0);
   const QImage empty = grabView();
   EXPECT_TRUE(panel.statusText().startsWith(QStringLiteral("Frame 0")));
 
   // One tick by hand moves on by the speed (frames per tick).
-  panel.speedSlider()->setValue(3);
+  panel.setSpeed(3.0);
   panel.play();
   EXPECT_TRUE(panel.playing());
   EXPECT_FALSE(panel.playButton()->isEnabled());
@@ -246,7 +297,7 @@ TEST_F(MainWindowTest, 06_PlayAdvancesFramesWithTheTimer) {
 
 // Step forward / back walk whole steps; back returns exactly to the previous picture.
 TEST_F(MainWindowTest, 07_StepBackReturnsToThePreviousFrame) {
-  RayTreePanel& panel = traceSphere();
+  RayTreePanel& panel = traceCube();
   panel.legendBox()->setChecked(false);  // see 08
   const int perStep = panel.animation().framesPerStep;
   panel.setFrame(0);
@@ -280,14 +331,14 @@ TEST_F(MainWindowTest, 07_StepBackReturnsToThePreviousFrame) {
   panel.orderBox()->setCurrentIndex(panel.orderBox()->findData(int(RevealOrder::Processing)));
   panel.raysPerStepBox()->setValue(1);
   panel.setFrame(perStep);
-  EXPECT_TRUE(panel.statusText().contains(QStringLiteral("camera ray #0 hit 'red sphere'")))
+  EXPECT_TRUE(panel.statusText().contains(QStringLiteral("camera ray #0 hit 'blue cube'")))
       << panel.statusText().toStdString();
 }
 
 // Unticking a kind hides those rays (the style reaches the view and the picture changes);
 // ticking it again gives the same picture back.
 TEST_F(MainWindowTest, 08_KindFilterChangesWhatIsDrawn) {
-  RayTreePanel& panel = traceSphere();
+  RayTreePanel& panel = traceCube();
   // Exact picture comparisons without the legend: VTK may place its labels a pixel
   // differently from one redraw to the next.
   panel.legendBox()->setChecked(false);
@@ -313,7 +364,7 @@ TEST_F(MainWindowTest, 08_KindFilterChangesWhatIsDrawn) {
 // A click on a ray selects it in the view and fills the inspector with its values; a
 // click on empty space clears the selection; a drag selects nothing.
 TEST_F(MainWindowTest, 09_ClickingARayInspectsIt) {
-  RayTreePanel& panel = traceSphere();
+  RayTreePanel& panel = traceCube();
   InspectorPanel& inspector = *m_window->inspectorPanel();
   EXPECT_EQ(inspector.segment(), -1);
 
@@ -332,10 +383,10 @@ TEST_F(MainWindowTest, 09_ClickingARayInspectsIt) {
   const std::string text = inspector.text().toStdString();
   const RayInspection expected = RayInspector::inspect(defaultScene(), panel.tree(), 0);
   EXPECT_NE(text.find("Ray #0: camera ray, depth 0"), std::string::npos) << text;
-  EXPECT_NE(text.find("object      'red sphere'\n  material    'red' (diffuse)"), std::string::npos)
+  EXPECT_NE(text.find("object      'blue cube'\n  material    'blue' (glossy)"), std::string::npos)
       << text;
   EXPECT_NE(text.find(expected.rayText().substr(0, 200)), std::string::npos) << text;
-  EXPECT_NE(text.find("Exact oracle (CGAL) on 'red sphere'"), std::string::npos);
+  EXPECT_NE(text.find("Exact oracle (CGAL) on 'blue cube'"), std::string::npos);
   EXPECT_NE(text.find("agrees with double precision"), std::string::npos) << text;
 
   // Walk to its first child and back to the parent with the inspector's buttons.
@@ -352,6 +403,282 @@ TEST_F(MainWindowTest, 09_ClickingARayInspectsIt) {
   EXPECT_EQ(panel.selectedSegment(), -1);
   EXPECT_EQ(m_window->sceneView().selectedSegment(), -1);
   EXPECT_EQ(inspector.segment(), -1);
+}
+
+/// The file's bytes ("" when it cannot be read).
+QByteArray fileBytes(const QString& path) {
+  QFile file(path);
+  return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// File > Open of a good file shows it (title, list, view); a bad file shows the loader's
+// whole message in a dialog and the scene that was open stays open, unchanged.
+TEST_F(MainWindowTest, 10_OpenAGoodFileAndABadOne) {
+  const QString dir = scratch(QStringLiteral("open"));
+  const QString good = QString::fromLatin1(RAYLAB_SOURCE_DIR) + "/lessons/scenes/cornell.json";
+  ASSERT_TRUE(m_window->openFile(good));
+  const Scene cornell = SceneIO::load(good.toStdString());
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), SceneIO::serialize(cornell));
+  EXPECT_EQ(m_window->objectList()->count(), int(cornell.objects.size()));
+  EXPECT_TRUE(m_window->windowTitle().startsWith(QStringLiteral("cornell.json")));
+  EXPECT_FALSE(m_window->isWindowModified());
+  EXPECT_EQ(m_window->recentFiles().front(), QFileInfo(good).absoluteFilePath());
+
+  const QString bad = dir + "/bad.json";
+  QFile file(bad);
+  ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+  file.write(
+      R"({"raylab_scene": 2, "materials": [{"name": "red", "colour": [1, 0, 0]}],
+          "objects": [{"name": "ball", "material": "red",
+                       "shape": {"type": "sphere", "centre": [0, 0, 0], "radius": -1}}]})");
+  file.close();
+  const std::string before = SceneIO::serialize(m_window->document().scene());
+  EXPECT_FALSE(m_window->openFile(bad));
+  EXPECT_TRUE(m_window->lastError().contains(bad)) << m_window->lastError().toStdString();
+  EXPECT_TRUE(m_window->lastError().contains(
+      QStringLiteral("at /objects/0/shape/radius: radius must be positive")))
+      << m_window->lastError().toStdString();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), before);
+  EXPECT_EQ(m_window->document().path(), good);
+}
+
+// Save writes the scene atomically and it reads back equal; a save that fails (the disk
+// full: a file size limit) shows a dialog and leaves the old file intact.
+TEST_F(MainWindowTest, 11_SaveAndReloadAndAFailedSaveKeepsTheOldFile) {
+  const QString dir = scratch(QStringLiteral("save"));
+  const QString path = dir + "/classroom.json";
+  ASSERT_TRUE(m_window->saveFile(path));
+  EXPECT_EQ(SceneIO::serialize(SceneIO::load(path.toStdString())),
+            SceneIO::serialize(m_window->document().scene()));
+  EXPECT_FALSE(m_window->isWindowModified());
+
+  // Make the scene larger, then save with a file size limit below its size.
+  m_window->selectObject(m_window->document().scene().findObject("red sphere"));
+  for (int i = 0; i < 4; ++i) m_window->editPanel()->duplicate();
+  EXPECT_TRUE(m_window->isWindowModified());
+  const QByteArray old = fileBytes(path);
+  rlimit previous{};
+  getrlimit(RLIMIT_FSIZE, &previous);
+  signal(SIGXFSZ, SIG_IGN);
+  rlimit limit = previous;
+  limit.rlim_cur = rlim_t(old.size() + 16);
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limit), 0);
+  const bool saved = m_window->saveFile(path);
+  setrlimit(RLIMIT_FSIZE, &previous);
+  EXPECT_FALSE(saved);
+  EXPECT_TRUE(m_window->lastError().contains(path)) << m_window->lastError().toStdString();
+  EXPECT_EQ(fileBytes(path), old);
+  EXPECT_TRUE(m_window->isWindowModified());
+  EXPECT_EQ(QDir(dir).entryList(QDir::Files), QStringList{QStringLiteral("classroom.json")});
+}
+
+// The original program's operation: the blue cube turned 90 degrees about z through its
+// centre, as one undo step with a readable name; undo gives the scene back.
+TEST_F(MainWindowTest, 12_RotateTheCubeAndUndo) {
+  const Scene& scene = m_window->document().scene();
+  const int cube = scene.findObject("blue cube");
+  const auto before = static_cast<const Box&>(*scene.objects[std::size_t(cube)].shape).vertices();
+  const Point3 c = scene.objects[std::size_t(cube)].shape->bounds().centre();
+  const std::string original = SceneIO::serialize(scene);
+  m_window->selectObject(cube);
+  EditPanel& edit = *m_window->editPanel();
+  edit.angleBox()->setValue(90.0);
+  EXPECT_EQ(edit.axisBox(2)->value(), 1.0);  // the original's default axis (0, 0, 1)
+  edit.rotateButton()->click();
+  settle();
+  const auto after =
+      static_cast<const Box&>(*m_window->document().scene().objects[std::size_t(cube)].shape)
+          .vertices();
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 d = before[std::size_t(k)] - c;
+    EXPECT_NEAR(glm::length(after[std::size_t(k)] - (c + Vec3(-d.y, d.x, d.z))), 0.0, 1e-9);
+  }
+  EXPECT_EQ(m_window->document().undoStack().undoText(),
+            QStringLiteral("Rotate blue cube 90° about z"));
+  EXPECT_TRUE(m_window->isWindowModified());
+  EXPECT_EQ(m_window->selectedObject(), cube);  // still selected
+  m_window->document().undoStack().undo();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+  EXPECT_FALSE(m_window->isWindowModified());
+}
+
+// Delete (the Del key), duplicate and add, each one step; the list follows.
+TEST_F(MainWindowTest, 13_DeleteDuplicateAndAdd) {
+  const int count = int(m_window->document().scene().objects.size());
+  m_window->selectObject(m_window->document().scene().findObject("red sphere"));
+  activate();
+  QTest::keyClick(m_window->viewWidget(), Qt::Key_Delete);
+  settle();
+  EXPECT_EQ(int(m_window->document().scene().objects.size()), count - 1);
+  EXPECT_LT(m_window->document().scene().findObject("red sphere"), 0);
+  EXPECT_EQ(m_window->objectList()->count(), count - 1);
+  EXPECT_EQ(m_window->selectedObject(), -1);
+
+  m_window->selectObject(m_window->document().scene().findObject("blue cube"));
+  m_window->editPanel()->duplicate();
+  EXPECT_EQ(int(m_window->document().scene().objects.size()), count);
+  EXPECT_EQ(m_window->document().scene().objects.back().name, "blue cube copy");
+  EXPECT_EQ(m_window->selectedObject(), count - 1);  // the copy is selected
+
+  for (QAction* action : m_window->addMenu()->actions())
+    if (action->text() == QStringLiteral("Sphere")) action->trigger();
+  settle();
+  EXPECT_EQ(int(m_window->document().scene().objects.size()), count + 1);
+  EXPECT_EQ(m_window->document().scene().objects.back().name, "sphere");
+  EXPECT_EQ(m_window->selectedObject(), count);
+  EXPECT_EQ(m_window->document().undoStack().count(), 3);
+}
+
+// A material's parameter edited in the properties panel, then undone: the scene saves
+// byte for byte as before. An invalid value is refused with the loader's message in a
+// dialog, and nothing changes.
+TEST_F(MainWindowTest, 14_EditAMaterialUndoItAndARefusedValue) {
+  const std::string original = SceneIO::serialize(m_window->document().scene());
+  const int sphere = m_window->document().scene().findObject("red sphere");
+  m_window->selectObject(sphere);
+  PropertiesPanel& properties = *m_window->propertiesPanel();
+  const int material = m_window->document().scene().objects[std::size_t(sphere)].material;
+  const std::string colour = "/materials/" + std::to_string(material) + "/colour";
+  ASSERT_NE(properties.field(colour), nullptr);
+  // Through the field's first spin box, as a teacher types a value.
+  auto* red = properties.field(colour)->findChild<QDoubleSpinBox*>();
+  ASSERT_NE(red, nullptr);
+  red->setValue(0.25);
+  settle();
+  EXPECT_NEAR(m_window->document().scene().materials[std::size_t(material)].colour.x, 0.25, 1e-12);
+  EXPECT_NE(SceneIO::serialize(m_window->document().scene()), original);
+  m_window->document().undoStack().undo();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+
+  const std::string radius = "/objects/" + std::to_string(sphere) + "/shape/radius";
+  ASSERT_NE(properties.field(radius), nullptr);
+  EXPECT_FALSE(properties.setValue(radius, "0", QStringLiteral("radius")));
+  EXPECT_TRUE(m_window->lastError().contains(QStringLiteral("radius must be positive")))
+      << m_window->lastError().toStdString();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+  EXPECT_FALSE(m_window->document().undoStack().canUndo());
+  // A zero rotation axis is refused the same way.
+  m_window->editPanel()->axisBox(2)->setValue(0.0);
+  m_window->editPanel()->rotate();
+  EXPECT_TRUE(
+      m_window->lastError().contains(QStringLiteral("rotate/axis: vector must not be zero")));
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+}
+
+// Simulate 2 x 2: four camera rays spread over the image, each tree equal to
+// tracePixel of its pixel (what `raylab trace --pixel` draws), shown together.
+TEST_F(MainWindowTest, 15_Simulate2x2DrawsFourTrees) {
+  RayTreePanel& panel = *m_window->rayTreePanel();
+  panel.setAlgorithm(Algorithm::PathTracing);
+  panel.acrossBox()->setValue(2);
+  panel.downBox()->setValue(2);
+  panel.simulateButton()->click();
+  settle();
+  ASSERT_TRUE(panel.showsGrid());
+  const Scene& scene = m_window->document().scene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::PathTracing;
+  const RayTree& shown = m_window->sceneView().rayTree();
+  std::size_t offset = 0, cameras = 0;
+  for (const auto& [x, y] : gridPixels(scene.camera.width, scene.camera.height, 2, 2)) {
+    const PixelTrace single = tracePixel(scene, settings, x, y, 0);
+    ASSERT_LE(offset + single.tree.segments.size(), shown.segments.size());
+    for (std::size_t i = 0; i < single.tree.segments.size(); ++i) {
+      const RaySegment& a = single.tree.segments[i];
+      const RaySegment& b = shown.segments[offset + i];
+      EXPECT_EQ(a.origin, b.origin);
+      EXPECT_EQ(a.endPoint, b.endPoint);
+      EXPECT_EQ(a.radiance, b.radiance);
+      EXPECT_EQ(a.kind, b.kind);
+    }
+    offset += single.tree.segments.size();
+    ++cameras;
+  }
+  EXPECT_EQ(offset, shown.segments.size());
+  EXPECT_EQ(cameras, 4u);
+  int roots = 0;
+  for (const RaySegment& s : shown.segments) roots += s.kind == RayKind::Camera;
+  EXPECT_EQ(roots, 4);
+  EXPECT_EQ(gridPixels(320, 240, 1, 1).front(), std::make_pair(160, 120));  // 1 x 1: the centre
+}
+
+// Start-up opens the scene open last time; when it cannot be read, the default scene,
+// and the status bar says why.
+TEST_F(MainWindowTest, 16_StartUpWithTheLastSceneOrTheDefault) {
+  const QString good = QString::fromLatin1(RAYLAB_SOURCE_DIR) + "/lessons/scenes/materials.json";
+  QSettings(QSettings::IniFormat, QSettings::UserScope, "RayLab", "RayLab")
+      .setValue("lastScene", good);
+  MainWindow first(defaultScene());
+  first.startUp();
+  EXPECT_EQ(first.document().path(), good);
+  EXPECT_TRUE(first.statusBar()->currentMessage().contains(QStringLiteral("open last time")));
+
+  const QString gone = scratch(QStringLiteral("startup")) + "/gone.json";
+  QSettings(QSettings::IniFormat, QSettings::UserScope, "RayLab", "RayLab")
+      .setValue("lastScene", gone);
+  MainWindow second(defaultScene());
+  second.startUp();
+  EXPECT_TRUE(second.document().path().isEmpty());
+  EXPECT_EQ(SceneIO::serialize(second.document().scene()), SceneIO::serialize(defaultScene()));
+  const QString message = second.statusBar()->currentMessage();
+  EXPECT_TRUE(message.contains(QStringLiteral("could not be read")) && message.contains(gone))
+      << message.toStdString();
+}
+
+// Clicking an object in the view (without dragging) selects it in the list; Escape clears;
+// VTK's own keys (w: wireframe) do nothing.
+TEST_F(MainWindowTest, 17_ClickAnObjectEscapeAndNoVtkKeys) {
+  const Scene& scene = m_window->document().scene();
+  const int sphere = scene.findObject("red sphere");
+  QWidget* w = m_window->viewWidget();
+  const std::optional<Vec2> at = m_window->sceneView().worldToImage(
+      m_window->sceneView().objectCentre(sphere), w->width(), w->height());
+  ASSERT_TRUE(at.has_value());
+  click(QPoint(int(at->x), int(at->y)));
+  EXPECT_EQ(m_window->selectedObject(), sphere);
+  EXPECT_EQ(m_window->objectList()->currentRow(), sphere);
+  EXPECT_EQ(m_window->sceneView().highlighted(), sphere);
+  activate();
+  QTest::keyClick(m_window->viewWidget(), Qt::Key_Escape);
+  settle();
+  EXPECT_EQ(m_window->selectedObject(), -1);
+  EXPECT_EQ(m_window->sceneView().highlighted(), -1);
+
+  const QImage before = grabView();
+  QTest::keyClick(w, Qt::Key_W);
+  QTest::keyClick(w, Qt::Key_S);
+  EXPECT_EQ(grabView(), before);
+}
+
+// A tree on screen always belongs to the algorithm chosen and to the scene as edited.
+TEST_F(MainWindowTest, 18_TreesAreRetracedAfterAnEditOrAnotherAlgorithm) {
+  // Whitted through the red (mirror) sphere: reflection and refraction rays.
+  RayTreePanel& panel = *m_window->rayTreePanel();
+  const Scene& scene = m_window->document().scene();
+  const auto [x, y] = pixelOn(scene, "red sphere");
+  panel.setAlgorithm(Algorithm::Whitted);
+  panel.setPixel(x, y);
+  panel.traceButton()->click();
+  settle();
+  EXPECT_GT(panel.tree().segments.size(), 3u);
+  // Ray casting chosen: the tree shown is ray casting's, the camera ray alone (the
+  // sphere has no local shading under ray casting).
+  panel.algorithmBox()->setCurrentIndex(panel.algorithmBox()->findData(QStringLiteral("raycast")));
+  emit panel.algorithmBox()->activated(panel.algorithmBox()->currentIndex());
+  settle();
+  EXPECT_EQ(panel.algorithm(), Algorithm::RayCasting);
+  EXPECT_EQ(panel.tree().segments.size(), 1u);
+  EXPECT_EQ(m_window->sceneView().rayTree().segments.size(), 1u);
+  // Move the sphere away: the tree is traced again in the edited scene.
+  m_window->selectObject(scene.findObject("red sphere"));
+  m_window->editPanel()->offsetBox(0)->setValue(-10.0);
+  m_window->editPanel()->move();
+  settle();
+  const Scene& moved = m_window->document().scene();
+  RenderSettings settings = moved.render;
+  settings.algorithm = Algorithm::RayCasting;
+  EXPECT_EQ(panel.tree().segments.size(), tracePixel(moved, settings, x, y).tree.segments.size());
+  EXPECT_NE(panel.tree().segments[0].object, moved.findObject("red sphere"));
 }
 
 }  // namespace

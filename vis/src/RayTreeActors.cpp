@@ -120,6 +120,13 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_energyBar->SetLabelFormat("%g");
   m_energyBar->DrawAnnotationsOff();
   styleText(m_energyBar->GetLabelTextProperty(), kLegendText);
+  const char* words[] = {"high", "medium", "low / none"};
+  for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
+    m_energyWords[i] = vtkSmartPointer<vtkTextActor>::New();
+    m_energyWords[i]->SetInput(words[i]);
+    styleText(m_energyWords[i]->GetTextProperty(), kLegendText);
+    m_energyWords[i]->GetTextProperty()->SetVerticalJustificationToCentered();
+  }
   m_energyBar->GetLabelTextProperty()->SetVerticalJustificationToCentered();
   m_energyBar->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
   m_energyBar->GetPosition2Coordinate()->SetCoordinateSystemToDisplay();
@@ -139,6 +146,7 @@ std::vector<vtkProp*> RayTreeActors::props() const {
              {m_blocked.Get(), m_hitPoints.Get(), m_fronts.Get(), m_normals.Get(), m_arrows.Get(),
               m_selection.Get(), m_legendTitle.Get(), m_energyBar.Get()});
   for (const auto& entry : m_legendEntries) all.push_back(entry);
+  for (const auto& word : m_energyWords) all.push_back(word);
   return all;
 }
 
@@ -256,6 +264,8 @@ void RayTreeActors::updateLegend() {
   }
   m_legendTitle->SetVisibility(legend);
   m_energyBar->SetVisibility(legend && style.colouring == RayColouring::Energy);
+  for (const auto& word : m_energyWords)
+    word->SetVisibility(legend && style.colouring == RayColouring::Energy);
   for (int i = 0; i < kLegendEntries; ++i)
     m_legendEntries[std::size_t(i)]->SetVisibility(legend && i < m_legendEntryCount);
 }
@@ -283,6 +293,13 @@ void RayTreeActors::layoutLegend(int width, int height) {
   m_energyBar->GetPosition2Coordinate()->SetValue(5 * font, barHeight);
   m_energyBar->SetMaximumWidthInPixels(5 * font);
   m_energyBar->SetMaximumHeightInPixels(barHeight);
+  // What the colours mean, beside the bar's numbers: high at the top, none at the bottom.
+  const int wordsX = margin + font / 2 + 5 * font + font / 2;
+  const int rows[] = {barTop - font, barTop - barHeight / 2, barTop - barHeight + font};
+  for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
+    m_energyWords[i]->GetTextProperty()->SetFontSize(font);
+    m_energyWords[i]->SetDisplayPosition(wordsX, rows[i]);
+  }
   // The bar caches its layout by its own modification time, which a new label font size
   // does not touch: without this its first picture would use another layout than the next.
   m_energyBar->Modified();

@@ -80,7 +80,9 @@ class RayTreeActors {
   std::array<vtkSmartPointer<vtkTextActor>, kLegendEntries> m_legendEntries;
   int m_legendEntryCount = 0;
   vtkSmartPointer<vtkScalarBarActor> m_energyBar;  ///< The energy colouring's legend.
-  vtkSmartPointer<vtkCallbackCommand> m_layout;    ///< Calls layoutLegend before renders.
+  /// Words beside the energy bar: high, medium, low / none (the original's meaning).
+  std::array<vtkSmartPointer<vtkTextActor>, 3> m_energyWords;
+  vtkSmartPointer<vtkCallbackCommand> m_layout;  ///< Calls layoutLegend before renders.
   vtkRenderer* m_observed = nullptr;
   unsigned long m_observer = 0;
 

@@ -53,7 +53,8 @@ Vec3 EnergyScale::colour(double position) {
 Vec3 kindColour(RayKind kind) {
   switch (kind) {
     case RayKind::Camera:
-      return Vec3(0.95, 0.95, 0.95);  // white
+      return Vec3(0.55, 0.95, 0.35);  // lime, as the camera's frustum (not white: light
+                                      // grey means "no energy" in the energy colouring)
     case RayKind::Reflection:
       return Vec3(0.25, 0.6, 1.0);  // blue
     case RayKind::Refraction:

@@ -6,11 +6,15 @@
 
 #include "raylab/core/Check.h"
 #include "raylab/core/Plane.h"
+#include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Shape.h"
+#include "raylab/core/Sphere.h"
 #include "raylab/vis/ImageIO.h"
 
 #include <vtkActor.h>
+#include <vtkBox.h>
 #include <vtkCamera.h>
+#include <vtkClipPolyData.h>
 #include <vtkImageData.h>
 #include <vtkMapper.h>
 #include <vtkMatrix4x4.h>
@@ -36,12 +40,25 @@ namespace {
 constexpr double kBackground[3] = {0.12, 0.13, 0.16};
 /// Colour of the selection outline.
 constexpr double kHighlight[3] = {1.0, 0.85, 0.0};
-/// Colour and opacity of the scene camera's body, colour of its frustum lines.
-constexpr double kCameraBody[3] = {0.85, 0.88, 0.95};
+/// Colour and opacity of the scene camera's body, colour of its frustum lines: the lime of
+/// camera rays (kindColour), never the light grey that means "no energy" on rays.
+constexpr double kCameraBody[3] = {0.75, 0.95, 0.65};
 constexpr double kCameraBodyOpacity = 0.45;
-constexpr double kFrustum[3] = {0.9, 0.9, 0.9};
+constexpr double kFrustum[3] = {0.55, 0.95, 0.35};
 /// Colour of a point light's glyph: the original course program's flesh-coloured light.
 constexpr double kPointLight[3] = {1.0, 0.8, 0.65};
+
+/// The part of `geometry` inside `box`.
+vtkSmartPointer<vtkPolyData> clipToBox(vtkPolyData* geometry, const Bounds3& box) {
+  vtkNew<vtkBox> region;
+  region->SetBounds(box.lower.x, box.upper.x, box.lower.y, box.upper.y, box.lower.z, box.upper.z);
+  vtkNew<vtkClipPolyData> clip;
+  clip->SetInputData(geometry);
+  clip->SetClipFunction(region);
+  clip->InsideOutOn();
+  clip->Update();
+  return clip->GetOutput();
+}
 
 /// Display colour of a material: emitters show their emission's hue at full brightness,
 /// everything else its reflectance, clamped to [0, 1].
@@ -90,6 +107,8 @@ struct SceneView::Impl {
   std::vector<vtkSmartPointer<vtkActor>> highlights;  ///< Hidden outlines, one per object.
   vtkSmartPointer<vtkRenderWindow> offscreen;         ///< Created on first offscreen render.
   RayTreeActors rays{Vec3(kBackground[0], kBackground[1], kBackground[2])};  ///< Ray tree.
+  std::vector<bool> oneSided;  ///< Per object: drawn one-sided (culled from behind).
+  Point3 inside{0.0};          ///< The room's inside, which one-sided surfaces face.
 
   ~Impl() {
     if (offscreen) {
@@ -115,6 +134,7 @@ void SceneView::setScene(const Scene& scene) {
   renderer->RemoveAllViewProps();
   m_impl->objects.clear();
   m_impl->highlights.clear();
+  m_impl->oneSided.clear();
 
   // Step 1: where the room is and how large the stand-in for an infinite plane must be.
   const Bounds3 box = drawnBounds(m_scene);
@@ -122,10 +142,31 @@ void SceneView::setScene(const Scene& scene) {
   frame.inside = box.centre();
   frame.planeHalfSize = std::max(1.5 * glm::length(box.extent()), 1.0);
 
+  // Walls made of huge spheres (smallpt's) are drawn as patches around the room.
+  const std::vector<bool> walls = enclosingWalls(m_scene);
+  const Bounds3 room = roomBounds(m_scene);
+  const bool hasWalls = std::find(walls.begin(), walls.end(), true) != walls.end() && !room.empty();
+  if (hasWalls) frame.inside = room.centre();
+  // The box everything is clipped to: the room, a little larger.
+  Bounds3 roomBox = room;
+  if (hasWalls) {
+    const Vec3 pad = 0.02 * room.extent() + Vec3(1e-9);
+    roomBox = Bounds3(room.lower - pad, room.upper + pad);
+  }
+  m_impl->inside = frame.inside;
+
   // Step 2: one actor per object, coloured by its material, and its hidden outline.
-  for (const SceneObject& object : m_scene.objects) {
+  for (std::size_t index = 0; index < m_scene.objects.size(); ++index) {
+    const SceneObject& object = m_scene.objects[index];
     RAYLAB_CHECK(object.shape != nullptr);
-    const vtkSmartPointer<vtkPolyData> geometry = shapeGeometry(*object.shape, frame);
+    const bool wall = walls[index];
+    vtkSmartPointer<vtkPolyData> geometry =
+        wall ? wallPatchGeometry(static_cast<const Sphere&>(*object.shape), frame,
+                                 0.75 * glm::length(room.extent()))
+             : shapeGeometry(*object.shape, frame);
+    // Inside walls, only the room is drawn: smallpt's light, a sphere of radius 600 over
+    // a room of 100, would otherwise hide it.
+    if (hasWalls) geometry = clipToBox(geometry, roomBox);
     const bool known =
         object.material >= 0 && object.material < static_cast<int>(m_scene.materials.size());
     const Material material =
@@ -141,7 +182,7 @@ void SceneView::setScene(const Scene& scene) {
     } else {
       p->SetAmbient(0.25);
       p->SetDiffuse(0.8);
-      const bool curved = object.shape->kind() == ShapeKind::Sphere ||
+      const bool curved = (object.shape->kind() == ShapeKind::Sphere && !wall) ||
                           object.shape->kind() == ShapeKind::TriangleMesh;
       p->SetSpecular(curved ? 0.2 : 0.0);
       p->SetSpecularPower(30.0);
@@ -151,7 +192,9 @@ void SceneView::setScene(const Scene& scene) {
         p->SetInterpolationToFlat();
     }
     // Emitters stay two-sided: a ceiling light faces the room, yet must show from above.
-    if (isOpenSurface(object.shape->kind()) && !material.isEmitter()) p->BackfaceCullingOn();
+    const bool oneSided = (isOpenSurface(object.shape->kind()) || wall) && !material.isEmitter();
+    if (oneSided) p->BackfaceCullingOn();
+    m_impl->oneSided.push_back(oneSided);
     renderer->AddActor(actor);
     m_impl->objects.push_back(actor);
 
@@ -217,6 +260,41 @@ void SceneView::setScene(const Scene& scene) {
 
   // Step 4: look at it all from outside.
   resetViewCamera();
+}
+
+int SceneView::objectAt(double x, double y, int width, int height) const {
+  if (width <= 0 || height <= 0 || m_scene.objects.empty()) return -1;
+  // The view ray through (x, y): a pinhole at the eye with the view's vertical angle.
+  const ViewCamera view = viewCamera();
+  const Vec3 forward = glm::normalize(view.focalPoint - view.eye);
+  const Vec3 right = glm::normalize(glm::cross(forward, view.up));
+  const Vec3 up = glm::cross(right, forward);
+  const double tanHalf = std::tan(radians(view.viewAngle) / 2.0);
+  const double px = (2.0 * x / width - 1.0) * tanHalf * double(width) / height;
+  const double py = (1.0 - 2.0 * y / height) * tanHalf;
+  Ray ray = Ray::make(view.eye, forward + px * right + py * up);
+  // The first surface drawn there: one-sided surfaces (walls, quads, planes, triangles)
+  // are invisible from their back, so the ray passes through them.
+  const SceneIntersector intersector(m_scene);
+  for (int pass = 0; pass < 64; ++pass) {
+    const std::optional<SceneHit> hit = intersector.intersect(ray);
+    if (!hit) return -1;
+    const std::size_t i = std::size_t(hit->object);
+    const bool oneSided = m_impl->oneSided.size() == m_scene.objects.size() && m_impl->oneSided[i];
+    Vec3 n = hit->si.n;
+    if (glm::dot(m_impl->inside - hit->si.p, n) < 0.0) n = -n;  // the face drawn
+    if (!oneSided || glm::dot(ray.direction, n) < 0.0) return hit->object;
+    ray.tMin = glm::length(hit->si.p - ray.origin) * (1.0 + 1e-9) + 1e-9;
+  }
+  return -1;
+}
+
+void SceneView::updateScene(const Scene& scene) {
+  const ViewCamera camera = viewCamera();
+  const int highlighted = m_highlighted;
+  setScene(scene);
+  setViewCamera(camera);
+  setHighlighted(highlighted < objectCount() ? highlighted : -1);
 }
 
 Point3 SceneView::objectCentre(int index) const {

@@ -274,4 +274,45 @@ vtkSmartPointer<vtkPolyData> cameraFrustumGeometry(const CameraSpec& camera, dou
   return data;
 }
 
+vtkSmartPointer<vtkPolyData> wallPatchGeometry(const Sphere& sphere, const DrawingFrame& frame,
+                                               double halfSize) {
+  // Step 1: the point of the sphere nearest the room, and its tangent plane's axes.
+  const Point3 c = sphere.centre();
+  const double r = sphere.radius();
+  Vec3 toRoom = frame.inside - c;
+  toRoom = glm::length(toRoom) > 0.0 ? glm::normalize(toRoom) : Vec3(0.0, 1.0, 0.0);
+  const Point3 nearest = c + r * toRoom;
+  const Vec3 a = std::abs(toRoom.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
+  const Vec3 u = glm::normalize(glm::cross(toRoom, a));
+  const Vec3 v = glm::cross(toRoom, u);
+
+  // Step 2: a grid on the tangent plane, each vertex moved onto the sphere.
+  constexpr int kCells = 32;
+  vtkNew<vtkPoints> points;
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      const double s = halfSize * (2.0 * i / kCells - 1.0), t = halfSize * (2.0 * j / kCells - 1.0);
+      const Point3 onPlane = nearest + s * u + t * v;
+      const Point3 p = c + r * glm::normalize(onPlane - c);
+      points->InsertNextPoint(p.x, p.y, p.z);
+    }
+
+  // Step 3: two triangles per cell, wound so that their normal faces the room.
+  const bool roomInside = glm::length(frame.inside - c) < r;
+  vtkNew<vtkCellArray> cells;
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) {
+      const vtkIdType p00 = j * (kCells + 1) + i, p10 = p00 + 1, p01 = p00 + kCells + 1,
+                      p11 = p01 + 1;
+      // u x v = toRoom: counter-clockwise in (u, v) faces away from the centre.
+      const vtkIdType outward[2][3] = {{p00, p10, p11}, {p00, p11, p01}};
+      const vtkIdType inward[2][3] = {{p00, p11, p10}, {p00, p01, p11}};
+      for (const auto& tri : roomInside ? inward : outward) cells->InsertNextCell(3, tri);
+    }
+  auto patch = vtkSmartPointer<vtkPolyData>::New();
+  patch->SetPoints(points);
+  patch->SetPolys(cells);
+  return patch;
+}
+
 }  // namespace raylab::vis

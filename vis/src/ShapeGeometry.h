@@ -13,6 +13,10 @@
 /// Triangle/line geometry (VTK polydata, world space) for every kind of scene shape and
 /// for the scene camera's glyph. Private to vis: the public API never shows vtkPolyData.
 
+namespace raylab {
+class Sphere;
+}
+
 namespace raylab::vis {
 
 /// Depth of the drawn frustum in camera glyph sizes (see cameraGlyphSize): long enough to
@@ -43,6 +47,14 @@ bool isOpenSurface(ShapeKind kind);
  * Triangle: their corners. TriangleMesh: its triangles with normals split at 30 degrees.
  */
 vtkSmartPointer<vtkPolyData> shapeGeometry(const Shape& shape, const DrawingFrame& frame);
+
+/// An enclosing wall (a huge sphere, see enclosingWalls): the patch of the sphere around
+/// the room, `halfSize` world units from the point of the sphere nearest frame.inside,
+/// finely tessellated (every vertex exactly on the sphere), faces turned towards
+/// frame.inside so that, drawn one-sided, the wall shows its room side and vanishes where
+/// it stands between the viewer and the room.
+vtkSmartPointer<vtkPolyData> wallPatchGeometry(const Sphere& sphere, const DrawingFrame& frame,
+                                               double halfSize);
 
 /// A closed hexahedron with flat faces from 8 corners in Box::vertices() order (corner k
 /// at box coordinates ((k & 1) ? 1 : -1, (k & 2) ? 1 : -1, (k & 4) ? 1 : -1)), world space.

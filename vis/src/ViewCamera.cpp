@@ -1,6 +1,9 @@
 #include "raylab/vis/ViewCamera.h"
 
+#include "raylab/core/Camera.h"
+#include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Shape.h"
+#include "raylab/core/Sphere.h"
 
 #include "ShapeGeometry.h"
 
@@ -46,9 +49,16 @@ Vec3 anyPerpendicular(const Vec3& n) {
 }
 
 Bounds3 boundedShapes(const Scene& scene) {
+  const std::vector<bool> walls = enclosingWalls(scene);
+  // With walls around it, the room is what the camera sees of it.
+  if (std::find(walls.begin(), walls.end(), true) != walls.end()) {
+    const Bounds3 room = roomBounds(scene);
+    if (!room.empty()) return room;
+  }
   Bounds3 box;
-  for (const SceneObject& object : scene.objects) {
-    if (!object.shape) continue;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& object = scene.objects[i];
+    if (!object.shape || walls[i]) continue;
     const Bounds3 b = object.shape->bounds();
     if (b.empty()) continue;
     const Vec3 e = b.extent();
@@ -59,6 +69,45 @@ Bounds3 boundedShapes(const Scene& scene) {
 }
 
 }  // namespace
+
+std::vector<bool> enclosingWalls(const Scene& scene) {
+  std::vector<bool> walls(scene.objects.size(), false);
+  bool anyHuge = false;
+  for (const SceneObject& o : scene.objects)
+    anyHuge |= o.shape && o.shape->kind() == ShapeKind::Sphere &&
+               static_cast<const Sphere&>(*o.shape).radius() > 1e3;
+  if (!anyHuge) return walls;
+  // The viewing distance: to what the camera's central ray meets (else to the look-at).
+  const Camera camera(scene.camera);
+  const Ray central =
+      camera.generateRay(Vec2(scene.camera.width / 2.0, scene.camera.height / 2.0), Vec2(0.5), 0.0);
+  const std::optional<SceneHit> hit = SceneIntersector(scene).intersect(central);
+  const double viewing = hit ? glm::length(hit->si.p - scene.camera.position)
+                             : glm::length(scene.camera.lookAt - scene.camera.position);
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Shape* shape = scene.objects[i].shape.get();
+    if (shape && shape->kind() == ShapeKind::Sphere)
+      walls[i] = static_cast<const Sphere&>(*shape).radius() > 100.0 * std::max(viewing, 1e-9);
+  }
+  return walls;
+}
+
+Bounds3 roomBounds(const Scene& scene) {
+  // The first hits of a 9 x 9 grid of camera rays, edges included.
+  const Camera camera(scene.camera);
+  const SceneIntersector intersector(scene);
+  Bounds3 box;
+  constexpr int kGrid = 9;
+  for (int j = 0; j < kGrid; ++j)
+    for (int i = 0; i < kGrid; ++i) {
+      const Vec2 film(scene.camera.width * double(i) / (kGrid - 1),
+                      scene.camera.height * double(j) / (kGrid - 1));
+      if (const std::optional<SceneHit> hit =
+              intersector.intersect(camera.generateRay(film, Vec2(0.5), 0.0)))
+        box.extend(hit->si.p);
+    }
+  return box;
+}
 
 Vec3 ViewCamera::direction() const {
   const Vec3 d = focalPoint - eye;

@@ -59,4 +59,46 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x,
   return tracePixel(tracer, x, y, sample, memoryBudget);
 }
 
+std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, int down) {
+  std::vector<std::pair<int, int>> pixels;
+  for (int j = 0; j < down; ++j)
+    for (int i = 0; i < across; ++i)
+      pixels.emplace_back(int((i + 0.5) * width / across), int((j + 0.5) * height / down));
+  return pixels;
+}
+
+GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
+                    std::size_t memoryBudget) {
+  GridTrace grid;
+  const std::vector<std::pair<int, int>> pixels =
+      gridPixels(scene.camera.width, scene.camera.height, across, down);
+  const Tracer tracer(scene, settings);
+  std::size_t used = 0;
+  for (const auto& [x, y] : pixels) {
+    // Each tree gets what the grid's budget has left.
+    PixelTrace trace = tracePixel(tracer, x, y, 0, memoryBudget - used);
+    used += trace.tree.segments.size() * sizeof(RaySegment);
+    // Its rays join the combined tree with ids after those already there.
+    const int offset = int(grid.combined.segments.size());
+    for (RaySegment s : trace.tree.segments) {
+      s.id += offset;
+      if (s.parent >= 0) s.parent += offset;
+      if (s.firstChild >= 0) s.firstChild += offset;
+      grid.combined.segments.push_back(s);
+    }
+    const bool full = trace.tree.truncated;
+    grid.traces.push_back(std::move(trace));
+    if (full) {
+      grid.truncated = true;
+      grid.message = "ray-tree memory budget (" + std::to_string(memoryBudget >> 20) +
+                     " MiB) reached after " + std::to_string(grid.traces.size()) + " of " +
+                     std::to_string(pixels.size()) + " pixels; the last tree is cut short";
+      break;
+    }
+  }
+  grid.combined.truncated = grid.truncated;
+  grid.combined.message = grid.message;
+  return grid;
+}
+
 }  // namespace raylab

@@ -26,6 +26,20 @@ Scene defaultScene() {
       makeMaterial("light", flesh, 8.0 * flesh),
       makeMaterial("wall", {0.75, 0.75, 0.75}, Vec3(0.0)),
   };
+  // The original program's two demonstrations: its red sphere is a mirror material that
+  // reflects part of the light and refracts the rest (its reflection_rate, refraction_rate
+  // and index of refraction), and its blue cube is Phong glossy, so a ray the sphere
+  // reflects onto the cube fans out into glossy rays.
+  Material& mirror = scene.materials[0];
+  mirror.type = MaterialType::Mirror;
+  mirror.colour = {0.95, 0.35, 0.35};
+  mirror.reflectionRate = 0.5;
+  mirror.refractionRate = 0.5;
+  mirror.ior = 1.5;
+  Material& glossy = scene.materials[1];
+  glossy.type = MaterialType::Glossy;
+  glossy.exponent = 40.0;
+  glossy.specular = 0.5;
   const int red = 0, blue = 1, light = 2, wall = 3;
 
   // The room: x in [-5, 5], y in [0, 6], z in [-6, 4], open towards +z. Quad normals

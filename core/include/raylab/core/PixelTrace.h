@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -45,5 +46,25 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x,
 /// The same, with an engine already built for the scene and settings (tracing many pixels).
 PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample = 0,
                       std::size_t memoryBudget = kDefaultTreeBudget);
+
+/// The pixels of a grid of `across` x `down` camera rays spread evenly over a width x
+/// height image (the original course program's "rays across and down"): pixel
+/// (floor((i + 0.5) W / across), floor((j + 0.5) H / down)), row by row; 1 x 1 is the
+/// centre pixel.
+std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, int down);
+
+/// The traces of a grid of pixels, and one tree holding all their rays for drawing.
+struct GridTrace {
+  std::vector<PixelTrace> traces;  ///< One per grid pixel traced, row by row.
+  RayTree combined;                ///< Every trace's rays, ids offset (roots have parent -1).
+  bool truncated = false;          ///< The memory budget ran out before the whole grid.
+  std::string message;             ///< Why, for the user (how many pixels were traced).
+};
+
+/// Traces sample 0 of every pixel of gridPixels(camera size, across, down) with
+/// `settings`, within `memoryBudget` bytes of ray segments for the whole grid: when the
+/// budget runs out the grid stops there and says so (GridTrace::message).
+GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
+                    std::size_t memoryBudget = kDefaultTreeBudget);
 
 }  // namespace raylab

@@ -89,7 +89,11 @@ struct Scene {
 /**
  * \brief The built-in scene, after the original course program's: a red sphere, a blue cube and a
  * flesh-coloured light cube inside a room (floor, back, left and right walls, ceiling,
- * open towards the viewer), seen by a camera in front of the room.
+ * open towards the viewer), seen by a camera in front of the room. As in the original,
+ * the sphere is a mirror material that reflects half the light and refracts the other
+ * half (index of refraction 1.5), and the cube is Phong glossy, so the algorithms differ
+ * on it: ray casting leaves the sphere black, Whitted follows its reflection and
+ * refraction, distributed tracing fans the cube's highlight out into glossy rays.
  */
 Scene defaultScene();
 

@@ -46,6 +46,9 @@ class SceneView {
 
   /// Replaces every actor with those of `scene`, clears the selection, resets the view.
   void setScene(const Scene& scene);
+  /// The same scene after an edit: replaces the actors but keeps the view camera (and the
+  /// highlighted object when it still exists), so an edit does not move the teacher's view.
+  void updateScene(const Scene& scene);
   /// The scene as last given to the view.
   const Scene& scene() const { return m_scene; }
 
@@ -53,6 +56,11 @@ class SceneView {
   int objectCount() const { return static_cast<int>(m_scene.objects.size()); }
   /// World-space centre of object i (the centre of its bounds; a plane's reference point).
   Point3 objectCentre(int index) const;
+
+  /// The object seen at image point (x, y) (pixels, y down) of a width x height picture of
+  /// the current view: the first object the view ray through that point meets, traced by
+  /// core's SceneIntersector (exact, no GL picking); -1 when it meets none.
+  int objectAt(double x, double y, int width, int height) const;
 
   /// Highlights object `index` with a yellow outline; -1 (or any index out of range) clears.
   void setHighlighted(int index);

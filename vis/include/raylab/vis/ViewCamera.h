@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace raylab::vis {
 
@@ -30,6 +31,17 @@ struct ViewCamera {
 /// Edge length of the scene camera's body glyph, world units: 6% of the diagonal of the
 /// bounded objects, so the glyph scales with the room.
 double cameraGlyphSize(const Scene& scene);
+
+/// For each object of `scene`: whether it is an enclosing wall, a sphere so large (radius
+/// over 100 times the scene camera's viewing distance, the distance to what its central
+/// ray meets) that it stands for a flat wall around the scene, as smallpt's six walls of
+/// radius 1e5 do. The view draws such walls as patches of the sphere around the room,
+/// cut away where they face the viewer (as the Cornell box's open front), and leaves them
+/// out of the bounds it frames.
+std::vector<bool> enclosingWalls(const Scene& scene);
+/// The room the scene camera looks into: the box of the first hits of a grid of its
+/// camera rays, or an empty box when none hits anything.
+Bounds3 roomBounds(const Scene& scene);
 
 /// World-space box around everything the 3D view draws with a finite size: every bounded
 /// shape (planes are unbounded and left out), the scene camera's body and frustum. Never

@@ -1,0 +1,294 @@
+#include "PropertiesPanel.h"
+
+#include "EditPanel.h"
+#include "SceneDocument.h"
+
+#include "raylab/core/Exception.h"
+#include "raylab/core/SceneEdit.h"
+
+#include <nlohmann/json.hpp>
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <functional>
+#include <set>
+
+namespace raylab::app {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+/// Keys whose numbers are whole (spin boxes without decimals).
+const std::set<std::string> kIntegerKeys = {
+    "m",         "n",    "width",          "height",         "spp",
+    "max_depth", "seed", "shadow_samples", "glossy_samples", "russian_roulette_depth"};
+/// Keys shown but not edited here: names are references (objects name their material),
+/// renaming an object is the Edit panel's; a mesh's file and a matrix are set in files.
+const std::set<std::string> kReadOnlyKeys = {"name", "file", "matrix", "type"};
+/// Choices of the keys that take one word.
+const std::map<std::string, std::vector<const char*>> kChoices = {
+    {"algorithm", {"raycast", "whitted", "distributed", "path"}},
+};
+const std::vector<const char*> kMaterialTypes = {"diffuse", "mirror", "dielectric", "glossy"};
+
+/// Words for a key ("vertical_fov" -> "vertical fov").
+QString label(const std::string& key) {
+  QString text = QString::fromStdString(key);
+  text.replace(QLatin1Char('_'), QLatin1Char(' '));
+  return text;
+}
+
+bool isNumberTriple(const json& v) {
+  return v.is_array() && v.size() == 3 && v[0].is_number() && v[1].is_number() && v[2].is_number();
+}
+
+QDoubleSpinBox* numberBox(double value) {
+  auto* box = new QDoubleSpinBox;
+  box->setRange(-1e6, 1e6);
+  box->setDecimals(3);
+  box->setMinimumWidth(40);
+  box->setSingleStep(std::abs(value) >= 10.0 ? 1.0 : 0.1);
+  box->setValue(value);
+  box->setKeyboardTracking(false);
+  return box;
+}
+
+}  // namespace
+
+PropertiesPanel::PropertiesPanel(SceneDocument& document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+  m_layout = new QVBoxLayout(this);
+  connect(&m_document, &SceneDocument::sceneChanged, this, [this] {
+    if (m_object >= int(m_document.scene().objects.size())) m_object = -1;
+    rebuild();
+  });
+  rebuild();
+}
+
+void PropertiesPanel::showObject(int object) {
+  m_object = object >= 0 && object < int(m_document.scene().objects.size()) ? object : -1;
+  rebuild();
+}
+
+QWidget* PropertiesPanel::field(const std::string& pointer) const {
+  return m_form ? m_form->findChild<QWidget*>(QString::fromStdString(pointer)) : nullptr;
+}
+
+bool PropertiesPanel::setValue(const std::string& pointer, const std::string& jsonValue,
+                               const QString& labelText) {
+  const std::string origin = m_document.origin();
+  const int mergeId = int(std::hash<std::string>{}(pointer)&0x3fffffff);
+  try {
+    m_document.apply(
+        labelText,
+        [&](const Scene& scene) { return edit::setValue(scene, pointer, jsonValue, origin); },
+        mergeId);
+    return true;
+  } catch (const Exception& e) {
+    emit editRefused(QString::fromStdString(e.what()));
+    rebuild();  // show the value the scene still has
+    return false;
+  }
+}
+
+void PropertiesPanel::rebuild() {
+  // The form is made anew after every change; a field that triggered the change must
+  // not be deleted inside its own signal, so the old form goes later.
+  if (m_form) {
+    m_form->hide();
+    m_form->deleteLater();
+  }
+  m_form = new QWidget;
+  auto* layout = new QVBoxLayout(m_form);
+  layout->setContentsMargins(0, 0, 0, 0);
+  m_layout->addWidget(m_form);
+  const Scene& scene = m_document.scene();
+  if (m_object >= 0) {
+    const SceneObject& o = scene.objects[std::size_t(m_object)];
+    const std::string base = "/objects/" + std::to_string(m_object);
+    addGroup(tr("Shape of %1").arg(QString::fromStdString(o.name)), base + "/shape");
+    // Which material, chosen among the scene's.
+    auto* materialGroup = new QGroupBox(tr("Material"));
+    auto* materialForm = new QFormLayout(materialGroup);
+    auto* choice = new QComboBox;
+    choice->setObjectName(QString::fromStdString(base + "/material"));
+    choice->setToolTip(tr("The material this object is made of (shared with other objects)"));
+    for (const Material& m : scene.materials) choice->addItem(QString::fromStdString(m.name));
+    choice->setCurrentIndex(o.material);
+    connect(choice, QOverload<int>::of(&QComboBox::activated), this, [this, base, choice](int) {
+      setValue(base + "/material", json(choice->currentText().toStdString()).dump(),
+               tr("Use material %1").arg(choice->currentText()));
+    });
+    materialForm->addRow(tr("uses"), choice);
+    m_form->layout()->addWidget(materialGroup);
+    addGroup(tr("Material %1")
+                 .arg(QString::fromStdString(scene.materials[std::size_t(o.material)].name)),
+             "/materials/" + std::to_string(o.material));
+    auto* motion = new QGroupBox(tr("Motion over the shutter"));
+    auto* motionForm = new QFormLayout(motion);
+    auto* row = new QWidget;
+    auto* rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    const std::string pointer = base + "/velocity";
+    row->setObjectName(QString::fromStdString(pointer));
+    for (int i = 0; i < 3; ++i) {
+      auto* box = numberBox(o.velocity[i]);
+      box->setToolTip(tr("Velocity, world units over the shutter interval (motion blur)"));
+      rowLayout->addWidget(box);
+      connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+              [this, pointer, row](double) {
+                json v = json::array();
+                for (auto* b : row->findChildren<QDoubleSpinBox*>()) v.push_back(b->value());
+                setValue(pointer, v.dump(), tr("Set velocity"));
+              });
+    }
+    motionForm->addRow(tr("velocity"), row);
+    m_form->layout()->addWidget(motion);
+  } else {
+    addGroup(tr("Camera"), "/camera");
+    addGroup(tr("Render settings"), "/render");
+  }
+  static_cast<QVBoxLayout*>(m_form->layout())->addStretch(1);
+}
+
+void PropertiesPanel::addGroup(const QString& title, const std::string& pointer) {
+  json values;
+  try {
+    values = json::parse(edit::valueAt(m_document.scene(), pointer, m_document.origin()));
+  } catch (const std::exception&) {
+    return;
+  }
+  auto* group = new QGroupBox(title);
+  auto* form = new QFormLayout(group);
+  const bool material = pointer.rfind("/materials/", 0) == 0;
+  for (auto it = values.begin(); it != values.end(); ++it) {
+    const std::string key = it.key();
+    const std::string place = pointer + "/" + key;
+    const json& value = it.value();
+    const QString what = label(key);
+    const QString undoText = tr("Set %1 of %2").arg(what, title);
+    QWidget* widget = nullptr;
+    if (material && key == "type") {
+      // The scattering model: the form then shows that model's parameters.
+      auto* box = new QComboBox;
+      for (const char* type : kMaterialTypes) box->addItem(QString::fromLatin1(type));
+      box->setCurrentText(QString::fromStdString(value.get<std::string>()));
+      box->setToolTip(
+          tr("Scattering model: diffuse (Lambert), mirror (reflection and "
+             "refraction rates), dielectric (Fresnel glass), glossy (Phong)"));
+      connect(box, QOverload<int>::of(&QComboBox::activated), this,
+              [this, place, box, undoText](int) {
+                setValue(place, json(box->currentText().toStdString()).dump(), undoText);
+              });
+      widget = box;
+    } else if (kReadOnlyKeys.count(key) || value.is_object() ||
+               (value.is_array() && !value.empty() && value[0].is_array() && key == "matrix")) {
+      auto* text = new QLabel(value.is_string() ? QString::fromStdString(value.get<std::string>())
+                                                : QString::fromStdString(value.dump()));
+      text->setWordWrap(true);
+      widget = text;
+    } else if (value.is_boolean()) {
+      auto* box = new QCheckBox;
+      box->setChecked(value.get<bool>());
+      connect(box, &QCheckBox::toggled, this, [this, place, undoText](bool on) {
+        setValue(place, on ? "true" : "false", undoText);
+      });
+      widget = box;
+    } else if (value.is_string() && kChoices.count(key)) {
+      auto* box = new QComboBox;
+      for (const char* c : kChoices.at(key)) box->addItem(QString::fromLatin1(c));
+      box->setCurrentText(QString::fromStdString(value.get<std::string>()));
+      connect(box, QOverload<int>::of(&QComboBox::activated), this,
+              [this, place, box, undoText](int) {
+                setValue(place, json(box->currentText().toStdString()).dump(), undoText);
+              });
+      widget = box;
+    } else if (value.is_number_integer() || (value.is_number() && kIntegerKeys.count(key))) {
+      auto* box = new QSpinBox;
+      box->setRange(-1000000000, 1000000000);
+      box->setValue(value.get<int>());
+      box->setKeyboardTracking(false);
+      connect(box, QOverload<int>::of(&QSpinBox::valueChanged), this,
+              [this, place, undoText](int v) { setValue(place, std::to_string(v), undoText); });
+      widget = box;
+    } else if (value.is_number()) {
+      auto* box = numberBox(value.get<double>());
+      connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+              [this, place, undoText](double v) { setValue(place, json(v).dump(), undoText); });
+      widget = box;
+    } else if (isNumberTriple(value) ||
+               (value.is_array() && !value.empty() && isNumberTriple(value[0]))) {
+      // A vector (or a list of vectors: axes, vertices): one row of three per vector.
+      const bool list = !isNumberTriple(value);
+      auto* rows = new QWidget;
+      auto* rowsLayout = new QVBoxLayout(rows);
+      rowsLayout->setContentsMargins(0, 0, 0, 0);
+      const auto commit = [this, place, rows, list, undoText] {
+        json v = json::array();
+        for (auto* row : rows->findChildren<QWidget*>(QStringLiteral("row"))) {
+          json triple = json::array();
+          for (auto* b : row->findChildren<QDoubleSpinBox*>()) triple.push_back(b->value());
+          v.push_back(triple);
+        }
+        setValue(place, (list ? v : v[0]).dump(), undoText);
+      };
+      const std::size_t count = list ? value.size() : 1;
+      for (std::size_t r = 0; r < count; ++r) {
+        const json& triple = list ? value[r] : value;
+        auto* row = new QWidget;
+        row->setObjectName(QStringLiteral("row"));
+        auto* rowLayout = new QHBoxLayout(row);
+        rowLayout->setContentsMargins(0, 0, 0, 0);
+        for (int i = 0; i < 3; ++i) {
+          auto* box = numberBox(triple[std::size_t(i)].get<double>());
+          rowLayout->addWidget(box);
+          connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+                  [commit](double) { commit(); });
+        }
+        if (key == "colour" || key == "background") {
+          // Linear RGB in [0, 1], picked as a colour.
+          auto* pick = new QPushButton(tr("…"));
+          pick->setToolTip(tr("Choose the colour"));
+          pick->setMaximumWidth(32);
+          const QColor shown = QColor::fromRgbF(std::clamp(triple[0].get<double>(), 0.0, 1.0),
+                                                std::clamp(triple[1].get<double>(), 0.0, 1.0),
+                                                std::clamp(triple[2].get<double>(), 0.0, 1.0));
+          pick->setStyleSheet(QStringLiteral("background-color: %1").arg(shown.name()));
+          connect(pick, &QPushButton::clicked, this, [this, place, shown, undoText] {
+            const QColor c = QColorDialog::getColor(shown, this, tr("Colour"));
+            if (c.isValid())
+              setValue(place, json::array({c.redF(), c.greenF(), c.blueF()}).dump(), undoText);
+          });
+          rowLayout->addWidget(pick);
+        }
+        rowsLayout->addWidget(row);
+      }
+      widget = rows;
+    } else {
+      auto* text = new QLabel(QString::fromStdString(value.dump()));
+      text->setWordWrap(true);
+      widget = text;
+    }
+    widget->setObjectName(QString::fromStdString(place));
+    if (widget->toolTip().isEmpty())
+      widget->setToolTip(tr("%1 (%2 in the scene file)").arg(what, QString::fromStdString(place)));
+    form->addRow(what, widget);
+  }
+  m_form->layout()->addWidget(group);
+}
+
+}  // namespace raylab::app
