@@ -6,10 +6,11 @@
 #include <vector>
 
 /// \file LocalShading.h
-/// The shading helpers the four rules are written with, and the only file a rule needs
-/// besides its own: the Phong-era local shading model, shadow rays to point and area
-/// lights, the specular children of mirrors and glass, and the child-ray factory every
-/// rule uses. No rule includes another rule; each names the helpers it calls. Private to
+/// The shading helpers the four rules are written with: the Phong-era local shading model,
+/// shadow rays to point and area lights, the specular children of mirrors and glass, and
+/// the child-ray factory every rule uses. Besides its own file, a rule reads only this
+/// file and core's public headers (Bsdf.h, Sampling.h, RayOffset.h); no rule includes
+/// another rule, and each names the helpers it calls. Private to
 /// the integrators.
 
 namespace raylab::shading {

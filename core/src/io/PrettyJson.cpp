@@ -77,4 +77,14 @@ std::pair<int, int> lineColumn(const std::string& text, std::size_t offset) {
   return {line, column};
 }
 
+std::string jsonSyntaxMessage(const std::string& origin, const std::string& text, std::size_t byte,
+                              const std::string& parserMessage) {
+  const auto [line, column] = lineColumn(text, byte > 0 ? byte - 1 : 0);
+  std::string what = parserMessage;
+  const auto colon = what.find(": ");
+  if (colon != std::string::npos) what = what.substr(colon + 2);
+  return origin + ":" + std::to_string(line) + ":" + std::to_string(column) +
+         ": JSON syntax error: " + what;
+}
+
 }  // namespace raylab

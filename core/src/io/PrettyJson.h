@@ -23,4 +23,11 @@ std::string prettyJson(const nlohmann::ordered_json& j);
 /// turn a parser's byte offset into a file:line:column message.
 std::pair<int, int> lineColumn(const std::string& text, std::size_t offset);
 
+/// The message of a JSON syntax error of nlohmann's parser at byte `byte` of `text`, read
+/// from `origin`: "ORIGIN:LINE:COLUMN: JSON syntax error: WHAT" with nlohmann's own
+/// explanation (its "[json.exception...] parse error at ...: " prefix removed). The scene
+/// and lesson loaders throw it in their own error types.
+std::string jsonSyntaxMessage(const std::string& origin, const std::string& text, std::size_t byte,
+                              const std::string& parserMessage);
+
 }  // namespace raylab

@@ -1,5 +1,7 @@
 #include "raylab/core/Lesson.h"
 
+#include "io/PrettyJson.h"
+
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Tracer.h"
 
@@ -98,20 +100,6 @@ bool hasChinese(const std::string& text) {
     if (cp >= 0x4E00 && cp <= 0x9FFF) return true;
   }
   return false;
-}
-
-/// 1-based line and column of a byte offset.
-std::pair<int, int> lineColumn(const std::string& text, std::size_t offset) {
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
 }
 
 using nlohmann::json;
@@ -768,13 +756,7 @@ Lesson LessonIO::parse(const std::string& text, const std::string& origin) {
   try {
     root = json::parse(text);
   } catch (const json::parse_error& e) {
-    const auto [line, column] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
-    std::string what = e.what();
-    // Keep only nlohmann's explanation after "[json.exception...] parse error at ...: ".
-    const auto colon = what.find(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw LoadError(origin + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                    ": JSON syntax error: " + what);
+    throw LoadError(jsonSyntaxMessage(origin, text, e.byte, e.what()));
   }
   return Reader(origin).lesson(root);
 }

@@ -436,14 +436,7 @@ Scene SceneIO::parse(const std::string& text, const std::string& origin) {
   try {
     root = json::parse(text);
   } catch (const json::parse_error& e) {
-    const auto [line, column] = lineColumn(text, e.byte > 0 ? e.byte - 1 : 0);
-    std::string what = e.what();
-    // nlohmann's message starts with "[json.exception.parse_error.101] parse error at
-    // line L, column C: "; keep only the explanation.
-    const auto colon = what.find(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw LoadError(origin + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                    ": JSON syntax error: " + what);
+    throw LoadError(jsonSyntaxMessage(origin, text, e.byte, e.what()));
   }
   return Reader(origin).scene(root);
 }

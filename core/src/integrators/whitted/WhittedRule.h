@@ -14,9 +14,10 @@ namespace raylab {
  * - Diffuse and Glossy: exactly ray casting's local shading (shading::addClassicLightRays),
  *   so both algorithms agree pixel for pixel on scenes without specular surfaces;
  * - Mirror and Dielectric: every specular lobe (bsdf::specularLobes: reflection and
- *   refraction, weighted by the original course program's rates or by Fresnel, total internal
- * reflection included) becomes a Reflection / Refraction child, while the ray's depth is below
- *   maxDepth; at maxDepth the ray ends (MaxDepth) and contributes nothing.
+ *   refraction, weighted by the original course program's rates or by Fresnel, total
+ *   internal reflection included) becomes a Reflection / Refraction child
+ *   (shading::addSpecularChildren), while the ray's depth is below maxDepth; at maxDepth
+ *   the ray ends (MaxDepth) and contributes nothing.
  *
  * Parameters (RenderSettings): maxDepth (default 5; the camera ray has depth 0),
  * samplesPerPixel (jittered film positions when > 1, lens centre, time 0), seed, background.

@@ -8,8 +8,9 @@
 
 /// \file BounceAnimation.h
 /// The bounce animation: which part of a recorded ray tree frame N shows, and the caption
-/// that tells what happens in it. Pure C++ (no VTK): the window, `raylab animate`,
-/// `trace --frame` and the lessons all call these functions.
+/// that tells what happens in it. Pure C++ (no VTK): the window's ray-tree panel calls
+/// both (the picture and the status line), `raylab animate` and `trace --frame` draw the
+/// same frames with revealFrame.
 
 namespace raylab::vis {
 
