@@ -87,6 +87,17 @@ int runCommandLine(int argc, char** argv) {
                  "With --trace: show this frame of the bounce animation (default: the whole tree)")
       ->needs(traceOption)
       ->check(CLI::NonNegativeNumber);
+  int simulateAcross = 0, simulateDown = 0;
+  CLI::Option* simulateOption =
+      cli.add_option("--simulate", simulateAcross,
+                     "Simulate a grid of N rays across (and --simulate-down M, default N) when "
+                     "the window opens")
+          ->check(CLI::Range(1, 64))
+          ->type_name("N");
+  cli.add_option("--simulate-down", simulateDown, "With --simulate: rays down")
+      ->needs(simulateOption)
+      ->check(CLI::Range(1, 64))
+      ->type_name("M");
   int traceRay = -1;
   cli.add_option("--ray", traceRay, "With --trace: inspect this ray (0 = the camera ray)")
       ->needs(traceOption)
@@ -121,6 +132,9 @@ int runCommandLine(int argc, char** argv) {
   window.sample = traceSample;
   if (traceFrame >= 0) window.frame = traceFrame;
   if (traceRay >= 0) window.ray = traceRay;
+  if (simulateAcross > 0)
+    window.simulate =
+        std::make_pair(simulateAcross, simulateDown > 0 ? simulateDown : simulateAcross);
   return runWindow(argc, argv, window);
 #else
   std::cerr << "raylab: this build has no window (configured with RAYLAB_BUILD_GUI=OFF); "

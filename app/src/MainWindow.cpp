@@ -133,8 +133,7 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   tabifyDockWidget(rays, inspector);
   m_raysDock = rays;
   m_inspectorDock = inspector;
-  resizeDocks({objects, edit, properties}, {330, 330, 330}, Qt::Horizontal);
-  resizeDocks({objects, edit}, {220, 560}, Qt::Vertical);
+  m_leftDocks = {objects, edit, properties};
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this,
           [this](const QString& text) { statusBar()->showMessage(text); });
@@ -370,6 +369,12 @@ void MainWindow::showEvent(QShowEvent* event) {
   // builds the tab bar in the first layout after showing: raise once the loop runs.
   QTimer::singleShot(0, this, [this] {
     (m_rayPanel->selectedSegment() >= 0 ? m_inspectorDock : m_raysDock)->raise();
+    // The 3D view gets the width: the left docks as narrow as their contents allow.
+    if (!m_leftDocks.isEmpty()) {
+      resizeDocks(m_leftDocks, {300, 300, 300}, Qt::Horizontal);
+      resizeDocks({m_leftDocks[0], m_leftDocks[1]}, {200, 600}, Qt::Vertical);
+      m_leftDocks.clear();
+    }
   });
 }
 

@@ -11,6 +11,7 @@
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
+#include <QSpinBox>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -66,6 +67,11 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   // The ray-tree panel: algorithm, and a pixel traced, animated and inspected.
   RayTreePanel& panel = *window.rayTreePanel();
   if (options.algorithm) panel.setAlgorithm(*options.algorithm);
+  if (options.simulate) {
+    panel.acrossBox()->setValue(options.simulate->first);
+    panel.downBox()->setValue(options.simulate->second);
+    panel.simulate();
+  }
   if (options.trace) {
     panel.setPixel(options.trace->first, options.trace->second);
     panel.setSample(options.sample);

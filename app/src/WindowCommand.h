@@ -15,10 +15,11 @@ struct WindowOptions {
   std::string screenshot;              ///< When set: grab the window into this PNG, then quit.
   std::string select;                  ///< Object to select at start (by name); empty selects none.
   std::optional<Algorithm> algorithm;  ///< Ray-tree panel's algorithm (else the scene's).
-  std::optional<std::pair<int, int>> trace;  ///< Trace this pixel (x, y) when the window opens.
-  int sample = 0;                            ///< With trace: the pixel sample.
-  std::optional<int> frame;                  ///< With trace: show this animation frame.
-  std::optional<int> ray;                    ///< With trace: inspect this ray.
+  std::optional<std::pair<int, int>> trace;     ///< Trace this pixel (x, y) when the window opens.
+  int sample = 0;                               ///< With trace: the pixel sample.
+  std::optional<int> frame;                     ///< With trace: show this animation frame.
+  std::optional<int> ray;                       ///< With trace: inspect this ray.
+  std::optional<std::pair<int, int>> simulate;  ///< Simulate this grid (across, down).
 };
 
 /**

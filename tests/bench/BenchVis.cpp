@@ -4,11 +4,15 @@
 //   Animation/N       one frame of the bounce animation of an N-ray tree in the materials
 //                     scene at 1280x720 offscreen: reveal + polydata update + render + read
 //                     back; reported as frames per second.
+//   Simulate/N        the window's Simulate on the default scene: an N x N grid of path
+//                     tracing trees traced (traceGrid), drawn together and rendered once at
+//                     1280x720 offscreen; the window's target is well under a second at 16.
 // Run by hand (needs an X server):
 //   xvfb-run -a build/tests/bench/raylab_bench_vis --benchmark_counters_tabular=true
 #include "../vis/RayTreeFixtures.h"
 #include "RayTreeGeometry.h"
 
+#include "raylab/core/PixelTrace.h"
 #include "raylab/vis/SceneView.h"
 
 #include <benchmark/benchmark.h>
@@ -67,6 +71,26 @@ void Animation(benchmark::State& state) {
   state.counters["rays"] = double(tree.segments.size());
 }
 BENCHMARK(Animation)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void Simulate(benchmark::State& state) {
+  const Scene scene = defaultScene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::PathTracing;
+  const int n = int(state.range(0));
+  SceneView view(scene);
+  view.resetViewCamera(1280.0 / 720.0);
+  view.renderOffscreen(1280, 720);  // window creation is not part of a Simulate
+  std::size_t rays = 0;
+  for (auto _ : state) {
+    const GridTrace grid = traceGrid(scene, settings, n, n);
+    view.setRayTree(grid.combined);
+    const SrgbImage image = view.renderOffscreen(1280, 720);
+    benchmark::DoNotOptimize(image.rgb.data());
+    rays = grid.combined.segments.size();
+  }
+  state.counters["rays"] = double(rays);
+}
+BENCHMARK(Simulate)->Arg(4)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace raylab::vis
