@@ -470,6 +470,11 @@ TEST_F(MainWindowTest, 11_SaveAndReloadAndAFailedSaveKeepsTheOldFile) {
   EXPECT_EQ(fileBytes(path), old);
   EXPECT_TRUE(m_window->isWindowModified());
   EXPECT_EQ(QDir(dir).entryList(QDir::Files), QStringList{QStringLiteral("classroom.json")});
+
+  // A place nobody can write to (root included): a dialog naming the file.
+  EXPECT_FALSE(m_window->saveFile(QStringLiteral("/proc/raylab-classroom.json")));
+  EXPECT_TRUE(m_window->lastError().contains(QStringLiteral("/proc/raylab-classroom.json")));
+  EXPECT_EQ(m_window->document().path(), path);
 }
 
 // The original program's operation: the blue cube turned 90 degrees about z through its
@@ -679,6 +684,25 @@ TEST_F(MainWindowTest, 18_TreesAreRetracedAfterAnEditOrAnotherAlgorithm) {
   settings.algorithm = Algorithm::RayCasting;
   EXPECT_EQ(panel.tree().segments.size(), tracePixel(moved, settings, x, y).tree.segments.size());
   EXPECT_NE(panel.tree().segments[0].object, moved.findObject("red sphere"));
+}
+
+// With unsaved changes the title carries the marker, and New (like Open and closing) asks
+// Save / Discard / Cancel: Cancel keeps the edits, Discard drops them.
+TEST_F(MainWindowTest, 19_UnsavedChangesAreAskedAbout) {
+  m_window->selectObject(m_window->document().scene().findObject("blue cube"));
+  m_window->editPanel()->duplicate();
+  EXPECT_TRUE(m_window->isWindowModified());
+  EXPECT_TRUE(m_window->windowTitle().contains(QStringLiteral("[*]")));
+  const std::size_t edited = m_window->document().scene().objects.size();
+  m_window->setUnsavedChangesAnswer(QMessageBox::Cancel);
+  m_window->newScene();
+  EXPECT_EQ(m_window->document().scene().objects.size(), edited);
+  EXPECT_TRUE(m_window->isWindowModified());
+  m_window->setUnsavedChangesAnswer(QMessageBox::Discard);
+  m_window->newScene();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), SceneIO::serialize(defaultScene()));
+  EXPECT_FALSE(m_window->isWindowModified());
+  EXPECT_FALSE(m_window->document().undoStack().canUndo());
 }
 
 }  // namespace

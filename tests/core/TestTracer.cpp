@@ -439,5 +439,74 @@ TEST(Tracer, 11_EachRuleSaysWhetherItSamplesLensAndShutter) {
   }
 }
 
+// Simulate's grid: one tree per pixel of the grid, equal to tracePixel of that pixel; over
+// the memory budget the grid stops and says how far it got (the window shows it).
+TEST(Tracer, 12_GridTracesEachPixelAndStopsAtTheBudget) {
+  const Scene scene = defaultScene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::PathTracing;
+  const GridTrace grid = traceGrid(scene, settings, 3, 2);
+  ASSERT_EQ(grid.traces.size(), 6u);
+  EXPECT_FALSE(grid.truncated);
+  std::size_t total = 0;
+  const auto pixels = gridPixels(scene.camera.width, scene.camera.height, 3, 2);
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    const PixelTrace single = tracePixel(scene, settings, pixels[i].first, pixels[i].second);
+    EXPECT_EQ(grid.traces[i].estimate, single.estimate);
+    EXPECT_EQ(grid.traces[i].tree.segments.size(), single.tree.segments.size());
+    total += single.tree.segments.size();
+  }
+  EXPECT_EQ(grid.combined.segments.size(), total);
+  EXPECT_EQ(pixels[4], std::make_pair(160, 180));  // ((1 + 0.5) 320 / 3, (1 + 0.5) 240 / 2)
+
+  const GridTrace small = traceGrid(scene, settings, 8, 8, 12 * sizeof(RaySegment));
+  EXPECT_TRUE(small.truncated);
+  EXPECT_LT(small.traces.size(), 64u);
+  EXPECT_LE(small.combined.segments.size(), 12u);
+  EXPECT_NE(small.message.find("memory budget"), std::string::npos) << small.message;
+  EXPECT_NE(small.message.find("of 64 pixels"), std::string::npos) << small.message;
+}
+
+// The built-in scene shows the original course program's two demonstrations. (1) Under
+// distributed tracing a camera ray hits the red sphere, its reflection reaches the blue
+// cube and fans out into glossy rays, some of which bring light back (drawn green) and
+// some not (grey). (2) Path
+// tracing's rays that refract through the red sphere go on to scatter diffusely.
+TEST(Tracer, 13_TheDefaultSceneShowsTheOriginalsDemonstrations) {
+  const Scene scene = defaultScene();
+  const int sphere = scene.findObject("red sphere"), cube = scene.findObject("blue cube");
+  RenderSettings distributed = scene.render;
+  distributed.algorithm = Algorithm::Distributed;
+  RenderSettings path = scene.render;
+  path.algorithm = Algorithm::PathTracing;
+  const Tracer fan(scene, distributed), refract(scene, path);
+  int fans = 0, refractedThenDiffuse = 0;
+  for (int y = 0; y < scene.camera.height; y += 6)
+    for (int x = 0; x < scene.camera.width; x += 6) {
+      const PixelTrace d = tracePixel(fan, x, y);
+      if (d.tree.segments[0].object != sphere) continue;
+      for (const RaySegment& s : d.tree.segments) {
+        if (s.kind != RayKind::Reflection || s.object != cube || s.childCount == 0) continue;
+        int glossy = 0, lit = 0;
+        for (int c = 0; c < s.childCount; ++c) {
+          const RaySegment& g = d.tree.segments[std::size_t(s.firstChild + c)];
+          if (g.kind != RayKind::Glossy) continue;
+          ++glossy;
+          lit += luminance(g.radiance) > 0.0;  // it (or its shadow ray) found the light
+        }
+        if (glossy >= 2 && lit >= 1 && lit < glossy) ++fans;
+      }
+      const PixelTrace p = tracePixel(refract, x, y);
+      for (const RaySegment& s : p.tree.segments)
+        if (s.kind == RayKind::Diffuse && s.parent >= 0 &&
+            p.tree.segments[std::size_t(s.parent)].kind == RayKind::Refraction) {
+          ++refractedThenDiffuse;
+          break;
+        }
+    }
+  EXPECT_GE(fans, 1) << "no sphere pixel reflects onto the cube's glossy fan";
+  EXPECT_GE(refractedThenDiffuse, 2) << "no refracted ray scatters diffusely";
+}
+
 }  // namespace
 }  // namespace raylab
