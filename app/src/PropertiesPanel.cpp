@@ -165,6 +165,111 @@ void PropertiesPanel::rebuild() {
   static_cast<QVBoxLayout*>(m_form->layout())->addStretch(1);
 }
 
+QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& place,
+                                    const nlohmann::ordered_json& value, bool material,
+                                    const QString& undoText) {
+  if (material && key == "type") {
+    // The scattering model: the form then shows that model's parameters.
+    auto* box = new QComboBox;
+    for (const char* type : kMaterialTypes) box->addItem(QString::fromLatin1(type));
+    box->setCurrentText(QString::fromStdString(value.get<std::string>()));
+    box->setToolTip(
+        tr("Scattering model: diffuse (Lambert), mirror (reflection and "
+           "refraction rates), dielectric (Fresnel glass), glossy (Phong)"));
+    connect(box, QOverload<int>::of(&QComboBox::activated), this,
+            [this, place, box, undoText](int) {
+              setValue(place, json(box->currentText().toStdString()).dump(), undoText);
+            });
+    return box;
+  } else if (kReadOnlyKeys.count(key) || value.is_object() ||
+             (value.is_array() && !value.empty() && value[0].is_array() && key == "matrix")) {
+    auto* text = new QLabel(value.is_string() ? QString::fromStdString(value.get<std::string>())
+                                              : QString::fromStdString(value.dump()));
+    text->setWordWrap(true);
+    return text;
+  } else if (value.is_boolean()) {
+    auto* box = new QCheckBox;
+    box->setChecked(value.get<bool>());
+    connect(box, &QCheckBox::toggled, this,
+            [this, place, undoText](bool on) { setValue(place, on ? "true" : "false", undoText); });
+    return box;
+  } else if (value.is_string() && kChoices.count(key)) {
+    auto* box = new QComboBox;
+    for (const char* c : kChoices.at(key)) box->addItem(QString::fromLatin1(c));
+    box->setCurrentText(QString::fromStdString(value.get<std::string>()));
+    connect(box, QOverload<int>::of(&QComboBox::activated), this,
+            [this, place, box, undoText](int) {
+              setValue(place, json(box->currentText().toStdString()).dump(), undoText);
+            });
+    return box;
+  } else if (value.is_number_integer() || (value.is_number() && kIntegerKeys.count(key))) {
+    auto* box = new QSpinBox;
+    box->setRange(-1000000000, 1000000000);
+    box->setValue(value.get<int>());
+    box->setKeyboardTracking(false);
+    connect(box, QOverload<int>::of(&QSpinBox::valueChanged), this,
+            [this, place, undoText](int v) { setValue(place, std::to_string(v), undoText); });
+    return box;
+  } else if (value.is_number()) {
+    auto* box = numberBox(value.get<double>());
+    connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+            [this, place, undoText](double v) { setValue(place, json(v).dump(), undoText); });
+    return box;
+  } else if (isNumberTriple(value) ||
+             (value.is_array() && !value.empty() && isNumberTriple(value[0]))) {
+    // A vector (or a list of vectors: axes, vertices): one row of three per vector.
+    const bool list = !isNumberTriple(value);
+    auto* rows = new QWidget;
+    auto* rowsLayout = new QVBoxLayout(rows);
+    rowsLayout->setContentsMargins(0, 0, 0, 0);
+    const auto commit = [this, place, rows, list, undoText] {
+      json v = json::array();
+      for (auto* row : rows->findChildren<QWidget*>(QStringLiteral("row"))) {
+        json triple = json::array();
+        for (auto* b : row->findChildren<QDoubleSpinBox*>()) triple.push_back(b->value());
+        v.push_back(triple);
+      }
+      setValue(place, (list ? v : v[0]).dump(), undoText);
+    };
+    const std::size_t count = list ? value.size() : 1;
+    for (std::size_t r = 0; r < count; ++r) {
+      const json& triple = list ? value[r] : value;
+      auto* row = new QWidget;
+      row->setObjectName(QStringLiteral("row"));
+      auto* rowLayout = new QHBoxLayout(row);
+      rowLayout->setContentsMargins(0, 0, 0, 0);
+      for (int i = 0; i < 3; ++i) {
+        auto* box = numberBox(triple[std::size_t(i)].get<double>());
+        rowLayout->addWidget(box);
+        connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+                [commit](double) { commit(); });
+      }
+      if (key == "colour" || key == "background") {
+        // Linear RGB in [0, 1], picked as a colour.
+        auto* pick = new QPushButton(tr("…"));
+        pick->setToolTip(tr("Choose the colour"));
+        pick->setMaximumWidth(32);
+        const QColor shown = QColor::fromRgbF(std::clamp(triple[0].get<double>(), 0.0, 1.0),
+                                              std::clamp(triple[1].get<double>(), 0.0, 1.0),
+                                              std::clamp(triple[2].get<double>(), 0.0, 1.0));
+        pick->setStyleSheet(QStringLiteral("background-color: %1").arg(shown.name()));
+        connect(pick, &QPushButton::clicked, this, [this, place, shown, undoText] {
+          const QColor c = QColorDialog::getColor(shown, this, tr("Colour"));
+          if (c.isValid())
+            setValue(place, json::array({c.redF(), c.greenF(), c.blueF()}).dump(), undoText);
+        });
+        rowLayout->addWidget(pick);
+      }
+      rowsLayout->addWidget(row);
+    }
+    return rows;
+  } else {
+    auto* text = new QLabel(QString::fromStdString(value.dump()));
+    text->setWordWrap(true);
+    return text;
+  }
+}
+
 void PropertiesPanel::addGroup(const QString& title, const std::string& pointer) {
   json values;
   try {
@@ -181,108 +286,7 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
     const json& value = it.value();
     const QString what = label(key);
     const QString undoText = tr("Set %1 of %2").arg(what, title);
-    QWidget* widget = nullptr;
-    if (material && key == "type") {
-      // The scattering model: the form then shows that model's parameters.
-      auto* box = new QComboBox;
-      for (const char* type : kMaterialTypes) box->addItem(QString::fromLatin1(type));
-      box->setCurrentText(QString::fromStdString(value.get<std::string>()));
-      box->setToolTip(
-          tr("Scattering model: diffuse (Lambert), mirror (reflection and "
-             "refraction rates), dielectric (Fresnel glass), glossy (Phong)"));
-      connect(box, QOverload<int>::of(&QComboBox::activated), this,
-              [this, place, box, undoText](int) {
-                setValue(place, json(box->currentText().toStdString()).dump(), undoText);
-              });
-      widget = box;
-    } else if (kReadOnlyKeys.count(key) || value.is_object() ||
-               (value.is_array() && !value.empty() && value[0].is_array() && key == "matrix")) {
-      auto* text = new QLabel(value.is_string() ? QString::fromStdString(value.get<std::string>())
-                                                : QString::fromStdString(value.dump()));
-      text->setWordWrap(true);
-      widget = text;
-    } else if (value.is_boolean()) {
-      auto* box = new QCheckBox;
-      box->setChecked(value.get<bool>());
-      connect(box, &QCheckBox::toggled, this, [this, place, undoText](bool on) {
-        setValue(place, on ? "true" : "false", undoText);
-      });
-      widget = box;
-    } else if (value.is_string() && kChoices.count(key)) {
-      auto* box = new QComboBox;
-      for (const char* c : kChoices.at(key)) box->addItem(QString::fromLatin1(c));
-      box->setCurrentText(QString::fromStdString(value.get<std::string>()));
-      connect(box, QOverload<int>::of(&QComboBox::activated), this,
-              [this, place, box, undoText](int) {
-                setValue(place, json(box->currentText().toStdString()).dump(), undoText);
-              });
-      widget = box;
-    } else if (value.is_number_integer() || (value.is_number() && kIntegerKeys.count(key))) {
-      auto* box = new QSpinBox;
-      box->setRange(-1000000000, 1000000000);
-      box->setValue(value.get<int>());
-      box->setKeyboardTracking(false);
-      connect(box, QOverload<int>::of(&QSpinBox::valueChanged), this,
-              [this, place, undoText](int v) { setValue(place, std::to_string(v), undoText); });
-      widget = box;
-    } else if (value.is_number()) {
-      auto* box = numberBox(value.get<double>());
-      connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-              [this, place, undoText](double v) { setValue(place, json(v).dump(), undoText); });
-      widget = box;
-    } else if (isNumberTriple(value) ||
-               (value.is_array() && !value.empty() && isNumberTriple(value[0]))) {
-      // A vector (or a list of vectors: axes, vertices): one row of three per vector.
-      const bool list = !isNumberTriple(value);
-      auto* rows = new QWidget;
-      auto* rowsLayout = new QVBoxLayout(rows);
-      rowsLayout->setContentsMargins(0, 0, 0, 0);
-      const auto commit = [this, place, rows, list, undoText] {
-        json v = json::array();
-        for (auto* row : rows->findChildren<QWidget*>(QStringLiteral("row"))) {
-          json triple = json::array();
-          for (auto* b : row->findChildren<QDoubleSpinBox*>()) triple.push_back(b->value());
-          v.push_back(triple);
-        }
-        setValue(place, (list ? v : v[0]).dump(), undoText);
-      };
-      const std::size_t count = list ? value.size() : 1;
-      for (std::size_t r = 0; r < count; ++r) {
-        const json& triple = list ? value[r] : value;
-        auto* row = new QWidget;
-        row->setObjectName(QStringLiteral("row"));
-        auto* rowLayout = new QHBoxLayout(row);
-        rowLayout->setContentsMargins(0, 0, 0, 0);
-        for (int i = 0; i < 3; ++i) {
-          auto* box = numberBox(triple[std::size_t(i)].get<double>());
-          rowLayout->addWidget(box);
-          connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-                  [commit](double) { commit(); });
-        }
-        if (key == "colour" || key == "background") {
-          // Linear RGB in [0, 1], picked as a colour.
-          auto* pick = new QPushButton(tr("…"));
-          pick->setToolTip(tr("Choose the colour"));
-          pick->setMaximumWidth(32);
-          const QColor shown = QColor::fromRgbF(std::clamp(triple[0].get<double>(), 0.0, 1.0),
-                                                std::clamp(triple[1].get<double>(), 0.0, 1.0),
-                                                std::clamp(triple[2].get<double>(), 0.0, 1.0));
-          pick->setStyleSheet(QStringLiteral("background-color: %1").arg(shown.name()));
-          connect(pick, &QPushButton::clicked, this, [this, place, shown, undoText] {
-            const QColor c = QColorDialog::getColor(shown, this, tr("Colour"));
-            if (c.isValid())
-              setValue(place, json::array({c.redF(), c.greenF(), c.blueF()}).dump(), undoText);
-          });
-          rowLayout->addWidget(pick);
-        }
-        rowsLayout->addWidget(row);
-      }
-      widget = rows;
-    } else {
-      auto* text = new QLabel(QString::fromStdString(value.dump()));
-      text->setWordWrap(true);
-      widget = text;
-    }
+    QWidget* widget = makeField(key, place, value, material, undoText);
     widget->setObjectName(QString::fromStdString(place));
     if (widget->toolTip().isEmpty())
       widget->setToolTip(tr("%1 (%2 in the scene file)").arg(what, QString::fromStdString(place)));

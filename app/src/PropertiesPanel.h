@@ -3,6 +3,8 @@
 #include <QString>
 #include <QWidget>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 
 class QFormLayout;
@@ -52,6 +54,10 @@ class PropertiesPanel : public QWidget {
   /// Makes the form again from the scene (after any change).
   void rebuild();
   void addGroup(const QString& title, const std::string& pointer);
+  /// The widget that edits the value `value` of `key` at JSON place `place` (a label when
+  /// it is not edited here); `material` when the key belongs to a material.
+  QWidget* makeField(const std::string& key, const std::string& place,
+                     const nlohmann::ordered_json& value, bool material, const QString& undoText);
 
   SceneDocument& m_document;
   int m_object = -1;

@@ -80,6 +80,87 @@ vtkSmartPointer<vtkActor> makeActor(vtkPolyData* geometry) {
   return actor;
 }
 
+/// The actor of one object's surface: its material's display colour and opacity, lit
+/// (emitters unlit), curved surfaces smooth-shaded; `wall` is an enclosing wall's patch.
+vtkSmartPointer<vtkActor> surfaceActor(vtkPolyData* geometry, const Material& material,
+                                       ShapeKind kind, bool wall) {
+  const Vec3 colour = displayColour(material);
+  auto actor = makeActor(geometry);
+  vtkProperty* p = actor->GetProperty();
+  p->SetColor(colour.x, colour.y, colour.z);
+  p->SetOpacity(std::clamp(material.opacity, 0.0, 1.0));
+  if (material.isEmitter()) {
+    p->LightingOff();
+  } else {
+    p->SetAmbient(0.25);
+    p->SetDiffuse(0.8);
+    const bool curved = (kind == ShapeKind::Sphere && !wall) || kind == ShapeKind::TriangleMesh;
+    p->SetSpecular(curved ? 0.2 : 0.0);
+    p->SetSpecularPower(30.0);
+    if (curved)
+      p->SetInterpolationToPhong();
+    else
+      p->SetInterpolationToFlat();
+  }
+  return actor;
+}
+
+/// The hidden selection outline of an object: its silhouette seen from `camera`
+/// (recomputed when the camera moves), plus border edges (quads, and boxes whose faces
+/// share no points) and creases sharper than 60 degrees.
+vtkSmartPointer<vtkActor> outlineActor(vtkPolyData* geometry, vtkCamera* camera) {
+  vtkNew<vtkPolyDataSilhouette> silhouette;
+  silhouette->SetInputData(geometry);
+  silhouette->SetCamera(camera);
+  silhouette->SetDirectionToCameraOrigin();
+  silhouette->BorderEdgesOn();
+  silhouette->SetEnableFeatureAngle(1);
+  silhouette->SetFeatureAngle(60.0);
+  vtkNew<vtkPolyDataMapper> outlineMapper;
+  outlineMapper->SetInputConnection(silhouette->GetOutputPort());
+  outlineMapper->ScalarVisibilityOff();
+  // Pull the outline well in front of its own surface: a silhouette lies exactly on
+  // the rim, where half of a thick line would otherwise sink into the object.
+  outlineMapper->SetRelativeCoincidentTopologyLineOffsetParameters(-4.0, -40.0);
+  auto outline = vtkSmartPointer<vtkActor>::New();
+  outline->SetMapper(outlineMapper);
+  vtkProperty* c = outline->GetProperty();
+  c->SetColor(kHighlight[0], kHighlight[1], kHighlight[2]);
+  c->SetLineWidth(4.0);
+  c->LightingOff();
+  outline->VisibilityOff();
+  return outline;
+}
+
+/// The scene camera as a translucent body with its frustum, and the point lights (the
+/// classic algorithms' lights) as small flesh-coloured balls.
+void addCameraAndLights(const Scene& scene, vtkRenderer* renderer) {
+  auto body = makeActor(cameraBodyGeometry(scene.camera, cameraGlyphSize(scene)));
+  body->GetProperty()->SetColor(kCameraBody[0], kCameraBody[1], kCameraBody[2]);
+  body->GetProperty()->SetOpacity(kCameraBodyOpacity);
+  body->GetProperty()->SetInterpolationToFlat();
+  renderer->AddActor(body);
+  auto frustum = makeActor(
+      cameraFrustumGeometry(scene.camera, kFrustumLengthInGlyphs * cameraGlyphSize(scene)));
+  frustum->GetProperty()->SetColor(kFrustum[0], kFrustum[1], kFrustum[2]);
+  frustum->GetProperty()->SetLineWidth(1.5);
+  frustum->GetProperty()->LightingOff();
+  renderer->AddActor(frustum);
+
+  for (const PointLight& light : scene.pointLights) {
+    vtkNew<vtkSphereSource> ball;
+    ball->SetCenter(light.position.x, light.position.y, light.position.z);
+    ball->SetRadius(0.3 * cameraGlyphSize(scene));
+    ball->SetThetaResolution(16);
+    ball->SetPhiResolution(12);
+    ball->Update();
+    auto glyph = makeActor(ball->GetOutput());
+    glyph->GetProperty()->SetColor(kPointLight[0], kPointLight[1], kPointLight[2]);
+    glyph->GetProperty()->LightingOff();
+    renderer->AddActor(glyph);
+  }
+}
+
 /// Opacity of glass while a ray tree is shown, so the rays inside it can be followed.
 constexpr double kGlassOpacityWithRays = 0.3;
 
@@ -171,94 +252,29 @@ void SceneView::setScene(const Scene& scene) {
         object.material >= 0 && object.material < static_cast<int>(m_scene.materials.size());
     const Material material =
         known ? m_scene.materials[static_cast<std::size_t>(object.material)] : Material{};
-    const Vec3 colour = displayColour(material);
-
-    auto actor = makeActor(geometry);
-    vtkProperty* p = actor->GetProperty();
-    p->SetColor(colour.x, colour.y, colour.z);
-    p->SetOpacity(std::clamp(material.opacity, 0.0, 1.0));
-    if (material.isEmitter()) {
-      p->LightingOff();
-    } else {
-      p->SetAmbient(0.25);
-      p->SetDiffuse(0.8);
-      const bool curved = (object.shape->kind() == ShapeKind::Sphere && !wall) ||
-                          object.shape->kind() == ShapeKind::TriangleMesh;
-      p->SetSpecular(curved ? 0.2 : 0.0);
-      p->SetSpecularPower(30.0);
-      if (curved)
-        p->SetInterpolationToPhong();
-      else
-        p->SetInterpolationToFlat();
-    }
+    auto actor = surfaceActor(geometry, material, object.shape->kind(), wall);
     // Emitters stay two-sided: a ceiling light faces the room, yet must show from above.
     const bool oneSided = (isOpenSurface(object.shape->kind()) || wall) && !material.isEmitter();
-    if (oneSided) p->BackfaceCullingOn();
+    if (oneSided) actor->GetProperty()->BackfaceCullingOn();
     m_impl->oneSided.push_back(oneSided);
     renderer->AddActor(actor);
     m_impl->objects.push_back(actor);
 
-    // The selection outline: silhouette seen from the view camera (recomputed when the
-    // camera moves), plus border edges (quads, and boxes whose faces share no points)
-    // and creases sharper than 60 degrees.
-    vtkNew<vtkPolyDataSilhouette> silhouette;
-    silhouette->SetInputData(geometry);
-    silhouette->SetCamera(renderer->GetActiveCamera());
-    silhouette->SetDirectionToCameraOrigin();
-    silhouette->BorderEdgesOn();
-    silhouette->SetEnableFeatureAngle(1);
-    silhouette->SetFeatureAngle(60.0);
-    vtkNew<vtkPolyDataMapper> outlineMapper;
-    outlineMapper->SetInputConnection(silhouette->GetOutputPort());
-    outlineMapper->ScalarVisibilityOff();
-    // Pull the outline well in front of its own surface: a silhouette lies exactly on
-    // the rim, where half of a thick line would otherwise sink into the object.
-    outlineMapper->SetRelativeCoincidentTopologyLineOffsetParameters(-4.0, -40.0);
-    auto outline = vtkSmartPointer<vtkActor>::New();
-    outline->SetMapper(outlineMapper);
-    vtkProperty* c = outline->GetProperty();
-    c->SetColor(kHighlight[0], kHighlight[1], kHighlight[2]);
-    c->SetLineWidth(4.0);
-    c->LightingOff();
-    outline->VisibilityOff();
+    const vtkSmartPointer<vtkActor> outline = outlineActor(geometry, renderer->GetActiveCamera());
     renderer->AddActor(outline);
     m_impl->highlights.push_back(outline);
   }
 
-  // Step 3: the scene camera: a translucent body and its frustum.
-  auto body = makeActor(cameraBodyGeometry(m_scene.camera, cameraGlyphSize(m_scene)));
-  body->GetProperty()->SetColor(kCameraBody[0], kCameraBody[1], kCameraBody[2]);
-  body->GetProperty()->SetOpacity(kCameraBodyOpacity);
-  body->GetProperty()->SetInterpolationToFlat();
-  renderer->AddActor(body);
-  auto frustum = makeActor(
-      cameraFrustumGeometry(m_scene.camera, kFrustumLengthInGlyphs * cameraGlyphSize(m_scene)));
-  frustum->GetProperty()->SetColor(kFrustum[0], kFrustum[1], kFrustum[2]);
-  frustum->GetProperty()->SetLineWidth(1.5);
-  frustum->GetProperty()->LightingOff();
-  renderer->AddActor(frustum);
+  // Step 3: the scene camera (a translucent body and its frustum) and the point lights.
+  addCameraAndLights(m_scene, renderer);
 
-  // Step 3b: point lights (the classic algorithms' lights) as small flesh-coloured balls.
-  for (const PointLight& light : m_scene.pointLights) {
-    vtkNew<vtkSphereSource> ball;
-    ball->SetCenter(light.position.x, light.position.y, light.position.z);
-    ball->SetRadius(0.3 * cameraGlyphSize(m_scene));
-    ball->SetThetaResolution(16);
-    ball->SetPhiResolution(12);
-    ball->Update();
-    auto glyph = makeActor(ball->GetOutput());
-    glyph->GetProperty()->SetColor(kPointLight[0], kPointLight[1], kPointLight[2]);
-    glyph->GetProperty()->LightingOff();
-    renderer->AddActor(glyph);
-  }
-
-  // Step 3c: the ray tree (kept across scene changes: re-trace and setRayTree to update).
+  // Step 4: the ray tree (kept across scene changes: re-trace and setRayTree to update).
   m_impl->rays.glyphLength = 0.5 * cameraGlyphSize(m_scene);
   m_impl->rays.addTo(renderer);
   m_impl->rays.markDirty();
   seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
 
-  // Step 4: look at it all from outside.
+  // Step 5: look at it all from outside.
   resetViewCamera();
 }
 
