@@ -142,7 +142,7 @@ class MainWindow : public QMainWindow {
   PropertiesPanel* m_properties = nullptr;
   QDockWidget* m_raysDock = nullptr;       ///< Tab of the ray-tree panel.
   QDockWidget* m_inspectorDock = nullptr;  ///< Tab of the inspector, beside it.
-  QList<QDockWidget*> m_leftDocks;  ///< Sized once, when first shown.
+  QList<QDockWidget*> m_leftDocks;         ///< Sized once, when first shown.
   QMenu* m_recentMenu = nullptr;
   QMenu* m_addMenu = nullptr;
   int m_selected = -1;
