@@ -174,10 +174,7 @@ void MainWindow::buildMenus() {
     if (!maybeSave()) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open a scene"), QString(),
                                                       tr("RayLab scenes (*.json)"));
-    if (!path.isEmpty()) {
-      m_document->undoStack().setClean();  // already asked
-      openFile(path);
-    }
+    if (!path.isEmpty()) openFile(path, false);  // already asked
   });
   m_recentMenu = file->addMenu(tr("Open &Recent"));
   action(file, tr("&Save"), tr("Save the scene to its file"), {QKeySequence::Save},
@@ -425,8 +422,8 @@ bool MainWindow::maybeSave() {
   return answer == QMessageBox::Discard;
 }
 
-bool MainWindow::openFile(const QString& path) {
-  if (!maybeSave()) return false;
+bool MainWindow::openFile(const QString& path, bool ask) {
+  if (ask && !maybeSave()) return false;
   try {
     m_document->open(path);
   } catch (const Exception& e) {

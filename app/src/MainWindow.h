@@ -53,9 +53,10 @@ class MainWindow : public QMainWindow {
 
   /// \name Files (the File menu's actions, for tests and the command line)
   /// @{
-  /// Opens `path` (asking about unsaved changes first). On failure: a dialog with the
-  /// loader's message, the open scene unchanged; returns false.
-  bool openFile(const QString& path);
+  /// Opens `path` (asking about unsaved changes first, unless `ask` is false because the
+  /// caller already did). On failure: a dialog with the loader's message, the open scene
+  /// unchanged (and still modified when it was); returns false.
+  bool openFile(const QString& path, bool ask = true);
   /// Writes the scene to `path` and makes it the document's file; a dialog on failure.
   bool saveFile(const QString& path);
   /// Save to the document's file, or Save As when it has none.

@@ -108,17 +108,13 @@ Scene setValue(const Scene& scene, const std::string& pointer, const std::string
   } catch (const json::exception&) {
     refuse(origin, pointer, "not a place in a scene file");
   }
-  // The value's parent must exist; the key itself may be new (an optional key).
+  // The value's parent must exist. In an object the key itself may be new (an optional
+  // key); in an array only an element that is there can be replaced.
   if (where.empty() || !doc.contains(where.parent_pointer()))
     refuse(origin, pointer, "the scene file has no such place");
-  json& parent = doc[where.parent_pointer()];
-  if (parent.is_array()) {
-    const std::string index = where.back();
-    if (!doc.contains(where)) refuse(origin, pointer, "the scene file has no such place");
-    (void)index;
-  } else if (!parent.is_object()) {
-    refuse(origin, pointer, "the scene file has no such place");
-  }
+  const json& parent = doc[where.parent_pointer()];
+  const bool replaceable = parent.is_object() || (parent.is_array() && doc.contains(where));
+  if (!replaceable) refuse(origin, pointer, "the scene file has no such place");
   doc[where] = parsed;
   return readBack(doc, origin);
 }
