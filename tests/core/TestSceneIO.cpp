@@ -99,6 +99,13 @@ TEST(SceneIO, 02_TransformStepsApplyInListedOrder) {
   EXPECT_EQ(sphere.radius(), 2.0);
 }
 
+/// "1,1,...,1" with `n` ones: a large JSON array's contents.
+std::string manyOnes(int n) {
+  std::string text = "1";
+  for (int i = 1; i < n; ++i) text += ",1";
+  return text;
+}
+
 struct ErrorCase {
   const char* name;
   std::string text;
@@ -135,6 +142,20 @@ TEST(SceneIO, 03_ErrorsNameThePlaceAndTheProblem) {
            R"({"name": "b", "material": "m", "shape": {"type": "plane", "point": [0,0,0], "normal": [0,1,0]}},
                  {"name": "b", "material": "m", "shape": {"type": "plane", "point": [0,0,0], "normal": [0,1,0]}}]})",
        "/objects/1/name: duplicate object \"b\""},
+      {"integer out of range (issue 14: 4294967298 read as 2)",
+       R"({"raylab_scene": 4294967298, "materials": [], "objects": []})",
+       "/raylab_scene: integer 4294967298 is out of range"},
+      {"width out of range",
+       R"({"raylab_scene": 2, "materials": [], "objects": [], "camera": {"width": -4294967296}})",
+       "/camera/width: integer -4294967296 is out of range"},
+      {"number too large for a double",
+       R"({"raylab_scene": 2, "materials": [], "objects": [], "camera": {"vertical_fov": 1e999}})",
+       "JSON error: number overflow"},
+      {"huge array quoted by its size",
+       head +
+           R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,0,0], "radius": [)" +
+           manyOnes(100000) + R"(]}}]})",
+       "/objects/0/shape/radius: expected a number, got an array of 100000 values"},
       {"degenerate triangle",
        head +
            R"({"name": "t", "material": "m", "shape": {"type": "triangle", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}}]})",
@@ -143,9 +164,24 @@ TEST(SceneIO, 03_ErrorsNameThePlaceAndTheProblem) {
   for (const ErrorCase& c : cases) {
     SCOPED_TRACE(c.name);
     const std::string message = loadError(c.text);
-    EXPECT_THAT(message, HasSubstr("test.json")) << message;
-    EXPECT_THAT(message, HasSubstr(c.expected)) << message;
+    EXPECT_THAT(message, HasSubstr("test.json")) << message.substr(0, 300);
+    EXPECT_THAT(message, HasSubstr(c.expected)) << message.substr(0, 300);
+    EXPECT_LT(message.size(), 400u) << "messages quote a bounded excerpt";
   }
+}
+
+// A value nested 100,000 levels deep where a number is expected: the message names it by
+// its size (it used to be dumped recursively, which overflowed the stack; issue 14).
+TEST(SceneIO, 03b_DeeplyNestedValuesAreNamedNotDumped) {
+  const int depth = 100000;
+  const std::string nested = std::string(depth, '[') + std::string(depth, ']');
+  const std::string text =
+      R"({"raylab_scene": 2, "materials": [], "objects": [], "camera": {"vertical_fov": )" +
+      nested + "}}";
+  const std::string message = loadError(text);
+  EXPECT_THAT(message,
+              HasSubstr("/camera/vertical_fov: expected a number, got an array of 1 values"));
+  EXPECT_LT(message.size(), 200u);
 }
 
 TEST(SceneIO, 04_MissingFileIsNamed) {

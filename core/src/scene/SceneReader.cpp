@@ -15,7 +15,9 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -30,6 +32,20 @@ namespace raylab {
 namespace {
 
 using nlohmann::json;
+
+/// A value as a message may quote it: scalars in full (strings cut at 60 characters;
+/// control characters escaped, as JSON writes them), arrays and objects by their size
+/// only. Never recursive and never long: a value nested 100,000 deep or 200 MB large is
+/// named in a few words.
+std::string excerpt(const json& j) {
+  if (j.is_array()) return "an array of " + std::to_string(j.size()) + " values";
+  if (j.is_object()) return "an object with " + std::to_string(j.size()) + " keys";
+  if (j.is_string()) {
+    const std::string& text = j.get_ref<const std::string&>();
+    if (text.size() > 60) return json(text.substr(0, 60)).dump() + "...";
+  }
+  return j.dump();
+}
 
 /// Reads one scene document and remembers the file name for every message.
 class Reader {
@@ -50,26 +66,33 @@ class Reader {
   }
 
   double number(const json& j, const std::string& path) const {
-    if (!j.is_number()) fail(path, "expected a number, got " + j.dump());
+    if (!j.is_number()) fail(path, "expected a number, got " + excerpt(j));
     const double v = j.get<double>();
     if (!std::isfinite(v)) fail(path, "number must be finite");
     return v;
   }
 
   int integer(const json& j, const std::string& path) const {
-    if (!j.is_number_integer()) fail(path, "expected an integer, got " + j.dump());
+    if (!j.is_number_integer()) fail(path, "expected an integer, got " + excerpt(j));
+    // Never truncated: 4294967298 must not read as 2.
+    const bool fits = j.is_number_unsigned()
+                          ? j.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
+                          : j.get<std::int64_t>() >= INT_MIN && j.get<std::int64_t>() <= INT_MAX;
+    if (!fits)
+      fail(path, "integer " + j.dump() + " is out of range (" + std::to_string(INT_MIN) + ".." +
+                     std::to_string(INT_MAX) + ")");
     return j.get<int>();
   }
 
   int integerAtLeast(const json& j, const std::string& path, int minimum) const {
     const int v = integer(j, path);
     if (v < minimum)
-      fail(path, "must be at least " + std::to_string(minimum) + ", got " + j.dump());
+      fail(path, "must be at least " + std::to_string(minimum) + ", got " + excerpt(j));
     return v;
   }
 
   bool boolean(const json& j, const std::string& path) const {
-    if (!j.is_boolean()) fail(path, "expected true or false, got " + j.dump());
+    if (!j.is_boolean()) fail(path, "expected true or false, got " + excerpt(j));
     return j.get<bool>();
   }
 
@@ -91,12 +114,12 @@ class Reader {
   }
 
   std::string string(const json& j, const std::string& path) const {
-    if (!j.is_string()) fail(path, "expected a string, got " + j.dump());
+    if (!j.is_string()) fail(path, "expected a string, got " + excerpt(j));
     return j.get<std::string>();
   }
 
   Vec3 vec3(const json& j, const std::string& path) const {
-    if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, z], got " + j.dump());
+    if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, z], got " + excerpt(j));
     return {number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2")};
   }
 
@@ -145,7 +168,7 @@ class Reader {
         onlyKeys(j, path, kSphereKeys);
         const double radius = number(member(j, path, "radius"), path + "/radius");
         if (radius <= 0.0)
-          fail(path + "/radius", "radius must be positive, got " + j["radius"].dump());
+          fail(path + "/radius", "radius must be positive, got " + excerpt(j["radius"]));
         const int m = j.contains("m") ? integer(j["m"], path + "/m") : 24;
         const int n = j.contains("n") ? integer(j["n"], path + "/n") : 24;
         if (m < 2) fail(path + "/m", "m (polar slices) must be at least 2");
@@ -315,7 +338,7 @@ class Reader {
     if (r.contains("max_depth")) s.maxDepth = integerAtLeast(r["max_depth"], p + "/max_depth", 0);
     if (r.contains("seed")) {
       if (!r["seed"].is_number_unsigned())
-        fail(p + "/seed", "expected a non-negative integer, got " + r["seed"].dump());
+        fail(p + "/seed", "expected a non-negative integer, got " + excerpt(r["seed"]));
       s.seed = r["seed"].get<std::uint64_t>();
     }
     if (r.contains("shadow_samples"))
@@ -437,6 +460,13 @@ Scene SceneIO::parse(const std::string& text, const std::string& origin) {
     root = json::parse(text);
   } catch (const json::parse_error& e) {
     throw LoadError(jsonSyntaxMessage(origin, text, e.byte, e.what()));
+  } catch (const json::exception& e) {
+    // The parser's other refusals, e.g. a number too large for a double (1e999):
+    // nlohmann's words without its "[json.exception...] " tag.
+    std::string what = e.what();
+    const auto tag = what.find("] ");
+    if (tag != std::string::npos) what = what.substr(tag + 2);
+    throw LoadError(origin + ": JSON error: " + what);
   }
   return Reader(origin).scene(root);
 }
