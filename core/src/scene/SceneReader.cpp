@@ -21,6 +21,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 // SceneIO's validating reader: JSON text -> Scene, or a LoadError naming the file and
@@ -364,10 +366,13 @@ class Reader {
     onlyKeys(j, p, kObjectKeys);
     SceneObject o;
     o.name = string(member(j, p, "name"), p + "/name");
-    if (scene.findObject(o.name) >= 0) fail(p + "/name", "duplicate object \"" + o.name + "\"");
+    if (!m_objectNames.insert(o.name).second)
+      fail(p + "/name", "duplicate object \"" + o.name + "\"");
     const std::string material = string(member(j, p, "material"), p + "/material");
-    o.material = scene.findMaterial(material);
-    if (o.material < 0) fail(p + "/material", "unknown material \"" + material + "\"");
+    const auto named = m_materialIndex.find(material);
+    if (named == m_materialIndex.end())
+      fail(p + "/material", "unknown material \"" + material + "\"");
+    o.material = named->second;
     o.shape = shape(member(j, p, "shape"), p + "/shape", o.source);
     if (j.contains("transform")) {
       const Mat4 m = transform(j["transform"], p + "/transform");
@@ -392,9 +397,8 @@ class Reader {
     onlyKeys(j, p, kPointLightKeys);
     PointLight light;
     light.name = string(member(j, p, "name"), p + "/name");
-    for (const PointLight& other : others)
-      if (other.name == light.name)
-        fail(p + "/name", "duplicate point light \"" + light.name + "\"");
+    if (!m_lightNames.insert(light.name).second)
+      fail(p + "/name", "duplicate point light \"" + light.name + "\"");
     light.position = vec3(member(j, p, "position"), p + "/position");
     if (j.contains("intensity")) light.intensity = vec3(j["intensity"], p + "/intensity");
     for (int c = 0; c < 3; ++c)
@@ -424,7 +428,7 @@ class Reader {
     for (std::size_t i = 0; i < materials.size(); ++i) {
       const std::string p = "/materials/" + std::to_string(i);
       Material m = material(materials[i], p);
-      if (scene.findMaterial(m.name) >= 0)
+      if (!m_materialIndex.emplace(m.name, int(scene.materials.size())).second)
         fail(p + "/name", "duplicate material \"" + m.name + "\"");
       scene.materials.push_back(std::move(m));
     }
@@ -450,6 +454,10 @@ class Reader {
  private:
   std::string m_origin;
   std::string m_baseDir;  ///< Folder of the scene file: mesh paths are relative to it.
+  /// Names read so far, for the duplicate and reference checks in constant time (a scene
+  /// of 40,000 objects took 9 s with a linear search per name).
+  mutable std::unordered_map<std::string, int> m_materialIndex;
+  mutable std::unordered_set<std::string> m_objectNames, m_lightNames;
 };
 
 }  // namespace
