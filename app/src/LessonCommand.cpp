@@ -1,14 +1,33 @@
 #include "LessonCommand.h"
 
+#include "CompareCommand.h"
 #include "ExitCodes.h"
 
+#include "raylab/core/AtomicFile.h"
+#include "raylab/core/Comparison.h"
+#include "raylab/core/Exception.h"
+#include "raylab/core/Image.h"
 #include "raylab/core/Lesson.h"
+#include "raylab/core/PixelTrace.h"
+#include "raylab/core/RayInspector.h"
+#include "raylab/core/Renderer.h"
+#include "raylab/vis/BounceAnimation.h"
+#include "raylab/vis/ComparisonView.h"
+#include "raylab/vis/ConvergencePlot.h"
+#include "raylab/vis/ImageIO.h"
+#include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/SceneView.h"
+#include "raylab/vis/ViewCamera.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace raylab::app {
@@ -19,8 +38,16 @@ struct LessonOptions {
   std::string file;  ///< The lesson to check: a path, or an id in `dir`.
   std::string dir = RAYLAB_LESSONS_DIR;
   std::string lang = "en";
+  std::string out;   ///< --out DIR: render every step and write the handout there.
+  std::string size;  ///< --size WxH: picture size (image views: the largest render).
   bool list = false;
   bool check = false;
+};
+
+/// An output folder that cannot be made or written in.
+class OutputError : public Exception {
+ public:
+  using Exception::Exception;
 };
 
 /// `file` itself when it exists, else `dir`/`file`.json when that exists (a lesson id).
@@ -85,37 +112,376 @@ int runCheck(const LessonOptions& o) {
   return kExitOk;
 }
 
+/// Pictures and sizes of `raylab lesson FILE --out DIR`.
+constexpr std::pair<int, int> kDefaultPicture{640, 480};  ///< 3D views, comparison, plot.
+constexpr std::pair<int, int> kImageCap{320, 240};        ///< Largest "image" render.
+constexpr int kImageSppCap = 64;                          ///< Most spp of an "image" render.
+constexpr std::pair<int, int> kCompareImage{160, 120};    ///< Each comparison image.
+constexpr int kCompareSpp = 8;                            ///< Equal samples: spp of each.
+constexpr double kCompareSeconds = 0.25;                  ///< Equal time: per algorithm.
+constexpr int kPlotMaxSpp = 16;                           ///< The plot's last pass.
+constexpr int kCompareReferenceSpp = 64;                  ///< Reference of both.
+
+/// The handout's words that are not in the lesson file.
+struct HandoutWords {
+  const char* step;
+  const char* question;
+  const char* answers;
+  const char* answer;
+  const char* numberAnswer;
+  const char* notes;
+  const char* inspector;
+  const char* missing;
+  const char* samplesMissing;
+};
+const HandoutWords& wordsIn(Language language) {
+  static const HandoutWords en{"Step",
+                               "Question",
+                               "Teacher's answers",
+                               "Answer",
+                               "Answer with a number.",
+                               "Teacher's notes",
+                               "The selected ray in the inspector",
+                               "This step needs a feature still to come",
+                               "the point cloud of the sampler's directions"};
+  static const HandoutWords zh{"第",
+                               "问题",
+                               "教师答案",
+                               "答案",
+                               "请填写一个数值。",
+                               "教师备注",
+                               "检查器中选中的光线",
+                               "本步骤需要一个尚未实现的功能",
+                               "采样方向的点云"};
+  return language == Language::Chinese ? zh : en;
+}
+
+/// `size` shrunk (keeping its aspect ratio) to fit inside `cap`; never grown.
+std::pair<int, int> fitInside(std::pair<int, int> size, std::pair<int, int> cap) {
+  const double scale =
+      std::min({1.0, double(cap.first) / size.first, double(cap.second) / size.second});
+  return {std::max(1, int(size.first * scale + 0.5)), std::max(1, int(size.second * scale + 0.5))};
+}
+
+/// The ray-tree style of a step: its colouring and filters.
+vis::RayTreeStyle styleOf(const LessonStep& step) {
+  vis::RayTreeStyle style;
+  style.colouring =
+      vis::parseColouring(toString(step.colouring)).value_or(vis::RayColouring::Energy);
+  if (!step.filters.kinds.empty()) {
+    style.filter.kinds.fill(false);
+    for (RayKind kind : step.filters.kinds) style.filter.kinds[static_cast<int>(kind)] = true;
+  }
+  style.filter.maxDepth = step.filters.maxDepth;
+  style.filter.onlyReachingLight = step.filters.reachingLight;
+  style.filter.minEnergy = step.filters.minEnergy;
+  return style;
+}
+
+/// The reveal of a step: an animation frame, every ray up to a depth, or everything.
+std::optional<vis::RevealFrame> revealOf(const LessonStep& step, const RayTree& tree) {
+  if (step.reveal.by == LessonReveal::By::Frame)
+    return vis::revealFrame(tree, vis::AnimationSettings{}, step.reveal.value);
+  if (step.reveal.by != LessonReveal::By::Depth) return std::nullopt;
+  vis::RevealFrame frame;
+  frame.done = true;
+  for (const RaySegment& s : tree.segments) {
+    frame.fraction.push_back(s.depth <= step.reveal.value ? 1.0F : 0.0F);
+    frame.done = frame.done && s.depth <= step.reveal.value;
+  }
+  frame.step = step.reveal.value;
+  return frame;
+}
+
+/// What one step's picture is, and what the handout says beside it.
+struct StepPicture {
+  SrgbImage image;
+  std::string inspectorText;  ///< Inspector view: the selected ray's lines.
+  std::string note;           ///< A missing feature, said in the handout.
+};
+
+/// The 3D view of the step's scene, with its pixel's tree when it has one (and the
+/// selected ray in the inspector view).
+StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool inspector) {
+  const Scene& scene = *step.scene;
+  vis::SceneView view(scene);
+  StepPicture result;
+  if (step.pixelX && step.pixelY) {
+    const PixelTrace trace =
+        tracePixel(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample);
+    view.setRayTree(trace.tree, styleOf(step));
+    if (const auto frame = revealOf(step, trace.tree)) view.setReveal(*frame);
+    if (inspector) {
+      const int id = step.selectRay.value_or(0);
+      view.setSelectedSegment(id);
+      result.inspectorText = RayInspector::inspect(scene, trace.tree, id).rayText();
+    }
+  }
+  const double aspect = double(size.first) / size.second;
+  if (step.cameraView == LessonCameraView::Camera)
+    view.setViewCamera(vis::behindCameraView(scene, aspect));
+  else
+    view.resetViewCamera(aspect);
+  result.image = view.renderOffscreen(size.first, size.second);
+  return result;
+}
+
+/// The step's algorithm's image: the scene's size fitted inside `cap`, at most 64 spp
+/// unless the step sets the render block itself.
+StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap) {
+  Scene scene = *step.scene;
+  std::tie(scene.camera.width, scene.camera.height) =
+      fitInside({scene.camera.width, scene.camera.height}, cap);
+  RenderSettings settings = step.settings();
+  const bool stepSetsRender =
+      std::any_of(step.sceneChanges.begin(), step.sceneChanges.end(),
+                  [](const std::string& c) { return c.find("\"render\"") != std::string::npos; });
+  if (!stepSetsRender) settings.samplesPerPixel = std::min(settings.samplesPerPixel, kImageSppCap);
+  Renderer renderer(scene, settings);
+  const FloatImage image = renderer.render();
+  StepPicture result;
+  result.image = imageio::toSrgb(image);
+  return result;
+}
+
+/// The four algorithms on a small copy of the step's scene (its pixel scaled with it).
+ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot) {
+  scene = *step.scene;
+  std::tie(scene.camera.width, scene.camera.height) =
+      fitInside({scene.camera.width, scene.camera.height}, kCompareImage);
+  ComparisonSettings compare;
+  compare.referenceSamplesPerPixel = kCompareReferenceSpp;
+  if (plot) {
+    compare.samplesPerPixel = kPlotMaxSpp;
+  } else if (step.measure == LessonMeasure::Time) {
+    compare.secondsPerAlgorithm = kCompareSeconds;
+    compare.samplesPerPixel = 1 << 16;
+  } else {
+    compare.samplesPerPixel = kCompareSpp;
+  }
+  return Comparison(scene, step.settings(), compare).run();
+}
+
+StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size) {
+  Scene scene;
+  const ComparisonResult result = smallComparison(step, scene, false);
+  vis::ComparisonView view(result);
+  if (step.pixelX && step.pixelY) {
+    const int x = *step.pixelX * scene.camera.width / step.scene->camera.width;
+    const int y = *step.pixelY * scene.camera.height / step.scene->camera.height;
+    std::vector<RayTree> trees;
+    for (Algorithm algorithm : result.compare.algorithms) {
+      RenderSettings traced = step.settings();
+      traced.algorithm = algorithm;
+      trees.push_back(tracePixel(scene, traced, x, y).tree);
+    }
+    view.setRayTrees(scene, trees, x, y);
+  }
+  return {view.renderOffscreen(size.first, size.second), {}, {}};
+}
+
+StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size) {
+  Scene scene;
+  const ComparisonResult result = smallComparison(step, scene, true);
+  vis::ConvergencePlot plot(result, step.measure == LessonMeasure::Time
+                                        ? vis::ConvergenceAxis::Time
+                                        : vis::ConvergenceAxis::Samples);
+  return {plot.renderOffscreen(size.first, size.second), {}, {}};
+}
+
+/// The picture of one step, by its view. A step needing a feature RayLab lacks (and the
+/// samples view, whose point cloud is not drawn yet) shows the scene view and says so.
+StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<int, int>>& size,
+                        Language language) {
+  const auto picture = size.value_or(kDefaultPicture);
+  const HandoutWords& words = wordsIn(language);
+  std::vector<std::string> missing = step.needs;
+  if (step.view == LessonView::Samples) missing.insert(missing.begin(), "samples-view");
+  if (!missing.empty()) {
+    StepPicture result = scenePicture(step, picture, false);
+    result.note = std::string(words.missing) + (language == Language::Chinese ? "：" : ": ");
+    for (std::size_t i = 0; i < missing.size(); ++i)
+      result.note += (i ? ", `" : "`") + missing[i] + "`";
+    if (step.view == LessonView::Samples)
+      result.note += std::string(language == Language::Chinese ? "（" : " (") +
+                     words.samplesMissing + (language == Language::Chinese ? "）" : ")");
+    result.note += language == Language::Chinese ? "。此处显示的是场景视图。"
+                                                 : ". The picture shows the scene view instead.";
+    return result;
+  }
+  switch (step.view) {
+    case LessonView::Image:
+      return imagePicture(step, size.value_or(kImageCap));
+    case LessonView::Compare:
+      return comparePicture(step, picture);
+    case LessonView::Plot:
+      return plotPicture(step, picture);
+    case LessonView::Inspector:
+      return scenePicture(step, picture, true);
+    default:
+      return scenePicture(step, picture, false);
+  }
+}
+
+/// "01", "02", ...
+std::string twoDigits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+/// The handout's section of step `index` (0-based).
+std::string stepSection(const Lesson& lesson, std::size_t index, const StepPicture& picture,
+                        const std::string& png, Language language) {
+  const LessonStep& step = lesson.steps[index];
+  const HandoutWords& words = wordsIn(language);
+  const bool zh = language == Language::Chinese;
+  std::string md = "## " + std::string(words.step) + " " + std::to_string(index + 1) +
+                   (zh ? " 步：" : ". ") + step.title.in(language) + "\n\n";
+  md += step.text.in(language) + "\n\n";
+  md += "![" + step.title.in(language) + "](" + png + ")\n\n";
+  if (!picture.note.empty()) md += "> " + picture.note + "\n\n";
+  if (!picture.inspectorText.empty())
+    md += "**" + std::string(words.inspector) + "**\n\n```\n" + picture.inspectorText +
+          (picture.inspectorText.back() == '\n' ? "" : "\n") + "```\n\n";
+  if (step.question) {
+    const LessonQuestion& q = *step.question;
+    md += "**" + std::string(words.question) + (zh ? "：**" : ":** ") + q.prompt.in(language) +
+          "\n\n";
+    if (q.type == LessonQuestion::Type::Choice) {
+      for (std::size_t i = 0; i < q.choices.size(); ++i)
+        md += std::string(1, char('A' + i)) + ". " + q.choices[i].in(language) + "\n";
+      md += "\n";
+    } else {
+      md += std::string("*") + words.numberAnswer + "*\n\n";
+    }
+  }
+  return md;
+}
+
+/// The answers and teacher's notes of every step, at the end of the handout.
+std::string answersSection(const Lesson& lesson, Language language) {
+  const HandoutWords& words = wordsIn(language);
+  const bool zh = language == Language::Chinese;
+  std::string md = "## " + std::string(words.answers) + "\n\n";
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+    const LessonStep& step = lesson.steps[i];
+    if (!step.question && step.teacherNotes.empty()) continue;
+    md += "### " + std::string(words.step) + " " + std::to_string(i + 1) + (zh ? " 步：" : ". ") +
+          step.title.in(language) + "\n\n";
+    if (step.question) {
+      const LessonQuestion& q = *step.question;
+      md += "**" + std::string(words.answer) + (zh ? "：**" : ":** ");
+      if (q.type == LessonQuestion::Type::Choice)
+        md += std::string(1, char('A' + q.answerIndex)) + ". " +
+              q.choices.at(q.answerIndex).in(language);
+      else
+        md += formatNumber(q.answer) +
+              (q.tolerance > 0 ? " (± " + formatNumber(q.tolerance) + ")" : std::string());
+      md += "\n\n" + q.explanation.in(language) + "\n\n";
+    }
+    if (!step.teacherNotes.empty())
+      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") + step.teacherNotes.in(language) +
+            "\n\n";
+  }
+  return md;
+}
+
+/// Creates `dir` and checks that a file can be written in it; throws naming it otherwise.
+void prepareFolder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir, ec))
+    throw OutputError(dir + ": cannot create the output folder" +
+                      (ec ? " (" + ec.message() + ")" : std::string(" (not a folder)")));
+  const std::string probe = (fs::path(dir) / ".raylab-write-check").string();
+  if (const auto problem = writeFileAtomically(probe, ""))
+    throw OutputError(dir + ": cannot write in the output folder (" + *problem + ")");
+  fs::remove(probe, ec);
+}
+
+int runRender(const LessonOptions& o) {
+  namespace fs = std::filesystem;
+  const std::string path = resolveLesson(o);
+  const Lesson lesson = LessonIO::load(path);
+  const Language language = *parseLanguage(o.lang);
+  prepareFolder(o.out);
+  const std::optional<std::pair<int, int>> size = o.size.empty() ? std::nullopt : parseSize(o.size);
+  std::string md = "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n";
+  int pictures = 0;
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+    const StepPicture picture = stepPicture(lesson.steps[i], size, language);
+    const std::string png = "step-" + twoDigits(i + 1) + ".png";
+    const std::string file = (fs::path(o.out) / png).string();
+    vis::writePng(picture.image, file);
+    ++pictures;
+    std::cout << file << std::endl;
+    md += stepSection(lesson, i, picture, png, language);
+  }
+  md += answersSection(lesson, language);
+  const std::string handout = (fs::path(o.out) / "lesson.md").string();
+  writeTextFile(handout, md);
+  const int steps = static_cast<int>(lesson.steps.size());
+  std::cout << handout << "\n"
+            << steps << (steps == 1 ? " step, " : " steps, ") << pictures
+            << (pictures == 1 ? " picture" : " pictures") << std::endl;
+  return kExitOk;
+}
+
 }  // namespace
 
 Subcommand addLessonCommand(CLI::App& cli) {
   auto options = std::make_shared<LessonOptions>();
-  CLI::App* command =
-      cli.add_subcommand("lesson", "List the step-through lessons, or check a lesson file");
+  CLI::App* command = cli.add_subcommand(
+      "lesson", "List the step-through lessons, check a lesson file, or render it with a handout");
   command->footer(
       "Examples:\n"
       "  raylab lesson --list --lang zh\n"
       "  raylab lesson lessons/04-whitted.json --check\n"
+      "  raylab lesson 04-whitted --out handout-04 --lang zh\n"
+      "--out DIR writes DIR/step-01.png, ... (one picture per step) and DIR/lesson.md, a\n"
+      "handout with each step's text, picture and question, and the answers at the end.\n"
+      "Rendering needs an X server, also headless: run under xvfb-run -a.\n"
       "Exit codes: 0 ok, 1 a lesson does not load (the message names the file, the step\n"
-      "            and the place), 2 usage error, 3 internal error (please report it).");
+      "            and the place) or DIR cannot be written, 2 usage error, 3 internal error\n"
+      "            (please report it).");
   CLI::Option* file =
       command->add_option("FILE", options->file, "Lesson file (or the id of a lesson in --dir)");
   CLI::Option* list =
       command->add_flag("--list", options->list, "List the lessons in --dir: id, title, steps");
   CLI::Option* check = command->add_flag(
       "--check", options->check, "Validate FILE (its scene, steps, questions) without rendering");
+  CLI::Option* out =
+      command->add_option("--out", options->out,
+                          "Render every step of FILE to DIR/step-NN.png and write DIR/lesson.md");
+  CLI::Option* size =
+      command
+          ->add_option("--size", options->size,
+                       "Picture size WIDTHxHEIGHT (default 640x480; image steps: the largest "
+                       "render, default 320x240)")
+          ->check(CLI::Validator(checkSize, "WxH"));
   command->add_option("--dir", options->dir, "Folder of the lesson files")->capture_default_str();
-  command->add_option("--lang", options->lang, "Language of titles: en or zh")
+  command->add_option("--lang", options->lang, "Language of titles and the handout: en or zh")
       ->check(CLI::IsMember({"en", "zh"}))
       ->capture_default_str();
-  list->excludes(file)->excludes(check);
-  check->needs(file);
-  file->needs(check);
+  list->excludes(file)->excludes(check)->excludes(out);
+  check->needs(file)->excludes(out);
+  out->needs(file);
+  size->needs(out);
   command->callback([options]() {
-    if (!options->list && !options->check)
-      throw CLI::ValidationError("lesson", "nothing to do: give --list, or FILE --check");
+    if (!options->list && !options->check && options->out.empty()) {
+      if (!options->file.empty())
+        throw CLI::ValidationError("lesson", "FILE requires --check or --out DIR");
+      throw CLI::ValidationError("lesson",
+                                 "nothing to do: give --list, or FILE --check (or FILE --out DIR)");
+    }
   });
   return {command, [options](const std::string&) {
-            return options->list ? runList(*options) : runCheck(*options);
+            if (options->list) return runList(*options);
+            return options->check ? runCheck(*options) : runRender(*options);
           }};
 }
 
