@@ -120,7 +120,8 @@ constexpr std::pair<int, int> kCompareImage{160, 120};    ///< Each comparison i
 constexpr int kCompareSpp = 8;                            ///< Equal samples: spp of each.
 constexpr double kCompareSeconds = 0.25;                  ///< Equal time: per algorithm.
 constexpr int kPlotMaxSpp = 16;                           ///< The plot's last pass.
-constexpr int kCompareReferenceSpp = 64;                  ///< Reference of both.
+constexpr int kCompareReferenceSpp = 128;  ///< Reference of the comparison (16 x its spp).
+constexpr int kPlotReferenceSpp = 256;     ///< Reference of the plot (16 x its last pass).
 
 /// The handout's words that are not in the lesson file.
 struct HandoutWords {
@@ -250,7 +251,7 @@ ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot
   std::tie(scene.camera.width, scene.camera.height) =
       fitInside({scene.camera.width, scene.camera.height}, kCompareImage);
   ComparisonSettings compare;
-  compare.referenceSamplesPerPixel = kCompareReferenceSpp;
+  compare.referenceSamplesPerPixel = plot ? kPlotReferenceSpp : kCompareReferenceSpp;
   if (plot) {
     compare.samplesPerPixel = kPlotMaxSpp;
   } else if (step.measure == LessonMeasure::Time) {
