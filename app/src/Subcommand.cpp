@@ -52,7 +52,9 @@ void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std
                          "raycast, whitted, distributed or path (default: the scene's)")
             ->check(CLI::IsMember({"raycast", "whitted", "distributed", "path"}));
   }
-  m_seedOption = command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)");
+  // A negative seed is a mistake, not 2^64 - 1 (issue 14).
+  m_seedOption = command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)")
+                     ->check(CLI::NonNegativeNumber);
   m_sizeOption =
       command->add_option("--size", m_sizeText, sizeHelp)->check(CLI::Validator(checkSize, "WxH"));
   command->final_callback([this] { finish(); });
