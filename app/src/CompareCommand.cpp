@@ -98,7 +98,10 @@ int runCompare(const CompareOptions& options, const std::string& topLevelScene) 
     view.setRayTrees(scene, trees, options.pixel[0], options.pixel[1]);
   }
 
-  // Step 3: the picture and the figures; each file complete or not at all.
+  // Step 3: the picture and the figures; each file complete or not at all, and neither
+  // replaced when the other cannot be written.
+  for (const std::string& path : {options.common.out, json})
+    if (const auto problem = cannotWrite(path)) throw WriteError(path + ": " + *problem);
   view.renderToPng(options.common.out, picture->first, picture->second);
   writeTextFile(json, comparisonJson(result));
   std::cout << options.common.out << "\n" << json << "\n";

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -33,6 +34,17 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
   if (::close(fd) != 0) return fail("could not flush the file; the file was not changed");
   if (std::rename(temp.c_str(), path.c_str()) != 0)
     return fail("could not replace the file; it was not changed");
+  return std::nullopt;
+}
+
+std::optional<std::string> cannotWrite(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  if (!fs::is_directory(folder, ec))
+    return "cannot write: folder " + folder.string() + " does not exist";
+  if (fs::is_directory(target, ec)) return "cannot write: it is a folder";
   return std::nullopt;
 }
 

@@ -15,4 +15,9 @@ namespace raylab {
  */
 std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes);
 
+/// Why `path` cannot be written by writeFileAtomically, checked before any output of a
+/// command is replaced (a command writing two files checks both first): its folder is
+/// missing or not a folder, or `path` is a folder. Nothing when it looks writable.
+std::optional<std::string> cannotWrite(const std::string& path);
+
 }  // namespace raylab
