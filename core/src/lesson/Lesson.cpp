@@ -1,5 +1,6 @@
 #include "raylab/core/Lesson.h"
 
+#include "io/JsonChecks.h"
 #include "io/PrettyJson.h"
 
 #include "raylab/core/SceneIO.h"
@@ -147,7 +148,9 @@ struct ChangeMapping {
 
 /// Reads one lesson document and remembers the file name and the current step for every
 /// message.
-class Reader {
+class Reader : private JsonChecks<Reader> {
+  friend class JsonChecks<Reader>;
+
  public:
   explicit Reader(std::string origin)
       : m_origin(std::move(origin)),
@@ -166,57 +169,6 @@ class Reader {
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw LessonIO::LoadError(m_origin + ": " + m_step + "at " + (path.empty() ? "/" : path) +
                               ": " + what);
-  }
-
-  const json& member(const json& j, const std::string& path, const char* key) const {
-    if (!j.is_object()) fail(path, "expected an object");
-    const auto it = j.find(key);
-    if (it == j.end()) fail(path, std::string("missing \"") + key + "\"");
-    return *it;
-  }
-
-  /// Rejects members not in `known`: a misspelt key would otherwise be ignored silently.
-  void onlyKeys(const json& j, const std::string& path,
-                std::initializer_list<const char*> known) const {
-    if (!j.is_object()) fail(path, "expected an object, got " + j.dump());
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }) !=
-          known.end())
-        continue;
-      std::string list;
-      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      fail(path + "/" + it.key(),
-           "unknown key \"" + it.key() + "\" (expected one of " + list + ")");
-    }
-  }
-
-  std::string string(const json& j, const std::string& path) const {
-    if (!j.is_string()) fail(path, "expected a string, got " + j.dump());
-    return j.get<std::string>();
-  }
-
-  int integer(const json& j, const std::string& path) const {
-    if (!j.is_number_integer()) fail(path, "expected an integer, got " + j.dump());
-    return j.get<int>();
-  }
-
-  int integerAtLeast(const json& j, const std::string& path, int minimum) const {
-    const int v = integer(j, path);
-    if (v < minimum)
-      fail(path, "must be at least " + std::to_string(minimum) + ", got " + j.dump());
-    return v;
-  }
-
-  double number(const json& j, const std::string& path) const {
-    if (!j.is_number()) fail(path, "expected a number, got " + j.dump());
-    const double v = j.get<double>();
-    if (!std::isfinite(v)) fail(path, "number must be finite");
-    return v;
-  }
-
-  bool boolean(const json& j, const std::string& path) const {
-    if (!j.is_boolean()) fail(path, "expected true or false, got " + j.dump());
-    return j.get<bool>();
   }
 
   template <class E, std::size_t N>
@@ -245,7 +197,7 @@ class Reader {
   }
 
   std::pair<int, int> pixel(const json& j, const std::string& path) const {
-    if (!j.is_array() || j.size() != 2) fail(path, "expected a pixel [x, y], got " + j.dump());
+    if (!j.is_array() || j.size() != 2) fail(path, "expected a pixel [x, y], got " + excerpt(j));
     return {integer(j[0], path + "/0"), integer(j[1], path + "/1")};
   }
 
@@ -424,7 +376,7 @@ ChangeMapping Reader::applyChange(json& doc, const json& c, const std::string& p
     // Point lights have a position, not a transform: translate moves it.
     const json& v = c[op];
     if (!v.is_array() || v.size() != 3)
-      fail(path + "/" + op, "expected [x, y, z], got " + v.dump());
+      fail(path + "/" + op, "expected [x, y, z], got " + excerpt(v));
     json& position = entry["position"];
     if (position.is_array() && position.size() == 3)
       for (int i = 0; i < 3; ++i)

@@ -8,6 +8,7 @@
 #include "raylab/core/Transform.h"
 #include "raylab/core/Triangle.h"
 
+#include "io/JsonChecks.h"
 #include "io/PrettyJson.h"
 #include "scene/SceneKeys.h"
 
@@ -35,22 +36,10 @@ namespace {
 
 using nlohmann::json;
 
-/// A value as a message may quote it: scalars in full (strings cut at 60 characters;
-/// control characters escaped, as JSON writes them), arrays and objects by their size
-/// only. Never recursive and never long: a value nested 100,000 deep or 200 MB large is
-/// named in a few words.
-std::string excerpt(const json& j) {
-  if (j.is_array()) return "an array of " + std::to_string(j.size()) + " values";
-  if (j.is_object()) return "an object with " + std::to_string(j.size()) + " keys";
-  if (j.is_string()) {
-    const std::string& text = j.get_ref<const std::string&>();
-    if (text.size() > 60) return json(text.substr(0, 60)).dump() + "...";
-  }
-  return j.dump();
-}
-
 /// Reads one scene document and remembers the file name for every message.
-class Reader {
+class Reader : private JsonChecks<Reader> {
+  friend class JsonChecks<Reader>;
+
  public:
   explicit Reader(std::string origin)
       : m_origin(std::move(origin)),
@@ -58,66 +47,6 @@ class Reader {
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw SceneIO::LoadError(m_origin + ": at " + (path.empty() ? "/" : path) + ": " + what);
-  }
-
-  const json& member(const json& j, const std::string& path, const char* key) const {
-    if (!j.is_object()) fail(path, "expected an object");
-    const auto it = j.find(key);
-    if (it == j.end()) fail(path, std::string("missing \"") + key + "\"");
-    return *it;
-  }
-
-  double number(const json& j, const std::string& path) const {
-    if (!j.is_number()) fail(path, "expected a number, got " + excerpt(j));
-    const double v = j.get<double>();
-    if (!std::isfinite(v)) fail(path, "number must be finite");
-    return v;
-  }
-
-  int integer(const json& j, const std::string& path) const {
-    if (!j.is_number_integer()) fail(path, "expected an integer, got " + excerpt(j));
-    // Never truncated: 4294967298 must not read as 2.
-    const bool fits = j.is_number_unsigned()
-                          ? j.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
-                          : j.get<std::int64_t>() >= INT_MIN && j.get<std::int64_t>() <= INT_MAX;
-    if (!fits)
-      fail(path, "integer " + j.dump() + " is out of range (" + std::to_string(INT_MIN) + ".." +
-                     std::to_string(INT_MAX) + ")");
-    return j.get<int>();
-  }
-
-  int integerAtLeast(const json& j, const std::string& path, int minimum) const {
-    const int v = integer(j, path);
-    if (v < minimum)
-      fail(path, "must be at least " + std::to_string(minimum) + ", got " + excerpt(j));
-    return v;
-  }
-
-  bool boolean(const json& j, const std::string& path) const {
-    if (!j.is_boolean()) fail(path, "expected true or false, got " + excerpt(j));
-    return j.get<bool>();
-  }
-
-  /// Rejects members not in `known` (a list of SceneKeys.h): a misspelt key would otherwise
-  /// be ignored silently.
-  template <std::size_t N>
-  void onlyKeys(const json& j, const std::string& path,
-                const std::array<const char*, N>& known) const {
-    if (!j.is_object()) fail(path, "expected an object");
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (std::find_if(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }) !=
-          known.end())
-        continue;
-      std::string list;
-      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-      fail(path + "/" + it.key(),
-           "unknown key \"" + it.key() + "\" (expected one of " + list + ")");
-    }
-  }
-
-  std::string string(const json& j, const std::string& path) const {
-    if (!j.is_string()) fail(path, "expected a string, got " + excerpt(j));
-    return j.get<std::string>();
   }
 
   Vec3 vec3(const json& j, const std::string& path) const {

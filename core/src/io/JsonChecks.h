@@ -1,0 +1,111 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+/// \file JsonChecks.h
+/// The typed reads both of RayLab's validating loaders (scene files, lesson files) make
+/// of a JSON document, written once: each names the JSON place of a wrong value and quotes
+/// a bounded excerpt of it. Private to core.
+
+namespace raylab {
+
+/**
+ * \brief A value as a message may quote it: scalars in full (strings cut at 60
+ * characters; control characters escaped, as JSON writes them), arrays and objects by
+ * their size only. Never recursive and never long: a value nested 100,000 deep or 200 MB
+ * large is named in a few words.
+ */
+inline std::string excerpt(const nlohmann::json& j) {
+  if (j.is_array()) return "an array of " + std::to_string(j.size()) + " values";
+  if (j.is_object()) return "an object with " + std::to_string(j.size()) + " keys";
+  if (j.is_string()) {
+    const std::string& text = j.get_ref<const std::string&>();
+    if (text.size() > 60) return nlohmann::json(text.substr(0, 60)).dump() + "...";
+  }
+  return j.dump();
+}
+
+/**
+ * \brief Typed reads for a loader class `Loader` (CRTP): `Loader` provides
+ * `[[noreturn]] void fail(const std::string& path, const std::string& what) const`, which
+ * throws its own error type with its own context (the file, a lesson's step).
+ */
+template <class Loader>
+class JsonChecks {
+ protected:
+  using json = nlohmann::json;
+
+  const json& member(const json& j, const std::string& path, const char* key) const {
+    if (!j.is_object()) loader().fail(path, "expected an object, got " + excerpt(j));
+    const auto it = j.find(key);
+    if (it == j.end()) loader().fail(path, std::string("missing \"") + key + "\"");
+    return *it;
+  }
+
+  double number(const json& j, const std::string& path) const {
+    if (!j.is_number()) loader().fail(path, "expected a number, got " + excerpt(j));
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) loader().fail(path, "number must be finite");
+    return v;
+  }
+
+  int integer(const json& j, const std::string& path) const {
+    if (!j.is_number_integer()) loader().fail(path, "expected an integer, got " + excerpt(j));
+    // Never truncated: 4294967298 must not read as 2.
+    const bool fits = j.is_number_unsigned()
+                          ? j.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
+                          : j.get<std::int64_t>() >= INT_MIN && j.get<std::int64_t>() <= INT_MAX;
+    if (!fits)
+      loader().fail(path, "integer " + j.dump() + " is out of range (" + std::to_string(INT_MIN) +
+                              ".." + std::to_string(INT_MAX) + ")");
+    return j.get<int>();
+  }
+
+  int integerAtLeast(const json& j, const std::string& path, int minimum) const {
+    const int v = integer(j, path);
+    if (v < minimum)
+      loader().fail(path, "must be at least " + std::to_string(minimum) + ", got " + excerpt(j));
+    return v;
+  }
+
+  bool boolean(const json& j, const std::string& path) const {
+    if (!j.is_boolean()) loader().fail(path, "expected true or false, got " + excerpt(j));
+    return j.get<bool>();
+  }
+
+  std::string string(const json& j, const std::string& path) const {
+    if (!j.is_string()) loader().fail(path, "expected a string, got " + excerpt(j));
+    return j.get<std::string>();
+  }
+
+  /// Rejects members not in `known` (any list of key names): a misspelt key would
+  /// otherwise be ignored silently.
+  template <class Keys>
+  void onlyKeys(const json& j, const std::string& path, const Keys& known) const {
+    if (!j.is_object()) loader().fail(path, "expected an object, got " + excerpt(j));
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (std::find_if(std::begin(known), std::end(known),
+                       [&](const char* k) { return it.key() == k; }) != std::end(known))
+        continue;
+      std::string list;
+      for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+      loader().fail(path + "/" + it.key(),
+                    "unknown key \"" + it.key() + "\" (expected one of " + list + ")");
+    }
+  }
+  void onlyKeys(const json& j, const std::string& path,
+                std::initializer_list<const char*> known) const {
+    onlyKeys<std::initializer_list<const char*>>(j, path, known);
+  }
+
+ private:
+  const Loader& loader() const { return static_cast<const Loader&>(*this); }
+};
+
+}  // namespace raylab
