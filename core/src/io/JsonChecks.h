@@ -2,10 +2,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/PrettyJson.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <optional>
+#include <sstream>
 #include <string>
 
 /// \file JsonChecks.h
@@ -29,6 +34,38 @@ inline std::string excerpt(const nlohmann::json& j) {
     if (text.size() > 60) return nlohmann::json(text.substr(0, 60)).dump() + "...";
   }
   return j.dump();
+}
+
+/// Parses `text` (read from `origin`) into `out`; on failure the message, naming the place
+/// of a syntax error (file:line:column) or the parser's other refusal (a number too large
+/// for a double). The loaders throw it in their own error types.
+inline std::optional<std::string> parseJson(const std::string& text, const std::string& origin,
+                                            nlohmann::json& out) {
+  try {
+    out = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    return jsonSyntaxMessage(origin, text, e.byte, e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // nlohmann's words without its "[json.exception...] " tag.
+    std::string what = e.what();
+    const auto tag = what.find("] ");
+    if (tag != std::string::npos) what = what.substr(tag + 2);
+    return origin + ": JSON error: " + what;
+  }
+  return std::nullopt;
+}
+
+/// Reads the whole file at `path` into `out`; on failure the message (`what` names the
+/// kind of file: "scene file", "lesson file").
+inline std::optional<std::string> readTextFile(const std::string& path, const std::string& what,
+                                               std::string& out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return path + ": cannot open " + what + " (does it exist and is it readable?)";
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) return path + ": read error";
+  out = text.str();
+  return std::nullopt;
 }
 
 /**

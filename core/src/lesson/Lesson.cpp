@@ -705,21 +705,14 @@ std::vector<std::string> Lesson::requiredFeatures() const {
 
 Lesson LessonIO::parse(const std::string& text, const std::string& origin) {
   json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw LoadError(jsonSyntaxMessage(origin, text, e.byte, e.what()));
-  }
+  if (const auto problem = parseJson(text, origin, root)) throw LoadError(*problem);
   return Reader(origin).lesson(root);
 }
 
 Lesson LessonIO::load(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw LoadError(path + ": cannot open lesson file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw LoadError(path + ": read error");
-  return parse(text.str(), path);
+  std::string text;
+  if (const auto problem = readTextFile(path, "lesson file", text)) throw LoadError(*problem);
+  return parse(text, path);
 }
 
 std::vector<std::string> LessonIO::list(const std::string& dir) {

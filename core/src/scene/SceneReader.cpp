@@ -393,28 +393,14 @@ class Reader : private JsonChecks<Reader> {
 
 Scene SceneIO::parse(const std::string& text, const std::string& origin) {
   json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw LoadError(jsonSyntaxMessage(origin, text, e.byte, e.what()));
-  } catch (const json::exception& e) {
-    // The parser's other refusals, e.g. a number too large for a double (1e999):
-    // nlohmann's words without its "[json.exception...] " tag.
-    std::string what = e.what();
-    const auto tag = what.find("] ");
-    if (tag != std::string::npos) what = what.substr(tag + 2);
-    throw LoadError(origin + ": JSON error: " + what);
-  }
+  if (const auto problem = parseJson(text, origin, root)) throw LoadError(*problem);
   return Reader(origin).scene(root);
 }
 
 Scene SceneIO::load(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw LoadError(path + ": cannot open scene file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw LoadError(path + ": read error");
-  return parse(text.str(), path);
+  std::string text;
+  if (const auto problem = readTextFile(path, "scene file", text)) throw LoadError(*problem);
+  return parse(text, path);
 }
 
 }  // namespace raylab
