@@ -150,8 +150,7 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   connect(m_document.get(), &SceneDocument::sceneChanged, this, [this] { sceneChanged(); });
   connect(m_document.get(), &SceneDocument::fileStateChanged, this, [this] { updateTitle(); });
   buildMenus();
-  sceneChanged();
-  updateTitle();
+  fillObjectList();  // the view was made from this scene already
   statusBar()->showMessage(tr(
       "Drag to rotate, wheel to zoom, click an object to select it; trace a pixel on the right"));
 }
@@ -262,9 +261,15 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::sceneChanged() {
-  const Scene& scene = m_document->scene();
-  m_view->updateScene(scene);
+  m_view->updateScene(m_document->scene());
+  // A tree traced before the change is traced again: never silently wrong.
+  m_rayPanel->retrace();
+  fillObjectList();
+}
+
+void MainWindow::fillObjectList() {
   // The list of objects, the selection kept where it still exists.
+  const Scene& scene = m_document->scene();
   const int selected = m_selected < int(scene.objects.size()) ? m_selected : -1;
   {
     const QSignalBlocker block(m_objectList);
@@ -274,8 +279,6 @@ void MainWindow::sceneChanged() {
       item->setToolTip(forPeople(object.shape ? object.shape->toString() : ""));
     }
   }
-  // A tree traced before the change is traced again: never silently wrong.
-  m_rayPanel->retrace();
   selectObject(selected);
   updateTitle();
 }

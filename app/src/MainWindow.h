@@ -123,6 +123,8 @@ class MainWindow : public QMainWindow {
   void render();
   /// After any change of the scene: the view, the list, a traced tree retraced.
   void sceneChanged();
+  /// The object list from the document's scene (the selection kept), and the title.
+  void fillObjectList();
   void updateTitle();
   void rememberFile(const QString& path);
   void updateRecentMenu();

@@ -225,8 +225,9 @@ void SceneView::setScene(const Scene& scene) {
 
   // Walls made of huge spheres (smallpt's) are drawn as patches around the room.
   const std::vector<bool> walls = enclosingWalls(m_scene);
-  const Bounds3 room = roomBounds(m_scene);
-  const bool hasWalls = std::find(walls.begin(), walls.end(), true) != walls.end() && !room.empty();
+  const bool anyWall = std::find(walls.begin(), walls.end(), true) != walls.end();
+  const Bounds3 room = anyWall ? roomBounds(m_scene) : Bounds3();
+  const bool hasWalls = anyWall && !room.empty();
   if (hasWalls) frame.inside = room.centre();
   // The box everything is clipped to: the room, a little larger.
   Bounds3 roomBox = room;
