@@ -1,0 +1,169 @@
+// The compiled part of the Python package `raylab`: its exceptions, the conversions the
+// binding files share, and the waiting loop that lets Ctrl-C stop long C++ work.
+
+#include "Bindings.h"
+
+#include "raylab/core/Comparison.h"
+#include "raylab/core/Exception.h"
+#include "raylab/core/RayTreeJson.h"
+#include "raylab/core/SceneIO.h"
+#include "raylab/core/Shape.h"
+#include "raylab/vis/ImageIO.h"
+
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace raylab::python {
+
+Algorithm algorithmNamed(const std::string& name) {
+  if (std::optional<Algorithm> algorithm = parseAlgorithm(name)) return *algorithm;
+  throw py::value_error("unknown algorithm '" + name +
+                        "': use raycast, whitted, distributed or path");
+}
+
+RenderSettings settingsFor(const Scene& scene, const SettingsOverrides& overrides) {
+  RenderSettings settings = scene.render;
+  if (overrides.algorithm) settings.algorithm = algorithmNamed(*overrides.algorithm);
+  if (overrides.spp) {
+    if (*overrides.spp < 1)
+      throw py::value_error("spp must be at least 1, not " + std::to_string(*overrides.spp));
+    settings.samplesPerPixel = *overrides.spp;
+  }
+  if (overrides.seed) settings.seed = *overrides.seed;
+  if (overrides.maxDepth) {
+    if (*overrides.maxDepth < 0)
+      throw py::value_error("max_depth must be at least 0, not " +
+                            std::to_string(*overrides.maxDepth));
+    settings.maxDepth = *overrides.maxDepth;
+  }
+  if (overrides.nextEventEstimation) settings.nextEventEstimation = *overrides.nextEventEstimation;
+  if (overrides.multipleImportance) settings.multipleImportance = *overrides.multipleImportance;
+  return settings;
+}
+
+py::tuple toTuple(const Vec3& v) { return py::make_tuple(v.x, v.y, v.z); }
+
+Vec3 toVec3(const py::handle& value, const char* what) {
+  try {
+    const std::vector<double> numbers = value.cast<std::vector<double>>();
+    if (numbers.size() == 3) return Vec3(numbers[0], numbers[1], numbers[2]);
+  } catch (const py::cast_error&) {
+  }
+  throw py::value_error(std::string(what) + " must be three numbers (x, y, z), not " +
+                        py::repr(value).cast<std::string>());
+}
+
+py::array imageToArray(FloatImage image, const py::dtype& dtype) {
+  const std::vector<py::ssize_t> shape{image.height, image.width, 3};
+  if (dtype.is(py::dtype::of<float>())) {
+    // The pixels move into a capsule the array keeps alive: no copy, no dangling view.
+    auto* owned = new FloatImage(std::move(image));
+    py::capsule owner(owned, [](void* p) { delete static_cast<FloatImage*>(p); });
+    return py::array_t<float>(shape, reinterpret_cast<const float*>(owned->pixels.data()), owner);
+  }
+  if (dtype.is(py::dtype::of<double>())) {
+    py::array_t<double> array(shape);
+    double* out = array.mutable_data();
+    for (const glm::vec3& p : image.pixels) {
+      *out++ = p.r;
+      *out++ = p.g;
+      *out++ = p.b;
+    }
+    return std::move(array);
+  }
+  throw py::value_error("dtype must be float32 or float64, not " +
+                        py::repr(py::object(dtype)).cast<std::string>());
+}
+
+FloatImage arrayToImage(const py::array& array, const char* what) {
+  if (array.ndim() != 3 || array.shape(2) != 3)
+    throw py::value_error(std::string(what) + " must be an H x W x 3 array, not of shape " +
+                          py::str(py::getattr(array, "shape")).cast<std::string>());
+  const auto floats = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!floats) throw py::value_error(std::string(what) + " must hold numbers");
+  FloatImage image(int(array.shape(1)), int(array.shape(0)));
+  const float* in = floats.data();
+  for (glm::vec3& p : image.pixels) {
+    p = glm::vec3(in[0], in[1], in[2]);
+    in += 3;
+  }
+  return image;
+}
+
+void runInterruptible(const std::function<void()>& work, const std::function<void()>& poll,
+                      const std::function<void()>& cancel) {
+  std::mutex mutex;
+  std::condition_variable finishedSignal;
+  bool finished = false;
+  std::exception_ptr workError;
+  std::thread worker([&] {
+    try {
+      work();
+    } catch (...) {
+      workError = std::current_exception();
+    }
+    const std::lock_guard<std::mutex> lock(mutex);
+    finished = true;
+    finishedSignal.notify_all();
+  });
+  for (;;) {
+    bool done = false;
+    {
+      py::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock(mutex);
+      finishedSignal.wait_for(lock, std::chrono::milliseconds(20), [&] { return finished; });
+      done = finished;
+    }
+    try {
+      // Ctrl-C sets a flag that only the main thread's signal check turns into
+      // KeyboardInterrupt; a progress callback may raise too.
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      poll();
+    } catch (...) {
+      cancel();
+      {
+        py::gil_scoped_release release;
+        worker.join();
+      }
+      throw;
+    }
+    if (done) break;
+  }
+  worker.join();
+  if (workError) std::rethrow_exception(workError);
+}
+
+}  // namespace raylab::python
+
+namespace py = pybind11;
+using namespace raylab;
+using namespace raylab::python;
+
+PYBIND11_MODULE(_raylab, m) {
+  m.doc() = "RayLab's core and vis libraries: scenes, geometry, renders, ray trees, VTK.";
+
+  // Every input error derives from raylab.Error (raylab::Exception); its text is the C++
+  // message, which names the file, the place and the problem. Base first: pybind11 tries
+  // the translators of the most recently registered exception first.
+  auto& error = py::register_exception<Exception>(m, "Error", PyExc_RuntimeError);
+  py::register_exception<NotImplemented>(m, "NotImplementedInRayLab", error.ptr());
+  py::register_exception<SceneIO::LoadError>(m, "SceneError", error.ptr());
+  py::register_exception<SceneIO::SaveError>(m, "SaveError", error.ptr());
+  py::register_exception<Shape::InvalidGeometry>(m, "GeometryError", error.ptr());
+  py::register_exception<Comparison::Error>(m, "ComparisonError", error.ptr());
+  py::register_exception<RayTreeJson::Error>(m, "RayTreeError", error.ptr());
+  py::register_exception<vis::ImageError>(m, "ImageError", error.ptr());
+
+  bindGeometry(m);
+  bindScene(m);
+  bindRender(m);
+  bindTrace(m);
+  bindCompare(m);
+  bindVis(m);
+}

@@ -1,0 +1,153 @@
+// Rays, shapes, their double-precision intersections and the exact oracle (CGAL), so a
+// notebook can hold the floating-point hit next to the exact one.
+
+#include "Bindings.h"
+
+#include "raylab/core/Box.h"
+#include "raylab/core/ExactOracle.h"
+#include "raylab/core/Plane.h"
+#include "raylab/core/Quad.h"
+#include "raylab/core/Ray.h"
+#include "raylab/core/Shape.h"
+#include "raylab/core/Sphere.h"
+#include "raylab/core/Triangle.h"
+#include "raylab/core/TriangleMesh.h"
+
+#include <pybind11/stl.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace raylab::python {
+namespace {
+
+/// A 4 x 4 matrix written row by row (as in scene files) as a column-major glm matrix.
+Mat4 toMat4(const py::array_t<double, py::array::c_style | py::array::forcecast>& rows) {
+  if (rows.ndim() != 2 || rows.shape(0) != 4 || rows.shape(1) != 4)
+    throw py::value_error("matrix must be 4 x 4 (rows of 4 numbers)");
+  Mat4 m(1.0);
+  for (int row = 0; row < 4; ++row)
+    for (int col = 0; col < 4; ++col) m[col][row] = rows.at(row, col);
+  return m;
+}
+
+}  // namespace
+
+void bindGeometry(py::module_& m) {
+  py::class_<Ray>(m, "Ray", "A half-line origin + t direction, t in [t_min, t_max] (world space).")
+      .def(py::init([](const Point3& origin, const Vec3& direction, double tMin, double tMax,
+                       double time) {
+             if (glm::length(direction) == 0.0) throw py::value_error("direction must not be zero");
+             return Ray::make(origin, direction, tMin, tMax, time);
+           }),
+           py::arg("origin"), py::arg("direction"), py::arg("t_min") = 0.0,
+           py::arg("t_max") = kInfinity, py::arg("time") = 0.0,
+           "The direction is normalised (Ray::make).")
+      .def_readwrite("origin", &Ray::origin)
+      .def_readwrite("direction", &Ray::direction)
+      .def_readwrite("t_min", &Ray::tMin)
+      .def_readwrite("t_max", &Ray::tMax)
+      .def_readwrite("time", &Ray::time)
+      .def("at", &Ray::at, py::arg("t"), "The point at parameter t.")
+      .def("__repr__", &Ray::toString);
+
+  py::class_<Hit>(m, "Hit", "First phase of an intersection: where along the ray, which primitive.")
+      .def_readonly("t", &Hit::t)
+      .def_readonly("primitive", &Hit::primitive)
+      .def_readonly("uv", &Hit::uv)
+      .def("__repr__", [](const Hit& h) {
+        return "Hit(t=" + std::to_string(h.t) + ", primitive=" + std::to_string(h.primitive) + ")";
+      });
+
+  py::class_<SurfaceInteraction>(m, "SurfaceInteraction", "The geometry at a hit (world space).")
+      .def_readonly("t", &SurfaceInteraction::t)
+      .def_readonly("point", &SurfaceInteraction::p)
+      .def_readonly("normal", &SurfaceInteraction::n, "Unit geometric normal, pointing outward.")
+      .def_readonly("front_face", &SurfaceInteraction::frontFace)
+      .def_readonly("uv", &SurfaceInteraction::uv)
+      .def_readonly("primitive", &SurfaceInteraction::primitive)
+      .def_property_readonly("facing_normal", &SurfaceInteraction::facingNormal)
+      .def("__repr__", &SurfaceInteraction::toString);
+
+  py::class_<Crossing>(m, "Crossing", "One crossing of a surface along a ray.")
+      .def_readonly("t", &Crossing::t)
+      .def_readonly("entering", &Crossing::entering)
+      .def_readonly("primitive", &Crossing::primitive)
+      .def("__repr__", [](const Crossing& c) {
+        return std::string("Crossing(t=") + std::to_string(c.t) +
+               (c.entering ? ", entering)" : ", leaving)");
+      });
+
+  py::class_<Shape, std::shared_ptr<Shape>>(m, "Shape", R"(A primitive a ray can hit (world space).
+Made with Sphere, Box, Plane, Quad, Triangle, TriangleMesh or Scene.shape(name).)")
+      .def_property_readonly("kind", [](const Shape& s) { return std::string(toString(s.kind())); })
+      .def("intersect", &Shape::intersect, py::arg("ray"),
+           "Nearest hit in [t_min, t_max] in doubles (a Hit), or None.")
+      .def("closest_hit", &Shape::closestHit, py::arg("ray"),
+           "Nearest hit with its geometry (a SurfaceInteraction), or None.")
+      .def("surface_at", &Shape::surfaceAt, py::arg("ray"), py::arg("hit"))
+      .def("intersect_all", &Shape::intersectAll, py::arg("ray"),
+           "Every crossing in [t_min, t_max], sorted by t (entering / leaving).")
+      .def("normal", &Shape::normal, py::arg("point"))
+      .def("inside", &Shape::inside, py::arg("point"))
+      .def("bounds",
+           [](const Shape& s) {
+             const Bounds3 b = s.bounds();
+             return py::make_tuple(toTuple(b.lower), toTuple(b.upper));
+           })
+      .def("area", &Shape::area)
+      .def(
+          "apply", [](Shape& s, const py::array& matrix) { s.apply(toMat4(matrix)); },
+          py::arg("matrix"), "Transforms the shape in world space by a 4 x 4 matrix (new = M old).")
+      .def("__repr__", &Shape::toString);
+
+  py::class_<Sphere, Shape, std::shared_ptr<Sphere>>(m, "Sphere")
+      .def(py::init<const Point3&, double, int, int>(), py::arg("centre"), py::arg("radius"),
+           py::arg("m") = 24, py::arg("n") = 24);
+  py::class_<Box, Shape, std::shared_ptr<Box>>(m, "Box").def(py::init<const Point3&, const Vec3&>(),
+                                                             py::arg("centre"), py::arg("size"));
+  py::class_<Plane, Shape, std::shared_ptr<Plane>>(m, "Plane")
+      .def(py::init<const Point3&, const Normal3&>(), py::arg("point"), py::arg("normal"));
+  py::class_<Quad, Shape, std::shared_ptr<Quad>>(m, "Quad").def(
+      py::init<const Point3&, const Vec3&, const Vec3&>(), py::arg("corner"), py::arg("u"),
+      py::arg("v"));
+  py::class_<Triangle, Shape, std::shared_ptr<Triangle>>(m, "Triangle")
+      .def(py::init<const Point3&, const Point3&, const Point3&>(), py::arg("p0"), py::arg("p1"),
+           py::arg("p2"));
+  py::class_<TriangleMesh, Shape, std::shared_ptr<TriangleMesh>>(m, "TriangleMesh")
+      .def(py::init([](const std::vector<Point3>& vertices,
+                       const std::vector<std::array<int, 3>>& triangles) {
+             return std::make_shared<TriangleMesh>(vertices, triangles);
+           }),
+           py::arg("vertices"), py::arg("triangles"));
+
+  py::class_<ExactResult>(m, "ExactResult", "The exact (CGAL) answer for one ray and one shape.")
+      .def_property_readonly(
+          "classification",
+          [](const ExactResult& r) { return std::string(toString(r.classification)); })
+      .def_property_readonly("hit", &ExactResult::hit)
+      .def_readonly("t", &ExactResult::t, "Exact t, correctly rounded to a double.")
+      .def_readonly("t_lower", &ExactResult::tLower)
+      .def_readonly("t_upper", &ExactResult::tUpper)
+      .def_readonly("primitive", &ExactResult::primitive)
+      .def_readonly("margin", &ExactResult::margin)
+      .def_readonly("cosine", &ExactResult::cosine)
+      .def_readonly("line_crossings", &ExactResult::lineCrossings)
+      .def("__repr__", &ExactResult::toString);
+
+  py::class_<OracleComparison>(m, "OracleComparison", "The exact answer next to the double one.")
+      .def_readonly("exact", &OracleComparison::exact)
+      .def_readonly("floating", &OracleComparison::floating)
+      .def_readonly("agree", &OracleComparison::agree)
+      .def_readonly("t_error", &OracleComparison::tError)
+      .def_readonly("t_error_ulps", &OracleComparison::tErrorUlps)
+      .def("__repr__", &OracleComparison::toString);
+
+  m.def("exact_classify", &ExactOracle::classify, py::arg("shape"), py::arg("ray"),
+        "The exact oracle's classification: miss, hit, tangent, through edge or vertex.");
+  m.def("oracle_compare", &ExactOracle::compare, py::arg("shape"), py::arg("ray"),
+        "The exact answer next to shape.intersect(ray) in doubles.");
+}
+
+}  // namespace raylab::python
