@@ -14,6 +14,8 @@ packages=(
   xvfb xauth libgl1-mesa-dri                          # an X server + software OpenGL for VTK
   libvtk9-dev libvtk9-qt-dev                          # VTK 9.1 with its Qt widget
   qtbase5-dev libqt5opengl5-dev                       # Qt 5 widgets
+  qttools5-dev qttools5-dev-tools qttranslations5-l10n  # the window in Chinese (Qt Linguist)
+  fonts-noto-cjk fonts-dejavu-core                    # fonts: Chinese text and the UI's Latin
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev     # CGAL exact kernels
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev  # maths, scene files, CLI, threads
   libgtest-dev libgmock-dev libbenchmark-dev          # tests and benchmarks

@@ -103,6 +103,23 @@ int runCommandLine(int argc, char** argv) {
       ->needs(traceOption)
       ->check(CLI::NonNegativeNumber);
 
+  std::string language;
+  cli.add_option("--lang", language,
+                 "Language of the window: en or zh (default: the last chosen, else the system's)")
+      ->check(CLI::IsMember({"en", "zh"}));
+  bool renderAtStart = false;
+  CLI::Option* renderOption =
+      cli.add_flag("--render", renderAtStart,
+                   "Render the scene camera's image beside the 3D view when the window opens (with "
+                   "--algorithm's algorithm); --screenshot waits for it");
+  int renderSamples = 0;
+  cli.add_option("--render-spp", renderSamples, "With --render: samples per pixel")
+      ->needs(renderOption)
+      ->check(CLI::Range(1, 1 << 16));
+  bool presentation = false;
+  cli.add_flag("--presentation", presentation,
+               "Start in presentation mode (full screen, large fonts, thick rays)");
+
   // The headless subcommands, each in its own file.
   const std::vector<Subcommand> subcommands = {
       addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
@@ -135,6 +152,10 @@ int runCommandLine(int argc, char** argv) {
   if (simulateAcross > 0)
     window.simulate =
         std::make_pair(simulateAcross, simulateDown > 0 ? simulateDown : simulateAcross);
+  window.language = language;
+  window.render = renderAtStart;
+  if (renderSamples > 0) window.renderSamples = renderSamples;
+  window.presentation = presentation;
   return runWindow(argc, argv, window);
 #else
   std::cerr << "raylab: this build has no window (configured with RAYLAB_BUILD_GUI=OFF); "

@@ -3,9 +3,12 @@
 #include "EditPanel.h"
 #include "InspectorPanel.h"
 #include "InteractorStyle.h"
+#include "Language.h"
 #include "PropertiesPanel.h"
 #include "RayTreePanel.h"
+#include "RenderPanel.h"
 #include "SceneDocument.h"
+#include "UiWords.h"
 
 #include "raylab/core/SceneEdit.h"
 #include "raylab/core/SceneIO.h"
@@ -18,10 +21,15 @@
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <QAction>
+#include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QKeySequence>
 #include <QListWidget>
 #include <QMenuBar>
@@ -32,8 +40,13 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
+#include <QSpinBox>
+#include <QSplitter>
 #include <QStatusBar>
+#include <QTabWidget>
+#include <QTableWidget>
 #include <QTimer>
+#include <QVBoxLayout>
 
 namespace raylab::app {
 
@@ -41,6 +54,9 @@ namespace {
 
 /// How many files Open Recent lists.
 constexpr int kRecentFiles = 10;
+/// Presentation mode: fonts this many times larger, rays this many times thicker.
+constexpr double kPresentationFontScale = 1.6;
+constexpr double kPresentationLineScale = 2.0;
 
 /// RayLab's settings (an INI file in the user's configuration folder).
 QSettings settings() {
@@ -79,11 +95,22 @@ QScrollArea* scrolling(QWidget* widget, bool fitWidth = true) {
 
 }  // namespace
 
+namespace {
+std::unique_ptr<SceneDocument> newDocument(const Scene& scene) {
+  auto document = std::make_unique<SceneDocument>();
+  document->adopt(scene, {});
+  return document;
+}
+}  // namespace
+
 MainWindow::MainWindow(const Scene& scene, QWidget* parent)
+    : MainWindow(newDocument(scene), parent) {}
+
+MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
     : QMainWindow(parent),
-      m_document(std::make_unique<SceneDocument>()),
-      m_view(std::make_unique<vis::SceneView>(scene)) {
-  m_document->adopt(scene, {});
+      m_document(std::move(document)),
+      m_view(std::make_unique<vis::SceneView>(m_document->scene())) {
+  const Scene& scene = m_document->scene();
   resize(1400, 860);
   setAcceptDrops(true);
 
@@ -96,7 +123,24 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   vtkNew<vtkRaylabInteractorStyle> style;
   m_vtkWidget->interactor()->SetInteractorStyle(style);
   m_vtkWidget->installEventFilter(this);
-  setCentralWidget(m_vtkWidget);
+  // Beside it, the rendered image (and the comparison) in tabs, shown once used.
+  m_renderPanel = new RenderPanel;
+  m_renderPanel->setScene(scene);
+  m_imageTabs = new QTabWidget;
+  m_imageTabs->addTab(m_renderPanel, tr("Image"));
+  m_imageTabs->hide();
+  m_splitter = new QSplitter(Qt::Horizontal);
+  m_splitter->addWidget(m_vtkWidget);
+  m_splitter->addWidget(m_imageTabs);
+  m_splitter->setStretchFactor(0, 1);
+  m_splitter->setStretchFactor(1, 1);
+  m_splitter->setChildrenCollapsible(false);
+  setCentralWidget(m_splitter);
+  connect(m_renderPanel, &RenderPanel::pixelChosen, this,
+          [this](Algorithm a, int x, int y) { tracePixel(a, x, y); });
+  connect(m_renderPanel, &RenderPanel::statusChanged, this,
+          [this](const QString& text) { statusBar()->showMessage(text); });
+  connect(m_renderPanel, &RenderPanel::saveRequested, this, [this] { saveImageAs(); });
 
   // Step 2: on the left the objects, and the selection's operations and values as tabs.
   m_objectList = new QListWidget;
@@ -135,6 +179,14 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   m_inspectorDock = inspector;
   m_leftDocks = {objects, edit, properties};
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
+  // The rendered image marks the pixel whose tree is shown.
+  connect(m_rayPanel, &RayTreePanel::treeChanged, this, [this] {
+    if (m_rayPanel->showsGrid())
+      m_renderPanel->imageView()->setMarkedPixel(-1, -1);
+    else
+      m_renderPanel->imageView()->setMarkedPixel(m_rayPanel->pixelXBox()->value(),
+                                                 m_rayPanel->pixelYBox()->value());
+  });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this,
           [this](const QString& text) { statusBar()->showMessage(text); });
   connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this, inspector](int id) {
@@ -150,6 +202,7 @@ MainWindow::MainWindow(const Scene& scene, QWidget* parent)
   connect(m_document.get(), &SceneDocument::sceneChanged, this, [this] { sceneChanged(); });
   connect(m_document.get(), &SceneDocument::fileStateChanged, this, [this] { updateTitle(); });
   buildMenus();
+  restoreLayout();
   fillObjectList();  // the view was made from this scene already
   statusBar()->showMessage(tr(
       "Drag to rotate, wheel to zoom, click an object to select it; trace a pixel on the right"));
@@ -197,7 +250,7 @@ void MainWindow::buildMenus() {
   editMenu->addSeparator();
   action(editMenu, tr("&Delete"), tr("Delete the selected object"), {QKeySequence::Delete},
          [this] { m_editPanel->remove(); });
-  action(editMenu, tr("D&uplicate"), tr("Copy the selected object"),
+  action(editMenu, tr("Du&plicate"), tr("Copy the selected object"),
          {QKeySequence(Qt::CTRL | Qt::Key_D)}, [this] { m_editPanel->duplicate(); });
   action(editMenu, tr("Clear the selection"), tr("Select no object"),
          {QKeySequence(Qt::Key_Escape)}, [this] { selectObject(-1); });
@@ -231,13 +284,210 @@ void MainWindow::buildMenus() {
                      [origin](const Scene& s) { return edit::addPointLight(s, origin); });
          });
 
+  // Render: the scene camera's image beside the 3D view.
+  QMenu* renderMenu = menuBar()->addMenu(tr("&Render"));
+  action(renderMenu, tr("&Render image"),
+         tr("Render the scene camera's image with the chosen algorithm, pass by pass"),
+         {QKeySequence(Qt::Key_F5)}, [this] {
+           showImageTab(m_renderPanel);
+           m_renderPanel->render();
+         });
+  action(renderMenu, tr("&Cancel render"), tr("Stop the render; the passes finished so far stay"),
+         {QKeySequence(Qt::SHIFT | Qt::Key_F5)}, [this] { m_renderPanel->cancel(); });
+  action(renderMenu, tr("&Save image…"), tr("Save the rendered image (PNG or PFM)"),
+         {QKeySequence(Qt::CTRL | Qt::Key_E)}, [this] { saveImageAs(); });
+  action(renderMenu, tr("Zoom &in"), tr("Zoom into the image: pixels become squares"),
+         {QKeySequence(Qt::CTRL | Qt::Key_Plus), QKeySequence(Qt::CTRL | Qt::Key_Equal)},
+         [this] { m_renderPanel->imageView()->zoomIn(); });
+  action(renderMenu, tr("Zoom &out"), tr("Zoom out of the image"),
+         {QKeySequence(Qt::CTRL | Qt::Key_Minus)},
+         [this] { m_renderPanel->imageView()->zoomOut(); });
+  action(renderMenu, tr("&Fit the image"), tr("Show the whole image"),
+         {QKeySequence(Qt::CTRL | Qt::Key_0)}, [this] { m_renderPanel->imageView()->setZoom(0); });
+
+  // Animation: the bounce animation's keys, in the window and in presentation mode.
+  QMenu* animation = menuBar()->addMenu(tr("&Animation"));
+  action(animation, tr("&Play / pause"), tr("Play the bounce animation, or pause it"),
+         {QKeySequence(Qt::Key_Space)}, [this] {
+           if (m_rayPanel->playing())
+             m_rayPanel->pause();
+           else
+             m_rayPanel->play();
+         });
+  action(animation, tr("Step &forward"), tr("Show the next step of the ray tree"),
+         {QKeySequence(Qt::Key_Right)}, [this] { m_rayPanel->stepForward(); });
+  action(animation, tr("Step &back"), tr("Go back to the previous step"),
+         {QKeySequence(Qt::Key_Left)}, [this] { m_rayPanel->stepBack(); });
+  action(animation, tr("F&irst frame"), tr("Back to the start: no ray drawn yet"),
+         {QKeySequence(Qt::Key_Home)}, [this] { m_rayPanel->setFrame(0); });
+  action(animation, tr("&Last frame"), tr("The whole tree"), {QKeySequence(Qt::Key_End)},
+         [this] { m_rayPanel->setFrame(m_rayPanel->frameCount() - 1); });
+  action(animation, tr("F&aster"), tr("Play the animation twice as fast"),
+         {QKeySequence(Qt::Key_Plus), QKeySequence(Qt::Key_Equal)},
+         [this] { m_rayPanel->setSpeed(m_rayPanel->speed() * 2.0); });
+  action(animation, tr("Slo&wer"), tr("Play the animation half as fast"),
+         {QKeySequence(Qt::Key_Minus)},
+         [this] { m_rayPanel->setSpeed(m_rayPanel->speed() / 2.0); });
+
   // View.
   QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+  m_presentAction =
+      action(viewMenu, tr("&Presentation mode"),
+             tr("Full screen, large fonts and thick rays, for the back of a "
+                "classroom (F11 again to leave)"),
+             {QKeySequence(Qt::Key_F11)}, [this] { setPresentationMode(!m_presenting); });
+  m_presentAction->setCheckable(true);
+  QAction* images = viewMenu->addAction(tr("&Image beside the 3D view"));
+  images->setCheckable(true);
+  images->setToolTip(tr("Show or hide the rendered image and the comparison"));
+  images->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+  connect(images, &QAction::toggled, this, [this](bool on) {
+    if (on)
+      showImageTab(m_imageTabs->currentWidget());
+    else
+      m_imageTabs->hide();
+  });
+  connect(m_splitter, &QSplitter::splitterMoved, images,
+          [this, images] { images->setChecked(m_imageTabs->isVisible()); });
+  m_imagesAction = images;
   action(viewMenu, tr("&Reset view"), tr("Look at the whole scene again"),
          {QKeySequence(Qt::Key_R)}, [this] { resetView(); });
   viewMenu->addSeparator();
-  for (QDockWidget* dock : findChildren<QDockWidget*>())
-    viewMenu->addAction(dock->toggleViewAction());
+  for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+    QAction* toggle = dock->toggleViewAction();
+    toggle->setToolTip(tr("Show or hide the %1 panel").arg(dock->windowTitle()));
+    viewMenu->addAction(toggle);
+  }
+
+  // The language: each name in its own language, so anyone can find theirs.
+  QMenu* languages = viewMenu->addMenu(tr("&Language"));
+  for (const auto& [code, name] : {std::pair{kEnglish, QStringLiteral("English")},
+                                   std::pair{kChinese, QStringLiteral("中文（简体）")}}) {
+    QAction* a = languages->addAction(name);
+    a->setCheckable(true);
+    a->setChecked(currentLanguage() == code);
+    a->setToolTip(tr("Show the window in this language"));
+    const QString language = code;
+    connect(a, &QAction::triggered, this, [this, language] {
+      rememberLanguage(language);
+      emit languageRequested(language);
+    });
+  }
+
+  // Help.
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  action(help, tr("&Keyboard shortcuts"), tr("Every shortcut and mouse gesture of the window"),
+         {QKeySequence(Qt::Key_F1)}, [this] { showShortcuts(); });
+}
+
+void MainWindow::setPresentationMode(bool on) {
+  if (on == m_presenting) return;
+  m_presenting = on;
+  {
+    const QSignalBlocker block(m_presentAction);
+    m_presentAction->setChecked(on);
+  }
+  if (on) {
+    m_layoutBeforePresenting = saveState();
+    // Only what the class looks at: the 3D view, the image and the ray-tree panel.
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+      if (dock != m_raysDock) dock->hide();
+    m_raysDock->show();
+    m_raysDock->raise();
+    QFont large = QApplication::font();
+    large.setPointSizeF(large.pointSizeF() * kPresentationFontScale);
+    setFont(large);
+    m_rayPanel->setLineScale(kPresentationLineScale);
+    showFullScreen();
+  } else {
+    setFont(QApplication::font());
+    m_rayPanel->setLineScale(1.0);
+    showNormal();
+    restoreState(m_layoutBeforePresenting);
+  }
+  statusBar()->showMessage(on ? tr("Presentation mode: F11 leaves it; Space plays the animation, "
+                                   "Left and Right step it")
+                              : tr("Presentation mode off"));
+  render();
+}
+
+QList<QStringList> MainWindow::shortcutTable() const {
+  QList<QStringList> rows;
+  const auto cleaned = [](QString text) {
+    // "&Open…" -> "Open"; a Chinese "打开(&O)…" -> "打开".
+    static const QRegularExpression accelerator(QStringLiteral("\\(&.\\)"));
+    return text.remove(accelerator).remove(QLatin1Char('&')).remove(QStringLiteral("…"));
+  };
+  for (QAction* menuAction : menuBar()->actions()) {
+    const QMenu* menu = menuAction->menu();
+    if (!menu) continue;
+    for (QAction* a : menu->actions()) {
+      if (a->shortcuts().isEmpty()) continue;
+      QStringList keys;
+      for (const QKeySequence& k : a->shortcuts()) keys << k.toString(QKeySequence::NativeText);
+      rows.append({cleaned(menu->title()) + QStringLiteral(" › ") + cleaned(a->text()),
+                   keys.join(QStringLiteral(", ")), a->toolTip()});
+    }
+  }
+  rows.append({tr("3D view"), tr("Drag"), tr("Rotate the view around the scene")});
+  rows.append({tr("3D view"), tr("Wheel"), tr("Zoom in and out")});
+  rows.append({tr("3D view"), tr("Click"), tr("Select the ray or the object under the cursor")});
+  rows.append({tr("Image"), tr("Click"), tr("Trace that pixel's ray tree in the 3D view")});
+  rows.append({tr("Image"), tr("Ctrl+Wheel"), tr("Zoom the image (pixels stay square)")});
+  return rows;
+}
+
+void MainWindow::showShortcuts() {
+  auto* dialog = new QDialog(this);
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setWindowTitle(tr("Keyboard shortcuts"));
+  auto* layout = new QVBoxLayout(dialog);
+  const QList<QStringList> rows = shortcutTable();
+  auto* table = new QTableWidget(rows.size(), 3);
+  table->setHorizontalHeaderLabels({tr("Command"), tr("Keys"), tr("What it does")});
+  for (int r = 0; r < rows.size(); ++r)
+    for (int c = 0; c < 3; ++c) table->setItem(r, c, new QTableWidgetItem(rows[r][c]));
+  table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table->verticalHeader()->hide();
+  table->horizontalHeader()->setStretchLastSection(true);
+  table->resizeColumnsToContents();
+  layout->addWidget(table);
+  auto* close = new QDialogButtonBox(QDialogButtonBox::Close);
+  connect(close, &QDialogButtonBox::rejected, dialog, &QDialog::close);
+  layout->addWidget(close);
+  dialog->resize(900, 600);
+  dialog->setObjectName(QStringLiteral("shortcuts"));
+  dialog->open();
+}
+
+void MainWindow::saveLayout() {
+  QSettings s = settings();
+  s.setValue(QStringLiteral("window/geometry"), saveGeometry());
+  s.setValue(QStringLiteral("window/state"), m_presenting ? m_layoutBeforePresenting : saveState());
+  s.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
+  s.setValue(QStringLiteral("window/imagesShown"), m_imageTabs->isVisible());
+  s.setValue(QStringLiteral("algorithm"), QString::fromLatin1(toString(m_rayPanel->algorithm())));
+  s.setValue(QStringLiteral("renderAlgorithm"),
+             QString::fromLatin1(toString(m_renderPanel->algorithm())));
+  s.setValue(QStringLiteral("rayColouring"), m_rayPanel->colouringBox()->currentData());
+}
+
+void MainWindow::restoreLayout() {
+  QSettings s = settings();
+  if (s.contains(QStringLiteral("window/state"))) {
+    restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
+    m_layoutRestored = restoreState(s.value(QStringLiteral("window/state")).toByteArray());
+    m_splitter->restoreState(s.value(QStringLiteral("window/splitter")).toByteArray());
+    if (s.value(QStringLiteral("window/imagesShown")).toBool()) showImageTab(nullptr);
+  }
+  if (const auto a = parseAlgorithm(s.value(QStringLiteral("algorithm")).toString().toStdString()))
+    m_rayPanel->setAlgorithm(*a);
+  if (const auto a =
+          parseAlgorithm(s.value(QStringLiteral("renderAlgorithm")).toString().toStdString()))
+    m_renderPanel->setAlgorithm(*a);
+  const int colouring =
+      m_rayPanel->colouringBox()->findData(s.value(QStringLiteral("rayColouring")));
+  if (colouring >= 0) m_rayPanel->colouringBox()->setCurrentIndex(colouring);
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
@@ -253,6 +503,7 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
 
 MainWindow::~MainWindow() {
   m_rayPanel->pause();
+  m_renderPanel->cancel();
   // The render window outlives us by a moment (Qt deletes children later): detach the
   // renderer now so it never draws a vis::SceneView that is gone.
   if (m_vtkWidget && m_vtkWidget->renderWindow()) {
@@ -260,8 +511,73 @@ MainWindow::~MainWindow() {
   }
 }
 
+void MainWindow::showImageTab(QWidget* tab) {
+  if (!m_imageTabs->isVisible()) {
+    m_imageTabs->show();
+    // Half of the central area each, once the layout has made room for the tabs.
+    QTimer::singleShot(0, this, [this] {
+      fitSplitter();
+      const int total = m_splitter->orientation() == Qt::Horizontal ? m_splitter->width()
+                                                                    : m_splitter->height();
+      m_splitter->setSizes({total / 2, total - total / 2});
+    });
+  }
+  if (tab) m_imageTabs->setCurrentWidget(tab);
+  if (m_imagesAction) {
+    const QSignalBlocker block(m_imagesAction);
+    m_imagesAction->setChecked(true);
+  }
+}
+
+void MainWindow::fitSplitter() {
+  // Side by side when the central area is wide, one above the other when it is tall (the
+  // images are about 4:3: each gets the larger share that way).
+  const QSize area = m_splitter->size();
+  m_splitter->setOrientation(area.width() >= area.height() * 4 / 3 ? Qt::Horizontal
+                                                                   : Qt::Vertical);
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event) {
+  QMainWindow::resizeEvent(event);
+  if (m_imageTabs->isVisible()) QTimer::singleShot(0, this, [this] { fitSplitter(); });
+}
+
+void MainWindow::tracePixel(Algorithm algorithm, int x, int y) {
+  m_rayPanel->setAlgorithm(algorithm);
+  m_rayPanel->setPixel(x, y);
+  m_rayPanel->setSample(0);
+  m_rayPanel->trace();
+  m_raysDock->raise();
+  statusBar()->showMessage(tr("Pixel (%1, %2) traced with %3: its ray tree is in the 3D view")
+                               .arg(x)
+                               .arg(y)
+                               .arg(algorithmLabel(algorithm)));
+}
+
+bool MainWindow::saveImageAs() {
+  if (!m_renderPanel->hasImage()) {
+    showError(tr("Cannot save the image"),
+              tr("There is no image to save yet: press Render first."));
+    return false;
+  }
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Save the image"), QString(), tr("PNG image (*.png);;PFM, linear radiance (*.pfm)"));
+  if (path.isEmpty()) return false;
+  if (!path.endsWith(QStringLiteral(".png"), Qt::CaseInsensitive) &&
+      !path.endsWith(QStringLiteral(".pfm"), Qt::CaseInsensitive))
+    path += QStringLiteral(".png");
+  QString error;
+  if (!m_renderPanel->saveImage(path, &error)) {
+    showError(tr("Cannot save the image"), error);
+    return false;
+  }
+  statusBar()->showMessage(tr("Saved %1").arg(path));
+  return true;
+}
+
 void MainWindow::sceneChanged() {
   m_view->updateScene(m_document->scene());
+  m_renderPanel->setScene(m_document->scene());
   // A tree traced before the change is traced again: never silently wrong.
   m_rayPanel->retrace();
   fillObjectList();
@@ -369,8 +685,9 @@ void MainWindow::showEvent(QShowEvent* event) {
   // builds the tab bar in the first layout after showing: raise once the loop runs.
   QTimer::singleShot(0, this, [this] {
     (m_rayPanel->selectedSegment() >= 0 ? m_inspectorDock : m_raysDock)->raise();
-    // The 3D view gets the width: the left docks as narrow as their contents allow.
-    if (!m_leftDocks.isEmpty()) {
+    // The 3D view gets the width: the left docks as narrow as their contents allow
+    // (unless the settings gave the layout of last time).
+    if (!m_leftDocks.isEmpty() && !m_layoutRestored) {
       resizeDocks(m_leftDocks, {300, 300, 300}, Qt::Horizontal);
       resizeDocks({m_leftDocks[0], m_leftDocks[1]}, {200, 600}, Qt::Vertical);
       m_leftDocks.clear();
@@ -530,11 +847,34 @@ void MainWindow::updateRecentMenu() {
   m_recentMenu->setEnabled(!files.isEmpty());
 }
 
+std::unique_ptr<SceneDocument> MainWindow::takeDocument() {
+  m_renderPanel->cancel();
+  m_rayPanel->pause();
+  m_handedOver = true;
+  // A stand-in, so the panels still holding a reference never see a dangling one.
+  auto document = std::move(m_document);
+  m_document = newDocument(document->scene());
+  // This window's panels and actions stop listening to the document handed over.
+  // (The document's own link from its undo stack to itself stays.)
+  document->disconnect(this);
+  for (QObject* listener : findChildren<QObject*>()) {
+    document->disconnect(listener);
+    document->undoStack().disconnect(listener);
+  }
+  return document;
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
-  if (maybeSave())
+  if (m_handedOver) {
     event->accept();
-  else
+    return;
+  }
+  if (maybeSave()) {
+    saveLayout();
+    event->accept();
+  } else {
     event->ignore();
+  }
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {

@@ -9,9 +9,12 @@
 #include <memory>
 #include <optional>
 
+class QAction;
 class QDockWidget;
 class QListWidget;
 class QMenu;
+class QSplitter;
+class QTabWidget;
 class QVTKOpenGLNativeWidget;
 
 namespace raylab::vis {
@@ -24,6 +27,7 @@ class EditPanel;
 class InspectorPanel;
 class PropertiesPanel;
 class RayTreePanel;
+class RenderPanel;
 class SceneDocument;
 
 /**
@@ -47,6 +51,11 @@ class MainWindow : public QMainWindow {
  public:
   /// A window showing `scene` (no file: a new, unmodified document).
   explicit MainWindow(const Scene& scene, QWidget* parent = nullptr);
+  /// A window on an existing document (its file, edits and undo history), e.g. the one of
+  /// a window being replaced by one in another language.
+  explicit MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent = nullptr);
+  /// Hands the document over (the window must then be closed without asking to save).
+  std::unique_ptr<SceneDocument> takeDocument();
   /// Shows `scene`, read from `path`, as the window's document (nothing to undo).
   void adoptScene(const Scene& scene, const QString& path);
   ~MainWindow() override;
@@ -102,6 +111,31 @@ class MainWindow : public QMainWindow {
   InspectorPanel* inspectorPanel() const { return m_inspector; }
   EditPanel* editPanel() const { return m_editPanel; }
   PropertiesPanel* propertiesPanel() const { return m_properties; }
+  RenderPanel* renderPanel() const { return m_renderPanel; }
+  /// The tabs beside the 3D view (the rendered image, the comparison); hidden until used.
+  QTabWidget* imageTabs() const { return m_imageTabs; }
+  /// Shows the image tabs beside the 3D view with `tab` in front.
+  void showImageTab(QWidget* tab);
+  /// Traces pixel (x, y) of the scene camera's image with `algorithm` (sample 0) in the
+  /// ray-tree panel and the 3D view: what a click on a rendered pixel does.
+  void tracePixel(Algorithm algorithm, int x, int y);
+  /// Asks for a file name, then saves the rendered image (a dialog on failure).
+  bool saveImageAs();
+
+  /// \name Classroom use
+  /// @{
+  /// Presentation mode (F11): full screen, fonts 1.6 times larger, rays twice as thick,
+  /// only the 3D view, the image and the ray-tree panel shown; off restores the layout.
+  void setPresentationMode(bool on);
+  bool presentationMode() const { return m_presenting; }
+  /// Every action with a shortcut and every mouse gesture, as Help > Keyboard shortcuts
+  /// lists them: {what, keys, what it does}.
+  QList<QStringList> shortcutTable() const;
+  /// Shows Help > Keyboard shortcuts (not blocking).
+  void showShortcuts();
+  /// Writes the layout, the algorithm and the ray colouring to the settings (on close).
+  void saveLayout();
+  /// @}
   QMenu* addMenu() const { return m_addMenu; }
 
   /// What a click at `position` (view widget pixels) does: selects the drawn ray nearest
@@ -113,11 +147,17 @@ class MainWindow : public QMainWindow {
   bool eventFilter(QObject* watched, QEvent* event) override;
   void showEvent(QShowEvent* event) override;
   void closeEvent(QCloseEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
   void dragEnterEvent(QDragEnterEvent* event) override;
   void dropEvent(QDropEvent* event) override;
 
  private:
   void buildMenus();
+  /// The 3D view and the image tabs side by side or one above the other, whichever suits
+  /// the central area's shape.
+  void fitSplitter();
+  /// The layout, algorithm and colouring of last time, from the settings.
+  void restoreLayout();
   void showSelection(int row);
   void resetView();
   void render();
@@ -143,6 +183,14 @@ class MainWindow : public QMainWindow {
   InspectorPanel* m_inspector = nullptr;
   EditPanel* m_editPanel = nullptr;
   PropertiesPanel* m_properties = nullptr;
+  RenderPanel* m_renderPanel = nullptr;
+  QSplitter* m_splitter = nullptr;  ///< The 3D view | the image tabs.
+  QTabWidget* m_imageTabs = nullptr;
+  QAction* m_imagesAction = nullptr;   ///< View > Image beside the 3D view.
+  QAction* m_presentAction = nullptr;  ///< View > Presentation mode.
+  bool m_presenting = false;
+  QByteArray m_layoutBeforePresenting;     ///< saveState() before presentation mode.
+  bool m_layoutRestored = false;           ///< The settings had a layout: keep its sizes.
   QDockWidget* m_raysDock = nullptr;       ///< Tab of the ray-tree panel.
   QDockWidget* m_inspectorDock = nullptr;  ///< Tab of the inspector, beside it.
   QList<QDockWidget*> m_leftDocks;         ///< Sized once, when first shown.
@@ -153,6 +201,12 @@ class MainWindow : public QMainWindow {
   std::optional<QMessageBox::StandardButton> m_unsavedAnswer;
   QPoint m_pressPosition;  ///< Where the left button went down in the view.
   bool m_pressed = false;
+  bool m_handedOver = false;  ///< takeDocument() was called: close without asking.
+
+ signals:
+  /// View > Language chose `language` ("en" or "zh"): the window must be built again in it
+  /// (runWindow does so, keeping the document).
+  void languageRequested(const QString& language);
 };
 
 }  // namespace raylab::app

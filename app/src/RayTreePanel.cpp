@@ -1,5 +1,7 @@
 #include "RayTreePanel.h"
 
+#include "UiWords.h"
+
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Tracer.h"
@@ -36,10 +38,6 @@ constexpr int kFramesPerStep = 12;
 /// Processing order: at most this many steps per animation when rays per step is chosen
 /// automatically (a bushy distributed tree still plays in about half a minute).
 constexpr int kAutoMaxSteps = 120;
-
-/// The algorithms in historical order, as the combo box lists them.
-constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                     Algorithm::Distributed, Algorithm::PathTracing};
 
 /// A small swatch of a linear RGB colour with a dark border, for the kind checkboxes.
 QIcon swatch(const Vec3& colour) {
@@ -83,8 +81,7 @@ QWidget* RayTreePanel::buildTraceGroup() {
   // Step 1: which algorithm, pixel and sample.
   m_algorithm = new QComboBox;
   for (Algorithm a : kAlgorithms)
-    m_algorithm->addItem(QString::fromStdString(algorithmTitle(a)),
-                         QString::fromLatin1(toString(a)));
+    m_algorithm->addItem(algorithmLabel(a), QString::fromLatin1(toString(a)));
   m_algorithm->setToolTip(
       tr("Ray casting: camera ray, local shading, shadow rays.\n"
          "Whitted: + perfect reflection and refraction, recursively.\n"
@@ -174,12 +171,12 @@ QWidget* RayTreePanel::buildStyleGroup() {
   kinds->setHorizontalSpacing(12);
   for (int k = 0; k < kRayKindCount; ++k) {
     const RayKind kind = RayKind(k);
-    QString name = QString::fromLatin1(toString(kind));
+    QString name = rayKindWord(kind);
     name[0] = name[0].toUpper();
     auto* box = new QCheckBox(name);
     box->setChecked(true);
     box->setIcon(swatch(vis::kindColour(kind)));
-    box->setToolTip(tr("Draw %1 rays").arg(QString::fromLatin1(toString(kind))));
+    box->setToolTip(tr("Draw %1 rays").arg(rayKindWord(kind)));
     connect(box, &QCheckBox::toggled, this, [this] { restyle(); });
     m_kinds[std::size_t(k)] = box;
     kinds->addWidget(box, k / 2, k % 2);
@@ -357,11 +354,11 @@ void RayTreePanel::trace() {
 
   // Summarise: which sample, rays by kind, the estimate.
   QString info = tr("%1: pixel (%2, %3), sample %4\n%5")
-                     .arg(QString::fromLatin1(toString(trace.algorithm)))
+                     .arg(algorithmLabel(trace.algorithm))
                      .arg(trace.x)
                      .arg(trace.y)
                      .arg(trace.sample)
-                     .arg(QString::fromStdString(trace.summary()));
+                     .arg(traceSummary(trace));
   if (trace.tree.truncated)
     info += QStringLiteral("\n") + QString::fromStdString(trace.tree.message);
   m_traceInfo->setText(info);
@@ -391,7 +388,7 @@ void RayTreePanel::simulate() {
   // Coloured by energy, as the original program drew its trees.
   m_colouring->setCurrentIndex(m_colouring->findData(QStringLiteral("energy")));
   QString info = tr("%1: Simulate %2 x %3, %4 pixels, %5 rays")
-                     .arg(QString::fromStdString(algorithmTitle(settings.algorithm)))
+                     .arg(algorithmLabel(settings.algorithm))
                      .arg(across)
                      .arg(down)
                      .arg(grid.traces.size())
@@ -457,7 +454,14 @@ vis::RayTreeStyle RayTreePanel::treeStyle() const {
   s.showNormals = m_normals->isChecked();
   s.showArrows = m_arrows->isChecked();
   s.showLegend = m_legend->isChecked();
+  s.lineWidth *= m_lineScale;
   return s;
+}
+
+void RayTreePanel::setLineScale(double factor) {
+  if (factor == m_lineScale) return;
+  m_lineScale = factor;
+  restyle();
 }
 
 vis::AnimationSettings RayTreePanel::animation() const {
@@ -494,7 +498,9 @@ void RayTreePanel::showFrame() {
 
   // The picture and the status line: functions of the frame number only.
   m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), m_frame));
-  setStatus(QString::fromStdString(vis::stepCaption(*m_trace, animation(), m_frame)));
+  std::vector<std::string> names;
+  for (const SceneObject& object : m_view.scene().objects) names.push_back(object.name);
+  setStatus(stepCaption(*m_trace, animation(), m_frame, names));
   emit viewChanged();
 }
 

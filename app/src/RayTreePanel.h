@@ -76,6 +76,9 @@ class RayTreePanel : public QWidget {
 
   /// How the tree is drawn, read from the controls.
   vis::RayTreeStyle treeStyle() const;
+  /// Draws rays `factor` times as thick, hit points larger with them (presentation mode).
+  void setLineScale(double factor);
+  double lineScale() const { return m_lineScale; }
   /// How the animation reveals it, read from the controls.
   vis::AnimationSettings animation() const;
 
@@ -164,8 +167,9 @@ class RayTreePanel : public QWidget {
   vis::SceneView& m_view;
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
-  bool m_grid = false;   ///< m_trace is a Simulate grid.
-  double m_phase = 0.0;  ///< Fraction of a frame the animation has moved on.
+  bool m_grid = false;       ///< m_trace is a Simulate grid.
+  double m_phase = 0.0;      ///< Fraction of a frame the animation has moved on.
+  double m_lineScale = 1.0;  ///< Ray width factor (presentation mode).
   int m_frame = 0;
   int m_selected = -1;
   QString m_status;

@@ -1,8 +1,10 @@
 #include "WindowCommand.h"
 
 #include "ExitCodes.h"
+#include "Language.h"
 #include "MainWindow.h"
 #include "RayTreePanel.h"
+#include "RenderPanel.h"
 #include "SceneDocument.h"
 #include "SceneSource.h"
 #include "TraceCommand.h"
@@ -16,7 +18,9 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <string>
 
 namespace raylab::app {
@@ -55,17 +59,21 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication application(argc, argv);
   QApplication::setApplicationName(QStringLiteral("RayLab"));
-  MainWindow window(scene);
+  if (!installLanguage(chooseLanguage(QString::fromStdString(options.language))))
+    std::cerr << "raylab: warning: the Chinese translation was not found in "
+              << translationFolders().join(QStringLiteral(", ")).toStdString()
+              << "; the window stays in English" << std::endl;
+  auto window = std::make_unique<MainWindow>(scene);
   if (!options.scene.empty())
-    window.adoptScene(scene, QString::fromStdString(options.scene));
+    window->adoptScene(scene, QString::fromStdString(options.scene));
   else
-    window.startUp();  // the scene open last time, or the default (the status bar says)
-  window.selectObject(
-      options.select.empty() ? selected : window.document().scene().findObject(options.select));
-  window.show();
+    window->startUp();  // the scene open last time, or the default (the status bar says)
+  window->selectObject(
+      options.select.empty() ? selected : window->document().scene().findObject(options.select));
+  window->show();
 
   // The ray-tree panel: algorithm, and a pixel traced, animated and inspected.
-  RayTreePanel& panel = *window.rayTreePanel();
+  RayTreePanel& panel = *window->rayTreePanel();
   if (options.algorithm) panel.setAlgorithm(*options.algorithm);
   if (options.simulate) {
     panel.acrossBox()->setValue(options.simulate->first);
@@ -87,14 +95,67 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     }
   }
 
-  // Step 3: for tests, leave by ourselves once the window has been shown and painted.
+  if (options.presentation) window->setPresentationMode(true);
+  RenderPanel& render = *window->renderPanel();
+  if (options.render) {
+    if (options.algorithm) render.setAlgorithm(*options.algorithm);
+    if (options.renderSamples) render.setSamplesPerPixel(*options.renderSamples);
+    window->showImageTab(&render);
+    render.render();
+  }
+
+  // View > Language: the window is built again in the new language, on the same document
+  // (file, edits, undo history), with the same layout, algorithm and traced pixel.
+  std::function<void(const QString&)> switchLanguage;
+  const auto listen = [&application, &switchLanguage](MainWindow& w) {
+    QObject::connect(
+        &w, &MainWindow::languageRequested, &application,
+        [&switchLanguage](const QString& language) { switchLanguage(language); },
+        Qt::QueuedConnection);  // after the menu's slot has returned
+  };
+  listen(*window);
+  switchLanguage = [&window, &listen](const QString& language) {
+    installLanguage(language);
+    window->saveLayout();
+    const RayTreePanel& before = *window->rayTreePanel();
+    const bool traced = !before.tree().segments.empty() && !before.showsGrid();
+    const int x = before.pixelXBox()->value(), y = before.pixelYBox()->value();
+    const int sample = before.sampleBox()->value(), frame = before.frame();
+    const bool presenting = window->presentationMode();
+    const bool rendered = window->renderPanel()->hasImage();
+    const int spp = window->renderPanel()->samplesPerPixel();
+    auto next = std::make_unique<MainWindow>(window->takeDocument());
+    next->selectObject(window->selectedObject());
+    next->rayTreePanel()->setAlgorithm(before.algorithm());
+    if (traced) {
+      next->rayTreePanel()->setPixel(x, y);
+      next->rayTreePanel()->setSample(sample);
+      next->rayTreePanel()->trace();
+      next->rayTreePanel()->setFrame(frame);
+    }
+    next->renderPanel()->setAlgorithm(window->renderPanel()->algorithm());
+    next->renderPanel()->setSamplesPerPixel(spp);
+    next->show();
+    if (presenting) next->setPresentationMode(true);
+    if (rendered) {
+      next->showImageTab(next->renderPanel());
+      next->renderPanel()->render();
+    }
+    window->hide();
+    window.release()->deleteLater();
+    window = std::move(next);
+    listen(*window);
+  };
+
+  // Step 3: for tests, leave by ourselves once the window has been shown and painted (and
+  // the image rendered, with --render).
   int exitCode = kExitOk;
   const bool leaves = options.quitAfterMs >= 0 || !options.screenshot.empty();
   if (leaves) {
     const int delay = options.quitAfterMs >= 0 ? options.quitAfterMs : kScreenshotDelayMs;
-    QTimer::singleShot(delay, &window, [&window, &options, &exitCode] {
+    const auto leave = [&window, &options, &exitCode] {
       if (!options.screenshot.empty()) {
-        if (window.saveScreenshot(QString::fromStdString(options.screenshot))) {
+        if (window->saveScreenshot(QString::fromStdString(options.screenshot))) {
           std::cout << options.screenshot << std::endl;
         } else {
           std::cerr << "raylab: error: " << options.screenshot
@@ -102,8 +163,15 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
           exitCode = kExitRuntimeError;
         }
       }
-      window.close();
-    });
+      window->close();
+    };
+    const auto afterDelay = [&application, delay, leave] {
+      QTimer::singleShot(delay, &application, leave);
+    };
+    if (options.render)
+      QObject::connect(&render, &RenderPanel::renderEnded, &application, afterDelay);
+    else
+      afterDelay();
   }
   const int qtCode = QApplication::exec();
   return exitCode != kExitOk ? exitCode : (qtCode == 0 ? kExitOk : kExitRuntimeError);

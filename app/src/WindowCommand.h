@@ -20,6 +20,10 @@ struct WindowOptions {
   std::optional<int> frame;                     ///< With trace: show this animation frame.
   std::optional<int> ray;                       ///< With trace: inspect this ray.
   std::optional<std::pair<int, int>> simulate;  ///< Simulate this grid (across, down).
+  std::string language;              ///< "en" or "zh"; empty: the last chosen, else the system's.
+  bool render = false;               ///< Render the image at start (a screenshot waits for it).
+  std::optional<int> renderSamples;  ///< With render: samples per pixel (else the scene's).
+  bool presentation = false;         ///< Start in presentation mode.
 };
 
 /**

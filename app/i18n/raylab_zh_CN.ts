@@ -1,0 +1,1387 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="zh_CN">
+<context>
+    <name>QObject</name>
+    <message>
+        <source>R %1  G %2  B %3 (sRGB %4, %5, %6)</source>
+        <translation>R %1  G %2  B %3 (sRGB %4, %5, %6)</translation>
+    </message>
+</context>
+<context>
+    <name>UiWords</name>
+    <message>
+        <source>0 rays</source>
+        <translation>0 条光线</translation>
+    </message>
+    <message>
+        <source>1 ray (#%1)</source>
+        <translation>1 条光线（#%1）</translation>
+    </message>
+    <message>
+        <source>%1 rays (#%2..#%3)</source>
+        <translation>%1 条光线（#%2..#%3）</translation>
+    </message>
+    <message>
+        <source>Ray casting (Appel 1968)</source>
+        <translation>光线投射（Appel 1968）</translation>
+    </message>
+    <message>
+        <source>Whitted ray tracing (1979)</source>
+        <translation>Whitted 光线追踪（1979）</translation>
+    </message>
+    <message>
+        <source>Distributed ray tracing (Cook 1984)</source>
+        <translation>分布式光线追踪（Cook 1984）</translation>
+    </message>
+    <message>
+        <source>Path tracing (Kajiya 1986)</source>
+        <translation>路径追踪（Kajiya 1986）</translation>
+    </message>
+    <message>
+        <source>camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>reflection</source>
+        <translation>反射</translation>
+    </message>
+    <message>
+        <source>refraction</source>
+        <translation>折射</translation>
+    </message>
+    <message>
+        <source>diffuse</source>
+        <translation>漫反射</translation>
+    </message>
+    <message>
+        <source>glossy</source>
+        <translation>光泽反射</translation>
+    </message>
+    <message>
+        <source>shadow</source>
+        <translation>阴影</translation>
+    </message>
+    <message>
+        <source>pending</source>
+        <translation>等待中</translation>
+    </message>
+    <message>
+        <source>escaped</source>
+        <translation>逃逸出场景</translation>
+    </message>
+    <message>
+        <source>hit a light</source>
+        <translation>击中光源</translation>
+    </message>
+    <message>
+        <source>max depth</source>
+        <translation>达到最大深度</translation>
+    </message>
+    <message>
+        <source>Russian roulette</source>
+        <translation>俄罗斯轮盘赌</translation>
+    </message>
+    <message>
+        <source>absorbed</source>
+        <translation>被吸收</translation>
+    </message>
+    <message>
+        <source>occluded</source>
+        <translation>被遮挡</translation>
+    </message>
+    <message>
+        <source>reached its light</source>
+        <translation>到达光源</translation>
+    </message>
+    <message>
+        <source>spawned children</source>
+        <translation>产生子光线</translation>
+    </message>
+    <message>
+        <source>%1 ray #%2</source>
+        <translation>%1光线 #%2</translation>
+    </message>
+    <message>
+        <source>%1 waits in the queue</source>
+        <translation>%1 在队列中等待</translation>
+    </message>
+    <message>
+        <source>%1 escaped the scene: it gets the background radiance</source>
+        <translation>%1 逃逸出场景：取背景的辐射亮度</translation>
+    </message>
+    <message>
+        <source>%1 hit the light &apos;%2&apos;: the path ends there</source>
+        <translation>%1 击中光源“%2”：路径到此结束</translation>
+    </message>
+    <message>
+        <source>%1 hit a light: the path ends there</source>
+        <translation>%1 击中光源：路径到此结束</translation>
+    </message>
+    <message>
+        <source>%1 hit &apos;%2&apos; and reached the maximum depth: the path ends there</source>
+        <translation>%1 击中“%2”，已达到最大深度：路径到此结束</translation>
+    </message>
+    <message>
+        <source>%1 reached the maximum depth: the path ends there</source>
+        <translation>%1 已达到最大深度：路径到此结束</translation>
+    </message>
+    <message>
+        <source>%1 hit &apos;%2&apos; and was stopped by Russian roulette</source>
+        <translation>%1 击中“%2”，被俄罗斯轮盘赌终止</translation>
+    </message>
+    <message>
+        <source>%1 was stopped by Russian roulette</source>
+        <translation>%1 被俄罗斯轮盘赌终止</translation>
+    </message>
+    <message>
+        <source>%1 hit &apos;%2&apos; and was absorbed: the material scatters nothing here</source>
+        <translation>%1 击中“%2”后被吸收：该材质在此处不散射任何光</translation>
+    </message>
+    <message>
+        <source>%1 was absorbed: the material scatters nothing here</source>
+        <translation>%1 被吸收：该材质在此处不散射任何光</translation>
+    </message>
+    <message>
+        <source>%1 was blocked by &apos;%2&apos; before reaching its light</source>
+        <translation>%1 在到达光源之前被“%2”遮挡</translation>
+    </message>
+    <message>
+        <source>%1 was blocked before reaching its light</source>
+        <translation>%1 在到达光源之前被遮挡</translation>
+    </message>
+    <message>
+        <source>%1 reached its light unblocked and delivers its radiance</source>
+        <translation>%1 未受遮挡，到达光源并带回光源的辐射亮度</translation>
+    </message>
+    <message>
+        <source>%1 hit &apos;%2&apos; and spawned %3</source>
+        <translation>%1 击中“%2”，产生 %3</translation>
+    </message>
+    <message>
+        <source>%1 spawned %2</source>
+        <translation>%1 产生 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>kind count</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>1 ray (%1), depth %2, estimate %3</source>
+        <translation>1 条光线（%1），深度 %2，估计值 %3</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>、</translation>
+    </message>
+    <message>
+        <source>%1 rays (%2), depth %3, estimate %4</source>
+        <translation>%1 条光线（%2），深度 %3，估计值 %4</translation>
+    </message>
+    <message>
+        <source>No ray tree yet.</source>
+        <translation>还没有光线树。</translation>
+    </message>
+    <message>
+        <source>Frame 0: nothing revealed yet. Press Play or Step.</source>
+        <translation>第 0 帧：还没有显示任何光线。请按“播放”或“下一步”。</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2: %3.</source>
+        <translation>第 %1 步（共 %2 步）：%3。</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2: rays #%3..#%4; first: %5.</source>
+        <translation>第 %1 步（共 %2 步）：光线 #%3..#%4；其中第一条：%5。</translation>
+    </message>
+    <message>
+        <source>Depth %1 of %2: 1 ray travels (%3).</source>
+        <translation>深度 %1（最大 %2）：1 条光线正在传播（%3）。</translation>
+    </message>
+    <message>
+        <source>Depth %1 of %2: %3 rays travel (%4).</source>
+        <translation>深度 %1（最大 %2）：%3 条光线正在传播（%4）。</translation>
+    </message>
+    <message>
+        <source> The whole tree is shown.</source>
+        <translation>整棵光线树已全部显示。</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>count kind</comment>
+        <translation>%1 条%2光线</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::EditPanel</name>
+    <message>
+        <source>Rotate about its centre</source>
+        <translation>绕中心旋转</translation>
+    </message>
+    <message>
+        <source>Angle, degrees (counter-clockwise about the axis)</source>
+        <translation>角度，单位为度（绕旋转轴逆时针方向）</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>旋转轴</translation>
+    </message>
+    <message>
+        <source>Rotation axis</source>
+        <translation>旋转轴</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>旋转</translation>
+    </message>
+    <message>
+        <source>Turn the selected object by the angle about the axis through its centre</source>
+        <translation>将选中的物体绕过其中心的旋转轴转过指定角度</translation>
+    </message>
+    <message>
+        <source>Move and scale</source>
+        <translation>平移与缩放</translation>
+    </message>
+    <message>
+        <source>Offset</source>
+        <translation>偏移量</translation>
+    </message>
+    <message>
+        <source>Move by, world units</source>
+        <translation>平移距离，单位为世界坐标单位</translation>
+    </message>
+    <message>
+        <source>Move</source>
+        <translation>平移</translation>
+    </message>
+    <message>
+        <source>Move the selected object by the offset</source>
+        <translation>将选中的物体按偏移量平移</translation>
+    </message>
+    <message>
+        <source>Scale factor, the same along every axis</source>
+        <translation>缩放因子，各坐标轴相同</translation>
+    </message>
+    <message>
+        <source>Scale</source>
+        <translation>缩放</translation>
+    </message>
+    <message>
+        <source>Scale the selected object about its centre</source>
+        <translation>以中心为基准缩放选中的物体</translation>
+    </message>
+    <message>
+        <source>Uniform</source>
+        <translation>等比</translation>
+    </message>
+    <message>
+        <source>Per axis</source>
+        <translation>逐轴</translation>
+    </message>
+    <message>
+        <source>Scale factor</source>
+        <translation>缩放因子</translation>
+    </message>
+    <message>
+        <source>Scale per axis</source>
+        <translation>逐轴缩放</translation>
+    </message>
+    <message>
+        <source>Scale the selected object about its centre, axis by axis</source>
+        <translation>以中心为基准，沿各坐标轴分别缩放选中的物体</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>物体</translation>
+    </message>
+    <message>
+        <source>A new name for the selected object (names are unique)</source>
+        <translation>选中物体的新名称（名称不能重复）</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>重命名</translation>
+    </message>
+    <message>
+        <source>Give the selected object the name typed</source>
+        <translation>把输入的名称赋给选中的物体</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Copy the selected object, moved a little so both can be seen</source>
+        <translation>复制选中的物体，并把副本稍稍移开，使两者都能看见</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Delete the selected object (Del)</source>
+        <translation>删除选中的物体（Del）</translation>
+    </message>
+    <message>
+        <source>Selected: %1</source>
+        <translation>已选中：%1</translation>
+    </message>
+    <message>
+        <source>Select an object in the list or click it in the 3D view.</source>
+        <translation>请在列表中选择一个物体，或在三维视图中单击它。</translation>
+    </message>
+    <message>
+        <source>Rotate %1 %2° about %3</source>
+        <translation>将“%1”绕 %3 轴旋转 %2°</translation>
+    </message>
+    <message>
+        <source>Move %1 by (%2, %3, %4)</source>
+        <translation>将“%1”平移 (%2, %3, %4)</translation>
+    </message>
+    <message>
+        <source>Scale %1 by %2</source>
+        <translation>将“%1”缩放 %2 倍</translation>
+    </message>
+    <message>
+        <source>Scale %1 by (%2, %3, %4)</source>
+        <translation>将“%1”按 (%2, %3, %4) 缩放</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>删除“%1”</translation>
+    </message>
+    <message>
+        <source>Duplicate %1</source>
+        <translation>复制“%1”</translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>将“%1”重命名为“%2”</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::ImageView</name>
+    <message>
+        <source>Click a pixel to trace its ray tree in the 3D view; Ctrl+wheel zooms</source>
+        <translation>单击一个像素，在三维视图中追踪它的光线树；Ctrl+滚轮缩放图像</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::InspectorPanel</name>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Ray number in processing order (0 = the camera ray)</source>
+        <translation>按处理顺序排列的光线编号（0 为相机光线）</translation>
+    </message>
+    <message>
+        <source>Parent</source>
+        <translation>父光线</translation>
+    </message>
+    <message>
+        <source>Inspect the ray that spawned this one</source>
+        <translation>查看产生这条光线的父光线</translation>
+    </message>
+    <message>
+        <source>First child</source>
+        <translation>第一条子光线</translation>
+    </message>
+    <message>
+        <source>Inspect the first ray this one spawned</source>
+        <translation>查看这条光线产生的第一条子光线</translation>
+    </message>
+    <message>
+        <source>Ray #</source>
+        <translation>光线 #</translation>
+    </message>
+    <message>
+        <source>No ray tree yet: choose a pixel in the Ray tree tab and press Trace.</source>
+        <translation>还没有光线树：请在“光线树”选项卡中选择一个像素，然后按“追踪”。</translation>
+    </message>
+    <message>
+        <source>Click a ray in the 3D view, or choose its number above, to see its origin, direction, hit, material, weight, pdf and energy, and the exact oracle&apos;s check of its hit beside double precision.</source>
+        <translation>在三维视图中单击一条光线，或在上方选择它的编号，即可查看它的起点、方向、交点、材质、权重、概率密度（pdf）和能量，以及精确判定器对该交点的检验与双精度结果的对照。</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::MainWindow</name>
+    <message>
+        <source>Image</source>
+        <translation>图像</translation>
+    </message>
+    <message>
+        <source>The scene&apos;s objects: select one to edit it (Esc: none)</source>
+        <translation>场景中的物体：选中一个即可编辑（Esc：取消选择）</translation>
+    </message>
+    <message>
+        <source>Objects</source>
+        <translation>物体</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>编辑</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>属性</translation>
+    </message>
+    <message>
+        <source>Edit refused</source>
+        <translation>无法编辑</translation>
+    </message>
+    <message>
+        <source>Value refused</source>
+        <translation>无法接受该值</translation>
+    </message>
+    <message>
+        <source>Ray tree</source>
+        <translation>光线树</translation>
+    </message>
+    <message>
+        <source>Ray inspector</source>
+        <translation>光线检查器</translation>
+    </message>
+    <message>
+        <source>Drag to rotate, wheel to zoom, click an object to select it; trace a pixel on the right</source>
+        <translation>拖动旋转，滚轮缩放，单击物体将其选中；在右侧追踪一个像素</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Start again from the built-in default scene</source>
+        <translation>从内置的默认场景重新开始</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open a scene file (.json)</source>
+        <translation>打开场景文件（.json）</translation>
+    </message>
+    <message>
+        <source>Open a scene</source>
+        <translation>打开场景</translation>
+    </message>
+    <message>
+        <source>RayLab scenes (*.json)</source>
+        <translation>RayLab 场景 (*.json)</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>最近打开(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save the scene to its file</source>
+        <translation>将场景保存到其文件</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save the scene to another file</source>
+        <translation>将场景保存到另一个文件</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>还原(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Read the scene&apos;s file again, dropping every edit</source>
+        <translation>重新读取场景文件，放弃所有编辑</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>Close RayLab</source>
+        <translation>关闭 RayLab</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>编辑(&amp;E)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>撤销(&amp;U)</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>重做(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>删除(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Delete the selected object</source>
+        <translation>删除选中的物体</translation>
+    </message>
+    <message>
+        <source>Copy the selected object</source>
+        <translation>复制选中的物体</translation>
+    </message>
+    <message>
+        <source>Clear the selection</source>
+        <translation>取消选择</translation>
+    </message>
+    <message>
+        <source>Select no object</source>
+        <translation>不选中任何物体</translation>
+    </message>
+    <message>
+        <source>&amp;Add</source>
+        <translation>添加(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Sphere</source>
+        <translation>球体</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>长方体</translation>
+    </message>
+    <message>
+        <source>Plane</source>
+        <translation>平面</translation>
+    </message>
+    <message>
+        <source>Quad</source>
+        <translation>四边形</translation>
+    </message>
+    <message>
+        <source>Triangle</source>
+        <translation>三角形</translation>
+    </message>
+    <message>
+        <source>Add a %1 where the camera looks</source>
+        <translation>在相机注视的位置添加一个%1</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>添加%1</translation>
+    </message>
+    <message>
+        <source>Mesh from a file…</source>
+        <translation>从文件导入网格…</translation>
+    </message>
+    <message>
+        <source>Add a mesh (OBJ, PLY, OFF, STL)</source>
+        <translation>添加网格（OBJ、PLY、OFF、STL）</translation>
+    </message>
+    <message>
+        <source>Add a mesh</source>
+        <translation>添加网格</translation>
+    </message>
+    <message>
+        <source>Meshes (*.obj *.ply *.off *.stl)</source>
+        <translation>网格 (*.obj *.ply *.off *.stl)</translation>
+    </message>
+    <message>
+        <source>Add mesh %1</source>
+        <translation>添加网格 %1</translation>
+    </message>
+    <message>
+        <source>Point light</source>
+        <translation>点光源</translation>
+    </message>
+    <message>
+        <source>Add a point light above where the camera looks</source>
+        <translation>在相机注视位置的上方添加一个点光源</translation>
+    </message>
+    <message>
+        <source>Add point light</source>
+        <translation>添加点光源</translation>
+    </message>
+    <message>
+        <source>&amp;Render</source>
+        <translation>渲染(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Render image</source>
+        <translation>渲染图像(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Render the scene camera&apos;s image with the chosen algorithm, pass by pass</source>
+        <translation>用所选算法逐遍渲染场景相机看到的图像</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel render</source>
+        <translation>取消渲染(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Stop the render; the passes finished so far stay</source>
+        <translation>停止渲染；已完成的各遍结果会保留</translation>
+    </message>
+    <message>
+        <source>&amp;Save image…</source>
+        <translation>保存图像(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save the rendered image (PNG or PFM)</source>
+        <translation>保存渲染出的图像（PNG 或 PFM）</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in</source>
+        <translation>放大(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Zoom into the image: pixels become squares</source>
+        <translation>放大图像：像素显示为小方块</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out</source>
+        <translation>缩小(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Zoom out of the image</source>
+        <translation>缩小图像</translation>
+    </message>
+    <message>
+        <source>&amp;Fit the image</source>
+        <translation>适应窗口(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Show the whole image</source>
+        <translation>显示整幅图像</translation>
+    </message>
+    <message>
+        <source>&amp;Animation</source>
+        <translation>动画(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Play / pause</source>
+        <translation>播放/暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Play the bounce animation, or pause it</source>
+        <translation>播放光线弹射动画，或将其暂停</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>下一步(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Show the next step of the ray tree</source>
+        <translation>显示光线树的下一步</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>上一步(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Go back to the previous step</source>
+        <translation>回到上一步</translation>
+    </message>
+    <message>
+        <source>F&amp;irst frame</source>
+        <translation>第一帧(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Back to the start: no ray drawn yet</source>
+        <translation>回到开头：尚未画出任何光线</translation>
+    </message>
+    <message>
+        <source>&amp;Last frame</source>
+        <translation>最后一帧(&amp;L)</translation>
+    </message>
+    <message>
+        <source>The whole tree</source>
+        <translation>整棵光线树</translation>
+    </message>
+    <message>
+        <source>F&amp;aster</source>
+        <translation>加快(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Play the animation twice as fast</source>
+        <translation>以两倍速度播放动画</translation>
+    </message>
+    <message>
+        <source>Play the animation half as fast</source>
+        <translation>以一半速度播放动画</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Presentation mode</source>
+        <translation>演示模式(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Full screen, large fonts and thick rays, for the back of a classroom (F11 again to leave)</source>
+        <translation>全屏、大字体、粗光线，教室后排也能看清（再按 F11 退出）</translation>
+    </message>
+    <message>
+        <source>&amp;Image beside the 3D view</source>
+        <translation>在三维视图旁显示图像(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Show or hide the rendered image and the comparison</source>
+        <translation>显示或隐藏渲染图像和对比图</translation>
+    </message>
+    <message>
+        <source>&amp;Reset view</source>
+        <translation>重置视图(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Look at the whole scene again</source>
+        <translation>重新看到整个场景</translation>
+    </message>
+    <message>
+        <source>Show or hide the %1 panel</source>
+        <translation>显示或隐藏“%1”面板</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Show the window in this language</source>
+        <translation>以这种语言显示窗口</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Every shortcut and mouse gesture of the window</source>
+        <translation>本窗口的全部快捷键和鼠标操作</translation>
+    </message>
+    <message>
+        <source>Presentation mode: F11 leaves it; Space plays the animation, Left and Right step it</source>
+        <translation>演示模式：按 F11 退出；空格键播放动画，左、右方向键逐步后退、前进</translation>
+    </message>
+    <message>
+        <source>Presentation mode off</source>
+        <translation>已退出演示模式</translation>
+    </message>
+    <message>
+        <source>3D view</source>
+        <translation>三维视图</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>拖动</translation>
+    </message>
+    <message>
+        <source>Rotate the view around the scene</source>
+        <translation>绕场景旋转视图</translation>
+    </message>
+    <message>
+        <source>Wheel</source>
+        <translation>滚轮</translation>
+    </message>
+    <message>
+        <source>Zoom in and out</source>
+        <translation>放大和缩小</translation>
+    </message>
+    <message>
+        <source>Click</source>
+        <translation>单击</translation>
+    </message>
+    <message>
+        <source>Select the ray or the object under the cursor</source>
+        <translation>选中光标下的光线或物体</translation>
+    </message>
+    <message>
+        <source>Trace that pixel&apos;s ray tree in the 3D view</source>
+        <translation>在三维视图中追踪该像素的光线树</translation>
+    </message>
+    <message>
+        <source>Ctrl+Wheel</source>
+        <translation>Ctrl+滚轮</translation>
+    </message>
+    <message>
+        <source>Zoom the image (pixels stay square)</source>
+        <translation>缩放图像（像素保持方形）</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>What it does</source>
+        <translation>作用</translation>
+    </message>
+    <message>
+        <source>Pixel (%1, %2) traced with %3: its ray tree is in the 3D view</source>
+        <translation>已追踪像素 (%1, %2)，算法：%3；它的光线树显示在三维视图中</translation>
+    </message>
+    <message>
+        <source>Cannot save the image</source>
+        <translation>无法保存图像</translation>
+    </message>
+    <message>
+        <source>There is no image to save yet: press Render first.</source>
+        <translation>还没有可保存的图像：请先按“渲染”。</translation>
+    </message>
+    <message>
+        <source>Save the image</source>
+        <translation>保存图像</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;PFM, linear radiance (*.pfm)</source>
+        <translation>PNG 图像 (*.png);;PFM 线性辐射亮度 (*.pfm)</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>Cannot add</source>
+        <translation>无法添加</translation>
+    </message>
+    <message>
+        <source>Ray #%1 selected: see the Ray inspector tab</source>
+        <translation>已选中光线 #%1：请查看“光线检查器”选项卡</translation>
+    </message>
+    <message>
+        <source>Nothing under the cursor</source>
+        <translation>光标下没有任何东西</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>The scene has changes that are not saved. Save them?</source>
+        <translation>场景有尚未保存的更改。要保存吗？</translation>
+    </message>
+    <message>
+        <source>Cannot open the scene</source>
+        <translation>无法打开场景</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Cannot save the scene</source>
+        <translation>无法保存场景</translation>
+    </message>
+    <message>
+        <source>Save the scene</source>
+        <translation>保存场景</translation>
+    </message>
+    <message>
+        <source>The built-in default scene</source>
+        <translation>内置的默认场景</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>还原</translation>
+    </message>
+    <message>
+        <source>Drop every change since the file was saved?</source>
+        <translation>放弃自上次保存文件以来的所有更改吗？</translation>
+    </message>
+    <message>
+        <source>Cannot read the scene again</source>
+        <translation>无法重新读取场景</translation>
+    </message>
+    <message>
+        <source>The built-in default scene (no scene was open last time)</source>
+        <translation>内置的默认场景（上次没有打开场景）</translation>
+    </message>
+    <message>
+        <source>Opened %1, the scene open last time</source>
+        <translation>已打开上次打开的场景 %1</translation>
+    </message>
+    <message>
+        <source>The built-in default scene: the scene open last time could not be read (%1)</source>
+        <translation>内置的默认场景：无法读取上次打开的场景（%1）</translation>
+    </message>
+    <message>
+        <source>Du&amp;plicate</source>
+        <translation>复制(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Slo&amp;wer</source>
+        <translation>减速(&amp;W)</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::PropertiesPanel</name>
+    <message>
+        <source>Shape of %1</source>
+        <translation>“%1”的形状</translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation>材质</translation>
+    </message>
+    <message>
+        <source>The material this object is made of (shared with other objects)</source>
+        <translation>这个物体所用的材质（与其他物体共用）</translation>
+    </message>
+    <message>
+        <source>Use material %1</source>
+        <translation>使用材质“%1”</translation>
+    </message>
+    <message>
+        <source>uses</source>
+        <translation>使用</translation>
+    </message>
+    <message>
+        <source>Material %1</source>
+        <translation>材质“%1”</translation>
+    </message>
+    <message>
+        <source>Motion over the shutter</source>
+        <translation>快门期间的运动</translation>
+    </message>
+    <message>
+        <source>Velocity, world units over the shutter interval (motion blur)</source>
+        <translation>速度，即快门时间段内移动的世界坐标单位数（运动模糊）</translation>
+    </message>
+    <message>
+        <source>Set velocity</source>
+        <translation>设置速度</translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>相机</translation>
+    </message>
+    <message>
+        <source>Render settings</source>
+        <translation>渲染设置</translation>
+    </message>
+    <message>
+        <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong)</source>
+        <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）</translation>
+    </message>
+    <message>
+        <source>…</source>
+        <translation>…</translation>
+    </message>
+    <message>
+        <source>Choose the colour</source>
+        <translation>选择颜色</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>颜色</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2</source>
+        <translation>设置 %1（%2）</translation>
+    </message>
+    <message>
+        <source>%1 (%2 in the scene file)</source>
+        <translation>%1（场景文件中的 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::RayTreePanel</name>
+    <message>
+        <source>Choose a pixel and press Trace to record its ray tree.</source>
+        <translation>选择一个像素，然后按“追踪”记录它的光线树。</translation>
+    </message>
+    <message>
+        <source>Trace a pixel</source>
+        <translation>追踪一个像素</translation>
+    </message>
+    <message>
+        <source>Ray casting: camera ray, local shading, shadow rays.
+Whitted: + perfect reflection and refraction, recursively.
+Distributed: many rays per bounce (soft shadows, gloss).
+Path tracing: one sampled continuation per bounce, Russian roulette.</source>
+        <translation>光线投射：相机光线、局部光照、阴影光线。
+Whitted：再加上理想反射和折射，递归追踪。
+分布式：每次弹射发出多条光线（软阴影、光泽反射）。
+路径追踪：每次弹射只采样一条延续光线，并用俄罗斯轮盘赌终止。</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>算法</translation>
+    </message>
+    <message>
+        <source>Pixel column, 0 at the left (the film is %1 x %2)</source>
+        <translation>像素的列号，最左列为 0（图像为 %1 × %2 像素）</translation>
+    </message>
+    <message>
+        <source>Pixel row, 0 at the top</source>
+        <translation>像素的行号，最上行为 0</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>Pixel</source>
+        <translation>像素</translation>
+    </message>
+    <message>
+        <source>Which of the pixel&apos;s %1 samples (each has its own random numbers)</source>
+        <translation>该像素 %1 个样本中的第几个（每个样本使用各自的随机数）</translation>
+    </message>
+    <message>
+        <source>Sample</source>
+        <translation>样本</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>追踪</translation>
+    </message>
+    <message>
+        <source>Record this pixel sample&apos;s ray tree and show it in the view</source>
+        <translation>记录这个像素样本的光线树，并在视图中显示</translation>
+    </message>
+    <message>
+        <source>Rays across the image (the original program&apos;s 光线横向数量)</source>
+        <translation>图像横向的光线数（对应原课程程序“光线横纵数量”中的横向数量）</translation>
+    </message>
+    <message>
+        <source>Rays down the image (光线纵向数量)</source>
+        <translation>图像纵向的光线数（对应原课程程序“光线横纵数量”中的纵向数量）</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>仿真</translation>
+    </message>
+    <message>
+        <source>Trace a grid of camera rays spread evenly over the image and draw all their ray trees, coloured by energy (1 x 1: the centre pixel)</source>
+        <translation>追踪在图像上均匀分布的一组相机光线，并画出它们的全部光线树，按能量着色（1 × 1 时为中心像素）</translation>
+    </message>
+    <message>
+        <source>across</source>
+        <translation>横向</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>纵向</translation>
+    </message>
+    <message>
+        <source>Rays</source>
+        <translation>光线</translation>
+    </message>
+    <message>
+        <source>Colours and filters</source>
+        <translation>着色与筛选</translation>
+    </message>
+    <message>
+        <source>Energy (grey, green, blue)</source>
+        <translation>能量（灰、绿、蓝）</translation>
+    </message>
+    <message>
+        <source>Ray kind</source>
+        <translation>光线类型</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>Energy: the share of the pixel&apos;s light that came back along the ray
+(light grey = none, green = some, blue = most).</source>
+        <translation>能量：像素接收的光中沿这条光线传回的份额
+（浅灰 = 没有，绿 = 一部分，蓝 = 大部分）。</translation>
+    </message>
+    <message>
+        <source>Colour by</source>
+        <translation>着色依据</translation>
+    </message>
+    <message>
+        <source>Draw %1 rays</source>
+        <translation>绘制%1光线</translation>
+    </message>
+    <message>
+        <source>Kinds</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <source>Hide rays deeper than this (camera rays have depth 0)</source>
+        <translation>隐藏深度大于此值的光线（相机光线的深度为 0）</translation>
+    </message>
+    <message>
+        <source>Max depth</source>
+        <translation>最大深度</translation>
+    </message>
+    <message>
+        <source>Hide rays that carry less energy than this</source>
+        <translation>隐藏携带能量小于此值的光线</translation>
+    </message>
+    <message>
+        <source>Min energy</source>
+        <translation>最小能量</translation>
+    </message>
+    <message>
+        <source>Only paths that reached a light</source>
+        <translation>只显示到达光源的路径</translation>
+    </message>
+    <message>
+        <source>Hide rays whose subtree found no light</source>
+        <translation>隐藏子树中没有找到光源的光线</translation>
+    </message>
+    <message>
+        <source>Hit points</source>
+        <translation>交点</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>法线</translation>
+    </message>
+    <message>
+        <source>Arrows</source>
+        <translation>箭头</translation>
+    </message>
+    <message>
+        <source>Legend</source>
+        <translation>图例</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>显示</translation>
+    </message>
+    <message>
+        <source>Bounce animation</source>
+        <translation>弹射动画</translation>
+    </message>
+    <message>
+        <source>Depth by depth</source>
+        <translation>按深度逐层</translation>
+    </message>
+    <message>
+        <source>Processing order</source>
+        <translation>按处理顺序</translation>
+    </message>
+    <message>
+        <source>Depth by depth: every ray of one depth travels at once.
+Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
+        <translation>按深度逐层：同一深度的所有光线同时传播。
+按处理顺序：按引擎队列取出光线的顺序，一条接一条地传播。</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>顺序</translation>
+    </message>
+    <message>
+        <source>Processing order: rays that start together in one step</source>
+        <translation>按处理顺序时：每一步同时出发的光线数</translation>
+    </message>
+    <message>
+        <source>Rays per step</source>
+        <translation>每步光线数</translation>
+    </message>
+    <message>
+        <source>How fast the rays travel: frames the animation moves on per tick (%1 ticks a second), from 1/8 to 16</source>
+        <translation>光线传播的快慢：动画每个节拍前进的帧数（每秒 %1 个节拍），范围为 1/8 到 16</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>上一步</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>下一步</translation>
+    </message>
+    <message>
+        <source>Play the bounces from where the animation stands</source>
+        <translation>从动画的当前位置开始播放光线弹射</translation>
+    </message>
+    <message>
+        <source>Stop at the current frame</source>
+        <translation>停在当前帧</translation>
+    </message>
+    <message>
+        <source>Back to the end of the previous step</source>
+        <translation>回到上一步的末尾</translation>
+    </message>
+    <message>
+        <source>On to the end of the next step</source>
+        <translation>前进到下一步的末尾</translation>
+    </message>
+    <message>
+        <source>Drag to any frame of the animation</source>
+        <translation>拖动到动画的任意一帧</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <source>%1: pixel (%2, %3), sample %4
+%5</source>
+        <translation>%1：像素 (%2, %3)，第 %4 号样本
+%5</translation>
+    </message>
+    <message>
+        <source>%1: Simulate %2 x %3, %4 pixels, %5 rays</source>
+        <translation>%1：仿真 %2 × %3，%4 个像素，%5 条光线</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>no tree yet</source>
+        <translation>尚无光线树</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::RenderPanel</name>
+    <message>
+        <source>The algorithm that renders the image</source>
+        <translation>渲染图像所用的算法</translation>
+    </message>
+    <message>
+        <source> spp</source>
+        <translation> spp</translation>
+    </message>
+    <message>
+        <source>Samples per pixel the render stops at; the image refines pass by pass (1, 2, 4, 8, … samples)</source>
+        <translation>渲染到此每像素采样数时停止；图像逐遍细化（每像素 1、2、4、8、… 个采样）</translation>
+    </message>
+    <message>
+        <source>Render</source>
+        <translation>渲染</translation>
+    </message>
+    <message>
+        <source>Render the scene camera&apos;s image (F5). Rendering again while a render runs cancels it and starts over: two renders never run at once.</source>
+        <translation>渲染场景相机看到的图像（F5）。渲染进行时再次渲染，会取消当前渲染并重新开始：两个渲染不会同时运行。</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop the render; the passes finished so far stay</source>
+        <translation>停止渲染；已完成的各遍结果会保留</translation>
+    </message>
+    <message>
+        <source>Save image…</source>
+        <translation>保存图像…</translation>
+    </message>
+    <message>
+        <source>Save the image as PNG (as shown) or PFM (linear radiance)</source>
+        <translation>将图像保存为 PNG（与显示一致）或 PFM（线性辐射亮度）</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>适应窗口</translation>
+    </message>
+    <message>
+        <source>Show the whole image</source>
+        <translation>显示整幅图像</translation>
+    </message>
+    <message>
+        <source>Zoom out (Ctrl+wheel)</source>
+        <translation>缩小（Ctrl+滚轮）</translation>
+    </message>
+    <message>
+        <source>Zoom in: pixels become squares (Ctrl+wheel)</source>
+        <translation>放大：像素显示为小方块（Ctrl+滚轮）</translation>
+    </message>
+    <message>
+        <source>Press Render (F5) to render the scene camera&apos;s image.
+Then click a pixel to see its ray tree.</source>
+        <translation>按“渲染”（F5）渲染场景相机看到的图像。
+然后单击一个像素，查看它的光线树。</translation>
+    </message>
+    <message>
+        <source>Point at a pixel to read its value</source>
+        <translation>将鼠标指向一个像素即可读出它的值</translation>
+    </message>
+    <message>
+        <source>Pixel (%1, %2): %3</source>
+        <translation>像素 (%1, %2)：%3</translation>
+    </message>
+    <message>
+        <source>Rendering with %1…</source>
+        <translation>正在渲染：%1…</translation>
+    </message>
+    <message>
+        <source>Rendering %1 × %2 with %3, %4 spp</source>
+        <translation>正在渲染 %1 × %2 的图像：%3，%4 spp</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>Rendering…</source>
+        <translation>正在渲染…</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>Render cancelled at %1 spp</source>
+        <translation>渲染已在 %1 spp 时取消</translation>
+    </message>
+    <message>
+        <source>Rendered in %1 s</source>
+        <translation>渲染完成，用时 %1 秒</translation>
+    </message>
+    <message>
+        <source>There is no image to save yet: press Render first.</source>
+        <translation>还没有可保存的图像：请先按“渲染”。</translation>
+    </message>
+    <message>
+        <source>%1 %2 / %3 spp · %4 s · %5 rays/s</source>
+        <translation>%1 %2 / %3 spp · %4 秒 · %5 条光线/秒</translation>
+    </message>
+</context>
+</TS>

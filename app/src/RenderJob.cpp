@@ -1,0 +1,117 @@
+#include "RenderJob.h"
+
+#include <QMetaObject>
+#include <QPointer>
+
+#include <atomic>
+#include <chrono>
+
+namespace raylab::app {
+
+RenderJob::RenderJob(QObject* parent) : QObject(parent) { qRegisterMetaType<RenderProgress>(); }
+
+RenderJob::~RenderJob() {
+  m_pending.reset();
+  if (m_worker) {
+    m_worker->renderer->cancel();
+    m_worker->thread.join();
+  }
+}
+
+void RenderJob::start(std::shared_ptr<const Scene> scene, const RenderSettings& settings,
+                      int threads) {
+  Request request{std::move(scene), settings, threads};
+  if (m_worker) {
+    // One render at a time: stop the running one; this one starts when it has stopped.
+    m_worker->renderer->cancel();
+    m_pending = std::move(request);
+    return;
+  }
+  launch(std::move(request));
+}
+
+void RenderJob::cancel() {
+  m_pending.reset();
+  if (m_worker) m_worker->renderer->cancel();
+}
+
+namespace {
+std::atomic<int> g_running{0};  ///< Render threads running now, in every job.
+std::atomic<int> g_most{0};     ///< The most that ever ran at once.
+}  // namespace
+
+int RenderJob::mostAtOnce() { return g_most.load(); }
+
+void RenderJob::launch(Request request) {
+  const int generation = ++m_generation;
+  auto renderer = std::make_shared<Renderer>(*request.scene, request.settings);
+  renderer->setThreads(request.threads);
+  const int wanted = request.settings.samplesPerPixel;
+  const auto begin = std::chrono::steady_clock::now();
+  // The worker posts to this object through a QPointer-free queued call: the destructor
+  // joins the worker first, so `this` is alive whenever a call is posted.
+  auto post = [this, generation](const RenderProgress& progress, std::optional<bool> end) {
+    QMetaObject::invokeMethod(
+        this,
+        [this, generation, progress, end] {
+          if (end)
+            workerDone(generation, progress, *end);
+          else if (generation == m_generation && !m_pending)
+            emit passFinished(progress);
+        },
+        Qt::QueuedConnection);
+  };
+  Renderer* r = renderer.get();
+  renderer->setProgress([r, wanted, begin, post](double, const FloatImage& image) {
+    RenderProgress progress;
+    progress.image = std::make_shared<const FloatImage>(image);
+    progress.samplesPerPixel = r->stats().samplesPerPixel;
+    progress.samplesWanted = wanted;
+    progress.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    progress.rays = r->stats().rays.total();
+    post(progress, std::nullopt);
+  });
+  Worker worker;
+  worker.renderer = renderer;
+  worker.generation = generation;
+  worker.thread = std::thread([scene = request.scene, renderer, wanted, post] {
+    const int running = ++g_running;
+    for (int most = g_most.load();
+         running > most && !g_most.compare_exchange_weak(most, running);) {
+    }
+    RenderProgress last;
+    last.samplesWanted = wanted;
+    bool cancelled = true;
+    try {
+      FloatImage image = renderer->render();
+      const RenderStats& stats = renderer->stats();
+      last.samplesPerPixel = stats.samplesPerPixel;
+      last.seconds = stats.seconds;
+      last.rays = stats.rays.total();
+      if (stats.samplesPerPixel > 0) last.image = std::make_shared<const FloatImage>(image);
+      cancelled = stats.cancelled;
+    } catch (const std::exception&) {
+      // Renderer only throws for an empty image or spp < 1, which the loader refuses;
+      // report it as a render that produced nothing.
+    }
+    --g_running;
+    post(last, cancelled);
+  });
+  m_worker = std::move(worker);
+}
+
+void RenderJob::workerDone(int generation, const RenderProgress& last, bool cancelled) {
+  if (!m_worker || m_worker->generation != generation) return;
+  m_worker->thread.join();  // it has posted its last call: it ends at once
+  m_worker.reset();
+  if (m_pending) {
+    Request next = std::move(*m_pending);
+    m_pending.reset();
+    launch(std::move(next));
+    return;
+  }
+  emit finished(last, cancelled);
+}
+
+}  // namespace raylab::app

@@ -1,0 +1,235 @@
+#include "UiWords.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+#include <algorithm>
+#include <array>
+
+namespace raylab::app {
+
+namespace {
+
+/// The texts of this file are translated in the context "UiWords" (lupdate reads the
+/// QCoreApplication::translate calls).
+
+/// "2 rays (#5..#6)", "1 ray (#5)", "0 rays".
+QString children(const RaySegment& s) {
+  if (s.childCount <= 0) return QCoreApplication::translate("UiWords", "0 rays");
+  if (s.childCount == 1)
+    return QCoreApplication::translate("UiWords", "1 ray (#%1)").arg(s.firstChild);
+  return QCoreApplication::translate("UiWords", "%1 rays (#%2..#%3)")
+      .arg(s.childCount)
+      .arg(s.firstChild)
+      .arg(s.firstChild + s.childCount - 1);
+}
+
+}  // namespace
+
+QString algorithmLabel(Algorithm algorithm) {
+  switch (algorithm) {
+    case Algorithm::RayCasting:
+      return QCoreApplication::translate("UiWords", "Ray casting (Appel 1968)");
+    case Algorithm::Whitted:
+      return QCoreApplication::translate("UiWords", "Whitted ray tracing (1979)");
+    case Algorithm::Distributed:
+      return QCoreApplication::translate("UiWords", "Distributed ray tracing (Cook 1984)");
+    case Algorithm::PathTracing:
+      return QCoreApplication::translate("UiWords", "Path tracing (Kajiya 1986)");
+  }
+  return QStringLiteral("?");
+}
+
+QString rayKindWord(RayKind kind) {
+  switch (kind) {
+    case RayKind::Camera:
+      return QCoreApplication::translate("UiWords", "camera");
+    case RayKind::Reflection:
+      return QCoreApplication::translate("UiWords", "reflection");
+    case RayKind::Refraction:
+      return QCoreApplication::translate("UiWords", "refraction");
+    case RayKind::Diffuse:
+      return QCoreApplication::translate("UiWords", "diffuse");
+    case RayKind::Glossy:
+      return QCoreApplication::translate("UiWords", "glossy");
+    case RayKind::Shadow:
+      return QCoreApplication::translate("UiWords", "shadow");
+  }
+  return QStringLiteral("?");
+}
+
+QString endReasonLabel(EndReason reason) {
+  switch (reason) {
+    case EndReason::Pending:
+      return QCoreApplication::translate("UiWords", "pending");
+    case EndReason::Escaped:
+      return QCoreApplication::translate("UiWords", "escaped");
+    case EndReason::HitLight:
+      return QCoreApplication::translate("UiWords", "hit a light");
+    case EndReason::MaxDepth:
+      return QCoreApplication::translate("UiWords", "max depth");
+    case EndReason::RussianRoulette:
+      return QCoreApplication::translate("UiWords", "Russian roulette");
+    case EndReason::Absorbed:
+      return QCoreApplication::translate("UiWords", "absorbed");
+    case EndReason::Occluded:
+      return QCoreApplication::translate("UiWords", "occluded");
+    case EndReason::ReachedLight:
+      return QCoreApplication::translate("UiWords", "reached its light");
+    case EndReason::Spawned:
+      return QCoreApplication::translate("UiWords", "spawned children");
+  }
+  return QStringLiteral("?");
+}
+
+QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& objectNames) {
+  if (id < 0 || id >= int(tree.segments.size())) return {};
+  const RaySegment& s = tree.segments[std::size_t(id)];
+  const QString ray =
+      QCoreApplication::translate("UiWords", "%1 ray #%2").arg(rayKindWord(s.kind)).arg(id);
+  const bool named = s.object >= 0 && s.object < int(objectNames.size());
+  const QString object =
+      named ? QString::fromStdString(objectNames[std::size_t(s.object)]) : QString();
+  switch (s.endReason) {
+    case EndReason::Pending:
+      return QCoreApplication::translate("UiWords", "%1 waits in the queue").arg(ray);
+    case EndReason::Escaped:
+      return QCoreApplication::translate("UiWords",
+                                         "%1 escaped the scene: it gets the background radiance")
+          .arg(ray);
+    case EndReason::HitLight:
+      return named ? QCoreApplication::translate("UiWords",
+                                                 "%1 hit the light '%2': the path ends there")
+                         .arg(ray, object)
+                   : QCoreApplication::translate("UiWords", "%1 hit a light: the path ends there")
+                         .arg(ray);
+    case EndReason::MaxDepth:
+      return named
+                 ? QCoreApplication::translate(
+                       "UiWords", "%1 hit '%2' and reached the maximum depth: the path ends there")
+                       .arg(ray, object)
+                 : QCoreApplication::translate("UiWords",
+                                               "%1 reached the maximum depth: the path ends there")
+                       .arg(ray);
+    case EndReason::RussianRoulette:
+      return named ? QCoreApplication::translate("UiWords",
+                                                 "%1 hit '%2' and was stopped by Russian roulette")
+                         .arg(ray, object)
+                   : QCoreApplication::translate("UiWords", "%1 was stopped by Russian roulette")
+                         .arg(ray);
+    case EndReason::Absorbed:
+      return named ? QCoreApplication::translate(
+                         "UiWords",
+                         "%1 hit '%2' and was absorbed: the material scatters nothing here")
+                         .arg(ray, object)
+                   : QCoreApplication::translate(
+                         "UiWords", "%1 was absorbed: the material scatters nothing here")
+                         .arg(ray);
+    case EndReason::Occluded:
+      return named ? QCoreApplication::translate("UiWords",
+                                                 "%1 was blocked by '%2' before reaching its light")
+                         .arg(ray, object)
+                   : QCoreApplication::translate("UiWords",
+                                                 "%1 was blocked before reaching its light")
+                         .arg(ray);
+    case EndReason::ReachedLight:
+      return QCoreApplication::translate("UiWords",
+                                         "%1 reached its light unblocked and delivers its radiance")
+          .arg(ray);
+    case EndReason::Spawned:
+      return named ? QCoreApplication::translate("UiWords", "%1 hit '%2' and spawned %3")
+                         .arg(ray, object, children(s))
+                   : QCoreApplication::translate("UiWords", "%1 spawned %2").arg(ray, children(s));
+  }
+  return ray;
+}
+
+QString traceSummary(const PixelTrace& trace) {
+  const RayTree& tree = trace.tree;
+  std::array<int, kRayKindCount> byKind{};
+  for (const RaySegment& s : tree.segments) ++byKind[std::size_t(s.kind)];
+  QStringList parts;
+  for (int k = 0; k < kRayKindCount; ++k)
+    if (byKind[std::size_t(k)] > 0)
+      parts << QCoreApplication::translate("UiWords", "%1 %2", "kind count")
+                   .arg(rayKindWord(RayKind(k)))
+                   .arg(byKind[std::size_t(k)]);
+  const Vec3 e = tree.estimate();
+  const QString estimate = QStringLiteral("(%1, %2, %3)")
+                               .arg(QString::number(e.x, 'g', 6), QString::number(e.y, 'g', 6),
+                                    QString::number(e.z, 'g', 6));
+  const int count = int(tree.segments.size());
+  return (count == 1 ? QCoreApplication::translate("UiWords", "1 ray (%1), depth %2, estimate %3")
+                           .arg(parts.join(QCoreApplication::translate("UiWords", ", ")))
+                           .arg(trace.depth())
+                           .arg(estimate)
+                     : QCoreApplication::translate("UiWords", "%1 rays (%2), depth %3, estimate %4")
+                           .arg(count)
+                           .arg(parts.join(QCoreApplication::translate("UiWords", ", ")))
+                           .arg(trace.depth())
+                           .arg(estimate));
+}
+
+QString stepCaption(const PixelTrace& trace, const vis::AnimationSettings& settings, int frame,
+                    const std::vector<std::string>& objectNames) {
+  const RayTree& tree = trace.tree;
+  if (tree.segments.empty()) return QCoreApplication::translate("UiWords", "No ray tree yet.");
+  const int perFrame = std::max(1, settings.framesPerStep);
+  const int last = vis::frameCount(tree, settings) - 1;
+  frame = std::clamp(frame, 0, last);
+  const int steps = last / perFrame;
+  if (frame == 0)
+    return QCoreApplication::translate("UiWords",
+                                       "Frame 0: nothing revealed yet. Press Play or Step.");
+  const int step = (frame - 1) / perFrame;
+
+  QString text;
+  if (settings.order == vis::RevealOrder::Processing) {
+    // The engine's own words for the ray (or the first of the rays) leaving now.
+    const int perStep = std::max(1, settings.raysPerStep);
+    const int first = step * perStep;
+    const int end = std::min(int(tree.segments.size()), first + perStep);
+    const QString what = narrateRay(tree, first, objectNames);
+    text = end - first == 1
+               ? QCoreApplication::translate("UiWords", "Step %1 of %2: %3.")
+                     .arg(step + 1)
+                     .arg(steps)
+                     .arg(what)
+               : QCoreApplication::translate("UiWords", "Step %1 of %2: rays #%3..#%4; first: %5.")
+                     .arg(step + 1)
+                     .arg(steps)
+                     .arg(first)
+                     .arg(end - 1)
+                     .arg(what);
+  } else {
+    // Every ray of this depth travels at once: count them by kind.
+    std::array<int, kRayKindCount> byKind{};
+    int count = 0;
+    for (const RaySegment& s : tree.segments)
+      if (s.depth == step) {
+        ++byKind[std::size_t(s.kind)];
+        ++count;
+      }
+    QStringList parts;
+    for (int k = 0; k < kRayKindCount; ++k)
+      if (byKind[std::size_t(k)] > 0)
+        parts << QCoreApplication::translate("UiWords", "%1 %2", "count kind")
+                     .arg(byKind[std::size_t(k)])
+                     .arg(rayKindWord(RayKind(k)));
+    const QString kinds = parts.join(QCoreApplication::translate("UiWords", ", "));
+    text = count == 1
+               ? QCoreApplication::translate("UiWords", "Depth %1 of %2: 1 ray travels (%3).")
+                     .arg(step)
+                     .arg(steps - 1)
+                     .arg(kinds)
+               : QCoreApplication::translate("UiWords", "Depth %1 of %2: %3 rays travel (%4).")
+                     .arg(step)
+                     .arg(steps - 1)
+                     .arg(count)
+                     .arg(kinds);
+  }
+  if (frame == last) text += QCoreApplication::translate("UiWords", " The whole tree is shown.");
+  return text;
+}
+
+}  // namespace raylab::app

@@ -1,0 +1,250 @@
+// The window's Render view, driven by synthetic Qt events: progressive rendering off the UI
+// thread, Cancel, one render at a time, a restart after an edit, clicking a pixel to trace
+// its tree, zoom, the value under the cursor, and saving the image. Runs under xvfb.
+#include "WindowTest.h"
+
+#include "ImageView.h"
+#include "RenderJob.h"
+#include "RenderPanel.h"
+
+#include "raylab/core/Image.h"
+#include "raylab/core/RayTreeJson.h"
+#include "raylab/core/Renderer.h"
+#include "raylab/core/SceneEdit.h"
+
+#include <QLabel>
+#include <QProgressBar>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QTabWidget>
+
+#include <chrono>
+
+namespace raylab::app {
+namespace {
+
+using WindowRenderTest = WindowTest;
+
+/// Runs the event loop until `done` holds; fails the test after `seconds`.
+template <typename Done>
+bool waitFor(Done done, double seconds = 120.0) {
+  const auto start = std::chrono::steady_clock::now();
+  while (!done()) {
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds)
+      return false;
+  }
+  return true;
+}
+
+/// The image core's Renderer makes of `scene` with `algorithm` at `spp` (one thread).
+FloatImage renderedByCore(const Scene& scene, Algorithm algorithm, int spp) {
+  RenderSettings settings = scene.render;
+  settings.algorithm = algorithm;
+  settings.samplesPerPixel = spp;
+  Renderer renderer(scene, settings);
+  renderer.setThreads(1);
+  return renderer.render();
+}
+
+TEST_F(WindowRenderTest, 01_RenderShowsTheRenderersImagePassByPass) {
+  RenderPanel& panel = *m_window->renderPanel();
+  EXPECT_FALSE(m_window->imageTabs()->isVisible()) << "the image tabs appear once used";
+  m_window->showImageTab(&panel);
+  panel.setAlgorithm(Algorithm::Whitted);
+  panel.setSamplesPerPixel(4);
+  int passes = 0;
+  QObject::connect(panel.job(), &RenderJob::passFinished, [&passes] { ++passes; });
+  panel.renderButton()->click();
+  EXPECT_TRUE(panel.rendering());
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  EXPECT_TRUE(m_window->imageTabs()->isVisible());
+  EXPECT_EQ(passes, 3) << "passes of 1, 1 and 2 samples";
+  EXPECT_EQ(panel.progress().samplesPerPixel, 4);
+  EXPECT_GT(panel.progress().rays, 0u);
+  EXPECT_EQ(panel.progressBar()->value(), panel.progressBar()->maximum());
+  EXPECT_TRUE(panel.figuresLabel()->text().contains(QStringLiteral("4 / 4 spp")))
+      << panel.figuresLabel()->text().toStdString();
+  // The same pixels as core's renderer on one thread (the window renders on all of them).
+  const FloatImage expected = renderedByCore(defaultScene(), Algorithm::Whitted, 4);
+  const FloatImage& shown = panel.imageView()->image();
+  ASSERT_EQ(shown.width, expected.width);
+  ASSERT_EQ(shown.height, expected.height);
+  EXPECT_EQ(shown.pixels, expected.pixels);
+  EXPECT_FALSE(panel.job()->threadRunning());
+}
+
+TEST_F(WindowRenderTest, 02_CancelKeepsThePassesAndLeavesNoThread) {
+  RenderPanel& panel = *m_window->renderPanel();
+  panel.setAlgorithm(Algorithm::PathTracing);
+  panel.setSamplesPerPixel(1 << 16);
+  panel.render();
+  // Wait for a few passes, then cancel: the UI returns, and the thread ends soon after.
+  ASSERT_TRUE(waitFor([&] { return panel.progress().samplesPerPixel >= 2; }));
+  panel.cancelButton()->click();
+  EXPECT_FALSE(panel.cancelButton()->isEnabled() && !panel.rendering());
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }, 60.0)) << "the render did not stop";
+  EXPECT_FALSE(panel.job()->threadRunning()) << "a render thread is left running";
+  EXPECT_EQ(panel.rendersEnded(), 1);
+  EXPECT_TRUE(panel.hasImage()) << "the passes finished so far stay";
+  const int reached = panel.progress().samplesPerPixel;
+  EXPECT_GE(reached, 2);
+  EXPECT_LT(reached, 1 << 16);
+  EXPECT_TRUE(panel.figuresLabel()->text().startsWith(QStringLiteral("Cancelled")))
+      << panel.figuresLabel()->text().toStdString();
+  // The image kept is the image of `reached` samples.
+  EXPECT_EQ(panel.imageView()->image().pixels,
+            renderedByCore(defaultScene(), Algorithm::PathTracing, reached).pixels);
+
+  // And it renders again.
+  panel.setAlgorithm(Algorithm::RayCasting);
+  panel.setSamplesPerPixel(1);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  EXPECT_EQ(panel.rendersEnded(), 2);
+  EXPECT_EQ(panel.imageView()->image().pixels,
+            renderedByCore(defaultScene(), Algorithm::RayCasting, 1).pixels);
+}
+
+TEST_F(WindowRenderTest, 03_ASecondRenderCancelsTheFirstAndNeverRunsBesideIt) {
+  RenderPanel& panel = *m_window->renderPanel();
+  const int before = RenderJob::mostAtOnce();
+  EXPECT_LE(before, 1);
+  panel.setAlgorithm(Algorithm::PathTracing);
+  panel.setSamplesPerPixel(1 << 16);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return panel.progress().samplesPerPixel >= 1; }));
+  // Render again with other settings while the first runs.
+  panel.setAlgorithm(Algorithm::Whitted);
+  panel.setSamplesPerPixel(2);
+  std::vector<int> wanted;
+  QObject::connect(panel.job(), &RenderJob::passFinished,
+                   [&wanted](const RenderProgress& p) { wanted.push_back(p.samplesWanted); });
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  EXPECT_EQ(RenderJob::mostAtOnce(), 1) << "two render threads ran at once";
+  EXPECT_EQ(panel.rendersEnded(), 1) << "the first render ended into the second, unreported";
+  for (int w : wanted) EXPECT_EQ(w, 2) << "a pass of the cancelled render was shown";
+  EXPECT_EQ(panel.imageView()->image().pixels,
+            renderedByCore(defaultScene(), Algorithm::Whitted, 2).pixels);
+}
+
+TEST_F(WindowRenderTest, 04_AnEditRendersTheNewScene) {
+  RenderPanel& panel = *m_window->renderPanel();
+  panel.setAlgorithm(Algorithm::RayCasting);
+  panel.setSamplesPerPixel(1);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  const FloatImage before = panel.imageView()->image();
+  // Move the blue cube: the render starts again by itself.
+  m_window->document().apply(QStringLiteral("Move"), [](const Scene& s) {
+    return edit::translateObject(s, s.findObject("blue cube"), Vec3(0.4, 0.0, 0.0), "test");
+  });
+  EXPECT_TRUE(panel.rendering()) << "the edit did not restart the render";
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  EXPECT_EQ(panel.rendersEnded(), 2);
+  EXPECT_NE(panel.imageView()->image().pixels, before.pixels);
+  EXPECT_EQ(panel.imageView()->image().pixels,
+            renderedByCore(m_window->document().scene(), Algorithm::RayCasting, 1).pixels);
+}
+
+TEST_F(WindowRenderTest, 05_ClickingAPixelTracesTheCliTree) {
+  RenderPanel& panel = *m_window->renderPanel();
+  m_window->showImageTab(&panel);
+  panel.setAlgorithm(Algorithm::Whitted);
+  panel.setSamplesPerPixel(1);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  settle();
+  // Click the middle of pixel (90, 100) of the image, wherever it is drawn.
+  ImageView* view = panel.imageView();
+  const double s = view->scale();
+  const QPoint at = (view->positionOf(90, 100) + QPointF(s / 2, s / 2)).toPoint();
+  ASSERT_EQ(view->pixelAt(at), QPoint(90, 100));
+  QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+  settle();
+  EXPECT_EQ(view->markedPixel(), QPoint(90, 100));
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  EXPECT_EQ(rays.pixelXBox()->value(), 90);
+  EXPECT_EQ(rays.pixelYBox()->value(), 100);
+  EXPECT_EQ(rays.algorithm(), Algorithm::Whitted);
+  // The tree equals `raylab trace 90 100 --algorithm whitted`'s (core tracePixel).
+  const Scene scene = defaultScene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Whitted;
+  const PixelTrace expected = tracePixel(scene, settings, 90, 100, 0);
+  EXPECT_EQ(RayTreeJson::serialize(rays.tree(), scene, settings),
+            RayTreeJson::serialize(expected.tree, scene, settings));
+  EXPECT_TRUE(m_window->sceneView().hasRayTree());
+  // Tracing another pixel in the ray-tree panel moves the mark.
+  rays.setPixel(10, 20);
+  rays.trace();
+  EXPECT_EQ(view->markedPixel(), QPoint(10, 20));
+}
+
+TEST_F(WindowRenderTest, 06_ZoomKeepsPixelsSquareAndShowsTheValue) {
+  RenderPanel& panel = *m_window->renderPanel();
+  m_window->showImageTab(&panel);
+  panel.setAlgorithm(Algorithm::RayCasting);
+  panel.setSamplesPerPixel(1);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  ImageView* view = panel.imageView();
+  view->setZoom(8);
+  settle();
+  EXPECT_EQ(view->scale(), 8.0);
+  EXPECT_GE(view->width(), 320 * 8);
+  // Nearest neighbour: every screen pixel of image pixel (100, 120) has its colour.
+  const QImage grabbed = view->grab().toImage().convertToFormat(QImage::Format_RGB888);
+  const QPointF corner = view->positionOf(100, 120);
+  const QColor expected = view->picture().pixelColor(100, 120);
+  const double ratio = grabbed.width() / double(view->width());  // device pixel ratio
+  for (int dy = 0; dy < 8; ++dy)
+    for (int dx = 0; dx < 8; ++dx) {
+      const QColor c =
+          grabbed.pixelColor(int((corner.x() + dx) * ratio), int((corner.y() + dy) * ratio));
+      ASSERT_EQ(c, expected) << "at +" << dx << ", +" << dy;
+    }
+  // The value under the cursor.
+  const QPoint at = (corner + QPointF(4, 4)).toPoint();
+  QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::NoButton,
+                   Qt::NoModifier);
+  QApplication::sendEvent(view, &move);
+  settle();
+  const glm::vec3 v = view->image().pixels[120 * 320 + 100];
+  const QString text = panel.pixelLabel()->text();
+  EXPECT_TRUE(text.startsWith(QStringLiteral("Pixel (100, 120)"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QString::number(double(v.x), 'f', 3))) << text.toStdString();
+  view->zoomOut();
+  EXPECT_EQ(view->zoom(), 4);
+  view->setZoom(0);
+  settle();
+  EXPECT_LE(view->scale() * 320, view->width() + 1.0) << "fit shows the whole image";
+}
+
+TEST_F(WindowRenderTest, 07_SaveTheImageAsPngAndPfm) {
+  RenderPanel& panel = *m_window->renderPanel();
+  QString error;
+  EXPECT_FALSE(
+      panel.saveImage(scratch(QStringLiteral("nothing")) + QStringLiteral("/a.png"), &error));
+  EXPECT_TRUE(error.contains(QStringLiteral("Render"))) << error.toStdString();
+  panel.setAlgorithm(Algorithm::RayCasting);
+  panel.setSamplesPerPixel(1);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  const QString dir = scratch(QStringLiteral("save-image"));
+  ASSERT_TRUE(panel.saveImage(dir + QStringLiteral("/image.pfm"), &error)) << error.toStdString();
+  EXPECT_EQ(imageio::readPfm((dir + QStringLiteral("/image.pfm")).toStdString()).pixels,
+            panel.imageView()->image().pixels);
+  ASSERT_TRUE(panel.saveImage(dir + QStringLiteral("/image.png"), &error)) << error.toStdString();
+  QImage png(dir + QStringLiteral("/image.png"));
+  ASSERT_FALSE(png.isNull());
+  EXPECT_EQ(png.convertToFormat(QImage::Format_RGB888), panel.imageView()->picture());
+  // Into a folder that does not exist: a message naming the file, nothing written.
+  const QString missing = dir + QStringLiteral("/no/such/folder/image.png");
+  EXPECT_FALSE(panel.saveImage(missing, &error));
+  EXPECT_TRUE(error.contains(missing)) << error.toStdString();
+}
+
+}  // namespace
+}  // namespace raylab::app
