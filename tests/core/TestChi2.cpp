@@ -14,6 +14,7 @@
 // of area sampling at the silhouette becomes smooth.
 #include "raylab/core/Bsdf.h"
 #include "raylab/core/Camera.h"
+#include "raylab/core/Microfacet.h"
 #include "raylab/core/Quad.h"
 #include "raylab/core/Sampler.h"
 #include "raylab/core/Sampling.h"
@@ -35,7 +36,7 @@ namespace raylab {
 namespace {
 
 /// Number of chi-square tests below that must pass (the Sidak correction's m).
-constexpr int kPositiveTests = 18;
+constexpr int kPositiveTests = 32;
 /// Overall significance level of the file.
 constexpr double kSignificance = 0.01;
 /// Per-test level: 1 - (1 - 0.01)^(1/18) = 5.58e-4.
@@ -511,9 +512,11 @@ TEST(Chi2, 07_LensSampling) {
 
 TEST(Chi2, 08_TheCountOfTestsMatchesTheCorrection) {
   // cosine 1 + sphere 1 + phong warp 1 + glossy 9 + sphere light 1 + quad light 1 + disk 2
-  // + cone warp 1 + separated sphere light 1.
-  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1);
-  EXPECT_NEAR(kAlpha, 5.5820e-4, 1e-7);
+  // + cone warp 1 + separated sphere light 1 + microfacet normals 2 + visible normals 6
+  // + rough conductor 3 + rough dielectric 3.
+  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1 + 2 + 6 + 3 + 3);
+  // 1 - (1 - 0.01)^(1/32).
+  EXPECT_NEAR(kAlpha, 3.1402e-4, 1e-7);
 }
 
 TEST(Chi2, 09_UniformConeWarp) {
@@ -603,6 +606,126 @@ TEST(Chi2, 10_SphereLightCutByASeparatingSphere) {
                          }),
                          24, false),
                  "cut light as whole cone");
+}
+
+const char* modelName(MicrofacetModel model) { return toString(model); }
+
+TEST(Chi2, 11_MicrofacetNormals) {
+  // sampleNormal against D(h) cos(theta_h), alpha = 0.3, on the upper hemisphere in theta
+  // bins (1.5 degrees).
+  const Frame up(Vec3(0.0, 0.0, 1.0));
+  SphereGrid grid{up, Polar::Theta, 0.0};
+  for (MicrofacetModel model : {MicrofacetModel::GGX, MicrofacetModel::Beckmann}) {
+    const microfacet::Distribution d{model, 0.3};
+    Sampler rng(18, int(model), 0, 0);
+    auto sample = [&]() -> std::optional<Vec2> {
+      return grid.toGrid(microfacet::sampleNormal(d, rng.next2D()));
+    };
+    const std::string name = std::string(modelName(model)) + " normals D cos, alpha 0.3";
+    expectAccepted(runChi2(name, 60, 40, 1000000, sample, grid.density([&](const Vec3& h) {
+                     return microfacet::normalPdf(d, h);
+                   })),
+                   name);
+  }
+}
+
+TEST(Chi2, 12_VisibleNormals) {
+  // sampleVisibleNormal against visibleD(wo, h), alpha = 0.5, seen at 0, 60 and 85 degrees,
+  // on the upper hemisphere around the normal.
+  const Frame up(Vec3(0.0, 0.0, 1.0));
+  SphereGrid grid{up, Polar::Theta, 0.0};
+  for (MicrofacetModel model : {MicrofacetModel::GGX, MicrofacetModel::Beckmann})
+    for (double degrees : {0.0, 60.0, 85.0}) {
+      const microfacet::Distribution d{model, 0.5};
+      const double a = radians(degrees);
+      const Vec3 wo(std::sin(a) * std::cos(0.4), std::sin(a) * std::sin(0.4), std::cos(a));
+      Sampler rng(19, int(model), int(degrees), 0);
+      auto sample = [&]() -> std::optional<Vec2> {
+        return grid.toGrid(microfacet::sampleVisibleNormal(d, wo, rng.next2D()));
+      };
+      char name[80];
+      std::snprintf(name, sizeof name, "%s visible normals at %g deg", modelName(model), degrees);
+      expectAccepted(runChi2(name, 60, 60, 1000000, sample, grid.density([&](const Vec3& h) {
+                       return microfacet::visibleNormalPdf(d, wo, h);
+                     })),
+                     name);
+    }
+  // Negative control: visible normals at 60 degrees claimed to follow D cos (the sampler
+  // that ignores the view).
+  const microfacet::Distribution d{MicrofacetModel::GGX, 0.5};
+  const Vec3 wo(std::sin(radians(60.0)), 0.0, 0.5);
+  Sampler rng(20, 0, 0, 0);
+  auto sample = [&]() -> std::optional<Vec2> {
+    return grid.toGrid(microfacet::sampleVisibleNormal(d, wo, rng.next2D()));
+  };
+  expectRejected(runChi2("NEGATIVE visible normals as D cos", 60, 60, 1000000, sample,
+                         grid.density([&](const Vec3& h) { return microfacet::normalPdf(d, h); })),
+                 "visible normals as D cos");
+}
+
+/// A rough material at incidence `degrees` from kNormal (beyond 90: from inside).
+struct RoughSetup {
+  Material m;
+  SurfaceInteraction si;
+  Vec3 wo;
+  RoughSetup(MaterialType type, MicrofacetModel model, double alpha, double degrees,
+             bool visible = true) {
+    m.type = type;
+    m.colour = Vec3(0.9, 0.8, 0.7);
+    m.distribution = model;
+    m.roughness = alpha;
+    m.visibleNormals = visible;
+    m.ior = 1.5;
+    const double a = radians(degrees);
+    wo = Frame(kNormal).toWorld({std::sin(a), 0.0, std::cos(a)});
+    si.n = kNormal;
+    si.frontFace = glm::dot(wo, kNormal) > 0.0;
+  }
+};
+
+/// bsdf::sample against bsdf::pdf over the whole sphere (theta bins of 3 degrees around
+/// the normal), for a rough material.
+Chi2Result roughChi2(const std::string& name, const RoughSetup& g, const RoughSetup& claimed,
+                     std::uint64_t seed) {
+  SphereGrid grid{Frame(kNormal), Polar::Theta, -1.0};
+  Sampler rng(seed, 0, 0, 0);
+  auto sample = [&]() -> std::optional<Vec2> {
+    const auto s = bsdf::sample(g.m, g.si, g.wo, rng);
+    if (!s) return std::nullopt;
+    return grid.toGrid(s->wi);
+  };
+  return runChi2(name, 60, 60, 1000000, sample, grid.density([&](const Vec3& w) {
+    return bsdf::pdf(claimed.m, claimed.si, claimed.wo, w);
+  }));
+}
+
+TEST(Chi2, 13_RoughConductorSampling) {
+  const RoughSetup cases[] = {
+      {MaterialType::RoughConductor, MicrofacetModel::GGX, 0.2, 45.0},
+      {MaterialType::RoughConductor, MicrofacetModel::Beckmann, 0.5, 70.0},
+      {MaterialType::RoughConductor, MicrofacetModel::GGX, 0.3, 60.0, false}};
+  const char* names[] = {"rough conductor ggx 0.2 at 45 deg", "rough conductor beckmann 0.5 at 70",
+                         "rough conductor ggx 0.3 D cos at 60"};
+  for (int i = 0; i < 3; ++i)
+    expectAccepted(roughChi2(names[i], cases[i], cases[i], 22 + i), names[i]);
+}
+
+TEST(Chi2, 14_RoughDielectricSampling) {
+  // Reflection and transmission together, over the whole sphere: from outside at 45
+  // degrees, from inside at 30 degrees (below the critical angle 41.8), Beckmann at 70.
+  const RoughSetup cases[] = {
+      {MaterialType::RoughDielectric, MicrofacetModel::GGX, 0.3, 45.0},
+      {MaterialType::RoughDielectric, MicrofacetModel::GGX, 0.3, 150.0},
+      {MaterialType::RoughDielectric, MicrofacetModel::Beckmann, 0.2, 70.0}};
+  const char* names[] = {"rough dielectric ggx 0.3 at 45 deg",
+                         "rough dielectric ggx 0.3 inside at 30",
+                         "rough dielectric beckmann 0.2 at 70"};
+  for (int i = 0; i < 3; ++i)
+    expectAccepted(roughChi2(names[i], cases[i], cases[i], 26 + i), names[i]);
+  // Negative control: alpha 0.3 samples against the density of alpha 0.36.
+  const RoughSetup wrong(MaterialType::RoughDielectric, MicrofacetModel::GGX, 0.36, 45.0);
+  expectRejected(roughChi2("NEGATIVE rough dielectric 0.3 as 0.36", cases[0], wrong, 30),
+                 "rough dielectric 0.3 as 0.36");
 }
 
 }  // namespace

@@ -32,11 +32,27 @@ std::string materialParameters(const Material& m) {
              ", refraction rate " + number(m.refractionRate) + ", ior " + number(m.ior);
       break;
     case MaterialType::Dielectric:
-      text = "tint " + vec(m.colour) + ", ior " + number(m.ior) + " (Fresnel)";
+      text = "tint " + vec(m.colour) + ", ior " + number(m.ior) +
+             (m.fresnel == FresnelModel::Schlick ? " (Schlick's Fresnel)" : " (Fresnel)");
       break;
     case MaterialType::Glossy:
       text = "colour " + vec(m.colour) + ", Phong exponent " + number(m.exponent) +
              ", specular share " + number(m.specular);
+      break;
+    case MaterialType::Phong:
+    case MaterialType::BlinnPhong:
+      text = "colour " + vec(m.colour) + ", ambient " + vec(m.ambient) + ", kd " +
+             number(m.diffuse) + ", ks " + number(m.specular) + ", shininess " +
+             number(m.exponent) + ", kr " + number(m.reflectionRate) + ", kt " +
+             number(m.refractionRate) + ", attenuation " + vec(m.attenuation);
+      break;
+    case MaterialType::RoughConductor:
+      text = "F0 " + vec(m.colour) + ", " + toString(m.distribution) + " roughness " +
+             number(m.roughness);
+      break;
+    case MaterialType::RoughDielectric:
+      text = "tint " + vec(m.colour) + ", ior " + number(m.ior) + ", " + toString(m.distribution) +
+             " roughness " + number(m.roughness) + " (" + toString(m.fresnel) + " Fresnel)";
       break;
   }
   if (m.isEmitter()) text += ", emits " + vec(m.emission);

@@ -1,6 +1,7 @@
 #include "integrators/LocalShading.h"
 
 #include "raylab/core/Bsdf.h"
+#include "raylab/core/ClassicShading.h"
 #include "raylab/core/RayOffset.h"
 
 #include <algorithm>
@@ -12,12 +13,35 @@ namespace {
 /// Shadow rays to a surface point stop this fraction of the distance short of it, so the
 /// light's own surface never blocks them.
 constexpr double kShadowShortening = 1e-6;
+
+/// The local model at the hit of `context` for light from wi: a rough material's f cos
+/// (bsdf::eval; nothing for Lobes::DiffuseOnly, as its glossy rays see the lights), else
+/// classicShading.
+Vec3 localFactor(const HitContext& context, const Vec3& wi, Lobes lobes) {
+  const Vec3 wo = -context.ray.ray.direction;
+  if (context.material.isRough())
+    return lobes == Lobes::All ? bsdf::eval(context.material, context.hit.si, wo, wi) : Vec3(0.0);
+  return classicShading(context.material, context.hit.si.facingNormal(), wo, wi, lobes);
+}
+
+/// The radiance a light of intensity `I` times `scale` (1, or a flat light's projected
+/// area) delivers over distance^2 = `distance2` at this material: with the classic
+/// materials' attenuation I scale f_att(d), for every other material I (scale / d^2).
+Vec3 attenuated(const Material& m, const Vec3& I, double scale, double distance2) {
+  if (m.isClassic())
+    return I * (scale * classic::distanceAttenuation(m.attenuation, std::sqrt(distance2)));
+  return scale == 1.0 ? I / distance2 : I * (scale / distance2);
+}
 }  // namespace
 
 Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
                     Lobes lobes) {
   const double cosThetaI = glm::dot(n, wi);
-  if (cosThetaI <= 0.0 || m.isSpecular()) return Vec3(0.0);
+  if (cosThetaI <= 0.0 || m.isSpecular() || m.isRough()) return Vec3(0.0);
+  // The classic Phong or Blinn-Phong model: kd colour (N.L) + ks highlight, no 1 / pi.
+  if (m.isClassic())
+    return lobes == Lobes::All ? classic::lightFactor(m, n, wo, wi)
+                               : classic::diffuseTerm(m, n, wi);
   // Lambert: colour / pi, scaled by kd.
   const bool glossy = m.type == MaterialType::Glossy;
   const double ks = glossy ? std::clamp(m.specular, 0.0, 1.0) : 0.0;
@@ -38,6 +62,10 @@ QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, cons
   child.weight = weight;
   child.pdf = pdf;
   return child;
+}
+
+Vec3 ambientSeen(const HitContext& context) {
+  return context.material.isClassic() ? classic::ambientTerm(context.material) : Vec3(0.0);
 }
 
 Vec3 emitterSeen(const HitContext& context) {
@@ -66,19 +94,19 @@ QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3&
 
 void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
   const SurfaceInteraction& si = context.hit.si;
-  const Normal3 n = si.facingNormal();
-  const Vec3 wo = -context.ray.ray.direction;
   for (const PointLight& light : context.intersector.scene().pointLights) {
     // Direction and distance to the light; it lights the side it is on.
     const Vec3 d = light.position - si.p;
     const double distance2 = glm::dot(d, d);
     if (!(distance2 > 0.0)) continue;
     const Vec3 wi = d / std::sqrt(distance2);
-    const Vec3 fCos = classicShading(context.material, n, wo, wi, lobes);
+    const Vec3 fCos = localFactor(context, wi, lobes);
     if (isNonPositive(fCos)) continue;
-    // Radiance arriving from a point light: I / d^2 (weight f cos).
-    children.push_back(
-        shadowRay(context, light.position, fCos, light.intensity / distance2, false));
+    // Radiance arriving from a point light: I / d^2 (a classic material's own falloff),
+    // weight f cos.
+    children.push_back(shadowRay(context, light.position, fCos,
+                                 attenuated(context.material, light.intensity, 1.0, distance2),
+                                 false));
   }
 }
 
@@ -87,7 +115,6 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
   if (samplesPerLight <= 0) return;
   const SurfaceInteraction& si = context.hit.si;
   const Normal3 n = si.facingNormal();
-  const Vec3 wo = -context.ray.ray.direction;
   const double invN = 1.0 / double(samplesPerLight);
   // Lights are sampled from the offset hit point on the lit side, as next-event estimation
   // does: si.p lies on its surface up to rounding, so a sphere light's test of which side
@@ -102,7 +129,7 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
       const std::optional<LightSample> ls =
           context.intersector.sampleLightObject(object, ref, u, context.ray.ray.time);
       if (!ls) continue;
-      const Vec3 fCos = classicShading(context.material, n, wo, ls->wi, lobes);
+      const Vec3 fCos = localFactor(context, ls->wi, lobes);
       if (isNonPositive(fCos) || isNonPositive(ls->Le)) continue;
       // Monte Carlo estimate of the light's integral: f cos Le / pdf, averaged over N.
       children.push_back(shadowRay(context, ls->p, fCos * (invN / ls->pdf), ls->Le, true));
@@ -112,8 +139,6 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
 
 void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
   const SurfaceInteraction& si = context.hit.si;
-  const Normal3 n = si.facingNormal();
-  const Vec3 wo = -context.ray.ray.direction;
   const Scene& scene = context.intersector.scene();
   for (int object : context.intersector.areaLights()) {
     if (object == context.hit.object) continue;  // a surface does not light itself
@@ -138,14 +163,15 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
       if (cosLight <= 0.0) continue;  // the light's back faces the point
       projectedArea = area * cosLight;
     }
-    const Vec3 fCos = classicShading(context.material, n, wo, wi, lobes);
+    const Vec3 fCos = localFactor(context, wi, lobes);
     if (isNonPositive(fCos) || isNonPositive(Le)) continue;
 
     // Aim at the light's centre but stop where the ray enters the light.
     Ray probe = Ray::make(si.p - shift, wi);
     const std::optional<Hit> entry = light.shape->intersect(probe);
     const Point3 target = entry ? si.p + entry->t * wi : centre;
-    children.push_back(shadowRay(context, target, fCos, Le * (projectedArea / distance2), true));
+    children.push_back(shadowRay(context, target, fCos,
+                                 attenuated(context.material, Le, projectedArea, distance2), true));
   }
 }
 

@@ -26,8 +26,11 @@ enum class Lobes {
  * `((1 - ks) colour / pi + ks (n + 2) / (2 pi) cos^n(alpha)) cos(theta_i)` with alpha the
  * angle between wi and the mirror direction of wo (Phong 1975, normalised as in
  * Lafortune and Willems 1994; the highlight is white, as bsdf::eval's). Diffuse: ks = 0;
- * Glossy: ks = specular, n = exponent; Mirror and Dielectric have no local shading (0).
- * With Lobes::All it equals bsdf::eval.
+ * Glossy: ks = specular, n = exponent; with Lobes::All it equals bsdf::eval. Phong and
+ * BlinnPhong: the textbook model classic::lightFactor, kd colour (N.L) + ks (R.V)^n or
+ * ks (N.H)^n, with no 1 / pi (Lobes::DiffuseOnly: the kd term only). Mirror, Dielectric
+ * and the rough materials: 0 (the shadow-ray helpers below use bsdf::eval for the rough
+ * ones).
  * `n` is the unit normal facing wo; wo, wi unit, world space. 0 when wi is below n.
  */
 Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
@@ -40,6 +43,10 @@ Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const V
 QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
                    double pdf, double tMax = kInfinity);
 
+/// The classic model's ambient term at a Phong or BlinnPhong hit (classic::ambientTerm,
+/// ambient * colour), returned as radiance found there; 0 for every other material.
+Vec3 ambientSeen(const HitContext& context);
+
 /// Radiance of the emitter the ray of `context` hit, towards the ray's origin (0 for
 /// non-emitters and for the back side of lights).
 Vec3 emitterSeen(const HitContext& context);
@@ -50,7 +57,8 @@ QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3&
                     const Vec3& Le, bool targetIsSurface);
 
 /// Appends one shadow ray per point light that lies above the surface: weight
-/// f cos (classicShading), delivering intensity / d^2.
+/// f cos (classicShading; bsdf::eval for rough materials), delivering intensity / d^2 (for
+/// Phong and BlinnPhong intensity times classic::distanceAttenuation of their attenuation).
 void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children);
 
 /// Appends `samplesPerLight` shadow rays per area light to points sampled on it, with
@@ -70,7 +78,8 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
 /// addPointLightRays and addCentreLightRays with both lobes. Deterministic.
 void addClassicLightRays(const HitContext& context, std::vector<QueuedRay>& children);
 
-/// Whitted's recursion at a Mirror or Dielectric hit (also distributed tracing's): one
+/// Whitted's recursion at a Mirror or Dielectric hit, and the kr / kt rays of a Phong or
+/// BlinnPhong hit (also distributed tracing's): one
 /// Reflection / Refraction child per specular lobe with a positive weight
 /// (bsdf::specularLobes: the original course program's rates, or Fresnel), while the ray's
 /// depth is below maxDepth. Returns MaxDepth at maxDepth, Absorbed when no lobe carries

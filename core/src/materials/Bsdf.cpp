@@ -13,6 +13,9 @@
 // never created" a simple per-bounce bound.
 #include "raylab/core/Bsdf.h"
 
+#include "materials/RoughBsdf.h"
+#include "raylab/core/ClassicShading.h"
+#include "raylab/core/Fresnel.h"
 #include "raylab/core/Sampler.h"
 #include "raylab/core/Sampling.h"
 
@@ -64,6 +67,111 @@ BsdfSample specularLobe(const Vec3& wi, const Vec3& weight, RayKind kind) {
   return s;
 }
 
+/// The Monte Carlo counterpart of a Phong or BlinnPhong material: its parts (diffuse,
+/// highlight, reflection, transmission), all scaled by 1 / max(1, kd + ks + kr + kt) so the
+/// albedo never exceeds 1, and the probability of picking each when sampling.
+struct ClassicParts {
+  double scale = 1.0;
+  double pDiffuse = 0.0, pLobe = 0.0, pReflect = 0.0, pTransmit = 0.0;  ///< Sum to 1.
+  double total = 0.0;  ///< Sum of the parts' energies before normalising (0: black).
+};
+
+ClassicParts classicParts(const Material& m) {
+  ClassicParts c;
+  const double kd = std::max(0.0, m.diffuse), ks = std::clamp(m.specular, 0.0, 1.0);
+  const double kr = std::max(0.0, m.reflectionRate), kt = std::max(0.0, m.refractionRate);
+  c.scale = 1.0 / std::max(1.0, kd + ks + kr + kt);
+  const double d = kd * luminance(m.colour), l = ks, r = kr, t = kt;
+  c.total = c.scale * (d + l + r + t);
+  if (c.total > 0.0) {
+    const double inv = c.scale / c.total;
+    c.pDiffuse = d * inv;
+    c.pLobe = l * inv;
+    c.pReflect = r * inv;
+    c.pTransmit = t * inv;
+  }
+  return c;
+}
+
+/// The normalised highlight per steradian: Phong ks (n + 2) / (2 pi) cos^n(alpha); Blinn
+/// ks (n + 2)(n + 4) / (8 pi (2^(-n/2) + n)) (N.H)^n, the factor that makes the lobe's
+/// albedo exactly 1 seen along the normal (F. Giesen, "The Blinn-Phong normalization zoo",
+/// 2009; the popular (n + 8) / (8 pi) overshoots it by 7% at n = 10). 0 for wi below.
+double classicLobe(const Material& m, const Normal3& nf, const Vec3& wo, const Vec3& wi) {
+  if (glm::dot(wi, nf) <= 0.0) return 0.0;
+  const double ks = std::clamp(m.specular, 0.0, 1.0);
+  if (m.type == MaterialType::Phong) return phongLobe(m, glm::dot(reflect(wo, nf), wi));
+  const double n = m.exponent;
+  return ks * (n + 2.0) * (n + 4.0) / (8.0 * kPi * (std::pow(2.0, -0.5 * n) + n)) *
+         classic::blinnPhongHighlight(nf, wo, wi, n);
+}
+
+/// Density of the highlight's sampler: Phong's lobe around the mirror direction, or for
+/// Blinn the half vector drawn from cos^n(theta_h) (pdf_h / (4 wo.h) per steradian of wi).
+double classicLobePdf(const Material& m, const Normal3& nf, const Vec3& wo, const Vec3& wi) {
+  if (glm::dot(wi, nf) <= 0.0) return 0.0;
+  if (m.type == MaterialType::Phong) return phongLobePdf(glm::dot(reflect(wo, nf), wi), m.exponent);
+  const Vec3 sum = wo + wi;
+  const double len = glm::length(sum);
+  if (!(len > 0.0)) return 0.0;
+  const Vec3 h = sum / len;
+  const double cosOH = glm::dot(wo, h);
+  if (!(cosOH > 0.0)) return 0.0;
+  return phongLobePdf(glm::dot(nf, h), m.exponent) / (4.0 * cosOH);
+}
+
+Vec3 classicEval(const Material& m, const Normal3& nf, const Vec3& wo, const Vec3& wi) {
+  const double cosI = glm::dot(wi, nf);
+  if (cosI <= 0.0) return Vec3(0.0);
+  const ClassicParts c = classicParts(m);
+  const double kd = std::max(0.0, m.diffuse);
+  return c.scale * (kd * m.colour / kPi + Vec3(classicLobe(m, nf, wo, wi))) * cosI;
+}
+
+double classicPdf(const Material& m, const Normal3& nf, const Vec3& wo, const Vec3& wi) {
+  const double cosI = glm::dot(wi, nf);
+  if (cosI <= 0.0) return 0.0;
+  const ClassicParts c = classicParts(m);
+  double lobe = 0.0;
+  if (c.pLobe > 0.0) lobe = classicLobePdf(m, nf, wo, wi);
+  return c.pDiffuse * cosineHemispherePdf(cosI) + c.pLobe * lobe;
+}
+
+std::optional<BsdfSample> classicSample(const Material& m, const SurfaceInteraction& si,
+                                        const Vec3& wo, Sampler& sampler) {
+  const Normal3 nf = si.facingNormal();
+  const double uPick = sampler.next1D();
+  const Vec2 u = sampler.next2D();
+  const ClassicParts c = classicParts(m);
+  if (!(c.total > 0.0)) return std::nullopt;
+  // The delta parts: weight = part / probability = total, white.
+  if (uPick >= c.pDiffuse + c.pLobe) {
+    const bool transmit = uPick >= c.pDiffuse + c.pLobe + c.pReflect;
+    std::optional<Vec3> wt;
+    if (transmit) wt = refract(wo, nf, si.frontFace ? 1.0 / m.ior : m.ior);
+    // On total internal reflection the transmitted share is reflected, as in Whitted.
+    return specularLobe(wt ? *wt : reflect(wo, nf), Vec3(c.total),
+                        wt ? RayKind::Refraction : RayKind::Reflection);
+  }
+  BsdfSample s;
+  if (uPick < c.pDiffuse) {
+    s.wi = Frame(nf).toWorld(sampleCosineHemisphere(u));
+    s.kind = RayKind::Diffuse;
+  } else if (m.type == MaterialType::Phong) {
+    s.wi = glm::normalize(Frame(reflect(wo, nf)).toWorld(samplePhongLobe(u, m.exponent)));
+    s.kind = RayKind::Glossy;
+  } else {
+    const Vec3 h = Frame(nf).toWorld(samplePhongLobe(u, m.exponent));
+    s.wi = glm::normalize(reflect(wo, h));
+    s.kind = RayKind::Glossy;
+  }
+  if (glm::dot(s.wi, nf) <= 0.0) return std::nullopt;
+  s.pdf = classicPdf(m, nf, wo, s.wi);
+  if (!(s.pdf > 0.0)) return std::nullopt;
+  s.weight = classicEval(m, nf, wo, s.wi) / s.pdf;
+  return s;
+}
+
 }  // namespace
 
 Vec3 reflect(const Vec3& wo, const Normal3& n) { return 2.0 * glm::dot(wo, n) * n - wo; }
@@ -86,16 +194,8 @@ std::optional<Vec3> refract(const Vec3& wo, const Normal3& n, double eta) {
 }
 
 double fresnelDielectric(double cosThetaI, double eta) {
-  const double cosI = std::clamp(std::abs(cosThetaI), 0.0, 1.0);
-  // Snell's law gives the transmitted angle; past the critical angle all is reflected.
-  const double sin2T = eta * eta * (1.0 - cosI * cosI);
-  if (sin2T >= 1.0) return 1.0;
-  const double cosT = std::sqrt(1.0 - sin2T);
-  // Fresnel amplitudes for s (perpendicular) and p (parallel) polarisation, divided by
-  // eta_t; unpolarised light reflects their mean square.
-  const double rPerp = (eta * cosI - cosT) / (eta * cosI + cosT);
-  const double rPar = (cosI - eta * cosT) / (cosI + eta * cosT);
-  return 0.5 * (rPerp * rPerp + rPar * rPar);
+  // The mean of the s- and p-polarised reflectances (Fresnel.h).
+  return fresnel::dielectric(cosThetaI, eta);
 }
 
 Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi) {
@@ -108,6 +208,12 @@ Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const
     }
     case MaterialType::Glossy:
       return glossyEval(m, nf, wo, wi);
+    case MaterialType::Phong:
+    case MaterialType::BlinnPhong:
+      return classicEval(m, nf, wo, wi);
+    case MaterialType::RoughConductor:
+    case MaterialType::RoughDielectric:
+      return rough::eval(m, si, wo, wi);
     case MaterialType::Mirror:
     case MaterialType::Dielectric:
       return Vec3(0.0);
@@ -122,6 +228,12 @@ double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, cons
       return cosineHemispherePdf(glm::dot(wi, nf));
     case MaterialType::Glossy:
       return glossyPdf(m, nf, wo, wi);
+    case MaterialType::Phong:
+    case MaterialType::BlinnPhong:
+      return classicPdf(m, nf, wo, wi);
+    case MaterialType::RoughConductor:
+    case MaterialType::RoughDielectric:
+      return rough::pdf(m, si, wo, wi);
     case MaterialType::Mirror:
     case MaterialType::Dielectric:
       return 0.0;
@@ -131,7 +243,7 @@ double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, cons
 
 SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, const Vec3& wo) {
   SpecularLobes lobes;
-  if (!m.isSpecular()) return lobes;
+  if (!m.isSpecular() && !m.isClassic()) return lobes;
   // The normal on wo's side; entering the object when wo is outside (front face).
   const Normal3 nf = si.facingNormal();
   const double eta = si.frontFace ? 1.0 / m.ior : m.ior;
@@ -145,9 +257,14 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
     // share is reflected.
     reflected = m.reflectionRate * m.colour;
     refracted = m.refractionRate * m.colour;
+  } else if (m.isClassic()) {
+    // Whitted's kr and kt, white (the colour belongs to the local model).
+    reflected = Vec3(std::max(0.0, m.reflectionRate));
+    refracted = Vec3(std::max(0.0, m.refractionRate));
   } else {
-    // Fresnel: R reflected, T = 1 - R transmitted (R = 1 past the critical angle).
-    const double r = wt ? fresnelDielectric(glm::dot(wo, nf), eta) : 1.0;
+    // Fresnel (exact or Schlick's): R reflected, T = 1 - R transmitted (R = 1 past the
+    // critical angle).
+    const double r = wt ? fresnel::reflectance(m.fresnel, glm::dot(wo, nf), eta) : 1.0;
     reflected = r * m.colour;
     refracted = (1.0 - r) * m.colour;
   }
@@ -201,6 +318,12 @@ std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si
       s.weight = glossyEval(m, nf, wo, s.wi) / s.pdf;
       return s;
     }
+    case MaterialType::Phong:
+    case MaterialType::BlinnPhong:
+      return classicSample(m, si, wo, sampler);
+    case MaterialType::RoughConductor:
+    case MaterialType::RoughDielectric:
+      return rough::sample(m, si, wo, sampler);
     case MaterialType::Mirror:
     case MaterialType::Dielectric: {
       // One lobe, chosen in proportion to its weight's luminance; dividing by that

@@ -35,8 +35,24 @@ const char* toString(MaterialType type) {
       return "dielectric";
     case MaterialType::Glossy:
       return "glossy";
+    case MaterialType::Phong:
+      return "phong";
+    case MaterialType::BlinnPhong:
+      return "blinn_phong";
+    case MaterialType::RoughConductor:
+      return "rough_conductor";
+    case MaterialType::RoughDielectric:
+      return "rough_dielectric";
   }
   return "unknown";
+}
+
+const char* toString(FresnelModel model) {
+  return model == FresnelModel::Schlick ? "schlick" : "exact";
+}
+
+const char* toString(MicrofacetModel model) {
+  return model == MicrofacetModel::Beckmann ? "beckmann" : "ggx";
 }
 
 std::string Material::toString() const {
@@ -45,7 +61,12 @@ std::string Material::toString() const {
          ", reflectionRate=" + std::to_string(reflectionRate) +
          ", refractionRate=" + std::to_string(refractionRate) + ", ior=" + std::to_string(ior) +
          ", exponent=" + std::to_string(exponent) + ", specular=" + std::to_string(specular) +
-         ", opacity=" + std::to_string(opacity) + "]";
+         ", opacity=" + std::to_string(opacity) + ", ambient=" + raylab::toString(ambient) +
+         ", diffuse=" + std::to_string(diffuse) + ", attenuation=" + raylab::toString(attenuation) +
+         ", fresnel=" + raylab::toString(fresnel) +
+         ", distribution=" + raylab::toString(distribution) +
+         ", roughness=" + std::to_string(roughness) +
+         ", visibleNormals=" + (visibleNormals ? "true" : "false") + "]";
 }
 
 std::string PointLight::toString() const {

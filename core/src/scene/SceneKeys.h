@@ -19,8 +19,9 @@ inline constexpr std::array kSceneKeys = {"raylab_scene", "name",   "materials",
                                           "point_lights", "camera", "render"};
 /// One entry of "materials".
 inline constexpr std::array kMaterialKeys = {
-    "name", "type",     "colour",   "emission", "reflection_rate", "refraction_rate",
-    "ior",  "exponent", "specular", "opacity"};
+    "name",        "type",     "colour",       "emission",  "reflection_rate", "refraction_rate",
+    "ior",         "exponent", "specular",     "opacity",   "ambient",         "diffuse",
+    "attenuation", "fresnel",  "distribution", "roughness", "visible_normals"};
 /// One entry of "objects".
 inline constexpr std::array kObjectKeys = {"name", "material", "shape", "transform", "velocity"};
 /// One step of an object's "transform" (a step has exactly one of these keys).

@@ -190,15 +190,19 @@ class Reader : private JsonChecks<Reader> {
       const std::string type = string(j["type"], p + "/type");
       bool known = false;
       for (MaterialType t : {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Dielectric,
-                             MaterialType::Glossy})
+                             MaterialType::Glossy, MaterialType::Phong, MaterialType::BlinnPhong,
+                             MaterialType::RoughConductor, MaterialType::RoughDielectric})
         if (type == toString(t)) {
           m.type = t;
           known = true;
         }
       if (!known)
         fail(p + "/type", "unknown material type \"" + type +
-                              "\" (expected diffuse, mirror, dielectric or glossy)");
+                              "\" (expected diffuse, mirror, dielectric, glossy, phong, "
+                              "blinn_phong, rough_conductor or rough_dielectric)");
     }
+    // The classic materials reflect nothing unless told (kr = 0), unlike the mirror.
+    if (m.isClassic()) m.reflectionRate = 0.0;
     if (j.contains("colour")) m.colour = vec3(j["colour"], p + "/colour");
     if (j.contains("emission")) m.emission = vec3(j["emission"], p + "/emission");
     if (j.contains("reflection_rate"))
@@ -209,6 +213,7 @@ class Reader : private JsonChecks<Reader> {
     if (j.contains("exponent")) m.exponent = number(j["exponent"], p + "/exponent");
     if (j.contains("specular")) m.specular = number(j["specular"], p + "/specular");
     if (j.contains("opacity")) m.opacity = number(j["opacity"], p + "/opacity");
+    classicAndRoughParameters(j, p, m);
     for (int c = 0; c < 3; ++c) {
       if (m.colour[c] < 0.0 || m.colour[c] > 1.0)
         fail(p + "/colour", "colour components must be in [0, 1]");
@@ -225,6 +230,48 @@ class Reader : private JsonChecks<Reader> {
     if (m.specular < 0.0 || m.specular > 1.0) fail(p + "/specular", "specular must be in [0, 1]");
     if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");
     return m;
+  }
+
+  /// The parameters of the classic Phong and the microfacet materials (see Material.h).
+  void classicAndRoughParameters(const json& j, const std::string& p, Material& m) const {
+    if (j.contains("ambient")) m.ambient = vec3(j["ambient"], p + "/ambient");
+    if (j.contains("diffuse")) m.diffuse = number(j["diffuse"], p + "/diffuse");
+    if (j.contains("attenuation")) m.attenuation = vec3(j["attenuation"], p + "/attenuation");
+    if (j.contains("fresnel")) {
+      const std::string f = string(j["fresnel"], p + "/fresnel");
+      if (f == "exact")
+        m.fresnel = FresnelModel::Exact;
+      else if (f == "schlick")
+        m.fresnel = FresnelModel::Schlick;
+      else
+        fail(p + "/fresnel", "unknown Fresnel model \"" + f + "\" (expected exact or schlick)");
+    }
+    if (j.contains("distribution")) {
+      const std::string d = string(j["distribution"], p + "/distribution");
+      if (d == "ggx")
+        m.distribution = MicrofacetModel::GGX;
+      else if (d == "beckmann")
+        m.distribution = MicrofacetModel::Beckmann;
+      else
+        fail(p + "/distribution",
+             "unknown microfacet distribution \"" + d + "\" (expected ggx or beckmann)");
+    }
+    if (j.contains("roughness")) m.roughness = number(j["roughness"], p + "/roughness");
+    if (j.contains("visible_normals"))
+      m.visibleNormals = boolean(j["visible_normals"], p + "/visible_normals");
+    for (int c = 0; c < 3; ++c) {
+      if (m.ambient[c] < 0.0) fail(p + "/ambient", "ambient must not be negative");
+      if (m.attenuation[c] < 0.0)
+        fail(p + "/attenuation", "attenuation coefficients [c, l, q] must not be negative");
+    }
+    if (isZero(m.attenuation))
+      fail(p + "/attenuation",
+           "attenuation [0, 0, 0] divides by zero (use [1, 0, 0] for no falloff, [0, 0, 1] "
+           "for 1 / d^2)");
+    if (m.diffuse < 0.0 || m.diffuse > 1.0) fail(p + "/diffuse", "diffuse (kd) must be in [0, 1]");
+    if (!(m.roughness >= 1e-4 && m.roughness <= 4.0))
+      fail(p + "/roughness", "roughness (alpha) must be in [0.0001, 4], got " +
+                                 excerpt(j.contains("roughness") ? j["roughness"] : json()));
   }
 
   void camera(const json& c, CameraSpec& cam) const {

@@ -138,19 +138,35 @@ ojson materialToJson(const Material& m) {
   const bool mirror = m.type == MaterialType::Mirror;
   const bool dielectric = m.type == MaterialType::Dielectric;
   const bool glossy = m.type == MaterialType::Glossy;
+  const bool classic = m.isClassic();
+  const bool rough = m.isRough();
+  const bool roughGlass = m.type == MaterialType::RoughDielectric;
   ObjectWriter j(kMaterialKeys);
   j.add("name", m.name)
       .add("type", toString(m.type))
       .add("colour", toJson(m.colour))
       .add("emission", toJson(m.emission));
-  if (mirror || m.reflectionRate != defaults.reflectionRate)
+  if (mirror || classic || m.reflectionRate != defaults.reflectionRate)
     j.add("reflection_rate", m.reflectionRate);
-  if (mirror || m.refractionRate != defaults.refractionRate)
+  if (mirror || classic || m.refractionRate != defaults.refractionRate)
     j.add("refraction_rate", m.refractionRate);
-  if (mirror || dielectric || m.ior != defaults.ior) j.add("ior", m.ior);
-  if (glossy || m.exponent != defaults.exponent) j.add("exponent", m.exponent);
-  if (glossy || m.specular != defaults.specular) j.add("specular", m.specular);
-  return j.add("opacity", m.opacity).take();
+  if (mirror || dielectric || roughGlass || (classic && m.refractionRate > 0.0) ||
+      m.ior != defaults.ior)
+    j.add("ior", m.ior);
+  if (glossy || classic || m.exponent != defaults.exponent) j.add("exponent", m.exponent);
+  if (glossy || classic || m.specular != defaults.specular) j.add("specular", m.specular);
+  j.add("opacity", m.opacity);
+  if (classic || m.ambient != defaults.ambient) j.add("ambient", toJson(m.ambient));
+  if (classic || m.diffuse != defaults.diffuse) j.add("diffuse", m.diffuse);
+  if (classic || m.attenuation != defaults.attenuation) j.add("attenuation", toJson(m.attenuation));
+  if (dielectric || roughGlass || m.fresnel != defaults.fresnel)
+    j.add("fresnel", toString(m.fresnel));
+  if (rough || m.distribution != defaults.distribution)
+    j.add("distribution", toString(m.distribution));
+  if (rough || m.roughness != defaults.roughness) j.add("roughness", m.roughness);
+  if (rough || m.visibleNormals != defaults.visibleNormals)
+    j.add("visible_normals", m.visibleNormals);
+  return j.take();
 }
 
 /// The path to write for a mesh file `source` (see SceneObject::source) in a scene file

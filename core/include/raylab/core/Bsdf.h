@@ -41,15 +41,24 @@ struct SpecularLobes {
  * the angle to the mirror direction; sampled as a mixture of the normalised Phong lobe and
  * the cosine hemisphere. Mirror splits into reflectionRate * colour and refractionRate *
  * colour (the refracted share is reflected on total internal reflection); Dielectric into
- * R * colour and (1 - R) * colour with the Fresnel reflectance R.
+ * R * colour and (1 - R) * colour with the Fresnel reflectance R (exact or Schlick's,
+ * Material::fresnel; Fresnel.h).
+ * Phong and BlinnPhong (the textbook model, ClassicShading.h, for ray casting and Whitted)
+ * are, here, their energy-normalised counterpart: scale (kd colour / pi + the normalised
+ * highlight) with scale = 1 / max(1, kd + ks + kr + kt), Phong's lobe ks (n + 2) / (2 pi)
+ * cos^n(alpha) or Blinn's ks (n + 2)(n + 4) / (8 pi (2^(-n/2) + n)) (N.H)^n, plus delta
+ * lobes scale kr (mirror) and scale kt (refraction); specularLobes gives Whitted's kr and kt
+ * unscaled. The ambient term is not a BSDF (LocalShading adds it). RoughConductor and
+ * RoughDielectric are microfacet models (Microfacet.h; details in materials/RoughBsdf.h);
+ * sample() picks a microfacet normal (visible normals by default) and reflects or refracts.
  * Radiance is NOT scaled by eta^2 when refracting (as in smallpt): a refracted ray carries
  * the transmittance only. Paths from the camera leave a glass object before they can reach
  * a light, so the factors would cancel; weights stay <= 1.
  */
 namespace bsdf {
 
-/// f(wo, wi) |cos theta_i| of the non-specular part (diffuse + Phong lobe); 0 for Mirror
-/// and Dielectric.
+/// f(wo, wi) |cos theta_i| of the non-specular part (diffuse + lobes); 0 for Mirror and
+/// Dielectric. wi may lie on either side (the rough dielectric transmits).
 Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi);
 /// Density with which sample() picks wi (non-specular materials), per steradian.
 double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi);
@@ -57,7 +66,8 @@ double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, cons
 /// one lobe picked in proportion to its weight, with weight / probability.
 std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si, const Vec3& wo,
                                  Sampler& sampler);
-/// All specular children of a Mirror or Dielectric hit with their weights (Whitted).
+/// All specular children of a Mirror or Dielectric hit with their weights, and the kr / kt
+/// children of a Phong or BlinnPhong hit (Whitted).
 SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, const Vec3& wo);
 
 /// Perfect mirror direction of wo about n (both unit, same side or not).
@@ -73,6 +83,7 @@ double phongLobe(const Material& m, double cosAlpha);
 std::optional<Vec3> refract(const Vec3& wo, const Normal3& n, double eta);
 /// Unpolarised Fresnel reflectance of a dielectric interface for cos theta_i (of the
 /// incident side) and eta = eta_incident / eta_transmitted; 1 on total internal reflection.
+/// The same as fresnel::dielectric (Fresnel.h has R_s, R_p and Schlick's approximation).
 double fresnelDielectric(double cosThetaI, double eta);
 
 }  // namespace bsdf

@@ -9,15 +9,37 @@ namespace raylab {
 /// The scattering model of a material. The original course program's distributions: diffuse,
 /// mirror (with its reflection / refraction rates), Phong; plus physically based dielectrics.
 enum class MaterialType {
-  Diffuse,     ///< Lambertian: f = colour / pi.
-  Mirror,      ///< The original course program's mirror_distribution: perfect reflection
-               ///< weighted by reflectionRate and refraction (index `ior`) weighted by
-               ///< refractionRate.
-  Dielectric,  ///< Glass: reflection and refraction weighted by the Fresnel equations,
-               ///< total internal reflection included.
-  Glossy,      ///< Normalised Phong lobe around the mirror direction, plus a diffuse part.
+  Diffuse,          ///< Lambertian: f = colour / pi.
+  Mirror,           ///< The original course program's mirror_distribution: perfect reflection
+                    ///< weighted by reflectionRate and refraction (index `ior`) weighted by
+                    ///< refractionRate.
+  Dielectric,       ///< Glass: reflection and refraction weighted by the Fresnel equations,
+                    ///< total internal reflection included.
+  Glossy,           ///< Normalised Phong lobe around the mirror direction, plus a diffuse part.
+  Phong,            ///< The classic Phong reflection model (Phong 1975, as courses teach it):
+                    ///< ambient + kd colour (N.L) + ks (R.V)^n per light, plus Whitted's
+                    ///< reflected (reflectionRate) and transmitted (refractionRate) rays.
+  BlinnPhong,       ///< As Phong with Blinn's half-vector highlight ks (N.H)^n (Blinn 1977).
+  RoughConductor,   ///< Microfacet metal (Cook and Torrance 1982; Walter et al. 2007):
+                    ///< D G F / (4 cos_o cos_i), Schlick's F with F0 = colour.
+  RoughDielectric,  ///< Microfacet glass (Walter et al. 2007): rough reflection and
+                    ///< transmission weighted by the Fresnel reflectance.
 };
 const char* toString(MaterialType type);
+
+/// Which Fresnel reflectance a dielectric interface uses (Dielectric, RoughDielectric).
+enum class FresnelModel {
+  Exact,    ///< The Fresnel equations for unpolarised light, (R_s + R_p) / 2.
+  Schlick,  ///< Schlick's approximation F0 + (1 - F0) (1 - cos)^5 (Schlick 1994).
+};
+const char* toString(FresnelModel model);
+
+/// The distribution of microfacet normals of the rough materials.
+enum class MicrofacetModel {
+  GGX,       ///< Trowbridge-Reitz / GGX (Walter et al. 2007): long tails.
+  Beckmann,  ///< Beckmann (1963), as in Cook and Torrance 1982: Gaussian slopes.
+};
+const char* toString(MicrofacetModel model);
 
 /// Surface appearance. Any material with non-zero emission makes its object an area
 /// light that emits `emission` (radiance, W sr^-1 m^-2) equally in all directions from
@@ -27,18 +49,41 @@ struct Material {
   MaterialType type = MaterialType::Diffuse;  ///< Scattering model.
   Vec3 colour{0.8};                           ///< Albedo / specular tint, linear RGB in [0, 1].
   Vec3 emission{0.0};                         ///< Emitted radiance, linear RGB (lights only).
-  double reflectionRate = 1.0;                ///< Mirror: weight of the reflected ray, [0, 1].
-  double refractionRate = 0.0;                ///< Mirror: weight of the refracted ray, [0, 1].
+  double reflectionRate = 1.0;                ///< Mirror: weight of the reflected ray, [0, 1];
+                                              ///< Phong, BlinnPhong: kr (default 0 there).
+  double refractionRate = 0.0;                ///< Mirror: weight of the refracted ray, [0, 1];
+                                              ///< Phong, BlinnPhong: kt.
   double ior = 1.5;                           ///< Index of refraction (inside / outside).
-  double exponent = 50.0;                     ///< Glossy: Phong exponent (lobe sharpness), > 0.
+  double exponent = 50.0;                     ///< Glossy: Phong exponent (lobe sharpness), > 0;
+                                              ///< Phong, BlinnPhong: the shininess n.
   double specular = 0.5;                      ///< Glossy: fraction of energy in the lobe,
-                                              ///< the rest (times colour) is diffuse, [0, 1].
+                                              ///< the rest (times colour) is diffuse, [0, 1];
+                                              ///< Phong, BlinnPhong: ks, [0, 1].
   double opacity = 1.0;                       ///< For drawing only: 1 opaque, 0 invisible.
+  Vec3 ambient{0.0};     ///< Phong, BlinnPhong: ka Ia, the ambient light times the ambient
+                         ///< coefficient (RGB, >= 0); the surface returns ambient * colour.
+  double diffuse = 1.0;  ///< Phong, BlinnPhong: kd, the diffuse coefficient, [0, 1].
+  Vec3 attenuation{0.0, 0.0, 1.0};  ///< Phong, BlinnPhong: light falls off with distance d
+                                    ///< as 1 / (c + l d + q d^2) for [c, l, q] (OpenGL's
+                                    ///< rule); [0, 0, 1] is the physical 1 / d^2, [1, 0, 0]
+                                    ///< no falloff.
+  FresnelModel fresnel = FresnelModel::Exact;  ///< Dielectric, RoughDielectric: reflectance.
+  MicrofacetModel distribution = MicrofacetModel::GGX;  ///< Rough materials: D and G.
+  double roughness = 0.3;      ///< Rough materials: alpha, the distribution's width (> 0;
+                               ///< about the RMS slope of the microfacets).
+  bool visibleNormals = true;  ///< Rough materials: sample the normals the viewer sees
+                               ///< (Heitz 2018; GGX only) instead of D(h) cos(theta_h).
 
   bool isEmitter() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
   /// Mirror and Dielectric scatter only into discrete directions (no sampling pdf).
   bool isSpecular() const {
     return type == MaterialType::Mirror || type == MaterialType::Dielectric;
+  }
+  /// Phong and BlinnPhong: the classic model of ray casting and Whitted.
+  bool isClassic() const { return type == MaterialType::Phong || type == MaterialType::BlinnPhong; }
+  /// RoughConductor and RoughDielectric: microfacet models.
+  bool isRough() const {
+    return type == MaterialType::RoughConductor || type == MaterialType::RoughDielectric;
   }
   std::string toString() const;
 };

@@ -50,8 +50,14 @@ namespace raylab {
  * (first listed first); a step is translate, scale, rotate {axis, degrees} or matrix
  * (4 rows of 4). Materials: type diffuse (default), mirror (the original course program's
  * reflection_rate and refraction_rate, each in [0, 1], summing to at most 1, and ior > 0),
- * dielectric (Fresnel glass of index ior), glossy (Phong exponent > 0, specular fraction in
- * [0, 1]); any material with a non-zero emission is an area light (not allowed on a plane).
+ * dielectric (Fresnel glass of index ior; "fresnel": "exact" or "schlick"), glossy (Phong
+ * exponent > 0, specular fraction in [0, 1]), phong and blinn_phong (the classic model of
+ * ClassicShading.h: "ambient" RGB >= 0, "diffuse" kd and "specular" ks in [0, 1],
+ * "exponent" n, reflection_rate kr (default 0) and refraction_rate kt, ior, "attenuation"
+ * [c, l, q] >= 0, not all 0), rough_conductor and rough_dielectric (microfacets:
+ * "roughness" alpha in [0.0001, 4], "distribution" "ggx" or "beckmann", "visible_normals"
+ * true or false; the dielectric also ior and fresnel); any material with a non-zero
+ * emission is an area light (not allowed on a plane).
  * "velocity" is the object's motion over the shutter interval (motion blur).
  * Everything but "raylab_scene", "materials" and "objects" is optional and defaults to
  * the values of Material, CameraSpec and RenderSettings; unknown keys are errors (a

@@ -33,6 +33,19 @@ void addGlossyRays(const HitContext& context, int count, std::vector<QueuedRay>&
   }
 }
 
+/// Appends `count` rays drawn from a rough material (bsdf::sample: a microfacet normal,
+/// then the reflected or refracted direction), weight f cos / pdf / count each.
+void addRoughRays(const HitContext& context, int count, std::vector<QueuedRay>& children) {
+  const Vec3 wo = -context.ray.ray.direction;
+  const double invN = 1.0 / double(count);
+  for (int k = 0; k < count; ++k) {
+    const std::optional<BsdfSample> bs =
+        bsdf::sample(context.material, context.hit.si, wo, context.sampler);
+    if (!bs || !(bs->pdf > 0.0) || !std::isfinite(bs->pdf)) continue;
+    children.push_back(shading::childRay(context, bs->wi, bs->kind, bs->weight * invN, bs->pdf));
+  }
+}
+
 }  // namespace
 
 HitDecision DistributedRule::onHit(const HitContext& context,
@@ -43,15 +56,30 @@ HitDecision DistributedRule::onHit(const HitContext& context,
   // Mirror and glass: every specular child, as in Whitted.
   if (m.isSpecular()) return {Vec3(0.0), shading::addSpecularChildren(context, children)};
 
-  // Point lights as in Whitted; soft shadows: several shadow rays per area light.
+  // Point lights as in Whitted; soft shadows: several shadow rays per area light (glossy
+  // and rough rays see the lights themselves, so those lobes are left out here).
   shading::addPointLightRays(context, shading::Lobes::All, children);
-  const shading::Lobes areaLobes =
-      m.type == MaterialType::Glossy ? shading::Lobes::DiffuseOnly : shading::Lobes::All;
+  const shading::Lobes areaLobes = m.type == MaterialType::Glossy || m.isRough()
+                                       ? shading::Lobes::DiffuseOnly
+                                       : shading::Lobes::All;
   shading::addAreaLightRays(context, context.settings.shadowSamples, areaLobes, children);
+  const bool atMaxDepth = context.ray.depth >= context.settings.maxDepth;
+
+  // The classic Phong materials: their ambient term and Whitted's kr / kt rays.
+  if (m.isClassic()) {
+    const EndReason end = shading::addSpecularChildren(context, children);
+    return {shading::ambientSeen(context), children.empty() ? end : EndReason::Spawned};
+  }
+  // Rough metal and glass: several rays drawn from the microfacet model.
+  if (m.isRough()) {
+    if (!atMaxDepth && context.settings.glossySamples > 0)
+      addRoughRays(context, context.settings.glossySamples, children);
+    if (children.empty() && atMaxDepth) return {Vec3(0.0), EndReason::MaxDepth};
+    return {Vec3(0.0), EndReason::Spawned};
+  }
 
   // Glossy reflection: several rays spread over the Phong lobe.
   const bool glossy = m.type == MaterialType::Glossy && m.specular > 0.0;
-  const bool atMaxDepth = context.ray.depth >= context.settings.maxDepth;
   if (glossy && !atMaxDepth && context.settings.glossySamples > 0)
     addGlossyRays(context, context.settings.glossySamples, children);
   if (children.empty() && glossy && atMaxDepth) return {Vec3(0.0), EndReason::MaxDepth};

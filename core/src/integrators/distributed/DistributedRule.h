@@ -23,6 +23,11 @@ namespace raylab {
  *   cannot be hit, so its shadow ray carries the highlight as in Whitted.
  * - Mirror / Dielectric: all specular children, as in Whitted
  *   (shading::addSpecularChildren). Emitters count when hit.
+ * - Phong / BlinnPhong: as in Whitted (ambient, the classic model per light, kr and kt
+ *   children), with soft shadows from area lights (the whole local model).
+ * - RoughConductor / RoughDielectric: `glossySamples` rays drawn from the microfacet
+ *   model (bsdf::sample, weight f cos / (pdf N)); they find the area lights themselves,
+ *   point lights get a shadow ray weighted by bsdf::eval.
  *
  * There is no diffuse interreflection: light reaches a diffuse surface only through
  * shadow rays (classic distributed ray tracing; path tracing adds indirect light).

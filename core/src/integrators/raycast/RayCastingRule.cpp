@@ -12,9 +12,10 @@ HitDecision RayCastingRule::onHit(const HitContext& context,
   if (context.material.isEmitter()) return {shading::emitterSeen(context), EndReason::HitLight};
   // Perfect specular surfaces have no local shading model.
   if (context.material.isSpecular()) return {Vec3(0.0), EndReason::Absorbed};
-  // Local shading: one shadow ray per light, carrying f cos.
+  // Local shading: one shadow ray per light, carrying f cos; the classic Phong materials
+  // add their ambient term here.
   shading::addClassicLightRays(context, children);
-  return {Vec3(0.0), EndReason::Spawned};
+  return {shading::ambientSeen(context), EndReason::Spawned};
 }
 
 }  // namespace raylab

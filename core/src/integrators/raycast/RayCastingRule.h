@@ -16,6 +16,10 @@ namespace raylab {
  *   weight f cos, delivering intensity / d^2) and from every area light through ONE
  *   shadow ray to its centre, as if it were a point light there
  *   (shading::addClassicLightRays): hard shadows, no sampling;
+ * - Phong and BlinnPhong surfaces (the textbook model, ClassicShading.h) get their
+ *   ambient term and kd colour (N.L) + ks highlight times each light's intensity and their
+ *   own distance attenuation, through the same shadow rays; kr and kt are ignored;
+ * - RoughConductor and RoughDielectric: their microfacet highlight (bsdf::eval) per light;
  * - Mirror and Dielectric surfaces have no local model here: they come out black
  *   (Absorbed); Whitted's recursion is what makes them visible.
  *

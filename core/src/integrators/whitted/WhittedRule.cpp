@@ -12,9 +12,13 @@ HitDecision WhittedRule::onHit(const HitContext& context, std::vector<QueuedRay>
   // Mirror and glass: follow the perfect reflection and refraction, up to maxDepth.
   if (context.material.isSpecular())
     return {Vec3(0.0), shading::addSpecularChildren(context, children)};
-  // Diffuse and glossy: ray casting's local shading, one shadow ray per light.
+  // Diffuse, glossy, rough and the classic Phong materials: ray casting's local shading,
+  // one shadow ray per light (and the classic materials' ambient term).
   shading::addClassicLightRays(context, children);
-  return {Vec3(0.0), EndReason::Spawned};
+  // A classic material's reflected and transmitted rays, weighted kr and kt.
+  EndReason end = EndReason::Spawned;
+  if (context.material.isClassic()) end = shading::addSpecularChildren(context, children);
+  return {shading::ambientSeen(context), children.empty() ? end : EndReason::Spawned};
 }
 
 }  // namespace raylab

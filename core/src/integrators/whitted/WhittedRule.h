@@ -17,7 +17,12 @@ namespace raylab {
  *   refraction, weighted by the original course program's rates or by Fresnel, total
  *   internal reflection included) becomes a Reflection / Refraction child
  *   (shading::addSpecularChildren), while the ray's depth is below maxDepth; at maxDepth
- *   the ray ends (MaxDepth) and contributes nothing.
+ *   the ray ends (MaxDepth) and contributes nothing;
+ * - Phong and BlinnPhong (the textbook Whitted material): ambient * colour, the classic
+ *   model per light (ClassicShading.h), and a Reflection child weighted kr and a Refraction
+ *   child weighted kt (total internal reflection reflects kt too), below maxDepth;
+ * - RoughConductor and RoughDielectric: local shading only, their microfacet highlight
+ *   (bsdf::eval) from each light; distributed and path tracing follow their rough lobes.
  *
  * Parameters (RenderSettings): maxDepth (default 5; the camera ray has depth 0),
  * samplesPerPixel (jittered film positions when > 1, lens centre, time 0), seed, background.
