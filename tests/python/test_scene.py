@@ -1,0 +1,153 @@
+"""Scenes from Python: files, values read and changed with the loader's rules and messages."""
+
+import json
+
+import pytest
+
+import raylab
+from conftest import SCENES
+
+
+def test01_default_scene_has_the_original_programs_objects():
+    scene = raylab.default_scene()
+    assert scene.origin == "untitled.json"
+    assert scene.size == (320, 240)
+    assert "red sphere" in scene.object_names
+    assert "blue cube" in scene.object_names
+    assert len(scene.objects) == len(scene.object_names)
+    assert scene.camera["width"] == 320
+
+
+def test02_load_reads_a_shipped_scene_and_to_json_round_trips(tmp_path):
+    scene = raylab.load_scene(str(SCENES / "materials.json"))
+    assert scene.origin.endswith("materials.json")
+    saved = tmp_path / "copy.json"
+    scene.save(str(saved))
+    again = raylab.load_scene(str(saved))
+    assert again.to_json() == scene.to_json()
+    assert json.loads(saved.read_text()) == scene.get()
+
+
+def test03_a_missing_file_raises_naming_it():
+    with pytest.raises(raylab.SceneError, match="no-such-scene.json"):
+        raylab.load_scene("no-such-scene.json")
+
+
+def test04_a_syntax_error_names_the_file_and_line(tmp_path):
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"raylab_scene": 2,\n "materials": [\n')
+    with pytest.raises(raylab.SceneError) as error:
+        raylab.load_scene(str(bad))
+    assert str(error.value).startswith(f"{bad}:3:1: JSON syntax error")
+
+
+BAD_VALUES = [
+    ("/materials/0/ior", -1.0),
+    ("/objects/0/shape/radius", 0),
+    ("/camera/vertical_fov", "wide"),
+    ("/render/spp", 0),
+    ("/render/algorithm", "photon mapping"),
+    ("/objects/1/material", "no such material"),
+    ("/camera/colour", [1, 2, 3]),
+]
+
+
+@pytest.mark.parametrize("pointer,value", BAD_VALUES)
+def test05_a_bad_value_raises_the_loaders_own_message(tmp_path, pointer, value):
+    """The message of scene.set equals the one loading a file with that value gives."""
+    scene = raylab.default_scene()
+    if pointer.startswith("/objects/0/shape/radius"):
+        index = scene.object_names.index("red sphere")
+        pointer = f"/objects/{index}/shape/radius"
+    before = scene.to_json()
+    with pytest.raises(raylab.SceneError) as from_python:
+        scene.set(pointer, value)
+    assert scene.to_json() == before  # the scene stays as it was
+
+    # The same value written into a file and loaded.
+    document = json.loads(before)
+    parent, key = pointer.rsplit("/", 1)
+    node = document
+    for part in parent.strip("/").split("/"):
+        node = node[int(part)] if isinstance(node, list) else node[part]
+    node[int(key) if isinstance(node, list) else key] = value
+    path = tmp_path / "edited.json"
+    path.write_text(json.dumps(document))
+    with pytest.raises(raylab.SceneError) as from_file:
+        raylab.load_scene(str(path))
+    expected = str(from_file.value).replace(str(path), "untitled.json", 1)
+    assert str(from_python.value) == expected
+    assert pointer.split("/")[1] in str(from_python.value)
+
+
+def test06_set_and_get_change_values_through_the_loader():
+    scene = raylab.default_scene()
+    scene.set("/render/spp", 3)
+    scene.set_camera(vertical_fov=30, width=64, height=48)
+    scene.set_material(scene.material_names[0], colour=[0.25, 0.5, 0.75])
+    assert scene.get("/render/spp") == 3
+    assert scene.size == (64, 48)
+    assert scene.camera["vertical_fov"] == 30
+    assert scene.materials[0]["colour"] == [0.25, 0.5, 0.75]
+
+
+def test07_update_applies_all_values_or_none():
+    scene = raylab.default_scene()
+    before = scene.to_json()
+    with pytest.raises(raylab.SceneError, match="/render/spp"):
+        scene.update({"/camera/width": 100, "/render/spp": -5})
+    assert scene.to_json() == before
+    scene.update({"/camera/width": 100, "/render/spp": 5})
+    assert scene.size[0] == 100 and scene.render_settings["spp"] == 5
+
+
+def test08_a_place_the_file_does_not_have_is_refused():
+    scene = raylab.default_scene()
+    with pytest.raises(raylab.SceneError, match="no such place"):
+        scene.set("/objects/99/name", "x")
+
+
+def test09_object_edits_are_the_windows_edits():
+    scene = raylab.default_scene()
+    count = len(scene.object_names)
+    cube = f"/objects/{scene.object_names.index('blue cube')}/shape"
+    before = scene.get(cube)
+    scene.rotate_object("blue cube", 30, axis=(0, 1, 0))
+    after = scene.get(cube)
+    assert after != before
+    assert after["centre"] == pytest.approx(before["centre"])  # turned about its centre
+    scene.duplicate_object("red sphere")
+    assert len(scene.object_names) == count + 1
+    copy_name = scene.object_names[-1]
+    assert copy_name == "red sphere copy"
+    scene.rename_object(copy_name, "twin")
+    with pytest.raises(raylab.SceneError, match="twin"):
+        scene.rename_object("red sphere", "twin")  # names stay unique: the loader's rule
+    scene.remove_object("twin")
+    assert len(scene.object_names) == count
+    assert scene.add_shape("sphere") in scene.object_names
+    with pytest.raises(KeyError, match="no object named 'nothing'"):
+        scene.remove_object("nothing")
+    with pytest.raises(raylab.SceneError):
+        scene.scale_object("blue cube", 0)
+
+
+def test10_copies_and_renders_keep_their_own_scene():
+    scene = raylab.default_scene()
+    copy = scene.copy()
+    scene.set_camera(width=8, height=6)
+    assert copy.size == (320, 240)
+    assert raylab.render(scene, spp=1).shape == (6, 8, 3)
+
+
+def test11_saving_into_a_missing_folder_raises_and_writes_nothing(tmp_path):
+    scene = raylab.default_scene()
+    target = tmp_path / "missing" / "scene.json"
+    with pytest.raises(raylab.SaveError, match="scene.json"):
+        scene.save(str(target))
+    assert not target.exists()
+
+
+def test12_parse_names_its_origin_in_messages():
+    with pytest.raises(raylab.SceneError, match="^lesson-scene: "):
+        raylab.Scene.parse('{"raylab_scene": 2, "materials": [], "objects": 5}', "lesson-scene")
