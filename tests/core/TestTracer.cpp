@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <set>
 #include <thread>
@@ -54,7 +56,7 @@ TEST(Tracer, 01_RayCountsAddAndTotal) {
 // hit and the children spawned.
 TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
   std::set<std::string> jsonNames, labels, clauses;
-  for (int r = 0; r <= int(EndReason::Spawned); ++r) {
+  for (int r = 0; r <= int(EndReason::Stopped); ++r) {
     const EndReasonWords& w = words(EndReason(r));
     EXPECT_EQ(w.reason, EndReason(r));
     EXPECT_EQ(endReasonFromJson(w.json), EndReason(r)) << w.json;
@@ -63,7 +65,7 @@ TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
     labels.insert(w.label);
     clauses.insert(w.clause);
   }
-  EXPECT_EQ(jsonNames.size(), std::size_t(EndReason::Spawned) + 1);
+  EXPECT_EQ(jsonNames.size(), std::size_t(EndReason::Stopped) + 1);
   EXPECT_EQ(labels.size(), jsonNames.size());
   EXPECT_EQ(clauses.size(), jsonNames.size());
   EXPECT_FALSE(endReasonFromJson("hit a light"));  // a label is not a JSON name
@@ -311,9 +313,26 @@ TEST(Tracer, 07_ShadowRaysEndAtTheBlockerOrTheLight) {
   EXPECT_GT(reached, 0);
 }
 
-// A bushy distributed tree under a tiny memory budget: recording stops with a clear
-// message, never beyond the budget, and the estimate is still exactly trace()'s.
-TEST(Tracer, 08_MemoryBudgetStopsRecordingNotTheEstimate) {
+/// Every child list of `tree` lies inside it and points back at its parent, and no ray is
+/// left Pending: the invariants of a finished tree, also when it was stopped early.
+void expectFinishedTree(const RayTree& tree, const std::string& what) {
+  for (const RaySegment& s : tree.segments) {
+    EXPECT_NE(s.endReason, EndReason::Pending) << what << " #" << s.id;
+    ASSERT_LE(std::size_t(std::max(0, s.firstChild + s.childCount)), tree.segments.size()) << what;
+    for (int c = 0; c < s.childCount; ++c)
+      EXPECT_EQ(tree.segments[std::size_t(s.firstChild + c)].parent, s.id) << what;
+    if (s.endReason == EndReason::Spawned) {
+      EXPECT_GT(s.childCount, 0) << what;
+    }
+  }
+}
+
+// A bushy distributed tree under a tiny memory budget (issue 14): the budget bounds the
+// work, not only the recording. No more rays are traced than the budget can record, the
+// rays whose children did not fit end Stopped, the message says so, and the estimate is
+// that of the rays traced (the recorded tree's). Trees within the budget are exactly
+// trace()'s.
+TEST(Tracer, 08_MemoryBudgetBoundsTheRaysTraced) {
   const Scene scene = allMaterialsScene();
   RenderSettings settings = settingsFor(Algorithm::Distributed, 1);
   settings.shadowSamples = 8;
@@ -325,40 +344,149 @@ TEST(Tracer, 08_MemoryBudgetStopsRecordingNotTheEstimate) {
   std::size_t largest = 0;
   for (int x = 0; x < 16; ++x) {
     for (int y = 0; y < 12; ++y) {
+      const std::string what = "pixel " + std::to_string(x) + ", " + std::to_string(y);
       Stepper stepper(tracer, x, y, 0, budget);
       stepper.runToEnd();
       const RayTree& tree = stepper.tree();
       EXPECT_LE(tree.segments.size() * sizeof(RaySegment), budget);
       EXPECT_LE(tree.memoryBytes(), budget);
+      // Every ray traced is a ray of the tree: the work stops where the budget does.
+      EXPECT_EQ(stepper.counts().total(), tree.segments.size()) << what;
+      expectFinishedTree(tree, what);
       RayCounts counts;
-      EXPECT_EQ(stepper.estimate(), tracer.trace(x, y, 0, &counts));
-      EXPECT_EQ(stepper.counts().byKind, counts.byKind);
+      const Vec3 full = tracer.trace(x, y, 0, &counts);
       largest = std::max<std::size_t>(largest, counts.total());
       if (tree.truncated) {
         ++truncatedTrees;
-        EXPECT_GT(counts.total(), tree.segments.size());
-        EXPECT_NE(tree.message.find("ray tree truncated at " +
-                                    std::to_string(tree.segments.size()) + " rays"),
+        EXPECT_GT(counts.total(), tree.segments.size()) << what;
+        EXPECT_NE(tree.message.find("ray budget reached: the tree stops at " +
+                                    std::to_string(tree.segments.size()) + " rays ("),
                   std::string::npos)
             << tree.message;
-        EXPECT_NE(tree.message.find("MiB budget); the estimate is still exact"), std::string::npos)
+        EXPECT_NE(tree.message.find(" MiB, at most 40 rays); rays whose children did not fit "
+                                    "end as 'stopped'"),
+                  std::string::npos)
             << tree.message;
+        EXPECT_TRUE(std::any_of(tree.segments.begin(), tree.segments.end(), [](const auto& s) {
+          return s.endReason == EndReason::Stopped && s.childCount == 0;
+        })) << what;
+        expectNearRelative(stepper.estimate(), tree.estimate(), what);
       } else {
         EXPECT_TRUE(tree.message.empty());
-        EXPECT_EQ(counts.total(), tree.segments.size());
+        EXPECT_EQ(stepper.estimate(), full) << what;
+        EXPECT_EQ(stepper.counts().byKind, counts.byKind) << what;
       }
     }
   }
   EXPECT_GT(truncatedTrees, 0) << "the scene must branch beyond 40 rays somewhere; largest "
                                << largest;
 
-  // A budget below one segment records nothing at all, and still computes the estimate.
+  // A budget below one segment traces nothing at all.
   Stepper none(tracer, 8, 6, 0, sizeof(RaySegment) - 1);
+  EXPECT_TRUE(none.done());
   none.runToEnd();
   EXPECT_TRUE(none.tree().truncated);
   EXPECT_TRUE(none.tree().segments.empty());
-  EXPECT_EQ(none.tree().estimate(), Vec3(0.0));
-  EXPECT_EQ(none.estimate(), tracer.trace(8, 6, 0));
+  EXPECT_EQ(none.counts().total(), 0u);
+  EXPECT_EQ(none.estimate(), Vec3(0.0));
+}
+
+/// Issue 14's runaway: a closed room whose six walls are glossy, lit by an area light,
+/// under distributed tracing at depth 8 with 8 shadow and 8 glossy samples: about 8^8
+/// glossy rays per camera ray, each with 8 shadow rays, if nothing bounds them.
+Scene glossyRoom() {
+  Scene scene;
+  scene.name = "glossy room";
+  Material glossy = makeMaterial("glossy wall", MaterialType::Glossy, Vec3(0.6));
+  glossy.exponent = 20.0;
+  glossy.specular = 0.5;
+  const int wall = addMaterial(scene, glossy);
+  const int light = addMaterial(
+      scene, makeMaterial("light", MaterialType::Diffuse, Vec3(0.0), Vec3(10.0, 9.0, 8.0)));
+  const int faces[6] = {wall, wall, wall, wall, wall, wall};
+  testing::addInwardBox(scene, Point3(-2.0, 0.0, -2.0), Point3(2.0, 3.0, 2.0), faces);
+  addObject(scene, "lamp",
+            std::make_unique<Quad>(Point3(-0.5, 2.99, -0.5), Vec3(1, 0, 0), Vec3(0, 0, 1)), light);
+  scene.camera.position = {0.0, 1.5, 1.5};
+  scene.camera.lookAt = {0.0, 1.0, -2.0};
+  scene.camera.width = 32;
+  scene.camera.height = 24;
+  return scene;
+}
+
+RenderSettings bushySettings() {
+  RenderSettings settings = settingsFor(Algorithm::Distributed, 1);
+  settings.maxDepth = 8;
+  settings.shadowSamples = 8;
+  settings.glossySamples = 8;
+  return settings;
+}
+
+// The runaway tree ends at the budget: 2 MiB of segments allow a few thousand rays, and
+// tracePixel stops there with "ray budget reached" instead of queueing millions.
+TEST(Tracer, 08b_BushyGlossyRoomEndsAtTheBudget) {
+  const Scene scene = glossyRoom();
+  const std::size_t budget = std::size_t(2) << 20;
+  const PixelTrace trace = tracePixel(scene, bushySettings(), 16, 12, 0, budget);
+  const std::size_t limit = budget / sizeof(RaySegment);
+  EXPECT_TRUE(trace.tree.truncated);
+  EXPECT_FALSE(trace.cancelled);
+  EXPECT_LE(trace.tree.segments.size(), limit);
+  EXPECT_GT(trace.tree.segments.size(), limit - 20);  // groups of at most 17 children
+  EXPECT_EQ(trace.counts.total(), trace.tree.segments.size());
+  EXPECT_NE(trace.tree.message.find("ray budget reached"), std::string::npos) << trace.tree.message;
+  expectFinishedTree(trace.tree, "glossy room");
+  expectNearRelative(trace.estimate, trace.tree.estimate(), "glossy room");
+  // A ray that could not spawn says so in its step text.
+  const auto stopped =
+      std::find_if(trace.tree.segments.begin(), trace.tree.segments.end(),
+                   [](const auto& s) { return s.endReason == EndReason::Stopped; });
+  ASSERT_NE(stopped, trace.tree.segments.end());
+  EXPECT_NE(trace.stepTexts[std::size_t(stopped->id)].find(
+                "tracing stopped here (ray budget reached, or cancelled): its children were "
+                "not traced"),
+            std::string::npos)
+      << trace.stepTexts[std::size_t(stopped->id)];
+  EXPECT_NE(trace.stepTexts[std::size_t(stopped->id)].find("would have been spawned"),
+            std::string::npos);
+}
+
+// A trace can be cancelled from another thread (the window's Cancel): a flag set before
+// the start gives an empty tree; set while the runaway tree is being traced under a 1 GiB
+// budget (about 3.5 million rays, many seconds), tracePixel returns early with a
+// consistent, propagated tree cut where it was, and says so. A grid stops at its first
+// pixel.
+TEST(Tracer, 08c_TracePixelCanBeCancelledFromAnotherThread) {
+  const Scene scene = glossyRoom();
+  const RenderSettings settings = bushySettings();
+  std::atomic<bool> cancel{true};
+  TraceLimits limits;
+  limits.cancel = &cancel;
+  const PixelTrace before = tracePixel(scene, settings, 16, 12, 0, limits);
+  EXPECT_TRUE(before.cancelled);
+  EXPECT_TRUE(before.tree.truncated);
+  EXPECT_TRUE(before.tree.segments.empty());
+  EXPECT_EQ(before.tree.message, "cancelled after 0 rays: the tree is cut short");
+  const GridTrace grid = traceGrid(scene, settings, 4, 4, limits);
+  EXPECT_TRUE(grid.cancelled);
+  EXPECT_EQ(grid.traces.size(), 1u);
+  EXPECT_NE(grid.message.find("cancelled after 1 of 16 pixels"), std::string::npos) << grid.message;
+
+  cancel = false;
+  limits.memoryBudget = std::size_t(1) << 30;
+  PixelTrace during;
+  std::thread worker([&] { during = tracePixel(scene, settings, 16, 12, 0, limits); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  cancel = true;
+  worker.join();
+  EXPECT_TRUE(during.cancelled);
+  EXPECT_TRUE(during.tree.truncated);
+  EXPECT_EQ(during.tree.message.rfind("cancelled after ", 0), 0u) << during.tree.message;
+  EXPECT_LT(during.tree.segments.size(), limits.memoryBudget / sizeof(RaySegment));
+  EXPECT_EQ(during.stepTexts.size(), during.tree.segments.size());
+  EXPECT_EQ(during.counts.total(), during.tree.segments.size());
+  expectFinishedTree(during.tree, "cancelled");
+  expectNearRelative(during.estimate, during.tree.estimate(), "cancelled");
 }
 
 // trace() is a pure function of (pixel, sample, seed): the same on any thread, in any

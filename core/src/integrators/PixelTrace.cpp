@@ -30,16 +30,27 @@ std::string PixelTrace::summary() const {
   return out.str();
 }
 
-PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, std::size_t memoryBudget) {
+PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits) {
   PixelTrace trace;
   trace.algorithm = tracer.settings().algorithm;
   trace.x = x;
   trace.y = y;
   trace.sample = sample;
 
-  // Run the real algorithm ray by ray, keeping what each step did.
-  Stepper stepper(tracer, x, y, sample, memoryBudget);
-  while (stepper.step()) {
+  // Run the real algorithm ray by ray, keeping what each step did, until the queue is
+  // empty or the front end cancels.
+  Stepper stepper(tracer, x, y, sample, limits.memoryBudget);
+  const auto cancelled = [&] {
+    return limits.cancel && limits.cancel->load(std::memory_order_relaxed);
+  };
+  while (!stepper.done()) {
+    if (cancelled()) {
+      stepper.stop("cancelled after " + std::to_string(stepper.counts().total()) +
+                   " rays: the tree is cut short");
+      trace.cancelled = true;
+      break;
+    }
+    stepper.step();
     const StepEvent& event = stepper.lastEvent();
     if (event.ray < 0) continue;
     if (std::size_t(event.ray) >= trace.stepTexts.size())
@@ -48,9 +59,27 @@ PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, std::size_
   }
   trace.tree = stepper.tree();
   trace.stepTexts.resize(trace.tree.segments.size());
+  // A cancel cuts some child lists: tell those rays' ends again.
+  for (const RaySegment& s : trace.tree.segments)
+    if (s.endReason == EndReason::Stopped && trace.cancelled)
+      trace.stepTexts[std::size_t(s.id)] = std::string(toString(s.kind)) + " ray #" +
+                                           std::to_string(s.id) + " " +
+                                           describeEnd(s, tracer.objectNames());
   trace.counts = stepper.counts();
   trace.estimate = stepper.estimate();
   return trace;
+}
+
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y, int sample,
+                      const TraceLimits& limits) {
+  const Tracer tracer(scene, settings);
+  return tracePixel(tracer, x, y, sample, limits);
+}
+
+PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, std::size_t memoryBudget) {
+  TraceLimits limits;
+  limits.memoryBudget = memoryBudget;
+  return tracePixel(tracer, x, y, sample, limits);
 }
 
 PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y, int sample,
@@ -68,7 +97,7 @@ std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, i
 }
 
 GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
-                    std::size_t memoryBudget) {
+                    const TraceLimits& limits) {
   GridTrace grid;
   const std::vector<std::pair<int, int>> pixels =
       gridPixels(scene.camera.width, scene.camera.height, across, down);
@@ -76,7 +105,9 @@ GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int acro
   std::size_t used = 0;
   for (const auto& [x, y] : pixels) {
     // Each tree gets what the grid's budget has left.
-    PixelTrace trace = tracePixel(tracer, x, y, 0, memoryBudget - used);
+    TraceLimits left = limits;
+    left.memoryBudget = limits.memoryBudget - used;
+    PixelTrace trace = tracePixel(tracer, x, y, 0, left);
     used += trace.tree.segments.size() * sizeof(RaySegment);
     // Its rays join the combined tree with ids after those already there.
     const int offset = int(grid.combined.segments.size());
@@ -87,18 +118,30 @@ GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int acro
       grid.combined.segments.push_back(s);
     }
     const bool full = trace.tree.truncated;
+    grid.cancelled = trace.cancelled;
     grid.traces.push_back(std::move(trace));
     if (full) {
       grid.truncated = true;
-      grid.message = "ray-tree memory budget (" + std::to_string(memoryBudget >> 20) +
-                     " MiB) reached after " + std::to_string(grid.traces.size()) + " of " +
-                     std::to_string(pixels.size()) + " pixels; the last tree is cut short";
+      const std::string where = std::to_string(grid.traces.size()) + " of " +
+                                std::to_string(pixels.size()) +
+                                " pixels; the last tree is cut short";
+      grid.message = grid.cancelled
+                         ? "cancelled after " + where
+                         : "ray-tree memory budget (" + std::to_string(limits.memoryBudget >> 20) +
+                               " MiB) reached after " + where;
       break;
     }
   }
   grid.combined.truncated = grid.truncated;
   grid.combined.message = grid.message;
   return grid;
+}
+
+GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
+                    std::size_t memoryBudget) {
+  TraceLimits limits;
+  limits.memoryBudget = memoryBudget;
+  return traceGrid(scene, settings, across, down, limits);
 }
 
 }  // namespace raylab

@@ -41,6 +41,8 @@ constexpr EndReasonWords kEndReasonWords[] = {
     {EndReason::ReachedLight, "reached_light", "reached its light",
      "reached its light unblocked and delivers its radiance"},
     {EndReason::Spawned, "spawned", "spawned children", "spawned children"},
+    {EndReason::Stopped, "stopped", "stopped (budget)",
+     "was traced, but tracing stopped before its children (ray budget reached, or cancelled)"},
 };
 
 }  // namespace
@@ -48,7 +50,7 @@ constexpr EndReasonWords kEndReasonWords[] = {
 constexpr bool rowsInEnumOrder() {
   for (std::size_t i = 0; i < std::size(kEndReasonWords); ++i)
     if (kEndReasonWords[i].reason != EndReason(i)) return false;
-  return std::size(kEndReasonWords) == std::size_t(EndReason::Spawned) + 1;
+  return std::size(kEndReasonWords) == std::size_t(EndReason::Stopped) + 1;
 }
 static_assert(rowsInEnumOrder(), "one row of words per end reason, in enum order");
 
@@ -75,6 +77,17 @@ std::string describeEnd(const RaySegment& s, const std::vector<std::string>& obj
         text += ")";
       }
       return text;
+    }
+    case EndReason::Stopped: {
+      // Under a budget whole sibling groups are dropped; a cancel may cut one in two.
+      std::string text =
+          named ? "hit " + object + "; tracing stopped here" : "tracing stopped here";
+      text += " (ray budget reached, or cancelled): ";
+      if (s.childCount == 0) return text + "its children were not traced";
+      return text + "only " + std::to_string(s.childCount) +
+             (s.childCount == 1 ? " child was" : " children were") + " traced (#" +
+             std::to_string(s.firstChild) + "..#" +
+             std::to_string(s.firstChild + s.childCount - 1) + ")";
     }
     case EndReason::HitLight:
       return named ? "hit the light " + object + ": the path ends there"

@@ -189,7 +189,8 @@ void Stepper::reset() {
   // The camera ray is the root of the tree (segment 0) and waits in the queue.
   QueuedRay camera = cameraRay(*m_tracer, m_x, m_y, m_sampler);
   TreeRecorder(*m_tracer, m_tree, m_event, m_budget).recordCamera(camera);
-  m_queue.push_back(camera);
+  // A budget below one segment traces nothing: the work is bounded by the budget too.
+  if (camera.id >= 0) m_queue.push_back(camera);
 }
 
 bool Stepper::step() {
@@ -204,6 +205,24 @@ bool Stepper::step() {
 void Stepper::runToEnd() {
   while (step()) {
   }
+}
+
+void Stepper::stop(const std::string& why) {
+  if (m_queue.empty()) return;
+  // The waiting rays are the last ids of the tree (children are numbered in queue order):
+  // drop them, and cut their parents' child lists where they start.
+  const std::size_t cut = std::size_t(m_queue.front().id);
+  m_queue.clear();
+  m_tree.segments.resize(std::min(cut, m_tree.segments.size()));
+  for (RaySegment& s : m_tree.segments) {
+    if (s.childCount == 0 || std::size_t(s.firstChild + s.childCount) <= cut) continue;
+    s.childCount = std::max(0, int(cut) - s.firstChild);
+    if (s.childCount == 0) s.firstChild = -1;
+    s.endReason = EndReason::Stopped;
+  }
+  m_tree.truncated = true;
+  m_tree.message = why;
+  m_tree.propagate();
 }
 
 }  // namespace raylab

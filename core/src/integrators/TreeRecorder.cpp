@@ -15,10 +15,15 @@ int TreeRecorder::reserve(std::size_t count) {
   const std::size_t needed = m_tree.segments.size() + count;
   const std::size_t limit = m_budget / sizeof(RaySegment);
   if (needed > limit) {
+    // From now on no ray gets children: the rays already queued are traced and the
+    // stepper ends, so the budget bounds the work (rays traced and queued), not only the
+    // memory of the tree.
     m_tree.truncated = true;
     std::ostringstream out;
-    out << "ray tree truncated at " << m_tree.segments.size() << " rays (" << std::setprecision(3)
-        << double(m_budget) / double(1 << 20) << " MiB budget); the estimate is still exact";
+    out << "ray budget reached: the tree stops at " << m_tree.segments.size() << " rays ("
+        << std::setprecision(3) << double(m_budget) / double(1 << 20) << " MiB, at most " << limit
+        << " rays); rays whose children did not fit end as 'stopped', and the "
+        << "estimate covers the rays traced";
     m_tree.message = out.str();
     return -1;
   }
@@ -74,11 +79,17 @@ void TreeRecorder::setFarEnd(RaySegment& seg, const QueuedRay& ray, EndReason en
 void TreeRecorder::recordStep(const QueuedRay& ray, const std::optional<SceneHit>& hit,
                               EndReason end, const Vec3& emitted,
                               std::vector<QueuedRay>& children) {
-  // Number the children: consecutive ids after everything recorded so far.
+  // Number the children: consecutive ids after everything recorded so far. Children that
+  // do not fit in the budget are not traced at all: the ray ends Stopped.
+  const std::size_t wanted = children.size();
   const int firstId = ray.id >= 0 && !children.empty() ? reserve(children.size()) : -1;
+  if (firstId < 0 && !children.empty()) {
+    children.clear();
+    end = EndReason::Stopped;
+  }
   for (std::size_t i = 0; i < children.size(); ++i) {
-    children[i].id = firstId >= 0 ? firstId + int(i) : -1;
-    if (firstId >= 0) startSegment(children[i]);
+    children[i].id = firstId + int(i);
+    startSegment(children[i]);
   }
 
   m_event.ray = ray.id;
@@ -86,7 +97,7 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const std::optional<SceneHit
   m_event.spawned = int(children.size());
   std::string subject = std::string(toString(ray.kind)) + " ray #" + std::to_string(ray.id) + " ";
   if (ray.id < 0) {
-    // Past the memory budget: the step still happens, but nothing is kept.
+    // Not recorded (a budget below one segment): the step still happens, nothing is kept.
     m_event.text = subject + words(end).clause;
     return;
   }
@@ -108,6 +119,9 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const std::optional<SceneHit
     setFarEnd(seg, ray, end);
   }
   m_event.text = subject + describeEnd(seg, m_tracer.objectNames());
+  if (end == EndReason::Stopped)
+    m_event.text += " (" + std::to_string(wanted) + (wanted == 1 ? " ray" : " rays") +
+                    " would have been spawned)";
 }
 
 }  // namespace raylab

@@ -5,6 +5,7 @@
 #include "raylab/core/Scene.h"
 #include "raylab/core/Tracer.h"
 
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -28,8 +29,10 @@ struct PixelTrace {
   /// What each ray's step did, by ray id: "reflection ray #3 hit 'glass ball' and spawned
   /// 2 rays (#5..#6)" (the stepper's narration; parallel to tree.segments).
   std::vector<std::string> stepTexts;
-  RayCounts counts;    ///< Rays processed by kind (also those past a truncated tree).
-  Vec3 estimate{0.0};  ///< The sample's radiance, linear RGB (exact even when truncated).
+  RayCounts counts;        ///< Rays traced by kind (every ray of the tree).
+  Vec3 estimate{0.0};      ///< The sample's radiance, linear RGB: Tracer::trace's value unless
+                           ///< tree.truncated, then that of the rays traced.
+  bool cancelled = false;  ///< TraceLimits::cancel stopped it (tree.message says so).
 
   /// Bounces of the deepest ray recorded (the camera ray has depth 0).
   int depth() const;
@@ -38,12 +41,41 @@ struct PixelTrace {
   std::string summary() const;
 };
 
+/**
+ * \brief What bounds one traced pixel (or a grid of them).
+ *
+ * To cancel a trace running on a worker thread (the window's Trace and Simulate), give it
+ * a flag the UI thread sets:
+ *
+ *     std::atomic<bool> cancel{false};            // owned by the window, outlives the trace
+ *     TraceLimits limits;
+ *     limits.cancel = &cancel;
+ *     auto future = std::async(std::launch::async, [&] {
+ *       return tracePixel(scene, settings, x, y, sample, limits); });
+ *     ...  cancel = true;                         // from the UI thread: Cancel, Quit
+ *     PixelTrace trace = future.get();            // returns within one engine step
+ *     if (trace.cancelled) ...                    // a partial tree: show or drop it
+ */
+struct TraceLimits {
+  /// Bytes of ray segments the tree may use; it bounds the rays traced too (see Stepper).
+  std::size_t memoryBudget = kDefaultTreeBudget;
+  /// When set, read before every engine step (relaxed); true ends the trace there with
+  /// PixelTrace::cancelled. The flag must outlive the call. Null: never cancelled.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
 /// Traces sample `sample` of pixel (x, y) of `scene` with `settings` (its algorithm) to
-/// the end, recording at most `memoryBudget` bytes of ray segments (see Stepper).
+/// the end, within `limits` (a budget reached or a cancel ends it early, and the tree says
+/// so in RayTree::truncated and RayTree::message).
+PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y, int sample,
+                      const TraceLimits& limits);
+/// The same, with an engine already built for the scene and settings (tracing many pixels).
+PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits);
+
+/// tracePixel within `memoryBudget` bytes of ray segments, never cancelled.
 PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y,
                       int sample = 0, std::size_t memoryBudget = kDefaultTreeBudget);
-
-/// The same, with an engine already built for the scene and settings (tracing many pixels).
+/// The same, with an engine already built for the scene and settings.
 PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample = 0,
                       std::size_t memoryBudget = kDefaultTreeBudget);
 
@@ -57,13 +89,18 @@ std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, i
 struct GridTrace {
   std::vector<PixelTrace> traces;  ///< One per grid pixel traced, row by row.
   RayTree combined;                ///< Every trace's rays, ids offset (roots have parent -1).
-  bool truncated = false;          ///< The memory budget ran out before the whole grid.
+  bool truncated = false;          ///< The budget ran out, or a cancel came, before the end.
+  bool cancelled = false;          ///< TraceLimits::cancel stopped it.
   std::string message;             ///< Why, for the user (how many pixels were traced).
 };
 
 /// Traces sample 0 of every pixel of gridPixels(camera size, across, down) with
-/// `settings`, within `memoryBudget` bytes of ray segments for the whole grid: when the
-/// budget runs out the grid stops there and says so (GridTrace::message).
+/// `settings`, within `limits.memoryBudget` bytes of ray segments for the whole grid: when
+/// the budget runs out, or limits.cancel is set, the grid stops there and says so
+/// (GridTrace::message).
+GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
+                    const TraceLimits& limits);
+/// traceGrid within `memoryBudget` bytes, never cancelled.
 GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
                     std::size_t memoryBudget = kDefaultTreeBudget);
 

@@ -25,6 +25,8 @@ enum class EndReason {
   Occluded,         ///< Shadow ray blocked before reaching its light.
   ReachedLight,     ///< Shadow ray reached its light unblocked.
   Spawned,          ///< Ended by spawning children (an inner node of the tree).
+  Stopped,          ///< Traced, but tracing stopped before all its children were: the ray
+                    ///< budget ran out, or the trace was cancelled (Stepper::stop).
 };
 /// The short label of an end reason ("hit a light"): EndReasonWords::label.
 const char* toString(EndReason reason);
@@ -95,8 +97,9 @@ std::string describeEnd(const RaySegment& s, const std::vector<std::string>& obj
 struct RayTree {
   int pixelX = 0, pixelY = 0, sample = 0;  ///< Which sample this is.
   std::vector<RaySegment> segments;        ///< segments[0] is the camera ray.
-  bool truncated = false;                  ///< Recording stopped at the memory budget.
-  std::string message;                     ///< Why recording stopped, for the user.
+  bool truncated = false;  ///< Tracing stopped early (ray budget reached, or cancelled):
+                           ///< rays ending Stopped lack some or all of their children.
+  std::string message;     ///< Why tracing stopped, for the user.
 
   /// Recomputes every `radiance` bottom-up from `emitted` and children's weights.
   void propagate();

@@ -48,8 +48,10 @@ struct StepEvent {
 
 class SpawnRule;
 
-/// Bytes of ray segments a recorded tree may use by default (Stepper, tracePixel).
-constexpr std::size_t kDefaultTreeBudget = std::size_t(256) << 20;
+/// Bytes of ray segments a recorded tree may use by default (Stepper, tracePixel): about
+/// 60,000 rays, which also bounds the rays traced and queued for one tree (a tree that
+/// large takes seconds to dump as JSON and to draw; more would not be readable anyway).
+constexpr std::size_t kDefaultTreeBudget = std::size_t(16) << 20;
 
 /**
  * \brief The one engine of the four algorithms (the original course program's renderer):
@@ -101,16 +103,20 @@ class Tracer {
  * \brief Advances the real algorithm for one (pixel, sample) one ray at a time,
  * recording the tree: what the window animates and the lessons narrate.
  *
- * Recording stops at `memoryBudget` bytes with a message in RayTree::message (the
- * estimate is still computed to the end); it never crashes on a bushy distributed tree.
- * A truncated tree holds the rays recorded before the budget ran out (their children
- * after that point are not recorded), so its RayTree::estimate() covers those rays only;
- * Stepper::estimate() stays exact.
+ * `memoryBudget` bounds the work, not only the tree: every ray queued is recorded, so at
+ * most memoryBudget / sizeof(RaySegment) rays are ever queued and traced. When a ray's
+ * children no longer fit, none of them is queued: the ray ends EndReason::Stopped, the
+ * rays already waiting are still traced, and RayTree::truncated and RayTree::message say
+ * "ray budget reached". A bushy distributed tree (depth 8, 8 shadow and 8 glossy samples)
+ * thus ends after about 60,000 rays (default budget) instead of growing without end. Under the
+ * budget the estimate equals Tracer::trace bit for bit; past it, it covers the rays traced (it
+ * always equals the recorded tree's RayTree::estimate() once done()).
  */
 class Stepper {
  public:
   /// Prepares sample `sample` of pixel (x, y) of `tracer` (which must outlive the stepper):
-  /// the camera ray waits in the queue. `memoryBudget` bounds the recorded segments, bytes.
+  /// the camera ray waits in the queue. `memoryBudget` bounds the recorded segments, bytes,
+  /// and so the rays traced (a budget below one segment traces nothing).
   Stepper(const Tracer& tracer, int x, int y, int sample,
           std::size_t memoryBudget = kDefaultTreeBudget);
 
@@ -121,6 +127,10 @@ class Stepper {
   void runToEnd();
   /// Back to the state before the first step (same pixel, sample and seed).
   void reset();
+  /// Ends the trace now (a cancel from the front end): the waiting rays are dropped from
+  /// the queue and the tree, their parents end Stopped, the tree is propagated and marked
+  /// truncated with `why` as its message. Nothing happens when done().
+  void stop(const std::string& why);
   /// True when every ray has been processed.
   bool done() const { return m_queue.empty(); }
 
@@ -130,7 +140,8 @@ class Stepper {
   const RayTree& tree() const { return m_tree; }
   /// What the last step did (before the first step: the camera ray waiting).
   const StepEvent& lastEvent() const { return m_event; }
-  /// The sample's estimate so far (final once done()); equals Tracer::trace when done.
+  /// The sample's estimate so far (final once done()); equals Tracer::trace when done
+  /// within the budget (tree().truncated false).
   Vec3 estimate() const { return m_estimate; }
   /// Rays processed so far, by kind.
   const RayCounts& counts() const { return m_counts; }
