@@ -39,6 +39,7 @@ def _find_numpy():
 
 _find_numpy()
 
+from . import _raylab  # noqa: E402
 from ._raylab import (  # noqa: E402
     Box,
     ComparisonError,
@@ -81,6 +82,11 @@ from ._raylab import (  # noqa: E402
     write_image,
 )
 from ._vtk import scene_polydata, tree_polydata  # noqa: E402
+
+for _name in dir(_raylab):
+    _value = getattr(_raylab, _name)
+    if isinstance(_value, type) and not _name.startswith("_"):
+        _value.__module__ = "raylab"  # raylab.SceneError, not raylab._raylab.SceneError
 
 ALGORITHMS = ("raycast", "whitted", "distributed", "path")
 """The four algorithms, in historical order (the names every function takes)."""

@@ -119,14 +119,14 @@ void bindCompare(py::module_& m) {
           comparison.setReference(arrayToImage(reference, "reference"), "array");
         }
 
-        // Progress: the comparison's thread leaves its last report here for this thread.
+        // Progress: the comparison's thread queues its reports here for this thread.
         std::mutex mutex;
-        std::optional<std::tuple<std::string, double, int>> report;
+        std::vector<std::tuple<std::string, double, int>> reports;
         std::atomic<bool> stop{false};
         comparison.setProgress([&](const std::string& stage, double fraction, int samples) {
           if (stop) throw ComparisonStopped{};
           const std::lock_guard<std::mutex> lock(mutex);
-          report = std::make_tuple(stage, fraction, samples);
+          reports.emplace_back(stage, fraction, samples);
         });
         ComparisonResult result;
         runInterruptible(
@@ -137,13 +137,14 @@ void bindCompare(py::module_& m) {
               }
             },
             [&] {
-              std::optional<std::tuple<std::string, double, int>> latest;
+              std::vector<std::tuple<std::string, double, int>> waiting;
               {
                 const std::lock_guard<std::mutex> lock(mutex);
-                latest.swap(report);
+                waiting.swap(reports);
               }
-              if (latest && !progress.is_none())
-                progress(std::get<0>(*latest), std::get<1>(*latest), std::get<2>(*latest));
+              if (progress.is_none()) return;
+              for (const auto& [stage, fraction, samples] : waiting)
+                progress(stage, fraction, samples);
             },
             [&] { stop = true; });
         return resultDict(std::move(result), type);
@@ -160,7 +161,7 @@ height, mode, seed, json (raylab compare --json's text), reference {image, spp, 
 seconds, too_noisy} and algorithms, a list of {algorithm, title, image, stats, rmse,
 rmse_linear, series} where series holds the convergence curve as arrays (spp, seconds,
 rays, rmse, rmse_linear), one point per pass. progress(stage, fraction, spp) is called on
-this thread; Ctrl-C or an exception from it stops the comparison. The GIL is released.)");
+this thread after every pass of every stage; Ctrl-C or an exception from it stops the comparison. The GIL is released.)");
 }
 
 }  // namespace raylab::python

@@ -22,8 +22,10 @@
 namespace raylab::python {
 namespace {
 
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
 /// A 4 x 4 matrix written row by row (as in scene files) as a column-major glm matrix.
-Mat4 toMat4(const py::array_t<double, py::array::c_style | py::array::forcecast>& rows) {
+Mat4 toMat4(const DoubleArray& rows) {
   if (rows.ndim() != 2 || rows.shape(0) != 4 || rows.shape(1) != 4)
     throw py::value_error("matrix must be 4 x 4 (rows of 4 numbers)");
   Mat4 m(1.0);
@@ -98,7 +100,7 @@ Made with Sphere, Box, Plane, Quad, Triangle, TriangleMesh or Scene.shape(name).
            })
       .def("area", &Shape::area)
       .def(
-          "apply", [](Shape& s, const py::array& matrix) { s.apply(toMat4(matrix)); },
+          "apply", [](Shape& s, const DoubleArray& matrix) { s.apply(toMat4(matrix)); },
           py::arg("matrix"), "Transforms the shape in world space by a 4 x 4 matrix (new = M old).")
       .def("__repr__", &Shape::toString);
 

@@ -101,8 +101,9 @@ from the top (float32: the renderer's own floats; dtype='float64' converts).
 
 Settings not given come from the scene's render block. Deterministic: the same scene,
 settings and seed give the same floats whatever `threads` is (0 = all). The GIL is
-released while rendering. progress(fraction, image_so_far) is called on this thread after
-each progressive pass (1, 1, 2, 4, ... samples); returning False stops the render, which
+released while rendering. progress(fraction, image_so_far) is called on this thread as
+progressive passes (1, 1, 2, 4, ... samples) end, with the latest one (passes ending within
+the same 20 ms are reported once; the last report has fraction 1); returning False stops the render, which
 then returns the image of the last complete pass. Ctrl-C stops it too and raises
 KeyboardInterrupt. with_stats=True returns (image, stats) with the rays by kind, the spp
 reached, the seconds, and whether it was cancelled.)");

@@ -287,14 +287,14 @@ times, parents, depths, objects, hits (N); kinds and end_reasons (N strings).)")
   m.def(
       "trace",
       [](const SceneHandle& handle, const py::object& pixel, int sample,
-         std::optional<std::string> algorithm, std::optional<std::uint64_t> seed,
-         std::optional<int> maxDepth, std::optional<bool> nee, std::optional<bool> mis) {
+         std::optional<std::string> algorithm, std::optional<int> spp,
+         std::optional<std::uint64_t> seed, std::optional<int> maxDepth, std::optional<bool> nee,
+         std::optional<bool> mis) {
         const auto [x, y] = pixelOf(pixel);
         checkPixel(*handle.scene, x, y, sample);
         auto data = std::make_shared<TraceData>();
         data->scene = handle.scene;
-        data->settings =
-            settingsFor(*handle.scene, {algorithm, std::nullopt, seed, maxDepth, nee, mis});
+        data->settings = settingsFor(*handle.scene, {algorithm, spp, seed, maxDepth, nee, mis});
         {
           py::gil_scoped_release release;
           data->trace = tracePixel(*data->scene, data->settings, x, y, sample);
@@ -302,30 +302,33 @@ times, parents, depths, objects, hits (N); kinds and end_reasons (N strings).)")
         return data;
       },
       py::arg("scene"), py::arg("pixel"), py::arg("sample") = 0, py::kw_only(),
-      py::arg("algorithm") = py::none(), py::arg("seed") = py::none(),
+      py::arg("algorithm") = py::none(), py::arg("spp") = py::none(), py::arg("seed") = py::none(),
       py::arg("max_depth") = py::none(), py::arg("next_event_estimation") = py::none(),
       py::arg("multiple_importance") = py::none(),
       R"(Traces sample `sample` of pixel (x, y) (y down) with the real algorithm, recording its
-ray tree (core's tracePixel, as raylab trace and the window do). The GIL is released.)");
+ray tree (core's tracePixel, as raylab trace and the window do). Settings not given come
+from the scene's render block; `spp` matters too: film and lens samples are stratified over
+the pixel's spp, so sample s equals sample s of a render with the same spp and seed. The
+GIL is released.)");
 
   py::class_<StepperHandle>(m, "Stepper", R"(The engine of the four algorithms for one pixel
 sample, advanced one ray at a time: the real algorithm, not a replay (core's Stepper).)")
       .def(py::init([](const SceneHandle& handle, const py::object& pixel, int sample,
-                       std::optional<std::string> algorithm, std::optional<std::uint64_t> seed,
-                       std::optional<int> maxDepth) {
+                       std::optional<std::string> algorithm, std::optional<int> spp,
+                       std::optional<std::uint64_t> seed, std::optional<int> maxDepth) {
              const auto [x, y] = pixelOf(pixel);
              checkPixel(*handle.scene, x, y, sample);
              auto h = std::make_unique<StepperHandle>();
              h->scene = handle.scene;
              h->tracer = std::make_unique<Tracer>(
-                 *h->scene, settingsFor(*handle.scene, {algorithm, std::nullopt, seed, maxDepth,
+                 *h->scene, settingsFor(*handle.scene, {algorithm, spp, seed, maxDepth,
                                                         std::nullopt, std::nullopt}));
              h->stepper = std::make_unique<Stepper>(*h->tracer, x, y, sample);
              return h;
            }),
            py::arg("scene"), py::arg("pixel"), py::arg("sample") = 0, py::kw_only(),
-           py::arg("algorithm") = py::none(), py::arg("seed") = py::none(),
-           py::arg("max_depth") = py::none())
+           py::arg("algorithm") = py::none(), py::arg("spp") = py::none(),
+           py::arg("seed") = py::none(), py::arg("max_depth") = py::none())
       .def("step", &StepperHandle::step,
            "Processes the first ray of the queue; False when the queue was already empty.")
       .def(
