@@ -14,27 +14,41 @@ namespace raylab::app {
 
 /**
  * \brief `raylab compare`: renders the scene with the four algorithms at equal samples
- * (--spp) or equal time (--time), measures each against a path-traced reference (rendered
- * at --reference-spp, or read from --reference F.pfm), writes the four-panel picture
+ * (--spp, default 4) or equal time (--time), at the scene's size fitted inside 160x120
+ * unless --size says otherwise, measures each against a path-traced reference (rendered at
+ * --reference-spp, default 16 x spp, and kept in the ReferenceCache unless --no-cache; or
+ * read from --reference F.pfm), writes the four-panel picture
  * (--out, PNG of --picture size) and the figures as JSON (--json, default beside the PNG),
  * and prints the figures. With --pixel X Y each panel also shows that pixel's ray tree.
  */
 Subcommand addCompareCommand(CLI::App& cli);
 
-/// What `compare` and `plot` share: the reference, the threads and the progress bar.
+/// What `compare` and `plot` share: the reference, its cache, the threads and the
+/// progress bar.
 struct ReferenceOptions {
-  std::string file;     ///< --reference: a PFM to measure against; empty = render one.
-  int samples = 0;      ///< --reference-spp; 0 = ComparisonSettings' default rule.
-  std::string saveAs;   ///< --save-reference: write the rendered reference as PFM.
-  int threads = 0;      ///< --threads; 0 = all.
-  std::string picture;  ///< --picture WxH text (checked by checkSize).
-  /// Adds --reference, --reference-spp, --save-reference, --threads and --picture
-  /// (`pictureDefault`, e.g. "1920x1080") to `command`.
+  std::string file;      ///< --reference: a PFM to measure against; empty = render one.
+  int samples = 0;       ///< --reference-spp; 0 = ComparisonSettings' default rule.
+  std::string saveAs;    ///< --save-reference: write the rendered reference as PFM.
+  bool noCache = false;  ///< --no-cache: render the reference, read and write no cache.
+  std::string cacheDir;  ///< --cache-dir; empty = ReferenceCache::defaultDirectory().
+  int threads = 0;       ///< --threads; 0 = all.
+  std::string picture;   ///< --picture WxH text (checked by checkSize).
+  /// Adds --reference, --reference-spp, --save-reference, --no-cache, --cache-dir,
+  /// --threads and --picture (`pictureDefault`, e.g. "1920x1080") to `command`.
   void add(CLI::App* command, const std::string& pictureDefault);
 };
 
+/// The image size `compare` and `plot` render at when --size is not given: the scene's
+/// size fitted inside 160x120 (aspect ratio kept), so a first comparison, reference
+/// included, takes seconds; the picture shows each pixel enlarged.
+constexpr int kDefaultCompareWidth = 160, kDefaultCompareHeight = 120;
+/// Fits `scene`'s camera inside the default size unless `common` has a --size.
+void fitDefaultCompareSize(const CommonOptions& common, Scene& scene);
+
 /// Runs the comparison with a ProgressBar labelled `label`, reading or saving the
-/// reference as `reference` says. Throws raylab::Exception subtypes naming the files.
+/// reference as `reference` says (through the ReferenceCache unless --no-cache or
+/// --reference; a cache problem is a note on stderr, never a failure). Throws
+/// raylab::Exception subtypes naming the files.
 ComparisonResult runComparison(const Scene& scene, const RenderSettings& settings,
                                ComparisonSettings compare, const ReferenceOptions& reference,
                                const std::string& label);

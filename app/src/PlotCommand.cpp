@@ -18,13 +18,14 @@ struct PlotOptions {
   CommonOptions common;
   ReferenceOptions reference;
   std::string x = "samples";  ///< --x samples|time.
-  int maxSpp = 64;            ///< --max-spp.
+  int maxSpp = 16;            ///< --max-spp: five points (1, 2, 4, 8, 16) per curve.
   std::string json;           ///< --json; empty = none.
 };
 
 int runPlot(const PlotOptions& options, const std::string& topLevelScene) {
   // Step 1: every algorithm up to --max-spp; each pass is a point of its curve.
-  const Scene scene = options.common.loadScene(topLevelScene);
+  Scene scene = options.common.loadScene(topLevelScene);
+  fitDefaultCompareSize(options.common, scene);
   const RenderSettings settings = options.common.settings(scene);
   ComparisonSettings compare;
   compare.samplesPerPixel = options.maxSpp;
@@ -61,7 +62,8 @@ Subcommand addPlotCommand(CLI::App& cli) {
       "            2 usage error, 3 internal error (please report it).\n"
       "Needs an X server for the picture (xvfb-run -a). Progress goes to stderr.");
   options->common.add(command, "Plot to write (.png)",
-                      "Size WIDTHxHEIGHT of the rendered images (default: the scene's)",
+                      "Size WIDTHxHEIGHT of the rendered images (default: the scene's, fitted "
+                      "inside 160x120)",
                       /*outRequired=*/true, /*withAlgorithm=*/false);
   command->get_option("--out")->check(CLI::Validator(
       [](const std::string& path) {

@@ -9,8 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <string>
+#include <thread>
 
 namespace raylab {
 namespace {
@@ -42,6 +44,20 @@ FloatImage renderWith(const Scene& scene, RenderSettings settings, Algorithm alg
   FloatImage image = renderer.render();
   if (stats) *stats = renderer.stats();
   return image;
+}
+
+/// The image after each pass of one render at `spp` (a pass at k spp jitters its camera
+/// rays like the whole render, unlike a render of k = 1 spp, which aims at pixel centres).
+std::vector<FloatImage> passImages(const Scene& scene, RenderSettings settings, Algorithm algorithm,
+                                   int spp) {
+  settings.algorithm = algorithm;
+  settings.samplesPerPixel = spp;
+  Renderer renderer(scene, settings);
+  renderer.setThreads(2);
+  std::vector<FloatImage> images;
+  renderer.setProgress([&](double, const FloatImage& image) { images.push_back(image); });
+  renderer.render();
+  return images;
 }
 
 int differingPixels(const FloatImage& a, const FloatImage& b) {
@@ -125,8 +141,10 @@ TEST(Comparison, 02_ReferenceIsPathTracingWithItsOwnSeed) {
 
 TEST(Comparison, 03_DefaultReferenceSamplesFollowTheRule) {
   ComparisonSettings compare;
-  compare.samplesPerPixel = 4;
-  EXPECT_EQ(compare.referenceSpp(), 256);  // max(256, 16 x 4)
+  EXPECT_EQ(compare.samplesPerPixel, 4);  // the default: a comparison in seconds
+  EXPECT_EQ(compare.referenceSpp(), 64);  // 16 x 4
+  compare.samplesPerPixel = 1;
+  EXPECT_EQ(compare.referenceSpp(), 16);  // 16 x 1
   compare.samplesPerPixel = 64;
   EXPECT_EQ(compare.referenceSpp(), 1024);  // 16 x 64
   compare.secondsPerAlgorithm = 2.0;
@@ -319,6 +337,120 @@ TEST(Comparison, 09_ProgressCoversReferenceAndEveryAlgorithm) {
   EXPECT_EQ(stages, expected);
   EXPECT_TRUE(monotonic);
   EXPECT_DOUBLE_EQ(last, 1.0);
+}
+
+TEST(Comparison, 10_PassCallbackDeliversEveryPassOfEveryAlgorithm) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 4;
+  compare.referenceSamplesPerPixel = 16;
+  Comparison comparison(scene, settings, compare);
+  struct Seen {
+    int index, algorithms, spp;
+    double fraction, rmse;
+    FloatImage image;
+  };
+  std::vector<Seen> seen;
+  comparison.setPassCallback([&](const ComparisonResult& soFar, int index, double fraction) {
+    const AlgorithmFigures& current = soFar.algorithms.at(std::size_t(index));
+    EXPECT_EQ(soFar.reference.samplesPerPixel, 16);
+    EXPECT_DOUBLE_EQ(current.rmse, displayRmse(current.image, soFar.reference.image));
+    seen.push_back({index, int(soFar.algorithms.size()), current.stats.samplesPerPixel, fraction,
+                    current.rmse, current.image});
+  });
+  const ComparisonResult result = comparison.run();
+  EXPECT_FALSE(result.cancelled);
+
+  // Passes at 1, 2, 4 spp for each of the four, in order, the fraction rising to 1.
+  ASSERT_EQ(seen.size(), 12u);
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(seen[i].index, int(i / 3));
+    EXPECT_EQ(seen[i].algorithms, int(i / 3) + 1);
+    EXPECT_EQ(seen[i].spp, 1 << (i % 3));
+    if (i > 0) {
+      EXPECT_GT(seen[i].fraction, seen[i - 1].fraction);
+    }
+    // Each partial image is the renderer's image at that spp; the series says the same.
+    const Algorithm algorithm = compare.algorithms[i / 3];
+    EXPECT_EQ(differingPixels(seen[i].image, passImages(scene, settings, algorithm, 4).at(i % 3)),
+              0);
+    EXPECT_DOUBLE_EQ(seen[i].rmse, result.algorithms[i / 3].series[i % 3].rmse);
+  }
+  EXPECT_DOUBLE_EQ(seen.back().fraction, 1.0);
+  EXPECT_EQ(differingPixels(seen.back().image, result.algorithms.back().image), 0);
+}
+
+TEST(Comparison, 11_CancelFromTheCallbackKeepsTheFinishedPasses) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 8;
+  compare.referenceSamplesPerPixel = 16;
+  Comparison comparison(scene, settings, compare);
+  comparison.setPassCallback([&](const ComparisonResult&, int index, double) {
+    if (index == 1 && !comparison.cancelled()) comparison.cancel();  // Whitted's first pass
+  });
+  const ComparisonResult result = comparison.run();
+
+  EXPECT_TRUE(result.cancelled);
+  EXPECT_TRUE(comparison.cancelled());
+  ASSERT_EQ(result.algorithms.size(), 2u);  // distributed and path never started
+  EXPECT_EQ(result.algorithms[0].stats.samplesPerPixel, 8);
+  EXPECT_FALSE(result.algorithms[0].stats.cancelled);
+  const AlgorithmFigures& whitted = result.algorithms[1];
+  EXPECT_EQ(whitted.algorithm, Algorithm::Whitted);
+  EXPECT_EQ(whitted.stats.samplesPerPixel, 1);
+  EXPECT_TRUE(whitted.stats.cancelled);
+  EXPECT_EQ(differingPixels(whitted.image, passImages(scene, settings, Algorithm::Whitted, 8)[0]),
+            0);
+  EXPECT_DOUBLE_EQ(whitted.rmse, displayRmse(whitted.image, result.reference.image));
+}
+
+TEST(Comparison, 12_CancelFromAnotherThreadStopsTheRun) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 1 << 12;  // far more than the test waits for
+  compare.referenceSamplesPerPixel = 4;
+  Comparison comparison(scene, settings, compare);
+  std::atomic<bool> firstPass{false}, cancelCalled{false};
+  // The rendering thread holds its first pass until the other thread has cancelled, so
+  // the cancel always lands in the middle of the first algorithm.
+  comparison.setPassCallback([&](const ComparisonResult&, int, double) {
+    firstPass = true;
+    while (!cancelCalled) std::this_thread::yield();
+  });
+  ComparisonResult result;
+  std::thread worker([&] { result = comparison.run(); });
+  while (!firstPass) std::this_thread::yield();
+  comparison.cancel();
+  cancelCalled = true;
+  worker.join();
+
+  EXPECT_TRUE(result.cancelled);
+  ASSERT_EQ(result.algorithms.size(), 1u);
+  EXPECT_TRUE(result.algorithms[0].stats.cancelled);
+  EXPECT_EQ(result.algorithms[0].stats.samplesPerPixel, 1);
+  EXPECT_EQ(differingPixels(result.algorithms[0].image,
+                            passImages(scene, settings, Algorithm::RayCasting, 2)[0]),
+            0);
+}
+
+TEST(Comparison, 13_CancelDuringTheReferenceLeavesNoAlgorithm) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 2;
+  compare.referenceSamplesPerPixel = 64;
+  Comparison comparison(scene, smallSettings(scene), compare);
+  comparison.setProgress([&](const std::string& stage, double, int spp) {
+    if (stage == "reference" && spp == 2) comparison.cancel();
+  });
+  const ComparisonResult result = comparison.run();
+  EXPECT_TRUE(result.cancelled);
+  EXPECT_TRUE(result.algorithms.empty());
+  EXPECT_EQ(result.reference.samplesPerPixel, 2);  // the passes finished: 1, then 2
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <unordered_set>
 
@@ -78,8 +79,8 @@ float byteSwapped(float v) {
 
 }  // namespace
 
-void writePfm(const FloatImage& image, const std::string& path) {
-  checkSize(image, path);
+std::string encodePfm(const FloatImage& image, const std::string& name) {
+  checkSize(image, name);
   // Header: "PF" (colour), size, and a negative scale for little-endian data.
   std::string bytes =
       "PF\n" + std::to_string(image.width) + " " + std::to_string(image.height) + "\n-1.0\n";
@@ -95,20 +96,25 @@ void writePfm(const FloatImage& image, const std::string& path) {
         std::memcpy(out, &v, 4);
         out += 4;
       }
-  writeAtomically(path, bytes);
+  return bytes;
 }
 
-FloatImage readPfm(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ReadError(path + ": cannot open image file");
+void writePfm(const FloatImage& image, const std::string& path) {
+  writeAtomically(path, encodePfm(image, path));
+}
+
+namespace {
+
+/// Reads a PFM from `in`; `exact` refuses bytes after the pixels.
+FloatImage readPfmStream(std::istream& in, const std::string& name, bool exact) {
   std::string magic;
   int width = 0, height = 0;
   double scale = 0.0;
   in >> magic >> width >> height >> scale;
   if (!in || magic != "PF")
-    throw ReadError(path + ": not a colour PFM file (expected the \"PF\" header)");
+    throw ReadError(name + ": not a colour PFM file (expected the \"PF\" header)");
   if (width <= 0 || height <= 0 || width > 65536 || height > 65536 || scale == 0.0)
-    throw ReadError(path + ": bad PFM header (size " + std::to_string(width) + "x" +
+    throw ReadError(name + ": bad PFM header (size " + std::to_string(width) + "x" +
                     std::to_string(height) + ", scale " + std::to_string(scale) + ")");
   in.get();  // the single whitespace character after the scale
   FloatImage image(width, height);
@@ -116,14 +122,29 @@ FloatImage readPfm(const std::string& path) {
   const bool swap = (scale < 0.0) != hostIsLittleEndian();
   for (int y = height - 1; y >= 0; --y) {
     in.read(reinterpret_cast<char*>(row.data()), std::streamsize(row.size() * 4));
-    if (!in) throw ReadError(path + ": truncated PFM data");
+    if (!in) throw ReadError(name + ": truncated PFM data");
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) {
         const float v = row[std::size_t(x) * 3 + c];
         image.at(x, y)[c] = swap ? byteSwapped(v) : v;
       }
   }
+  if (exact && in.peek() != std::char_traits<char>::eof())
+    throw ReadError(name + ": bytes after the PFM data");
   return image;
+}
+
+}  // namespace
+
+FloatImage readPfm(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ReadError(path + ": cannot open image file");
+  return readPfmStream(in, path, false);
+}
+
+FloatImage decodePfm(const std::string& bytes, const std::string& name) {
+  std::istringstream in(bytes, std::ios::binary);
+  return readPfmStream(in, name, true);
 }
 
 double srgbFromLinear(double linear) {

@@ -1,5 +1,7 @@
 #include "raylab/core/Comparison.h"
 
+#include "raylab/core/ReferenceCache.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -74,7 +76,7 @@ double displayRmse(const FloatImage& image, const FloatImage& reference) {
 
 int ComparisonSettings::defaultReferenceSpp() const {
   if (equalTime()) return 256;
-  return std::max(256, 16 * samplesPerPixel);
+  return 16 * samplesPerPixel;
 }
 
 int ComparisonSettings::referenceSpp() const {
@@ -147,6 +149,80 @@ void Comparison::setReference(FloatImage image, const std::string& file) {
   m_hasReference = true;
 }
 
+RenderSettings Comparison::referenceSettings(const RenderSettings& settings,
+                                             const ComparisonSettings& compare) {
+  RenderSettings reference = settings;
+  reference.algorithm = Algorithm::PathTracing;
+  reference.samplesPerPixel = compare.referenceSpp();
+  reference.seed = referenceSeed(settings.seed);
+  return reference;
+}
+
+void Comparison::setReferenceCache(std::optional<ReferenceCache> cache) {
+  m_cache = cache ? std::make_shared<const ReferenceCache>(std::move(*cache)) : nullptr;
+}
+
+void Comparison::cancel() {
+  std::lock_guard<std::mutex> lock(m_activeMutex);
+  m_cancelled = true;
+  if (m_active != nullptr) m_active->cancel();
+}
+
+FloatImage Comparison::renderCancellably(Renderer& renderer) {
+  {
+    std::lock_guard<std::mutex> lock(m_activeMutex);
+    if (m_cancelled) renderer.cancel();
+    m_active = &renderer;
+  }
+  struct Release {
+    Comparison& self;
+    ~Release() {
+      std::lock_guard<std::mutex> lock(self.m_activeMutex);
+      self.m_active = nullptr;
+    }
+  } release{*this};
+  return renderer.render();
+}
+
+ComparisonReference Comparison::renderReference(const std::function<void(double, int)>& report) {
+  const RenderSettings settings = referenceSettings(m_settings, m_compare);
+
+  // Step 1: a verified entry of the cache, when there is one.
+  ComparisonReference reference;
+  std::string key;
+  if (m_cache) {
+    try {
+      key = ReferenceCache::key(m_scene, settings);
+    } catch (const Exception& e) {
+      reference.cacheNote = std::string("the reference cache cannot key this scene: ") + e.what();
+    }
+  }
+  if (!key.empty()) {
+    ReferenceCache::Lookup lookup = m_cache->load(m_scene, settings);
+    if (lookup.reference) return std::move(*lookup.reference);
+    reference.cacheNote = lookup.problem;
+  }
+
+  // Step 2: path tracing at high spp with its own seed, stored for the next time.
+  Renderer renderer(m_scene, settings);
+  renderer.setThreads(m_compare.threads);
+  renderer.setProgress([&](double fraction, const FloatImage&) {
+    report(fraction, renderer.stats().samplesPerPixel);
+  });
+  reference.image = renderCancellably(renderer);
+  reference.samplesPerPixel = renderer.stats().samplesPerPixel;
+  reference.seed = settings.seed;
+  reference.seconds = renderer.stats().seconds;
+  if (!key.empty() && !renderer.stats().cancelled) {
+    if (auto problem = m_cache->store(m_scene, settings, reference)) {
+      reference.cacheNote += (reference.cacheNote.empty() ? "" : "; ") + *problem;
+    } else {
+      reference.cacheFile = m_cache->imagePath(key);
+    }
+  }
+  return reference;
+}
+
 ComparisonResult Comparison::run() {
   ComparisonResult result;
   result.sceneName = m_scene.name;
@@ -156,7 +232,8 @@ ComparisonResult Comparison::run() {
   result.compare = m_compare;
 
   // Step 1: how much of the work each stage is, for the progress fraction: spp with equal
-  // samples (the reference counts as its spp), one budget each with equal time.
+  // samples (the reference counts as its spp), one budget each with equal time. A cached
+  // reference turns out to cost nothing: the fraction then jumps past it.
   const int count = static_cast<int>(m_compare.algorithms.size());
   const double stageWeight = 1.0;
   const double referenceWeight = m_hasReference          ? 0.0
@@ -165,35 +242,29 @@ ComparisonResult Comparison::run() {
                                                                double(m_compare.samplesPerPixel);
   const double totalWeight = referenceWeight + count * stageWeight;
   double doneWeight = 0.0;
+  const auto fractionOf = [&](double stageFraction, double weight) {
+    return std::clamp((doneWeight + stageFraction * weight) / totalWeight, 0.0, 1.0);
+  };
   const auto report = [&](const std::string& stage, double stageFraction, double weight, int spp) {
-    if (m_progress)
-      m_progress(stage, std::clamp((doneWeight + stageFraction * weight) / totalWeight, 0.0, 1.0),
-                 spp);
+    if (m_progress) m_progress(stage, fractionOf(stageFraction, weight), spp);
   };
 
   // Step 2: the reference — path tracing at high spp with its own seed — unless given.
   if (!m_hasReference) {
-    RenderSettings settings = m_settings;
-    settings.algorithm = Algorithm::PathTracing;
-    settings.samplesPerPixel = m_compare.referenceSpp();
-    settings.seed = referenceSeed(m_settings.seed);
-    Renderer renderer(m_scene, settings);
-    renderer.setThreads(m_compare.threads);
-    renderer.setProgress([&](double fraction, const FloatImage&) {
-      report("reference", fraction, referenceWeight, renderer.stats().samplesPerPixel);
-    });
-    m_reference.image = renderer.render();
-    m_reference.samplesPerPixel = renderer.stats().samplesPerPixel;
-    m_reference.seed = settings.seed;
-    m_reference.seconds = renderer.stats().seconds;
-    m_reference.file.clear();
+    m_reference = renderReference(
+        [&](double fraction, int spp) { report("reference", fraction, referenceWeight, spp); });
     doneWeight += referenceWeight;
   }
   result.reference = m_reference;
+  if (m_cancelled) {
+    result.cancelled = true;
+    return result;
+  }
 
   // Step 3: each algorithm, measuring every pass against the reference. The time spent
-  // measuring is taken out of the reported times.
-  for (Algorithm algorithm : m_compare.algorithms) {
+  // measuring (and in the pass callback) is taken out of the reported times.
+  for (int index = 0; index < count && !m_cancelled; ++index) {
+    const Algorithm algorithm = m_compare.algorithms[std::size_t(index)];
     RenderSettings settings = m_settings;
     settings.algorithm = algorithm;
     settings.samplesPerPixel = m_compare.samplesPerPixel;
@@ -201,7 +272,8 @@ ComparisonResult Comparison::run() {
     renderer.setThreads(m_compare.threads);
     if (m_compare.equalTime()) renderer.setTimeLimit(m_compare.secondsPerAlgorithm);
 
-    AlgorithmFigures figures;
+    result.algorithms.emplace_back();
+    AlgorithmFigures& figures = result.algorithms.back();
     figures.algorithm = algorithm;
     double measuring = 0.0;
     const auto start = std::chrono::steady_clock::now();
@@ -218,16 +290,30 @@ ComparisonResult Comparison::run() {
           m_compare.equalTime() ? std::max(fraction, point.seconds / m_compare.secondsPerAlgorithm)
                                 : fraction;
       report(toString(algorithm), std::min(stageFraction, 1.0), stageWeight, point.samplesPerPixel);
+      if (m_passCallback) {
+        // The algorithm as it stands after this pass.
+        figures.image = image;
+        figures.stats = renderer.stats();
+        figures.stats.seconds = point.seconds;
+        figures.rmse = point.rmse;
+        figures.rmseLinear = point.rmseLinear;
+        m_passCallback(result, index, fractionOf(std::min(stageFraction, 1.0), stageWeight));
+      }
       measuring += secondsSince(measureStart);
     });
-    figures.image = renderer.render();
+    figures.image = renderCancellably(renderer);
     figures.stats = renderer.stats();
     figures.stats.seconds = std::max(0.0, figures.stats.seconds - measuring);
+    if (figures.stats.samplesPerPixel == 0) {
+      // Cancelled before its first pass: nothing of it to show.
+      result.algorithms.pop_back();
+      break;
+    }
     figures.rmse = displayRmse(figures.image, m_reference.image);
     figures.rmseLinear = imageio::rmse(figures.image, m_reference.image);
-    result.algorithms.push_back(std::move(figures));
     doneWeight += stageWeight;
   }
+  result.cancelled = m_cancelled;
   return result;
 }
 

@@ -6,8 +6,12 @@
 #include "raylab/core/Renderer.h"
 #include "raylab/core/Scene.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +23,7 @@ namespace raylab {
  * | field | default | meaning |
  * | --- | --- | --- |
  * | algorithms | all four | which algorithms, in this order |
- * | samplesPerPixel | 16 | equal samples: every algorithm's spp; equal time: the cap |
+ * | samplesPerPixel | 4 | equal samples: every algorithm's spp; equal time: the cap |
  * | secondsPerAlgorithm | 0 | > 0: equal time, each algorithm renders this long |
  * | referenceSamplesPerPixel | 0 | spp of the rendered reference; 0 = defaultReferenceSpp() |
  * | threads | 0 | worker threads, 0 = all |
@@ -27,16 +31,16 @@ namespace raylab {
 struct ComparisonSettings {
   std::vector<Algorithm> algorithms = {Algorithm::RayCasting, Algorithm::Whitted,
                                        Algorithm::Distributed, Algorithm::PathTracing};
-  int samplesPerPixel = 16;          ///< Equal samples: spp of each; equal time: the cap.
+  int samplesPerPixel = 4;           ///< Equal samples: spp of each; equal time: the cap.
   double secondsPerAlgorithm = 0.0;  ///< Equal-time budget per algorithm, s; 0 = equal spp.
   int referenceSamplesPerPixel = 0;  ///< Reference spp; 0 = defaultReferenceSpp().
   int threads = 0;                   ///< Worker threads; 0 = all hardware threads.
 
   /// True in equal-time mode.
   bool equalTime() const { return secondsPerAlgorithm > 0.0; }
-  /// The rule for the rendered reference: max(256, 16 x samplesPerPixel) with equal
-  /// samples (its own noise then adds under 4% to the path tracer's error), 256 with equal
-  /// time (the spp reached is not known beforehand: see referenceTooNoisy).
+  /// The rule for the rendered reference: 16 x samplesPerPixel with equal samples (its own
+  /// noise then adds about 3% to the path tracer's error, and referenceTooNoisy is false),
+  /// 256 with equal time (the spp reached is not known beforehand: see referenceTooNoisy).
   int defaultReferenceSpp() const;
   /// referenceSamplesPerPixel, or the default rule when it is 0.
   int referenceSpp() const;
@@ -84,7 +88,12 @@ struct ComparisonReference {
   int samplesPerPixel = 0;  ///< Its spp (0 when read from a file that does not say).
   std::uint64_t seed = 0;   ///< Seed it was rendered with (0 for a file).
   std::string file;         ///< PFM it was read from; empty when rendered.
-  double seconds = 0.0;     ///< Time to render it, s (0 for a file).
+  double seconds = 0.0;     ///< Time to render it, s (0 for a file); for a cached one, the
+                            ///< time it took when it was rendered.
+  bool cached = false;      ///< True when read from the ReferenceCache instead of rendered.
+  std::string cacheFile;    ///< The cache's PFM read or written; empty without a cache.
+  std::string cacheNote;    ///< What went wrong with the cache (an entry ignored as corrupt,
+                            ///< a folder not writable), for a note; empty when all went well.
 };
 
 /// Everything a comparison measured: what ComparisonView draws and the JSON reports.
@@ -95,6 +104,11 @@ struct ComparisonResult {
   ComparisonSettings compare;  ///< Mode and budgets.
   ComparisonReference reference;
   std::vector<AlgorithmFigures> algorithms;  ///< In compare.algorithms' order.
+  /// True when Comparison::cancel stopped the run: `algorithms` then holds those started,
+  /// the last one at the last pass it finished (its stats.cancelled set), and when it
+  /// stopped while rendering the reference, no algorithm and the reference's finished
+  /// passes (never stored in the cache).
+  bool cancelled = false;
 };
 
 /// True when the rendered reference has fewer than 16 times the samples path tracing
@@ -104,6 +118,8 @@ bool referenceTooNoisy(const ComparisonResult& result);
 
 /// Human name and citation of an algorithm: "Ray casting (Appel 1968)".
 std::string algorithmTitle(Algorithm algorithm);
+
+class ReferenceCache;
 
 /**
  * \brief Renders one scene under several algorithms with the core Renderer and measures
@@ -117,7 +133,14 @@ std::string algorithmTitle(Algorithm algorithm);
  * The reference is path tracing — the algorithm that solves the rendering equation — at
  * referenceSpp(), with another seed than the compared renders (so the path tracer's error
  * is not shrunk by sharing its first samples with the reference), or an image given with
- * setReference. Images are deterministic for a given spp; times are wall-clock.
+ * setReference. Images are deterministic for a given spp; times are wall-clock. With a
+ * ReferenceCache (setReferenceCache), a reference rendered before for the same scene and
+ * settings is read back instead of rendered, and a rendered one is stored.
+ *
+ * Progressive and cancellable, for a window that runs it on a worker thread: the pass
+ * callback delivers, after every pass of every algorithm, the comparison so far (each
+ * algorithm's image and figures up to that pass); cancel() from any thread stops the run
+ * within one tile of rendering, keeping the passes finished so far.
  */
 class Comparison {
  public:
@@ -131,6 +154,14 @@ class Comparison {
   /// `fraction` the part of the whole comparison done (0..1), `samples` the stage's spp.
   using Progress =
       std::function<void(const std::string& stage, double fraction, int samplesPerPixel)>;
+  /// Called on the rendering thread after each pass of algorithm `index` (into
+  /// compare.algorithms) with everything so far: `soFar.reference` complete, the
+  /// algorithms before `index` final, algorithm `index` at this pass (its image, stats with
+  /// the spp, rays and seconds so far, rmse and series to this pass). `fraction` is the
+  /// part of the whole comparison done (0..1). Copy what you keep: the reference is valid
+  /// only during the call.
+  using PassCallback =
+      std::function<void(const ComparisonResult& soFar, int index, double fraction)>;
 
   /// `scene` (which must outlive the comparison) rendered with `settings` (algorithm
   /// ignored). Throws Error when `compare` is invalid (no algorithm, spp < 1, ...).
@@ -141,12 +172,26 @@ class Comparison {
   /// size differs from the scene camera's.
   void setReference(FloatImage image, const std::string& file = {});
   void setProgress(Progress progress) { m_progress = std::move(progress); }
+  void setPassCallback(PassCallback callback) { m_passCallback = std::move(callback); }
+  /// Reads and stores the rendered reference in `cache` (nothing: no cache, the default).
+  /// A reference given with setReference is neither read nor stored.
+  void setReferenceCache(std::optional<ReferenceCache> cache);
 
-  /// Renders the reference (unless given) and each algorithm; returns the figures.
+  /// Renders the reference (unless given or cached) and each algorithm; returns the
+  /// figures (result.cancelled when cancel() stopped it). Call it once.
   ComparisonResult run();
+  /// Stops run() from any thread (also from the callbacks): returns at once; run() returns
+  /// after the tiles being rendered, with the passes finished so far. Stays cancelled.
+  void cancel();
+  /// True once cancel() was called.
+  bool cancelled() const { return m_cancelled; }
 
   /// Seed of the rendered reference for a comparison seeded with `seed`.
   static std::uint64_t referenceSeed(std::uint64_t seed);
+  /// The settings the reference of a comparison is rendered with: `settings` with path
+  /// tracing, compare.referenceSpp() and referenceSeed(settings.seed).
+  static RenderSettings referenceSettings(const RenderSettings& settings,
+                                          const ComparisonSettings& compare);
 
  private:
   const Scene& m_scene;
@@ -155,6 +200,15 @@ class Comparison {
   ComparisonReference m_reference;
   bool m_hasReference = false;
   Progress m_progress;
+  PassCallback m_passCallback;
+  std::shared_ptr<const ReferenceCache> m_cache;
+  std::atomic<bool> m_cancelled{false};
+  std::mutex m_activeMutex;      ///< Guards m_active against cancel() from other threads.
+  Renderer* m_active = nullptr;  ///< The renderer run() is in, for cancel().
+
+  /// Renders with `renderer`, reachable by cancel() meanwhile.
+  FloatImage renderCancellably(Renderer& renderer);
+  ComparisonReference renderReference(const std::function<void(double, int)>& report);
 };
 
 /// The figures as JSON (nlohmann-json, 2-space indent): scene, mode, error metric and

@@ -81,6 +81,11 @@ class ReadError : public Exception {
 void writePfm(const FloatImage& image, const std::string& path);
 /// Reads a colour PFM ("PF") of either byte order, as written by writePfm.
 FloatImage readPfm(const std::string& path);
+/// The bytes writePfm writes (throws WriteError naming `name` for an empty image).
+std::string encodePfm(const FloatImage& image, const std::string& name = "image");
+/// Parses the bytes of a colour PFM file, as readPfm does; errors (ReadError) name `name`.
+/// Refuses bytes after the pixels, so a file with anything appended is not read as valid.
+FloatImage decodePfm(const std::string& bytes, const std::string& name);
 /// Tone-mapped 8-bit binary PPM ("P6"; clamp to [0, 1], sRGB transfer curve).
 void writePpm(const FloatImage& image, const std::string& path);
 
