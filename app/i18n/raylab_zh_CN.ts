@@ -415,6 +415,85 @@
     </message>
 </context>
 <context>
+    <name>raylab::app::LessonPanel</name>
+    <message>
+        <source>The language of the lesson&apos;s texts</source>
+        <translation>课程文字所用的语言</translation>
+    </message>
+    <message>
+        <source>Question</source>
+        <translation>问题</translation>
+    </message>
+    <message>
+        <source>Your answer (a number)</source>
+        <translation>你的答案（一个数值）</translation>
+    </message>
+    <message>
+        <source>Check my answer</source>
+        <translation>检查答案</translation>
+    </message>
+    <message>
+        <source>Say whether the answer is right, and why</source>
+        <translation>判断答案是否正确，并给出解释</translation>
+    </message>
+    <message>
+        <source>Teacher&apos;s notes</source>
+        <translation>教师备注</translation>
+    </message>
+    <message>
+        <source>Show or hide the notes for the teacher</source>
+        <translation>显示或隐藏给教师的备注</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>上一步</translation>
+    </message>
+    <message>
+        <source>The previous step (Page Up)</source>
+        <translation>上一步（Page Up）</translation>
+    </message>
+    <message>
+        <source>Next</source>
+        <translation>下一步</translation>
+    </message>
+    <message>
+        <source>The next step (Page Down)</source>
+        <translation>下一步（Page Down）</translation>
+    </message>
+    <message>
+        <source>No lesson</source>
+        <translation>未打开课程</translation>
+    </message>
+    <message>
+        <source>Choose a lesson in the Lessons menu.</source>
+        <translation>请在“课程”菜单中选择一节课。</translation>
+    </message>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation>第 %1 步（共 %2 步）</translation>
+    </message>
+    <message>
+        <source>This step needs a feature still to come (%1): the view shows the scene instead.</source>
+        <translation>本步骤需要一个尚未实现的功能（%1）：这里暂以场景视图代替。</translation>
+    </message>
+    <message>
+        <source>%1 (± %2)</source>
+        <translation>%1（± %2）</translation>
+    </message>
+    <message>
+        <source>Please write a number, such as 0.25.</source>
+        <translation>请填写一个数值，例如 0.25。</translation>
+    </message>
+    <message>
+        <source>✓ Right.</source>
+        <translation>✓ 回答正确。</translation>
+    </message>
+    <message>
+        <source>✗ Not quite: the answer is %1.</source>
+        <translation>✗ 不太对：正确答案是 %1。</translation>
+    </message>
+</context>
+<context>
     <name>raylab::app::MainWindow</name>
     <message>
         <source>Image</source>
@@ -935,6 +1014,54 @@
     <message>
         <source>Slo&amp;wer</source>
         <translation>减速(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>课程</translation>
+    </message>
+    <message>
+        <source>Less&amp;ons</source>
+        <translation>课程(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Open a lesson &amp;file…</source>
+        <translation>打开课程文件(&amp;F)…</translation>
+    </message>
+    <message>
+        <source>Open a lesson file (.json) of your own</source>
+        <translation>打开你自己编写的课程文件（.json）</translation>
+    </message>
+    <message>
+        <source>Open a lesson</source>
+        <translation>打开课程</translation>
+    </message>
+    <message>
+        <source>RayLab lessons (*.json)</source>
+        <translation>RayLab 课程 (*.json)</translation>
+    </message>
+    <message>
+        <source>&amp;Next step</source>
+        <translation>下一步(&amp;N)</translation>
+    </message>
+    <message>
+        <source>The lesson&apos;s next step</source>
+        <translation>课程的下一步</translation>
+    </message>
+    <message>
+        <source>&amp;Previous step</source>
+        <translation>上一步(&amp;P)</translation>
+    </message>
+    <message>
+        <source>The lesson&apos;s previous step</source>
+        <translation>课程的上一步</translation>
+    </message>
+    <message>
+        <source>Cannot open the lesson</source>
+        <translation>无法打开课程</translation>
+    </message>
+    <message>
+        <source>%1: the lesson has no steps</source>
+        <translation>%1：这节课没有任何步骤</translation>
     </message>
 </context>
 <context>

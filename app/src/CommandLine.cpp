@@ -120,6 +120,14 @@ int runCommandLine(int argc, char** argv) {
   cli.add_flag("--presentation", presentation,
                "Start in presentation mode (full screen, large fonts, thick rays)");
 
+  std::string lesson;
+  CLI::Option* lessonOption =
+      cli.add_option("--lesson", lesson, "Open this lesson file (lessons/NN-topic.json) at start");
+  int lessonStep = 1;
+  cli.add_option("--lesson-step", lessonStep, "With --lesson: show this step (1 = the first)")
+      ->needs(lessonOption)
+      ->check(CLI::Range(1, 1000));
+
   // The headless subcommands, each in its own file.
   const std::vector<Subcommand> subcommands = {
       addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
@@ -156,6 +164,8 @@ int runCommandLine(int argc, char** argv) {
   window.render = renderAtStart;
   if (renderSamples > 0) window.renderSamples = renderSamples;
   window.presentation = presentation;
+  window.lesson = lesson;
+  window.lessonStep = lessonStep;
   return runWindow(argc, argv, window);
 #else
   std::cerr << "raylab: this build has no window (configured with RAYLAB_BUILD_GUI=OFF); "

@@ -4,16 +4,19 @@
 #include "InspectorPanel.h"
 #include "InteractorStyle.h"
 #include "Language.h"
+#include "LessonPanel.h"
 #include "PropertiesPanel.h"
 #include "RayTreePanel.h"
 #include "RenderPanel.h"
 #include "SceneDocument.h"
 #include "UiWords.h"
 
+#include "raylab/core/Lesson.h"
 #include "raylab/core/SceneEdit.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Shape.h"
 #include "raylab/vis/SceneView.h"
+#include "raylab/vis/ViewCamera.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -22,13 +25,16 @@
 #include <vtkRenderer.h>
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHash>
 #include <QHeaderView>
 #include <QKeySequence>
 #include <QListWidget>
@@ -57,6 +63,8 @@ constexpr int kRecentFiles = 10;
 /// Presentation mode: fonts this many times larger, rays this many times thicker.
 constexpr double kPresentationFontScale = 1.6;
 constexpr double kPresentationLineScale = 2.0;
+/// Most samples per pixel a lesson step renders in the window (as the handout's images).
+constexpr int kLessonImageSpp = 64;
 
 /// RayLab's settings (an INI file in the user's configuration folder).
 QSettings settings() {
@@ -177,6 +185,14 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
   tabifyDockWidget(rays, inspector);
   m_raysDock = rays;
   m_inspectorDock = inspector;
+
+  // The lesson panel, in a tab beside them, shown when a lesson is opened.
+  m_lessonPanel = new LessonPanel;
+  m_lessonDock =
+      addDock(tr("Lesson"), QStringLiteral("lesson"), m_lessonPanel, Qt::RightDockWidgetArea);
+  tabifyDockWidget(inspector, m_lessonDock);
+  m_lessonDock->hide();
+  connect(m_lessonPanel, &LessonPanel::stepChanged, this, [this](int i) { showLessonStep(i); });
   m_leftDocks = {objects, edit, properties};
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
   // The rendered image marks the pixel whose tree is shown.
@@ -305,6 +321,11 @@ void MainWindow::buildMenus() {
   action(renderMenu, tr("&Fit the image"), tr("Show the whole image"),
          {QKeySequence(Qt::CTRL | Qt::Key_0)}, [this] { m_renderPanel->imageView()->setZoom(0); });
 
+  // Lessons: the lessons shipped with RayLab, in the window's language.
+  m_lessonsMenu = menuBar()->addMenu(tr("Less&ons"));
+  connect(m_lessonsMenu, &QMenu::aboutToShow, this, [this] { fillLessonsMenu(); });
+  fillLessonsMenu();
+
   // Animation: the bounce animation's keys, in the window and in presentation mode.
   QMenu* animation = menuBar()->addMenu(tr("&Animation"));
   action(animation, tr("&Play / pause"), tr("Play the bounce animation, or pause it"),
@@ -380,6 +401,142 @@ void MainWindow::buildMenus() {
          {QKeySequence(Qt::Key_F1)}, [this] { showShortcuts(); });
 }
 
+QStringList MainWindow::lessonFiles() const {
+  const QString installed =
+      QCoreApplication::applicationDirPath() + QStringLiteral("/../share/raylab/lessons");
+  for (const QString& dir : {installed, QStringLiteral(RAYLAB_LESSONS_DIR)}) {
+    if (!QFileInfo(dir).isDir()) continue;
+    try {
+      QStringList files;
+      for (const std::string& path : LessonIO::list(dir.toStdString()))
+        files << QString::fromStdString(path);
+      return files;
+    } catch (const Exception&) {
+      // An unreadable folder: try the next.
+    }
+  }
+  return {};
+}
+
+void MainWindow::fillLessonsMenu() {
+  m_lessonsMenu->clear();
+  const Language language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
+  for (const QString& path : lessonFiles()) {
+    // The title from the file (cached: the menu is filled each time it opens).
+    static QHash<QString, QPair<QString, QString>> titles;
+    if (!titles.contains(path)) {
+      try {
+        const Lesson lesson = LessonIO::load(path.toStdString());
+        titles.insert(path, {QString::fromStdString(lesson.title.en),
+                             QString::fromStdString(lesson.title.zh)});
+      } catch (const Exception&) {
+        titles.insert(path,
+                      {QFileInfo(path).completeBaseName(), QFileInfo(path).completeBaseName()});
+      }
+    }
+    const auto& title = titles[path];
+    QAction* a = m_lessonsMenu->addAction(
+        QStringLiteral("%1  %2").arg(QFileInfo(path).completeBaseName().left(2),
+                                     language == Language::Chinese ? title.second : title.first));
+    a->setToolTip(path);
+    connect(a, &QAction::triggered, this, [this, path] { openLesson(path); });
+  }
+  m_lessonsMenu->addSeparator();
+  QAction* open = m_lessonsMenu->addAction(tr("Open a lesson &file…"));
+  open->setToolTip(tr("Open a lesson file (.json) of your own"));
+  connect(open, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open a lesson"), QString(),
+                                                      tr("RayLab lessons (*.json)"));
+    if (!path.isEmpty()) openLesson(path);
+  });
+  m_lessonsMenu->addSeparator();
+  QAction* next = m_lessonsMenu->addAction(tr("&Next step"));
+  next->setShortcut(QKeySequence(Qt::Key_PageDown));
+  next->setToolTip(tr("The lesson's next step"));
+  next->setEnabled(m_lessonPanel->lesson() != nullptr);
+  connect(next, &QAction::triggered, m_lessonPanel, &LessonPanel::next);
+  QAction* back = m_lessonsMenu->addAction(tr("&Previous step"));
+  back->setShortcut(QKeySequence(Qt::Key_PageUp));
+  back->setToolTip(tr("The lesson's previous step"));
+  back->setEnabled(m_lessonPanel->lesson() != nullptr);
+  connect(back, &QAction::triggered, m_lessonPanel, &LessonPanel::back);
+}
+
+bool MainWindow::openLesson(const QString& path, bool ask) {
+  std::shared_ptr<const Lesson> lesson;
+  try {
+    lesson = std::make_shared<const Lesson>(LessonIO::load(path.toStdString()));
+  } catch (const Exception& e) {
+    showError(tr("Cannot open the lesson"), QString::fromStdString(e.what()));
+    return false;
+  }
+  if (lesson->steps.empty()) {
+    showError(tr("Cannot open the lesson"), tr("%1: the lesson has no steps").arg(path));
+    return false;
+  }
+  if (ask && !maybeSave()) return false;
+  m_lessonDock->show();
+  m_lessonDock->raise();
+  m_lessonPanel->setLesson(lesson);  // shows step 1 (stepChanged)
+  fillLessonsMenu();
+  return true;
+}
+
+void MainWindow::showLessonStep(int index) {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  if (!lesson || index < 0 || index >= int(lesson->steps.size())) return;
+  const LessonStep& step = lesson->steps[std::size_t(index)];
+
+  // Step 1: the step's scene, as a new document (its changes are the lesson's, not edits).
+  m_document->adopt(*step.scene, {});
+  const double aspect =
+      m_vtkWidget->height() > 0 ? double(m_vtkWidget->width()) / m_vtkWidget->height() : 1.0;
+  if (step.cameraView == LessonCameraView::Camera)
+    m_view->setViewCamera(vis::behindCameraView(*step.scene, aspect));
+  else
+    m_view->resetViewCamera(aspect);
+
+  // Step 2: the ray-tree panel's algorithm, colours and filters, and the step's pixel.
+  RayTreePanel& rays = *m_rayPanel;
+  rays.setAlgorithm(step.algorithm);
+  rays.colouringBox()->setCurrentIndex(
+      rays.colouringBox()->findData(QString::fromLatin1(toString(step.colouring))));
+  for (int k = 0; k < kRayKindCount; ++k) {
+    const bool shown = step.filters.kinds.empty() ||
+                       std::find(step.filters.kinds.begin(), step.filters.kinds.end(),
+                                 RayKind(k)) != step.filters.kinds.end();
+    rays.kindBox(RayKind(k))->setChecked(shown);
+  }
+  rays.maxDepthBox()->setValue(step.filters.maxDepth > 64 ? -1 : step.filters.maxDepth);
+  rays.reachesLightBox()->setChecked(step.filters.reachingLight);
+  rays.minEnergyBox()->setValue(step.filters.minEnergy);
+  rays.orderBox()->setCurrentIndex(rays.orderBox()->findData(int(vis::RevealOrder::Depth)));
+  if (step.pixelX && step.pixelY) {
+    rays.setPixel(*step.pixelX, *step.pixelY);
+    rays.setSample(step.sample);
+    rays.trace();
+    const int perStep = rays.animation().framesPerStep;
+    if (step.reveal.by == LessonReveal::By::Frame)
+      rays.setFrame(step.reveal.value);
+    else if (step.reveal.by == LessonReveal::By::Depth)
+      rays.setFrame((step.reveal.value + 1) * perStep);
+    if (step.view == LessonView::Inspector) rays.selectSegment(step.selectRay.value_or(0));
+  } else {
+    rays.clearTrace();
+  }
+
+  // Step 3: the image beside the 3D view, for the steps that show it.
+  if (step.view == LessonView::Image) {
+    m_renderPanel->setAlgorithm(step.algorithm);
+    m_renderPanel->setSamplesPerPixel(std::min(step.settings().samplesPerPixel, kLessonImageSpp));
+    showImageTab(m_renderPanel);
+    m_renderPanel->render();
+  }
+  m_lessonDock->raise();
+  if (step.view == LessonView::Inspector) m_inspectorDock->raise();
+  render();
+}
+
 void MainWindow::setPresentationMode(bool on) {
   if (on == m_presenting) return;
   m_presenting = on;
@@ -391,9 +548,9 @@ void MainWindow::setPresentationMode(bool on) {
     m_layoutBeforePresenting = saveState();
     // Only what the class looks at: the 3D view, the image and the ray-tree panel.
     for (QDockWidget* dock : findChildren<QDockWidget*>())
-      if (dock != m_raysDock) dock->hide();
+      if (dock != m_raysDock && dock != m_lessonDock) dock->hide();
     m_raysDock->show();
-    m_raysDock->raise();
+    (m_lessonPanel->lesson() ? m_lessonDock : m_raysDock)->raise();
     QFont large = QApplication::font();
     large.setPointSizeF(large.pointSizeF() * kPresentationFontScale);
     setFont(large);
@@ -517,8 +674,8 @@ void MainWindow::showImageTab(QWidget* tab) {
     // Half of the central area each, once the layout has made room for the tabs.
     QTimer::singleShot(0, this, [this] {
       fitSplitter();
-      const int total = m_splitter->orientation() == Qt::Horizontal ? m_splitter->width()
-                                                                    : m_splitter->height();
+      const int total =
+          m_splitter->orientation() == Qt::Horizontal ? m_splitter->width() : m_splitter->height();
       m_splitter->setSizes({total / 2, total - total / 2});
     });
   }
@@ -533,8 +690,7 @@ void MainWindow::fitSplitter() {
   // Side by side when the central area is wide, one above the other when it is tall (the
   // images are about 4:3: each gets the larger share that way).
   const QSize area = m_splitter->size();
-  m_splitter->setOrientation(area.width() >= area.height() * 4 / 3 ? Qt::Horizontal
-                                                                   : Qt::Vertical);
+  m_splitter->setOrientation(area.width() >= area.height() * 4 / 3 ? Qt::Horizontal : Qt::Vertical);
 }
 
 void MainWindow::resizeEvent(QResizeEvent* event) {
@@ -684,7 +840,10 @@ void MainWindow::showEvent(QShowEvent* event) {
   // The tab in front: the inspector when a ray is chosen, else the ray-tree panel. Qt
   // builds the tab bar in the first layout after showing: raise once the loop runs.
   QTimer::singleShot(0, this, [this] {
-    (m_rayPanel->selectedSegment() >= 0 ? m_inspectorDock : m_raysDock)->raise();
+    if (m_lessonPanel->lesson())
+      m_lessonDock->raise();
+    else
+      (m_rayPanel->selectedSegment() >= 0 ? m_inspectorDock : m_raysDock)->raise();
     // The 3D view gets the width: the left docks as narrow as their contents allow
     // (unless the settings gave the layout of last time).
     if (!m_leftDocks.isEmpty() && !m_layoutRestored) {

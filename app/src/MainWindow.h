@@ -27,6 +27,7 @@ class EditPanel;
 class InspectorPanel;
 class PropertiesPanel;
 class RayTreePanel;
+class LessonPanel;
 class RenderPanel;
 class SceneDocument;
 
@@ -122,6 +123,21 @@ class MainWindow : public QMainWindow {
   /// Asks for a file name, then saves the rendered image (a dialog on failure).
   bool saveImageAs();
 
+  /// \name Lessons
+  /// @{
+  /// Opens the lesson file at `path` at its first step (asking about unsaved changes
+  /// first, unless `ask` is false). On failure: a dialog with the loader's message, nothing
+  /// changed; returns false.
+  bool openLesson(const QString& path, bool ask = true);
+  /// Sets the 3D view, the ray-tree panel, the image and the tabs for step `index` of
+  /// the open lesson: its scene, algorithm, pixel, reveal, colours, filters, camera view,
+  /// selected ray, rendered image.
+  void showLessonStep(int index);
+  LessonPanel* lessonPanel() const { return m_lessonPanel; }
+  /// The lesson files the Lessons menu lists (NN-topic.json in the lessons folder).
+  QStringList lessonFiles() const;
+  /// @}
+
   /// \name Classroom use
   /// @{
   /// Presentation mode (F11): full screen, fonts 1.6 times larger, rays twice as thick,
@@ -168,6 +184,8 @@ class MainWindow : public QMainWindow {
   void updateTitle();
   void rememberFile(const QString& path);
   void updateRecentMenu();
+  /// The Lessons menu: each lesson's title in the window's language, then the step keys.
+  void fillLessonsMenu();
   /// A dialog (not blocking the event loop) with `text`; kept for lastError().
   void showError(const QString& title, const QString& text);
   /// Adds a shape, a mesh or a point light through `edit` and selects it.
@@ -184,6 +202,9 @@ class MainWindow : public QMainWindow {
   EditPanel* m_editPanel = nullptr;
   PropertiesPanel* m_properties = nullptr;
   RenderPanel* m_renderPanel = nullptr;
+  LessonPanel* m_lessonPanel = nullptr;
+  QDockWidget* m_lessonDock = nullptr;
+  QMenu* m_lessonsMenu = nullptr;
   QSplitter* m_splitter = nullptr;  ///< The 3D view | the image tabs.
   QTabWidget* m_imageTabs = nullptr;
   QAction* m_imagesAction = nullptr;   ///< View > Image beside the 3D view.

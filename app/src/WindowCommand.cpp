@@ -2,6 +2,7 @@
 
 #include "ExitCodes.h"
 #include "Language.h"
+#include "LessonPanel.h"
 #include "MainWindow.h"
 #include "RayTreePanel.h"
 #include "RenderPanel.h"
@@ -10,6 +11,7 @@
 #include "TraceCommand.h"
 
 #include "raylab/core/Exception.h"
+#include "raylab/core/Lesson.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
@@ -95,6 +97,15 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     }
   }
 
+  if (!options.lesson.empty()) {
+    // A lesson that cannot be opened fails like a bad scene: before the loop, exit 1.
+    const Lesson lesson = LessonIO::load(options.lesson);
+    if (options.lessonStep > int(lesson.steps.size()))
+      throw Exception("--lesson-step " + std::to_string(options.lessonStep) + ": the lesson " +
+                      options.lesson + " has " + std::to_string(lesson.steps.size()) + " steps");
+    window->openLesson(QString::fromStdString(options.lesson), false);
+    window->lessonPanel()->showStep(options.lessonStep - 1);
+  }
   if (options.presentation) window->setPresentationMode(true);
   RenderPanel& render = *window->renderPanel();
   if (options.render) {

@@ -24,6 +24,8 @@ struct WindowOptions {
   bool render = false;               ///< Render the image at start (a screenshot waits for it).
   std::optional<int> renderSamples;  ///< With render: samples per pixel (else the scene's).
   bool presentation = false;         ///< Start in presentation mode.
+  std::string lesson;                ///< Open this lesson file at start.
+  int lessonStep = 1;                ///< With lesson: the step shown (1-based).
 };
 
 /**

@@ -1,0 +1,276 @@
+#include "LessonPanel.h"
+
+#include "Language.h"
+
+#include <QButtonGroup>
+#include <QComboBox>
+#include <QDoubleValidator>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QScrollArea>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raylab::app {
+
+namespace {
+
+QString text(const LocalText& t, Language language) {
+  return QString::fromStdString(t.in(language));
+}
+
+/// A label that wraps, with its font `scale` times the panel's.
+QLabel* wrapping(double scale = 1.0, bool bold = false) {
+  auto* label = new QLabel;
+  label->setWordWrap(true);
+  label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  QFont font = label->font();
+  font.setPointSizeF(font.pointSizeF() * scale);
+  font.setBold(bold);
+  label->setFont(font);
+  return label;
+}
+
+/// "0.25" for people: up to 6 significant digits.
+QString number(double value) { return QString::number(value, 'g', 6); }
+
+}  // namespace
+
+LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
+  auto* outer = new QVBoxLayout(this);
+
+  // Step 1: which lesson, which step, which language.
+  auto* header = new QHBoxLayout;
+  m_lessonTitle = wrapping(1.0, true);
+  m_counter = new QLabel;
+  m_languageBox = new QComboBox;
+  m_languageBox->addItem(QStringLiteral("English"), int(Language::English));
+  m_languageBox->addItem(QStringLiteral("中文"), int(Language::Chinese));
+  m_languageBox->setToolTip(tr("The language of the lesson's texts"));
+  header->addWidget(m_lessonTitle, 1);
+  header->addWidget(m_counter);
+  header->addWidget(m_languageBox);
+  outer->addLayout(header);
+
+  // Step 2: the step's words, large, scrolling when long.
+  auto* page = new QWidget;
+  auto* layout = new QVBoxLayout(page);
+  m_title = wrapping(1.6, true);
+  m_text = wrapping(1.3);
+  m_needs = wrapping(1.0);
+  m_needs->setStyleSheet(QStringLiteral("color: #a05a00"));
+  layout->addWidget(m_title);
+  layout->addWidget(m_text);
+  layout->addWidget(m_needs);
+
+  // Step 3: the question, with its answer box.
+  m_question = new QGroupBox(tr("Question"));
+  auto* question = new QVBoxLayout(m_question);
+  m_prompt = wrapping(1.2);
+  question->addWidget(m_prompt);
+  m_choicesLayout = new QVBoxLayout;
+  question->addLayout(m_choicesLayout);
+  m_choices = new QButtonGroup(this);
+  m_number = new QLineEdit;
+  m_number->setValidator(new QDoubleValidator(m_number));
+  m_number->setPlaceholderText(tr("Your answer (a number)"));
+  question->addWidget(m_number);
+  m_check = new QPushButton(tr("Check my answer"));
+  m_check->setToolTip(tr("Say whether the answer is right, and why"));
+  question->addWidget(m_check);
+  m_verdict = wrapping(1.2, true);
+  m_explanation = wrapping(1.1);
+  question->addWidget(m_verdict);
+  question->addWidget(m_explanation);
+  layout->addWidget(m_question);
+
+  // Step 4: the teacher's notes, on demand.
+  m_notesButton = new QToolButton;
+  m_notesButton->setText(tr("Teacher's notes"));
+  m_notesButton->setCheckable(true);
+  m_notesButton->setToolTip(tr("Show or hide the notes for the teacher"));
+  m_notes = wrapping(1.0);
+  m_notes->setStyleSheet(QStringLiteral("color: #555555"));
+  layout->addWidget(m_notesButton);
+  layout->addWidget(m_notes);
+  layout->addStretch(1);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(page);
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  outer->addWidget(scroll, 1);
+
+  // Step 5: Back and Next (Page Up / Page Down in the window's Lessons menu).
+  auto* buttons = new QHBoxLayout;
+  m_back = new QPushButton(style()->standardIcon(QStyle::SP_ArrowBack), tr("Back"));
+  m_back->setToolTip(tr("The previous step (Page Up)"));
+  m_next = new QPushButton(style()->standardIcon(QStyle::SP_ArrowForward), tr("Next"));
+  m_next->setToolTip(tr("The next step (Page Down)"));
+  buttons->addWidget(m_back);
+  buttons->addStretch(1);
+  buttons->addWidget(m_next);
+  outer->addLayout(buttons);
+
+  connect(m_back, &QPushButton::clicked, this, [this] { back(); });
+  connect(m_next, &QPushButton::clicked, this, [this] { next(); });
+  connect(m_notesButton, &QToolButton::toggled, m_notes, &QWidget::setVisible);
+  connect(m_languageBox, qOverload<int>(&QComboBox::activated), this,
+          [this] { setLanguage(Language(m_languageBox->currentData().toInt())); });
+  connect(m_check, &QPushButton::clicked, this, [this] {
+    if (m_step < 0) return;
+    const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+    if (!q) return;
+    if (q->type == LessonQuestion::Type::Choice) {
+      if (m_choices->checkedId() >= 0) answerChoice(m_choices->checkedId());
+    } else {
+      bool ok = false;
+      const double value = QLocale::c().toDouble(m_number->text().trimmed(), &ok);
+      if (ok)
+        answerNumber(value);
+      else
+        showVerdict(false, QString());
+    }
+  });
+  setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
+}
+
+void LessonPanel::setLesson(std::shared_ptr<const Lesson> lesson) {
+  m_lesson = std::move(lesson);
+  m_step = -1;
+  showStep(0);
+}
+
+void LessonPanel::setLanguage(Language language) {
+  m_language = language;
+  m_languageBox->setCurrentIndex(m_languageBox->findData(int(language)));
+  refresh();
+  emit languageChanged();
+}
+
+void LessonPanel::showStep(int index) {
+  if (!m_lesson || m_lesson->steps.empty()) return;
+  m_step = std::clamp(index, 0, int(m_lesson->steps.size()) - 1);
+  refresh();
+  emit stepChanged(m_step);
+}
+
+void LessonPanel::next() {
+  if (m_lesson && m_step + 1 < int(m_lesson->steps.size())) showStep(m_step + 1);
+}
+
+void LessonPanel::back() {
+  if (m_lesson && m_step > 0) showStep(m_step - 1);
+}
+
+void LessonPanel::refresh() {
+  const bool has = m_lesson && m_step >= 0;
+  m_back->setEnabled(has && m_step > 0);
+  m_next->setEnabled(has && m_step + 1 < int(m_lesson->steps.size()));
+  if (!has) {
+    m_lessonTitle->setText(tr("No lesson"));
+    m_counter->clear();
+    m_title->setText(tr("Choose a lesson in the Lessons menu."));
+    m_text->clear();
+    m_needs->hide();
+    m_question->hide();
+    m_notesButton->hide();
+    m_notes->hide();
+    return;
+  }
+  const LessonStep& step = m_lesson->steps[std::size_t(m_step)];
+  m_lessonTitle->setText(text(m_lesson->title, m_language));
+  m_counter->setText(tr("Step %1 of %2").arg(m_step + 1).arg(m_lesson->steps.size()));
+  m_title->setText(text(step.title, m_language));
+  m_text->setText(text(step.text, m_language));
+  QStringList needs;
+  for (const std::string& need : step.needs) needs << QString::fromStdString(need);
+  if (step.view == LessonView::Samples) needs.prepend(QStringLiteral("samples-view"));
+  m_needs->setVisible(!needs.isEmpty());
+  m_needs->setText(tr("This step needs a feature still to come (%1): the view shows the scene "
+                      "instead.")
+                       .arg(needs.join(QStringLiteral(", "))));
+  showQuestion(step);
+  const bool notes = !step.teacherNotes.empty();
+  m_notesButton->setVisible(notes);
+  m_notes->setText(text(step.teacherNotes, m_language));
+  m_notes->setVisible(notes && m_notesButton->isChecked());
+}
+
+void LessonPanel::showQuestion(const LessonStep& step) {
+  // The choices are made again for each step (and language).
+  for (QAbstractButton* b : m_choices->buttons()) {
+    m_choices->removeButton(b);
+    delete b;
+  }
+  m_verdict->clear();
+  m_explanation->clear();
+  m_number->clear();
+  if (!step.question) {
+    m_question->hide();
+    return;
+  }
+  const LessonQuestion& q = *step.question;
+  m_question->show();
+  m_prompt->setText(text(q.prompt, m_language));
+  const bool choice = q.type == LessonQuestion::Type::Choice;
+  m_number->setVisible(!choice);
+  for (std::size_t i = 0; choice && i < q.choices.size(); ++i) {
+    auto* b = new QRadioButton(text(q.choices[i], m_language));
+    QFont font = b->font();
+    font.setPointSizeF(font.pointSizeF() * 1.15);
+    b->setFont(font);
+    m_choices->addButton(b, int(i));
+    m_choicesLayout->addWidget(b);
+  }
+}
+
+bool LessonPanel::answerChoice(int index) {
+  if (m_step < 0) return false;
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  if (!q || q->type != LessonQuestion::Type::Choice || index < 0 || index >= int(q->choices.size()))
+    return false;
+  if (QAbstractButton* b = m_choices->button(index)) b->setChecked(true);
+  const bool right = index == q->answerIndex;
+  showVerdict(right, text(q->choices[std::size_t(q->answerIndex)], m_language));
+  return right;
+}
+
+bool LessonPanel::answerNumber(double value) {
+  if (m_step < 0) return false;
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  if (!q || q->type != LessonQuestion::Type::Number) return false;
+  m_number->setText(number(value));
+  const bool right = std::isfinite(value) && std::abs(value - q->answer) <= q->tolerance;
+  showVerdict(right, q->tolerance > 0.0
+                         ? tr("%1 (± %2)").arg(number(q->answer), number(q->tolerance))
+                         : number(q->answer));
+  return right;
+}
+
+void LessonPanel::showVerdict(bool right, const QString& expected) {
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  if (expected.isEmpty()) {
+    m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
+    m_verdict->setText(tr("Please write a number, such as 0.25."));
+    m_explanation->clear();
+    return;
+  }
+  m_verdict->setStyleSheet(right ? QStringLiteral("color: #1b7a1b")
+                                 : QStringLiteral("color: #b00020"));
+  m_verdict->setText(right ? tr("✓ Right.") : tr("✗ Not quite: the answer is %1.").arg(expected));
+  m_explanation->setText(text(q->explanation, m_language));
+}
+
+QString LessonPanel::verdict() const { return m_verdict->text(); }
+QString LessonPanel::titleText() const { return m_title->text(); }
+QString LessonPanel::bodyText() const { return m_text->text(); }
+
+}  // namespace raylab::app

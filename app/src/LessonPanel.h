@@ -1,0 +1,103 @@
+#pragma once
+
+#include "raylab/core/Lesson.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QButtonGroup;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QToolButton;
+class QVBoxLayout;
+class QGroupBox;
+
+namespace raylab::app {
+
+/**
+ * \brief The lesson panel: a step's title and text in a large font, Back / Next, the
+ * step's question with an answer box that says right or wrong and explains, the teacher's
+ * notes on demand, and the lesson's language (English or Chinese, by default the window's,
+ * switchable within the lesson).
+ *
+ * The panel shows words only; when the step changes it emits stepChanged, and the window
+ * sets its 3D view, image, filters and animation for the step (MainWindow::showLessonStep).
+ */
+class LessonPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit LessonPanel(QWidget* parent = nullptr);
+
+  /// Starts `lesson` at its first step.
+  void setLesson(std::shared_ptr<const Lesson> lesson);
+  const Lesson* lesson() const { return m_lesson.get(); }
+  /// The step shown (0-based), -1 without a lesson.
+  int step() const { return m_step; }
+  /// Shows step `index` (clamped to the lesson's steps) and emits stepChanged.
+  void showStep(int index);
+  void next();
+  void back();
+
+  Language language() const { return m_language; }
+  /// The lesson's words in `language` (the window's language is the default).
+  void setLanguage(Language language);
+
+  /// \name The question
+  /// @{
+  /// Answers a multiple-choice question with choice `index`; true when right. The verdict
+  /// and the explanation are shown.
+  bool answerChoice(int index);
+  /// Answers a number question; true when within the tolerance.
+  bool answerNumber(double value);
+  /// The verdict shown ("Right." / "Not quite: …"), empty before answering.
+  QString verdict() const;
+  /// @}
+
+  /// The texts shown, for tests.
+  QString titleText() const;
+  QString bodyText() const;
+  QPushButton* nextButton() const { return m_next; }
+  QPushButton* backButton() const { return m_back; }
+  QComboBox* languageBox() const { return m_languageBox; }
+
+ signals:
+  /// Step `index` of the lesson is now shown: the window sets its views for it.
+  void stepChanged(int index);
+  /// The lesson's language changed.
+  void languageChanged();
+
+ private:
+  void showQuestion(const LessonStep& step);
+  void showVerdict(bool right, const QString& expected);
+  void refresh();
+
+  std::shared_ptr<const Lesson> m_lesson;
+  int m_step = -1;
+  Language m_language = Language::English;
+
+  QLabel* m_lessonTitle = nullptr;
+  QLabel* m_counter = nullptr;
+  QComboBox* m_languageBox = nullptr;
+  QLabel* m_title = nullptr;
+  QLabel* m_text = nullptr;
+  QLabel* m_needs = nullptr;
+  QGroupBox* m_question = nullptr;
+  QLabel* m_prompt = nullptr;
+  QVBoxLayout* m_choicesLayout = nullptr;
+  QButtonGroup* m_choices = nullptr;
+  QLineEdit* m_number = nullptr;
+  QPushButton* m_check = nullptr;
+  QLabel* m_verdict = nullptr;
+  QLabel* m_explanation = nullptr;
+  QToolButton* m_notesButton = nullptr;
+  QLabel* m_notes = nullptr;
+  QPushButton* m_back = nullptr;
+  QPushButton* m_next = nullptr;
+};
+
+}  // namespace raylab::app

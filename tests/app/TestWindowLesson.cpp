@@ -1,0 +1,162 @@
+// Lessons played in the window: the Lessons menu lists the shipped lessons, a lesson opens
+// at its first step, Next / Back and Page Down / Page Up move through it, each step sets the
+// 3D view's tree (equal to the CLI's for the step's pixel), the inspector or the image,
+// questions say right or wrong and explain, the lesson's language switches, and a broken
+// lesson file is refused with a dialog that names it while the open scene stays. Runs
+// under xvfb.
+#include "WindowTest.h"
+
+#include "LessonPanel.h"
+#include "RenderPanel.h"
+
+#include "raylab/core/Lesson.h"
+#include "raylab/core/RayTreeJson.h"
+
+#include <QComboBox>
+#include <QMenuBar>
+#include <QTabWidget>
+
+#include <chrono>
+
+namespace raylab::app {
+namespace {
+
+using WindowLessonTest = WindowTest;
+
+const QString kLesson01 = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/01-rays-and-cameras.json");
+
+/// The index of the first step of `lesson` that satisfies `pred`.
+template <typename Pred>
+int firstStep(const Lesson& lesson, Pred pred) {
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i)
+    if (pred(lesson.steps[i])) return int(i);
+  ADD_FAILURE() << "no such step in " << lesson.id;
+  return 0;
+}
+
+TEST_F(WindowLessonTest, 01_TheLessonsMenuListsTheEightLessons) {
+  const QStringList files = m_window->lessonFiles();
+  EXPECT_EQ(files.size(), 8);
+  QMenu* lessons = nullptr;
+  for (QAction* a : m_window->menuBar()->actions())
+    if (a->text().remove(QLatin1Char('&')) == QStringLiteral("Lessons")) lessons = a->menu();
+  ASSERT_NE(lessons, nullptr);
+  QStringList titles;
+  for (QAction* a : lessons->actions()) titles << a->text();
+  const Lesson first = LessonIO::load(files.front().toStdString());
+  EXPECT_TRUE(titles.front().contains(QString::fromStdString(first.title.en)))
+      << titles.front().toStdString();
+}
+
+TEST_F(WindowLessonTest, 02_AStepSetsTheTreeOfItsPixel) {
+  ASSERT_TRUE(m_window->openLesson(kLesson01));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(kLesson01.toStdString());
+  EXPECT_EQ(panel.step(), 0);
+  EXPECT_EQ(panel.titleText().toStdString(), lesson.steps[0].title.en);
+  EXPECT_FALSE(panel.backButton()->isEnabled());
+  // On to the first step with a pixel: the 3D view shows that pixel's tree, as
+  // `raylab trace` draws it for the step's scene and algorithm.
+  const int s = firstStep(
+      lesson, [](const LessonStep& st) { return st.pixelX && st.view == LessonView::Scene; });
+  for (int i = 0; i < s; ++i) panel.nextButton()->click();
+  settle();
+  ASSERT_EQ(panel.step(), s);
+  const LessonStep& step = lesson.steps[std::size_t(s)];
+  EXPECT_EQ(panel.titleText().toStdString(), step.title.en);
+  EXPECT_EQ(panel.bodyText().toStdString(), step.text.en);
+  const PixelTrace expected =
+      tracePixel(*step.scene, step.settings(), *step.pixelX, *step.pixelY, step.sample);
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  EXPECT_EQ(RayTreeJson::serialize(rays.tree(), *step.scene, step.settings()),
+            RayTreeJson::serialize(expected.tree, *step.scene, step.settings()));
+  EXPECT_EQ(rays.algorithm(), step.algorithm);
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), SceneIO::serialize(*step.scene));
+  // Back returns.
+  panel.backButton()->click();
+  EXPECT_EQ(panel.step(), s - 1);
+}
+
+TEST_F(WindowLessonTest, 03_PageDownAndPageUpStep) {
+  ASSERT_TRUE(m_window->openLesson(kLesson01));
+  activate();
+  LessonPanel& panel = *m_window->lessonPanel();
+  QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+  QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+  settle();
+  EXPECT_EQ(panel.step(), 2);
+  QTest::keyClick(m_window.get(), Qt::Key_PageUp);
+  settle();
+  EXPECT_EQ(panel.step(), 1);
+}
+
+TEST_F(WindowLessonTest, 04_QuestionsSayRightOrWrongAndExplain) {
+  ASSERT_TRUE(m_window->openLesson(kLesson01));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(kLesson01.toStdString());
+  const int number = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->type == LessonQuestion::Type::Number;
+  });
+  panel.showStep(number);
+  const LessonQuestion& q = *lesson.steps[std::size_t(number)].question;
+  EXPECT_FALSE(panel.answerNumber(q.answer + 10.0 * q.tolerance + 1.0));
+  EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✗"))) << panel.verdict().toStdString();
+  EXPECT_TRUE(panel.answerNumber(q.answer + 0.5 * q.tolerance));
+  EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✓"))) << panel.verdict().toStdString();
+
+  const int choice = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->type == LessonQuestion::Type::Choice;
+  });
+  panel.showStep(choice);
+  const LessonQuestion& c = *lesson.steps[std::size_t(choice)].question;
+  const int wrong = c.answerIndex == 0 ? 1 : 0;
+  EXPECT_FALSE(panel.answerChoice(wrong));
+  EXPECT_TRUE(
+      panel.verdict().contains(QString::fromStdString(c.choices[std::size_t(c.answerIndex)].en)))
+      << "the verdict names the right answer: " << panel.verdict().toStdString();
+  EXPECT_TRUE(panel.answerChoice(c.answerIndex));
+}
+
+TEST_F(WindowLessonTest, 05_TheLessonsLanguageSwitches) {
+  ASSERT_TRUE(m_window->openLesson(kLesson01));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(kLesson01.toStdString());
+  panel.setLanguage(Language::Chinese);
+  EXPECT_EQ(panel.titleText().toStdString(), lesson.steps[0].title.zh);
+  panel.setLanguage(Language::English);
+  EXPECT_EQ(panel.titleText().toStdString(), lesson.steps[0].title.en);
+}
+
+TEST_F(WindowLessonTest, 06_InspectorAndImageSteps) {
+  ASSERT_TRUE(m_window->openLesson(kLesson01));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(kLesson01.toStdString());
+  const int inspector =
+      firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Inspector; });
+  panel.showStep(inspector);
+  EXPECT_EQ(m_window->rayTreePanel()->selectedSegment(),
+            lesson.steps[std::size_t(inspector)].selectRay.value_or(0));
+  const int image =
+      firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Image; });
+  panel.showStep(image);
+  RenderPanel& render = *m_window->renderPanel();
+  EXPECT_TRUE(m_window->imageTabs()->isVisible());
+  EXPECT_EQ(render.algorithm(), lesson.steps[std::size_t(image)].algorithm);
+  const auto start = std::chrono::steady_clock::now();
+  while (render.rendering() && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  EXPECT_TRUE(render.hasImage());
+}
+
+TEST_F(WindowLessonTest, 07_ABrokenLessonIsRefusedAndTheSceneStays) {
+  const std::string before = SceneIO::serialize(m_window->document().scene());
+  const QString broken = QStringLiteral(RAYLAB_SOURCE_DIR "/tests/app/broken-lesson.json");
+  EXPECT_FALSE(m_window->openLesson(broken));
+  EXPECT_TRUE(m_window->lastError().contains(QStringLiteral("broken-lesson.json")))
+      << m_window->lastError().toStdString();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), before);
+  EXPECT_EQ(m_window->lessonPanel()->lesson(), nullptr);
+}
+
+}  // namespace
+}  // namespace raylab::app
