@@ -212,6 +212,30 @@
         <comment>count kind</comment>
         <translation>%1 条%2光线</translation>
     </message>
+    <message>
+        <source>stopped (budget)</source>
+        <translation>已停止（达到预算）</translation>
+    </message>
+    <message>
+        <source>its children were not traced</source>
+        <translation>它的子光线没有被追踪</translation>
+    </message>
+    <message>
+        <source>only 1 child was traced (#%1..#%2)</source>
+        <translation>只追踪了 1 条子光线（#%1..#%2）</translation>
+    </message>
+    <message>
+        <source>only %1 children were traced (#%2..#%3)</source>
+        <translation>只追踪了 %1 条子光线（#%2..#%3）</translation>
+    </message>
+    <message>
+        <source>%1 hit &apos;%2&apos;; tracing stopped here (ray budget reached, or cancelled): %3</source>
+        <translation>%1 击中“%2”；追踪在此停止（达到光线预算或被取消）：%3</translation>
+    </message>
+    <message>
+        <source>%1 tracing stopped here (ray budget reached, or cancelled): %2</source>
+        <translation>%1 的追踪在此停止（达到光线预算或被取消）：%2</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::EditPanel</name>

@@ -78,6 +78,8 @@ QString endReasonLabel(EndReason reason) {
       return QCoreApplication::translate("UiWords", "reached its light");
     case EndReason::Spawned:
       return QCoreApplication::translate("UiWords", "spawned children");
+    case EndReason::Stopped:
+      return QCoreApplication::translate("UiWords", "stopped (budget)");
   }
   return QStringLiteral("?");
 }
@@ -140,6 +142,27 @@ QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& 
       return named ? QCoreApplication::translate("UiWords", "%1 hit '%2' and spawned %3")
                          .arg(ray, object, children(s))
                    : QCoreApplication::translate("UiWords", "%1 spawned %2").arg(ray, children(s));
+    case EndReason::Stopped: {
+      // Under a budget whole sibling groups are dropped; a cancel may cut one in two.
+      const QString what =
+          s.childCount == 0 ? QCoreApplication::translate("UiWords", "its children were not traced")
+          : s.childCount == 1
+              ? QCoreApplication::translate("UiWords", "only 1 child was traced (#%1..#%2)")
+                    .arg(s.firstChild)
+                    .arg(s.firstChild)
+              : QCoreApplication::translate("UiWords", "only %1 children were traced (#%2..#%3)")
+                    .arg(s.childCount)
+                    .arg(s.firstChild)
+                    .arg(s.firstChild + s.childCount - 1);
+      return named
+                 ? QCoreApplication::translate(
+                       "UiWords",
+                       "%1 hit '%2'; tracing stopped here (ray budget reached, or cancelled): %3")
+                       .arg(ray, object, what)
+                 : QCoreApplication::translate(
+                       "UiWords", "%1 tracing stopped here (ray budget reached, or cancelled): %2")
+                       .arg(ray, what);
+    }
   }
   return ray;
 }

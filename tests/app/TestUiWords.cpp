@@ -15,7 +15,7 @@ namespace {
 TEST(UiWords, NarrationIsCoresStepTextForEveryRay) {
   const Scene scene = defaultScene();
   int checked = 0;
-  std::array<int, std::size_t(EndReason::Spawned) + 1> reasons{};
+  std::array<int, std::size_t(EndReason::Stopped) + 1> reasons{};
   for (Algorithm algorithm : kAlgorithms) {
     RenderSettings settings = scene.render;
     settings.algorithm = algorithm;
@@ -62,10 +62,38 @@ TEST(UiWords, SummaryAndCaptionsAreCoresAndVis) {
             vis::stepCaption(PixelTrace{}, vis::AnimationSettings{}, 0));
 }
 
+TEST(UiWords, NarrationOfAStoppedTreeIsCores) {
+  // A tiny ray budget stops Whitted's tree of a pixel on the glass sphere early.
+  const Scene scene = defaultScene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Whitted;
+  const Tracer tracer(scene, settings);
+  std::vector<std::string> names;
+  for (const SceneObject& object : scene.objects) names.push_back(object.name);
+  int stopped = 0;
+  for (const auto& [x, y] : gridPixels(scene.camera.width, scene.camera.height, 16, 12)) {
+    TraceLimits limits;
+    limits.memoryBudget = 3 * sizeof(RaySegment);
+    const PixelTrace trace = tracePixel(tracer, x, y, 0, limits);
+    for (std::size_t id = 0; id < trace.tree.segments.size(); ++id) {
+      const std::string said = narrateRay(trace.tree, int(id), names).toStdString();
+      if (trace.tree.segments[id].endReason != EndReason::Stopped) {
+        ASSERT_EQ(said, trace.stepTexts[id]) << "pixel (" << x << ", " << y << ") ray #" << id;
+        continue;
+      }
+      // The engine also says how many rays the step wanted, which the tree does not keep.
+      ASSERT_EQ(trace.stepTexts[id].rfind(said, 0), 0u)
+          << said << "\n is not the start of\n " << trace.stepTexts[id];
+      ++stopped;
+    }
+  }
+  EXPECT_GT(stopped, 0) << "no tree was stopped by the budget";
+}
+
 TEST(UiWords, KindAndEndWordsAreCores) {
   for (int k = 0; k < kRayKindCount; ++k)
     EXPECT_EQ(rayKindWord(RayKind(k)).toStdString(), toString(RayKind(k)));
-  for (int r = 0; r <= int(EndReason::Spawned); ++r)
+  for (int r = 0; r <= int(EndReason::Stopped); ++r)
     EXPECT_EQ(endReasonLabel(EndReason(r)).toStdString(), words(EndReason(r)).label);
   EXPECT_EQ(narrateRay(RayTree{}, 0, {}), QString()) << "no such ray: nothing to say";
 }
