@@ -1,6 +1,7 @@
 #include "Subcommand.h"
 
 #include "SceneSource.h"
+#include "raylab/core/Limits.h"
 
 #include <CLI/CLI.hpp>
 
@@ -14,7 +15,7 @@ namespace raylab::app {
 
 namespace {
 constexpr int kMinSize = 16;
-constexpr int kMaxSize = 8192;
+constexpr int kMaxSize = limits::kMaxImageSide;
 }  // namespace
 
 std::optional<std::pair<int, int>> parseSize(const std::string& text) {
@@ -31,13 +32,14 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text) {
   if (width < kMinSize || width > kMaxSize || height < kMinSize || height > kMaxSize) {
     return std::nullopt;
   }
+  if (std::int64_t(width) * height > limits::kMaxImagePixels) return std::nullopt;
   return std::make_pair(width, height);
 }
 
 std::string checkSize(const std::string& text) {
   if (parseSize(text)) return {};
   return "expected WIDTHxHEIGHT with each side in " + std::to_string(kMinSize) + ".." +
-         std::to_string(kMaxSize) + ", e.g. 300x300";
+         std::to_string(kMaxSize) + " and at most 4096x4096 pixels in all, e.g. 300x300";
 }
 
 void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std::string& sizeHelp,

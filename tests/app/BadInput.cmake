@@ -14,3 +14,37 @@ if(RAYLAB_ENABLE_RENDERING_TESTS)
             --pixel 32 24 --size 160x120 --out ${out}/app_trace_bushy.png)
 endif()
 
+# Limits (core/include/raylab/core/Limits.h, README "Limits"): each refused with the file,
+# the JSON path and the limit, exit 1, before any allocation or rendering; no output left.
+set(bad ${PROJECT_SOURCE_DIR}/tests/data/bad)
+foreach(row
+    "HugeRadius|huge-radius.json|/objects/0/shape/radius: 1e\\+155 is beyond RayLab's largest coordinate, 1e12"
+    "TinyRotationAxis|tiny-axis.json|/objects/0/transform/0/rotate/axis: vector is too short to give a direction"
+    "OverflowingCamera|huge-camera.json|/camera/position/0: 1e\\+300 is beyond RayLab's largest coordinate"
+    "HugeImage|huge-image.json|/camera: width x height must be at most 4096 x 4096 = 16777216 pixels, got 8192 x 8192"
+    "HugeSpp|huge-spp.json|/render/spp: must be at most 1048576, got 1000000000"
+    "HugeDepth|huge-depth.json|/render/max_depth: must be at most 64, got 1000000"
+    "HugeTessellation|huge-tessellation.json|/objects/0/shape/m: m and n \\(sphere slices\\) must be at most 1024"
+    "DeepNesting|deep-nesting.json|:1:[0-9]+: JSON nested deeper than 64 levels")
+  string(REPLACE "|" ";" row "${row}")
+  list(GET row 0 name)
+  list(GET row 1 file)
+  list(GET row 2 message)
+  raylab_add_cli_test(app.BadInput.${name} CODE 1
+    STDERR "raylab: error: [^\n]*${file}[^\n]*${message}"
+    NO_FILE ${out}/app_bad_${name}.png LABELS app
+    COMMAND ${raylab_exe} render --scene ${bad}/${file} --size 16x16 --out ${out}/app_bad_${name}.png)
+endforeach()
+raylab_add_cli_test(app.BadInput.DeviceAsScene CODE 1
+  STDERR "raylab: error: /dev/zero: cannot read scene file: not a regular file \\(a folder or a device\\?\\)"
+  NO_FILE ${out}/app_bad_dev_zero.png LABELS app
+  COMMAND ${raylab_exe} render --scene /dev/zero --out ${out}/app_bad_dev_zero.png)
+raylab_add_cli_test(app.BadInput.FolderAsScene CODE 1
+  STDERR "raylab: error: .*/tests/data/bad: cannot read scene file: not a regular file"
+  NO_FILE ${out}/app_bad_folder.png LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad} --out ${out}/app_bad_folder.png)
+raylab_add_cli_test(app.BadInput.HugeSizeIsAUsageError CODE 2
+  STDERR "--size.*at most 4096x4096 pixels in all"
+  NO_FILE ${out}/app_bad_size.png LABELS app
+  COMMAND ${raylab_exe} render --size 8192x8192 --out ${out}/app_bad_size.png)
+

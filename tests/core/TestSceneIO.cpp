@@ -170,18 +170,103 @@ TEST(SceneIO, 03_ErrorsNameThePlaceAndTheProblem) {
   }
 }
 
-// A value nested 100,000 levels deep where a number is expected: the message names it by
-// its size (it used to be dumped recursively, which overflowed the stack; issue 14).
-TEST(SceneIO, 03b_DeeplyNestedValuesAreNamedNotDumped) {
+// A value nested 100,000 levels deep: refused before parsing at the place it passes
+// RayLab's nesting limit (it used to be dumped recursively into the message, which
+// overflowed the stack; issue 14).
+TEST(SceneIO, 03b_DeeplyNestedValuesAreRefusedAtTheirPlace) {
   const int depth = 100000;
   const std::string nested = std::string(depth, '[') + std::string(depth, ']');
   const std::string text =
       R"({"raylab_scene": 2, "materials": [], "objects": [], "camera": {"vertical_fov": )" +
       nested + "}}";
   const std::string message = loadError(text);
-  EXPECT_THAT(message,
+  // The 65th opening bracket: the root object and the camera are levels 1 and 2.
+  EXPECT_EQ(message, "test.json:1:" + std::to_string(text.find("[[") + 63) +
+                         ": JSON nested deeper than 64 levels (RayLab's limit)");
+  // 64 levels are fine (then the value is the wrong type).
+  const std::string deep = std::string(62, '[') + std::string(62, ']');
+  EXPECT_THAT(loadError(R"({"raylab_scene": 2, "materials": [], "objects": [], "camera": )"
+                        R"({"vertical_fov": )" +
+                        deep + "}}"),
               HasSubstr("/camera/vertical_fov: expected a number, got an array of 1 values"));
-  EXPECT_LT(message.size(), 200u);
+}
+
+// Issue 14: every value the core would refuse, or that would ask for an allocation or a
+// computation without end, is refused by the loader with the file, the JSON path and the
+// limit (core/include/raylab/core/Limits.h; README "Limits").
+TEST(SceneIO, 03c_LimitsAreRefusedWithTheirPlace) {
+  const std::string head = R"({"raylab_scene": 2, "materials": [{"name": "m"}], "objects": [)";
+  // One sphere with `fields`, object keys `extra` and top-level keys `root`.
+  const auto sphere = [&](const std::string& fields, const std::string& extra = "",
+                          const std::string& root = "") {
+    return head + R"({"name": "b", "material": "m", "shape": {"type": "sphere", )" + fields + "}" +
+           extra + "}]" + root + "}";
+  };
+  const std::string ball = R"("centre": [0, 0, 0], "radius": 1)";
+  const auto withRender = [&](const std::string& render) {
+    return sphere(ball, "", R"(, "render": {)" + render + "}");
+  };
+  const auto withCamera = [&](const std::string& camera) {
+    return sphere(ball, "", R"(, "camera": {)" + camera + "}");
+  };
+  std::string scales;
+  for (int i = 0; i < 13; ++i)
+    scales += std::string(i ? ", " : "") + R"({"scale": [1e12, 1e12, 1e12]})";
+  const ErrorCase cases[] = {
+      {"radius whose square overflows (was an abort in Ray.cpp)",
+       sphere(R"("centre": [0, 0, 0], "radius": 1e155)"),
+       "/objects/0/shape/radius: 1e+155 is beyond RayLab's largest coordinate, 1e12"},
+      {"radius whose square underflows", sphere(R"("centre": [0, 0, 0], "radius": 1e-300)"),
+       "/objects/0/shape/radius: radius 1e-300 is below RayLab's smallest size, 1e-9"},
+      {"rotation axis whose length underflows (was an abort in Transform.cpp)",
+       sphere(ball, R"(, "transform": [{"rotate": {"axis": [0, 1e-300, 0], "degrees": 30}}])"),
+       "/objects/0/transform/0/rotate/axis: vector is too short to give a direction"},
+      {"scales that compose to an overflow", sphere(ball, R"(, "transform": [)" + scales + "]"),
+       "/objects/0/transform/5: the steps so far make a transform too large or too degenerate"},
+      {"tiny scale factor", sphere(ball, R"(, "transform": [{"scale": [1, 1e-12, 1]}])"),
+       "/objects/0/transform/0/scale/1: scale factor 1e-12 is below 1e-9 in magnitude"},
+      {"centre beyond the largest coordinate", sphere(R"("centre": [0, -3e15, 0], "radius": 1)"),
+       "/objects/0/shape/centre/1: -3e+15 is beyond RayLab's largest coordinate"},
+      {"tessellation too fine", sphere(ball + R"(, "m": 100000)"),
+       "/objects/0/shape/m: m and n (sphere slices) must be at most 1024"},
+      {"box side too large",
+       head +
+           R"({"name": "b", "material": "m", "shape": {"type": "box", "centre": [0,0,0], "size": [1, 1, 2e20]}}]})",
+       "/objects/0/shape/size/2: 2e+20 is beyond RayLab's largest coordinate"},
+      {"camera with overflowing coordinates (had no file or place)",
+       withCamera(R"("position": [1e300, 0, 0])"),
+       "/camera/position/0: 1e+300 is beyond RayLab's largest coordinate"},
+      {"camera aperture beyond the largest coordinate", withCamera(R"("aperture": 2e20)"),
+       "/camera/aperture: 2e+20 is beyond"},
+      {"image side too large", withCamera(R"("width": 16384, "height": 16384)"),
+       "/camera: width and height must be in [1, 8192], got 16384 x 16384"},
+      {"image too large", withCamera(R"("width": 8192, "height": 4096)"),
+       "/camera: width x height must be at most 4096 x 4096 = 16777216 pixels, got 8192 x 4096"},
+      {"spp", withRender(R"("spp": 1000000000)"),
+       "/render/spp: must be at most 1048576, got 1000000000"},
+      {"max depth", withRender(R"("max_depth": 1000000)"),
+       "/render/max_depth: must be at most 64, got 1000000"},
+      {"shadow samples", withRender(R"("shadow_samples": 1000000000)"),
+       "/render/shadow_samples: must be at most 256, got 1000000000"},
+      {"glossy samples", withRender(R"("glossy_samples": 257)"),
+       "/render/glossy_samples: must be at most 256, got 257"},
+      {"roulette depth", withRender(R"("russian_roulette_depth": 65)"),
+       "/render/russian_roulette_depth: must be at most 64, got 65"},
+  };
+  for (const ErrorCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string message = loadError(c.text);
+    EXPECT_THAT(message, HasSubstr("test.json: at ")) << message;
+    EXPECT_THAT(message, HasSubstr(c.expected)) << message;
+  }
+  // The limits themselves are accepted.
+  EXPECT_NO_THROW(SceneIO::parse(withRender(R"("spp": 1048576, "max_depth": 64, )"
+                                            R"("shadow_samples": 256, "glossy_samples": 256)"),
+                                 "test.json"));
+  EXPECT_NO_THROW(SceneIO::parse(
+      sphere(R"("centre": [0, 0, 0], "radius": 1e12, "m": 1024, "n": 1024)", "",
+             R"(, "camera": {"position": [0, 0, 1e12], "width": 4096, "height": 4096})"),
+      "test.json"));
 }
 
 TEST(SceneIO, 04_MissingFileIsNamed) {
@@ -192,6 +277,31 @@ TEST(SceneIO, 04_MissingFileIsNamed) {
     EXPECT_THAT(e.what(), HasSubstr("/nonexistent/dir/scene.json"));
     EXPECT_THAT(e.what(), HasSubstr("cannot open"));
   }
+}
+
+// A device, a folder or a file over the size limit is refused before reading (/dev/zero
+// used to be read without end).
+TEST(SceneIO, 04b_OnlyRegularFilesOfBoundedSizeAreRead) {
+  const auto message = [](const std::string& path) -> std::string {
+    try {
+      SceneIO::load(path);
+    } catch (const SceneIO::LoadError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_EQ(message("/dev/zero"),
+            "/dev/zero: cannot read scene file: not a regular file (a folder or a device?)");
+  EXPECT_EQ(message(RAYLAB_TEMP_DIR),
+            std::string(RAYLAB_TEMP_DIR) +
+                ": cannot read scene file: not a regular file (a folder or a device?)");
+  // A sparse 65 MiB file: no disk space used.
+  const std::string big = std::string(RAYLAB_TEMP_DIR) + "/sceneio-65MiB.json";
+  { std::ofstream(big) << "{"; }
+  std::filesystem::resize_file(big, std::uintmax_t(65) << 20);
+  EXPECT_EQ(message(big),
+            big + ": scene file is 65 MiB; RayLab reads scene files of at most 64 MiB");
+  std::filesystem::remove(big);
 }
 
 TEST(SceneIO, 05_SaveReplacesAtomicallyAndFailureKeepsTheOldFile) {

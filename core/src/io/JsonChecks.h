@@ -3,11 +3,13 @@
 #include <nlohmann/json.hpp>
 
 #include "io/PrettyJson.h"
+#include "raylab/core/Limits.h"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -41,6 +43,29 @@ inline std::string excerpt(const nlohmann::json& j) {
 /// for a double). The loaders throw it in their own error types.
 inline std::optional<std::string> parseJson(const std::string& text, const std::string& origin,
                                             nlohmann::json& out) {
+  // Nesting deeper than any RayLab file needs is refused before parsing, at its place.
+  int depth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limits::kMaxJsonDepth) {
+        const auto [line, column] = lineColumn(text, i);
+        return origin + ":" + std::to_string(line) + ":" + std::to_string(column) +
+               ": JSON nested deeper than " + std::to_string(limits::kMaxJsonDepth) +
+               " levels (RayLab's limit)";
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
   try {
     out = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
@@ -59,6 +84,17 @@ inline std::optional<std::string> parseJson(const std::string& text, const std::
 /// kind of file: "scene file", "lesson file").
 inline std::optional<std::string> readTextFile(const std::string& path, const std::string& what,
                                                std::string& out) {
+  // Only regular files of bounded size: /dev/zero or a folder would read without end.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    return path + ": cannot read " + what + ": not a regular file (a folder or a device?)";
+  if (std::filesystem::exists(status)) {
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > limits::kMaxJsonFileBytes)
+      return path + ": " + what + " is " + std::to_string(size >> 20) + " MiB; RayLab reads " +
+             what + "s of at most " + std::to_string(limits::kMaxJsonFileBytes >> 20) + " MiB";
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) return path + ": cannot open " + what + " (does it exist and is it readable?)";
   std::ostringstream text;
@@ -108,6 +144,13 @@ class JsonChecks {
     const int v = integer(j, path);
     if (v < minimum)
       loader().fail(path, "must be at least " + std::to_string(minimum) + ", got " + excerpt(j));
+    return v;
+  }
+
+  int integerIn(const json& j, const std::string& path, int minimum, int maximum) const {
+    const int v = integerAtLeast(j, path, minimum);
+    if (v > maximum)
+      loader().fail(path, "must be at most " + std::to_string(maximum) + ", got " + excerpt(j));
     return v;
   }
 

@@ -1,6 +1,8 @@
 #include "raylab/core/SceneIO.h"
 
 #include "raylab/core/Box.h"
+#include "raylab/core/Camera.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/MeshIO.h"
 #include "raylab/core/Plane.h"
 #include "raylab/core/Quad.h"
@@ -49,14 +51,35 @@ class Reader : private JsonChecks<Reader> {
     throw SceneIO::LoadError(m_origin + ": at " + (path.empty() ? "/" : path) + ": " + what);
   }
 
-  Vec3 vec3(const json& j, const std::string& path) const {
-    if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, z], got " + excerpt(j));
-    return {number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2")};
+  /// A number within +-limits::kMaxCoordinate (a coordinate, a size, a colour).
+  double bounded(const json& j, const std::string& path) const {
+    const double v = number(j, path);
+    if (std::abs(v) > limits::kMaxCoordinate)
+      fail(path, excerpt(j) + " is beyond RayLab's largest coordinate, 1e12");
+    return v;
   }
 
+  Vec3 vec3(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, z], got " + excerpt(j));
+    return {bounded(j[0], path + "/0"), bounded(j[1], path + "/1"), bounded(j[2], path + "/2")};
+  }
+
+  /// A size (radius, box side): positive, in [limits::kMinLength, limits::kMaxCoordinate].
+  double length(const json& j, const std::string& path, const char* what) const {
+    const double v = bounded(j, path);
+    if (v <= 0.0) fail(path, std::string(what) + " must be positive, got " + excerpt(j));
+    if (v < limits::kMinLength)
+      fail(path, std::string(what) + " " + excerpt(j) + " is below RayLab's smallest size, 1e-9");
+    return v;
+  }
+
+  /// A vector that gives a direction: not zero, and not so short that its squared length
+  /// underflows ([0, 1e-300, 0] used to abort in Transform).
   Vec3 nonZero(const json& j, const std::string& path) const {
     const Vec3 v = vec3(j, path);
     if (v == Vec3(0.0)) fail(path, "vector must not be zero (it gives a direction)");
+    if (glm::length(v) < limits::kMinLength)
+      fail(path, "vector is too short to give a direction (length below 1e-9)");
     return v;
   }
 
@@ -97,13 +120,15 @@ class Reader : private JsonChecks<Reader> {
       }
       if (type == "sphere") {
         onlyKeys(j, path, kSphereKeys);
-        const double radius = number(member(j, path, "radius"), path + "/radius");
-        if (radius <= 0.0)
-          fail(path + "/radius", "radius must be positive, got " + excerpt(j["radius"]));
+        const double radius = length(member(j, path, "radius"), path + "/radius", "radius");
         const int m = j.contains("m") ? integer(j["m"], path + "/m") : 24;
         const int n = j.contains("n") ? integer(j["n"], path + "/n") : 24;
         if (m < 2) fail(path + "/m", "m (polar slices) must be at least 2");
         if (n < 3) fail(path + "/n", "n (azimuthal slices) must be at least 3");
+        if (m > limits::kMaxSphereSlices || n > limits::kMaxSphereSlices)
+          fail(path + (m > limits::kMaxSphereSlices ? "/m" : "/n"),
+               "m and n (sphere slices) must be at most " +
+                   std::to_string(limits::kMaxSphereSlices));
         return std::make_unique<Sphere>(vec3(member(j, path, "centre"), path + "/centre"), radius,
                                         m, n);
       }
@@ -112,10 +137,13 @@ class Reader : private JsonChecks<Reader> {
         if (j.contains("matrix"))
           return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
         const Vec3 centre = vec3(member(j, path, "centre"), path + "/centre");
-        const Vec3 size = vec3(member(j, path, "size"), path + "/size");
+        const json& sizes = member(j, path, "size");
+        const Vec3 size = vec3(sizes, path + "/size");
         for (int i = 0; i < 3; ++i)
           if (size[i] <= 0.0)
             fail(path + "/size/" + std::to_string(i), "box size must be positive");
+        for (int i = 0; i < 3; ++i)
+          length(sizes[i], path + "/size/" + std::to_string(i), "box size");
         if (!j.contains("axes")) return std::make_unique<Box>(centre, size);
         const json& axes = j["axes"];
         if (!axes.is_array() || axes.size() != 3)
@@ -165,6 +193,10 @@ class Reader : private JsonChecks<Reader> {
         const Vec3 f = vec3(s["scale"], sp + "/scale");
         if (f.x == 0.0 || f.y == 0.0 || f.z == 0.0)
           fail(sp + "/scale", "scale factors must not be zero");
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(f[c]) < limits::kMinLength)
+            fail(sp + "/scale/" + std::to_string(c),
+                 "scale factor " + excerpt(s["scale"][c]) + " is below 1e-9 in magnitude");
         step = Transform::scale(f).matrix();
       } else if (s.contains("rotate")) {
         const json& r = s["rotate"];
@@ -178,6 +210,12 @@ class Reader : private JsonChecks<Reader> {
              "unknown step " + s.begin().key() + " (expected translate, scale, rotate, matrix)");
       }
       m = step * m;  // later steps apply after earlier ones
+      // Steps may compose to more than any one of them: 13 scales by 1e12 overflow.
+      const double det = glm::determinant(Mat3(m));
+      if (!isFinite(Vec3(m[3])) || !std::isfinite(det) || std::abs(det) < 1e-200 ||
+          std::abs(det) > 1e200)
+        fail(sp, "the steps so far make a transform too large or too degenerate (determinant " +
+                     json(det).dump() + ")");
     }
     return m;
   }
@@ -210,6 +248,7 @@ class Reader : private JsonChecks<Reader> {
     if (j.contains("refraction_rate"))
       m.refractionRate = number(j["refraction_rate"], p + "/refraction_rate");
     if (j.contains("ior")) m.ior = number(j["ior"], p + "/ior");
+    if (j.contains("ior_outside")) m.iorOutside = number(j["ior_outside"], p + "/ior_outside");
     if (j.contains("exponent")) m.exponent = number(j["exponent"], p + "/exponent");
     if (j.contains("specular")) m.specular = number(j["specular"], p + "/specular");
     if (j.contains("opacity")) m.opacity = number(j["opacity"], p + "/opacity");
@@ -226,6 +265,8 @@ class Reader : private JsonChecks<Reader> {
     if (m.reflectionRate + m.refractionRate > 1.0)
       fail(p, "reflection_rate + refraction_rate must not exceed 1 (energy would be created)");
     if (!(m.ior > 0.0)) fail(p + "/ior", "ior (index of refraction) must be positive");
+    if (!(m.iorOutside > 0.0))
+      fail(p + "/ior_outside", "ior_outside (index of the medium outside) must be positive");
     if (!(m.exponent > 0.0)) fail(p + "/exponent", "exponent (Phong) must be positive");
     if (m.specular < 0.0 || m.specular > 1.0) fail(p + "/specular", "specular must be in [0, 1]");
     if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");
@@ -283,22 +324,35 @@ class Reader : private JsonChecks<Reader> {
       cam.verticalFov = number(c["vertical_fov"], "/camera/vertical_fov");
     if (c.contains("width")) cam.width = integer(c["width"], "/camera/width");
     if (c.contains("height")) cam.height = integer(c["height"], "/camera/height");
-    if (c.contains("aperture")) cam.aperture = number(c["aperture"], "/camera/aperture");
+    if (c.contains("aperture")) cam.aperture = bounded(c["aperture"], "/camera/aperture");
     if (c.contains("focus_distance"))
-      cam.focusDistance = number(c["focus_distance"], "/camera/focus_distance");
-    if (c.contains("near_clip")) cam.nearClip = number(c["near_clip"], "/camera/near_clip");
+      cam.focusDistance = bounded(c["focus_distance"], "/camera/focus_distance");
+    if (c.contains("near_clip")) cam.nearClip = bounded(c["near_clip"], "/camera/near_clip");
     if (cam.position == cam.lookAt) fail("/camera/look_at", "camera looks at its own position");
     if (glm::length(glm::cross(cam.lookAt - cam.position, cam.up)) == 0.0)
       fail("/camera/up", "up is parallel to the viewing direction");
     if (!(cam.verticalFov > 0.0 && cam.verticalFov < 180.0))
       fail("/camera/vertical_fov", "vertical_fov must be in (0, 180) degrees");
-    if (cam.width < 1 || cam.height < 1 || cam.width > 16384 || cam.height > 16384)
-      fail("/camera", "width and height must be in [1, 16384]");
+    if (cam.width < 1 || cam.height < 1 || cam.width > limits::kMaxImageSide ||
+        cam.height > limits::kMaxImageSide)
+      fail("/camera", "width and height must be in [1, " + std::to_string(limits::kMaxImageSide) +
+                          "], got " + std::to_string(cam.width) + " x " +
+                          std::to_string(cam.height));
+    if (std::int64_t(cam.width) * cam.height > limits::kMaxImagePixels)
+      fail("/camera", "width x height must be at most 4096 x 4096 = " +
+                          std::to_string(limits::kMaxImagePixels) + " pixels, got " +
+                          std::to_string(cam.width) + " x " + std::to_string(cam.height));
     if (cam.aperture < 0.0) fail("/camera/aperture", "aperture (lens radius) must not be negative");
     if (cam.nearClip < 0.0) fail("/camera/near_clip", "near_clip must not be negative");
     if (cam.focusDistance < 0.0)
       fail("/camera/focus_distance",
            "focus_distance must not be negative (0: distance to look_at)");
+    // Whatever else the camera would refuse, refused here with the file and the place.
+    try {
+      const Camera probe(cam);
+    } catch (const Exception& e) {
+      fail("/camera", e.what());
+    }
   }
 
   void render(const json& r, RenderSettings& s) const {
@@ -312,20 +366,24 @@ class Reader : private JsonChecks<Reader> {
              "unknown algorithm \"" + name + "\" (expected raycast, whitted, distributed or path)");
       s.algorithm = *algorithm;
     }
-    if (r.contains("spp")) s.samplesPerPixel = integerAtLeast(r["spp"], p + "/spp", 1);
-    if (r.contains("max_depth")) s.maxDepth = integerAtLeast(r["max_depth"], p + "/max_depth", 0);
+    if (r.contains("spp"))
+      s.samplesPerPixel = integerIn(r["spp"], p + "/spp", 1, limits::kMaxSamplesPerPixel);
+    if (r.contains("max_depth"))
+      s.maxDepth = integerIn(r["max_depth"], p + "/max_depth", 0, limits::kMaxDepth);
     if (r.contains("seed")) {
       if (!r["seed"].is_number_unsigned())
         fail(p + "/seed", "expected a non-negative integer, got " + excerpt(r["seed"]));
       s.seed = r["seed"].get<std::uint64_t>();
     }
     if (r.contains("shadow_samples"))
-      s.shadowSamples = integerAtLeast(r["shadow_samples"], p + "/shadow_samples", 1);
+      s.shadowSamples =
+          integerIn(r["shadow_samples"], p + "/shadow_samples", 1, limits::kMaxLightSamples);
     if (r.contains("glossy_samples"))
-      s.glossySamples = integerAtLeast(r["glossy_samples"], p + "/glossy_samples", 1);
+      s.glossySamples =
+          integerIn(r["glossy_samples"], p + "/glossy_samples", 1, limits::kMaxLightSamples);
     if (r.contains("russian_roulette_depth"))
-      s.russianRouletteDepth =
-          integerAtLeast(r["russian_roulette_depth"], p + "/russian_roulette_depth", 0);
+      s.russianRouletteDepth = integerIn(r["russian_roulette_depth"], p + "/russian_roulette_depth",
+                                         0, limits::kMaxDepth);
     if (r.contains("next_event_estimation"))
       s.nextEventEstimation = boolean(r["next_event_estimation"], p + "/next_event_estimation");
     if (r.contains("multiple_importance"))
@@ -357,6 +415,13 @@ class Reader : private JsonChecks<Reader> {
       } catch (const Shape::InvalidGeometry& e) {
         fail(p + "/transform", e.what());
       }
+      // A finite object must stay within reach of double arithmetic once moved.
+      const Bounds3 b = o.shape->bounds();
+      const double far = 1e3 * limits::kMaxCoordinate;
+      if (o.shape->kind() != ShapeKind::Plane &&
+          !(glm::all(glm::lessThanEqual(glm::abs(b.lower), Vec3(far))) &&
+            glm::all(glm::lessThanEqual(glm::abs(b.upper), Vec3(far)))))
+        fail(p + "/transform", "the transformed object reaches beyond 1e15 world units");
     }
     if (j.contains("velocity")) o.velocity = vec3(j["velocity"], p + "/velocity");
     // An area light must have a finite area to sample.

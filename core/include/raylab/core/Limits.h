@@ -1,0 +1,47 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+/// \file Limits.h
+/// The limits RayLab puts on what a file or a command line may ask for, in one place: the
+/// scene and lesson loaders, the mesh readers and the command line refuse a value past
+/// one of these with a message naming the file, the place and the limit, so no input
+/// brings the machine down with a huge allocation or a computation that never ends.
+/// README.md ("Limits") lists them for users; each has a regression test.
+
+namespace raylab::limits {
+
+/// Largest scene or lesson file read, bytes (a 64 MiB JSON document takes about 1 GB of
+/// memory once parsed).
+constexpr std::uint64_t kMaxJsonFileBytes = std::uint64_t(64) << 20;
+/// Deepest nesting of JSON arrays and objects in a scene or lesson file (a scene needs 8).
+constexpr int kMaxJsonDepth = 64;
+
+/// Largest image side, pixels (the command line's --size too).
+constexpr int kMaxImageSide = 8192;
+/// Largest image, pixels (width x height): 4096 x 4096. A render keeps a few doubles per
+/// pixel, so this is about 1 GB at most.
+constexpr std::int64_t kMaxImagePixels = std::int64_t(4096) * 4096;
+/// Most samples per pixel (scene files and --spp).
+constexpr int kMaxSamplesPerPixel = 1 << 20;
+/// Deepest bounce (max_depth): the camera ray has depth 0.
+constexpr int kMaxDepth = 64;
+/// Most shadow rays per area light, and glossy rays, at one hit (distributed tracing).
+constexpr int kMaxLightSamples = 256;
+
+/// Largest magnitude of a coordinate, size or radius, world units: squares and products of
+/// such numbers stay far from overflowing a double.
+constexpr double kMaxCoordinate = 1e12;
+/// Smallest size, radius or scale factor (and the shortest vector that may give a
+/// direction): their squares stay far from underflowing a double.
+constexpr double kMinLength = 1e-9;
+
+/// Most slices of a sphere's tessellation, m (polar) and n (azimuthal) each.
+constexpr int kMaxSphereSlices = 1024;
+/// Most triangles (and vertices) of one mesh file.
+constexpr std::size_t kMaxMeshTriangles = 4'000'000;
+/// Largest mesh file read, bytes.
+constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t(1) << 30;
+
+}  // namespace raylab::limits
