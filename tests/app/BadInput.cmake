@@ -48,3 +48,14 @@ raylab_add_cli_test(app.BadInput.HugeSizeIsAUsageError CODE 2
   NO_FILE ${out}/app_bad_size.png LABELS app
   COMMAND ${raylab_exe} render --size 8192x8192 --out ${out}/app_bad_size.png)
 
+# Meshes whose header asks for more than the file holds (CGAL trusted the counts): named
+# with the scene file, its JSON path, the mesh file and its line.
+raylab_add_cli_test(app.BadInput.MeshFaceOfHugeDegree CODE 1
+  STDERR "mesh-huge-face\\.json: at /objects/0/shape/file: cannot load mesh \"huge-face\\.off\": [^\n]*huge-face\\.off:6: cannot parse OFF file: face lists fewer than 300000000 indices"
+  NO_FILE ${out}/app_bad_mesh_off.png LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/mesh-huge-face.json --size 16x16 --out ${out}/app_bad_mesh_off.png)
+raylab_add_cli_test(app.BadInput.TruncatedBinaryPly CODE 1
+  STDERR "mesh-truncated\\.json: at /objects/0/shape/file: cannot load mesh \"truncated\\.ply\": [^\n]*truncated\\.ply: cannot parse PLY file: truncated or corrupt binary PLY: element face 22 of 80"
+  NO_FILE ${out}/app_bad_mesh_ply.png LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/mesh-truncated.json --size 16x16 --out ${out}/app_bad_mesh_ply.png)
+

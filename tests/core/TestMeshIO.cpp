@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 
@@ -133,8 +135,11 @@ TEST(MeshIO, 09_OffFaceIndexOutOfRangeIsLocated) {
 
 TEST(MeshIO, 10_TruncatedBinaryStl) {
   const std::string msg = readError(meshPath("truncated.stl"));
-  EXPECT_TRUE(contains(msg, "truncated.stl: cannot parse STL file")) << msg;
-  EXPECT_TRUE(contains(msg, "premature end of file")) << msg;
+  EXPECT_TRUE(contains(msg,
+                       "truncated.stl: cannot parse STL file: truncated binary STL: the "
+                       "header announces 12 triangles (684 bytes) but the file has 334 "
+                       "bytes"))
+      << msg;
 }
 
 TEST(MeshIO, 11_NonManifoldBeyondRepair) {
@@ -175,6 +180,76 @@ TEST(MeshIO, 13_IcosphereRoundTripsThroughObj) {
   const auto h = back.intersect(Ray::make(3.0 * vertex, -vertex));
   ASSERT_TRUE(h.has_value());
   EXPECT_NEAR(h->t, 2.0 * glm::length(vertex), 1e-12);
+}
+
+/// Writes `bytes` to a fresh file named `name` under the build's temporary folder.
+std::string writeMesh(const std::string& name, const std::string& bytes) {
+  const std::string path = std::string(RAYLAB_TEMP_DIR) + "/meshio-" + name;
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+/// Little-endian bytes of a 32-bit value.
+std::string le32(std::uint32_t v) {
+  std::string b(4, '\0');
+  for (int k = 0; k < 4; ++k) b[std::size_t(k)] = char((v >> (8 * k)) & 0xff);
+  return b;
+}
+
+// Issue 14: what a file announces is checked against what it holds before CGAL reads it
+// (CGAL trusts the counts: a 50-byte OFF file asking for a face of 300,000,000 corners
+// allocated 2.4 GB), and against RayLab's limit of 4,000,000 vertices and faces; a
+// truncated binary file is reported as truncated, never as an empty mesh.
+TEST(MeshIO, 14_AnnouncedCountsMustFitTheFileAndTheLimits) {
+  struct Case {
+    std::string name, bytes, expected;
+  };
+  const std::string plyHeader =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uint int vertex_indices\nend_header\n";
+  std::string threeVertices;
+  for (int k = 0; k < 9; ++k) threeVertices += le32(0);
+  std::ifstream ply(meshPath("icosphere_binary.ply"), std::ios::binary);
+  const std::string icosphere((std::istreambuf_iterator<char>(ply)), {});
+  const Case cases[] = {
+      {"huge-face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n",
+       "huge-face.off:6: cannot parse OFF file: face lists fewer than 300000000 indices"},
+      {"huge-counts.off", "OFF\n300000000 1 0\n0 0 0\n",
+       "huge-counts.off:2: cannot parse OFF file: the file announces 300000000 vertices and 1 "
+       "faces; RayLab reads meshes of at most 4000000 of each"},
+      {"binary.off",
+       "OFF BINARY\n" + std::string("\0\0\0\3\0\0\0\1\0\0\0\0", 12) + std::string(36, '\0') +
+           std::string("\x7f\0\0\0", 4),
+       "binary.off: cannot parse OFF file: truncated or corrupt binary OFF: face 0 of 1 "
+       "announces more corners than the file holds"},
+      {"truncated.ply", icosphere.substr(0, 1500),
+       "truncated.ply: cannot parse PLY file: truncated or corrupt binary PLY: element face 22 of "
+       "80 "},
+      {"huge-list.ply", plyHeader + threeVertices + le32(0xF0000000u) + le32(0),
+       "huge-list.ply: cannot parse PLY file: truncated or corrupt binary PLY: element face 0 "
+       "of 1 announces a list of 4026531840 values, more than the file holds"},
+      {"huge-list-ascii.ply",
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+       "0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n",
+       "cannot parse PLY file: truncated or corrupt ASCII PLY: element face 0 of 1 announces a "
+       "list of 300000000 values"},
+      {"huge-count.stl", std::string(80, 'x') + le32(1000000000u) + std::string(50, '\0'),
+       "huge-count.stl: cannot parse STL file: the file announces 0 vertices and 1000000000 "
+       "faces; RayLab reads meshes of at most 4000000 of each"},
+      {"short.stl", std::string(40, 'x'),
+       "short.stl: cannot parse STL file: truncated binary STL: 40 bytes, less than its 84-byte "
+       "header"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string msg = readError(writeMesh(c.name, c.bytes));
+    EXPECT_TRUE(contains(msg, c.expected)) << msg;
+    EXPECT_FALSE(contains(msg, "empty mesh")) << msg;
+  }
+  // The whole binary PLY still loads after the walk over its records.
+  EXPECT_EQ(MeshIO::load(writeMesh("whole.ply", icosphere)).triangleCount(), 80u);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "raylab/core/MeshIO.h"
 
 #include "raylab/core/FilePaths.h"
+#include "raylab/core/Limits.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -12,6 +13,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -124,9 +127,216 @@ std::optional<Located> locateObjError(const std::string& path) {
   return std::nullopt;
 }
 
-/// Finds the first malformed line of an ASCII OFF file (header, counts, vertex or face).
-std::optional<Located> locateOffError(const std::string& path) {
-  std::ifstream in(path);
+/// The problem with counts a mesh file announces, found before CGAL reads it: CGAL trusts
+/// them (a 50-byte OFF file announcing a face of 300,000,000 corners made it allocate
+/// 2.4 GB), and a truncated binary file used to be reported as an empty mesh.
+using SizeProblem = std::optional<Located>;
+
+/// At most limits::kMaxMeshTriangles vertices and faces.
+SizeProblem checkCounts(long long vertices, long long faces, int line) {
+  const long long limit = static_cast<long long>(limits::kMaxMeshTriangles);
+  if (vertices > limit || faces > limit)
+    return Located{line, "the file announces " + std::to_string(vertices) + " vertices and " +
+                             std::to_string(faces) + " faces; RayLab reads meshes of at most " +
+                             std::to_string(limit) + " of each"};
+  return std::nullopt;
+}
+
+/// Binary OFF (after the "OFF BINARY" line): big-endian int32 counts, 3 float32 per
+/// vertex, then per face its corner count, the corners and a colour count with its floats.
+SizeProblem checkBinaryOff(std::istream& in, std::uintmax_t size) {
+  const auto readInt = [&](std::int64_t& value) {
+    unsigned char b[4];
+    if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
+    value = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
+                         std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+    return true;
+  };
+  std::int64_t nv = 0, nf = 0, ne = 0;
+  if (!readInt(nv) || !readInt(nf) || !readInt(ne) || nv < 0 || nf < 0)
+    return Located{0, "binary OFF header has no vertex and face counts"};
+  if (auto problem = checkCounts(nv, nf, 0)) return problem;
+  const auto remaining = [&] { return std::int64_t(size) - std::int64_t(in.tellg()); };
+  if (12 * nv > remaining())
+    return Located{0, "truncated binary OFF: " + std::to_string(nv) +
+                          " vertices announced, the file ends before them"};
+  in.seekg(12 * nv, std::ios::cur);
+  for (std::int64_t f = 0; f < nf; ++f) {
+    std::int64_t corners = 0, colours = 0;
+    if (!readInt(corners) || corners < 1 || 4 * corners > remaining())
+      return Located{0, "truncated or corrupt binary OFF: face " + std::to_string(f) + " of " +
+                            std::to_string(nf) + " announces more corners than the " +
+                            "file holds"};
+    in.seekg(4 * corners, std::ios::cur);
+    if (!readInt(colours) || colours < 0 || 4 * colours > remaining())
+      return Located{0, "truncated or corrupt binary OFF: face " + std::to_string(f) + " of " +
+                            std::to_string(nf) + " is cut off"};
+    in.seekg(4 * colours, std::ios::cur);
+  }
+  return std::nullopt;
+}
+
+/// One property of a PLY element: a scalar, or a list (count type, item type).
+struct PlyProperty {
+  int countBytes = 0;  ///< 0 for a scalar.
+  int bytes = 0;       ///< Of the scalar, or of each item of a list.
+};
+
+int plyTypeBytes(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+/// PLY: the header's elements, then every record walked (ASCII tokens or binary bytes),
+/// each list's announced length checked against what is left of the file.
+SizeProblem checkPly(const std::string& path, std::uintmax_t size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, format;
+  int lineNo = 0;
+  struct Element {
+    std::string name;
+    long long count;
+    std::vector<PlyProperty> properties;
+  };
+  std::vector<Element> elements;
+  long long vertices = 0, faces = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    std::istringstream words(line);
+    std::string key;
+    words >> key;
+    if (key == "end_header") break;
+    if (key == "format") words >> format;
+    if (key == "element") {
+      Element e;
+      if (!(words >> e.name >> e.count) || e.count < 0)
+        return Located{lineNo, "element line needs a name and a count: '" + trimmed(line) + "'"};
+      if (e.name == "vertex") vertices = e.count;
+      if (e.name == "face") faces = e.count;
+      elements.push_back(e);
+    }
+    if (key == "property" && !elements.empty()) {
+      std::string type, countType, itemType;
+      words >> type;
+      PlyProperty p;
+      if (type == "list") {
+        words >> countType >> itemType;
+        p.countBytes = plyTypeBytes(countType);
+        p.bytes = plyTypeBytes(itemType);
+      } else {
+        p.bytes = plyTypeBytes(type);
+      }
+      if (p.bytes == 0 || (type == "list" && p.countBytes == 0))
+        return Located{lineNo, "unknown property type in '" + trimmed(line) + "'"};
+      elements.back().properties.push_back(p);
+    }
+  }
+  if (auto problem = checkCounts(vertices, faces, lineNo)) return problem;
+  const bool ascii = format == "ascii";
+  const bool bigEndian = format == "binary_big_endian";
+  if (!ascii && !bigEndian && format != "binary_little_endian") return std::nullopt;
+  const auto remaining = [&] { return std::int64_t(size) - std::int64_t(in.tellg()); };
+  const auto readCount = [&](int bytes, std::int64_t& value) {
+    if (ascii) {
+      double v;
+      if (!(in >> v) || v < 0 || v != std::floor(v)) return false;
+      value = std::int64_t(v);
+      return true;
+    }
+    unsigned char b[8] = {};
+    if (!in.read(reinterpret_cast<char*>(b), bytes)) return false;
+    std::uint64_t v = 0;
+    for (int k = 0; k < bytes; ++k) v |= std::uint64_t(b[bigEndian ? bytes - 1 - k : k]) << 8 * k;
+    value = std::int64_t(v);
+    return true;
+  };
+  const auto skip = [&](std::int64_t items, int bytes) {
+    if (!ascii) {
+      in.seekg(items * bytes, std::ios::cur);
+      return bool(in) && remaining() >= 0;
+    }
+    std::string token;
+    for (std::int64_t k = 0; k < items; ++k)
+      if (!(in >> token)) return false;
+    return true;
+  };
+  const std::string kind = ascii ? "ASCII PLY" : "binary PLY";
+  for (const Element& e : elements) {
+    for (long long r = 0; r < e.count; ++r) {
+      const std::string where =
+          "element " + e.name + " " + std::to_string(r) + " of " + std::to_string(e.count);
+      for (const PlyProperty& p : e.properties) {
+        std::int64_t items = 1;
+        if (p.countBytes > 0) {
+          if (!readCount(p.countBytes, items))
+            return Located{0, "truncated " + kind + ": " + where + " is cut off"};
+          // An ASCII item takes at least two characters, a binary one its size.
+          if (items * (ascii ? 2 : p.bytes) > remaining())
+            return Located{0, "truncated or corrupt " + kind + ": " + where +
+                                  " announces a list of " + std::to_string(items) +
+                                  " values, more than the file holds"};
+        }
+        if (!skip(items, p.bytes))
+          return Located{0, "truncated " + kind + ": " + where + " is cut off (the header " +
+                                "announces " + std::to_string(vertices) + " vertices and " +
+                                std::to_string(faces) + " faces)"};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+/// STL: a binary file holds exactly 84 + 50 n bytes for the n triangles of its header.
+SizeProblem checkStl(const std::string& path, std::uintmax_t size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string start(5, '\0');
+  in >> std::ws;
+  in.read(&start[0], 5);
+  const bool looksAscii = in && start == "solid";
+  if (size < 84) {
+    if (looksAscii) return std::nullopt;
+    return Located{0, "truncated binary STL: " + std::to_string(size) +
+                          " bytes, less than its 84-byte header"};
+  }
+  unsigned char b[4];
+  in.clear();
+  in.seekg(80);
+  in.read(reinterpret_cast<char*>(b), 4);
+  const std::uint64_t count = std::uint64_t(b[0]) | std::uint64_t(b[1]) << 8 |
+                              std::uint64_t(b[2]) << 16 | std::uint64_t(b[3]) << 24;
+  const std::uint64_t expected = 84 + 50 * count;
+  if (looksAscii && expected != size) return std::nullopt;  // an ASCII STL file
+  if (auto problem = checkCounts(0, static_cast<long long>(count), 0)) return problem;
+  if (expected > size)
+    return Located{0, "truncated binary STL: the header announces " + std::to_string(count) +
+                          " triangles (" + std::to_string(expected) + " bytes) but the file has " +
+                          std::to_string(size) + " bytes"};
+  return std::nullopt;
+}
+
+/// OBJ has no counts: its faces are counted, for the limit.
+SizeProblem checkObj(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long long vertices = 0, faces = 0;
+  while (std::getline(in, line)) {
+    const std::size_t b = line.find_first_not_of(" \t");
+    if (b == std::string::npos || b + 1 >= line.size() || !std::isspace((unsigned char)line[b + 1]))
+      continue;
+    if (line[b] == 'v') ++vertices;
+    if (line[b] == 'f') ++faces;
+  }
+  return checkCounts(vertices, faces, 0);
+}
+/// Finds the first malformed line of an ASCII OFF file (header, counts, vertex or face);
+/// for a binary OFF file, checks its counts against its `size`. Run before CGAL reads it.
+std::optional<Located> locateOffError(const std::string& path, std::uintmax_t size) {
+  std::ifstream in(path, std::ios::binary);
   std::string line;
   int lineNo = 0;
   // The significant lines, with comments and blank lines skipped.
@@ -149,7 +359,7 @@ std::optional<Located> locateOffError(const std::string& path) {
   if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
     return Located{lineNo, "header must start with OFF, found '" + keyword + "'"};
   std::string rest;
-  if (header >> rest && rest == "BINARY") return std::nullopt;  // binary body: not scanned
+  if (header >> rest && rest == "BINARY") return checkBinaryOff(in, size);
   long long nv = -1, nf = -1;
   std::istringstream counts(rest.empty() ? std::string() : s.substr(s.find(rest)));
   if (!(counts >> nv >> nf)) {
@@ -158,6 +368,7 @@ std::optional<Located> locateOffError(const std::string& path) {
     if (!(c2 >> nv >> nf) || nv < 0 || nf < 0)
       return Located{lineNo, "expected vertex and face counts, found '" + s + "'"};
   }
+  if (auto problem = checkCounts(nv, nf, lineNo)) return problem;
   for (long long i = 0; i < nv; ++i) {
     if (!next(s))
       return Located{lineNo, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
@@ -225,7 +436,23 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
   if (std::find(known.begin(), known.end(), ext) == known.end())
     throw fail("unknown mesh extension '" + ext + "' (supported: .obj, .off, .ply, .stl)");
   if (!std::ifstream(path).good()) throw fail("cannot open the file for reading");
-  if (std::filesystem::file_size(path, ec) == 0) throw fail("file is empty (no faces)");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (size == 0) throw fail("file is empty (no faces)");
+  if (size > limits::kMaxMeshFileBytes)
+    throw fail("file is " + std::to_string(size >> 20) + " MiB; RayLab reads meshes of at most " +
+               std::to_string(limits::kMaxMeshFileBytes >> 20) + " MiB");
+  const std::string format = ext.substr(1);
+  std::string upperFormat = format;
+  std::transform(upperFormat.begin(), upperFormat.end(), upperFormat.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+
+  // Step 1b: what the file announces must fit in it and in the limits (CGAL trusts it).
+  const SizeProblem announced = ext == ".off"   ? locateOffError(path, size)
+                                : ext == ".ply" ? checkPly(path, size)
+                                : ext == ".stl" ? checkStl(path, size)
+                                                : checkObj(path);
+  if (announced)
+    throw fail("cannot parse " + upperFormat + " file: " + announced->what, announced->line);
 
   // Step 2: read the polygon soup with CGAL, collecting what it reports.
   std::vector<CgalPoint> points;
@@ -243,16 +470,11 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
     const std::string printed = capture.errors();
     report = report.empty() ? printed : report + " " + printed;
   }
-  const std::string format = ext.substr(1);
-  std::string upperFormat = format;
-  std::transform(upperFormat.begin(), upperFormat.end(), upperFormat.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-
   // Step 3: classify failures: locate the bad line in text formats, else say "no faces"
   // when nothing was wrong but faces are missing.
   auto locate = [&]() -> std::optional<Located> {
     if (ext == ".obj") return locateObjError(path);
-    if (ext == ".off") return locateOffError(path);
+    if (ext == ".off") return locateOffError(path, size);
     return std::nullopt;
   };
   auto throwLocated = [&](const std::optional<Located>& located) {
@@ -328,6 +550,10 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
       triangles.push_back(tri);
     }
   }
+  if (triangles.size() > limits::kMaxMeshTriangles)
+    throw fail("the mesh has " + std::to_string(triangles.size()) +
+               " triangles once its faces are triangulated; RayLab reads meshes of at most " +
+               std::to_string(limits::kMaxMeshTriangles));
   orientOutward(vertices, triangles);
   try {
     return TriangleMesh(std::move(vertices), std::move(triangles));
