@@ -59,3 +59,22 @@ raylab_add_cli_test(app.BadInput.TruncatedBinaryPly CODE 1
   NO_FILE ${out}/app_bad_mesh_ply.png LABELS app
   COMMAND ${raylab_exe} render --scene ${bad}/mesh-truncated.json --size 16x16 --out ${out}/app_bad_mesh_ply.png)
 
+# An output that is a folder: the message names it and the reason (it said "Success").
+file(MAKE_DIRECTORY ${out}/app_bad_folder_out.png)
+raylab_add_cli_test(app.BadInput.OutputIsAFolder CODE 1
+  STDERR "raylab: error: [^\n]*app_bad_folder_out\\.png: could not replace the file \\(Is a directory\\); the file was not changed"
+  LABELS app
+  COMMAND ${raylab_exe} render --size 16x16 --spp 1 --out ${out}/app_bad_folder_out.png)
+
+# A name with terminal escape bytes is quoted with them escaped, never raw (the regex has
+# no bracket: CMake lists do not split inside brackets).
+raylab_add_cli_test(app.BadInput.EscapeBytesInNamesAreEscaped CODE 1
+  STDERR "/objects/1/name: duplicate object \"\\\\x1b.31mred\\\\x07\""
+  NO_FILE ${out}/app_bad_escape.png LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/escape-name.json --size 16x16 --out ${out}/app_bad_escape.png)
+
+# Ctrl-C and kill during a render: the old output stays, no temporary is left.
+add_test(NAME app.InterruptedRenderLeavesTheOldOutput
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/InterruptRender.sh ${raylab_exe} ${out}/app_interrupt)
+set_tests_properties(app.InterruptedRenderLeavesTheOldOutput PROPERTIES LABELS app TIMEOUT 60
+  PASS_REGULAR_EXPRESSION "SIGTERM: render ended, old output intact, no temporary left")

@@ -10,8 +10,9 @@ namespace raylab {
  * it over `path`: the target is either unchanged or complete, never half written.
  *
  * Returns nothing on success, else what went wrong (without the path, e.g. "write failed
- * (disk full?); the file was not changed"), for the caller to throw in its own error type.
- * The temporary file is removed on failure.
+ * (No space left on device); the file was not changed"), for the caller to throw in its
+ * own error type. The temporary file is removed on failure, and on a fatal signal when
+ * removeTemporaryFilesOnSignals() was called.
  */
 std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes);
 
@@ -19,5 +20,11 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
 /// command is replaced (a command writing two files checks both first): its folder is
 /// missing or not a folder, or `path` is a folder. Nothing when it looks writable.
 std::optional<std::string> cannotWrite(const std::string& path);
+
+/// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGXFSZ (a file size limit) that
+/// remove the temporary files writeFileAtomically is writing at that moment, then let the
+/// signal end the process as it would have: Ctrl-C during a save leaves the old file and
+/// no temporary beside it. Called once by `raylab`'s main.
+void removeTemporaryFilesOnSignals();
 
 }  // namespace raylab
