@@ -20,12 +20,17 @@ bool overlap(const PixelRect& a, const PixelRect& b) {
 
 /// Figures text that grows with the font: 12 characters of 0.6 em, 6 lines of 1.2 em.
 std::pair<int, int> figuresOf(int font) { return {int(12 * 0.6 * font), int(6 * 1.2 * font)}; }
+/// A title of 26 characters (13 per line on two lines).
+std::pair<int, int> titleOf(int font, bool twoLines) {
+  return twoLines ? std::pair{int(13 * 0.6 * font), int(2 * 1.2 * font)}
+                  : std::pair{int(26 * 0.6 * font), int(1.2 * font)};
+}
 
 TEST(ComparisonLayout, 01_ImageKeepsItsAspectAndLeavesTheFiguresRoom) {
   const PixelRect panels[] = {{0, 40, 960, 520}, {960, 560, 960, 520}, {0, 0, 300, 200}};
   for (const PixelRect& panel : panels) {
     for (bool trees : {false, true}) {
-      const PanelLayout laid = layoutComparisonPanel(panel, 64, 48, trees, figuresOf);
+      const PanelLayout laid = layoutComparisonPanel(panel, 64, 48, trees, 20, figuresOf, titleOf);
       const std::string what = "panel " + std::to_string(panel.width) + "x" +
                                std::to_string(panel.height) + (trees ? " with trees" : "");
       EXPECT_TRUE(inside(laid.imageRect, panel)) << what;
@@ -34,6 +39,8 @@ TEST(ComparisonLayout, 01_ImageKeepsItsAspectAndLeavesTheFiguresRoom) {
       const auto [textW, textH] = figuresOf(laid.figuresFont);
       const PixelRect text{laid.textX, laid.textY, textW, textH};
       EXPECT_FALSE(overlap(text, laid.imageRect)) << what;
+      EXPECT_FALSE(overlap(text, laid.titleRect)) << what;
+      EXPECT_TRUE(inside(laid.titleRect, panel)) << what;
       if (trees) {
         EXPECT_TRUE(inside(laid.treeRect, panel)) << what;
         EXPECT_EQ(laid.treeRect.width, laid.imageRect.width) << what;
@@ -42,9 +49,32 @@ TEST(ComparisonLayout, 01_ImageKeepsItsAspectAndLeavesTheFiguresRoom) {
       }
     }
   }
-  // A quarter of a 1920x1080 screen shows a 64x48 image many times enlarged.
-  const PanelLayout big = layoutComparisonPanel({0, 40, 960, 520}, 64, 48, false, figuresOf);
-  EXPECT_GE(big.imageRect.height, 300);
+}
+
+TEST(ComparisonLayout, 02_AQuarterOfTheScreenIsFilledByItsImage) {
+  // A quarter of a 1920x1080 screen (under a header, over an explanation band) shows a
+  // 4:3 image as tall as the panel, the title and figures in a column beside it, at the
+  // font asked for: the image fills all of the panel's height that it can.
+  const PixelRect quarter{0, 50, 960, 470};
+  const PanelLayout laid = layoutComparisonPanel(quarter, 160, 120, false, 28, figuresOf, titleOf);
+  EXPECT_TRUE(laid.side);
+  EXPECT_EQ(laid.figuresFont, 28);
+  EXPECT_GE(laid.imageRect.height, quarter.height - 2 * laid.margin - 1);
+  EXPECT_GE(double(laid.imageRect.width) * laid.imageRect.height,
+            0.55 * quarter.width * quarter.height);
+  EXPECT_GE(laid.titleRect.x, laid.imageRect.x + laid.imageRect.width);  // title beside
+  // A tall panel (one column of four) puts the title above and the figures below.
+  const PanelLayout tall =
+      layoutComparisonPanel({0, 0, 640, 900}, 160, 120, false, 20, figuresOf, titleOf);
+  EXPECT_FALSE(tall.side);
+  EXPECT_EQ(tall.titleRect.width, 640);
+  EXPECT_GE(tall.imageRect.y, tall.titleRect.y + tall.titleRect.height);
+  EXPECT_GE(tall.textY, tall.imageRect.y + tall.imageRect.height);
+  // Too little room: the text shrinks, never below 8 points.
+  const PanelLayout tiny =
+      layoutComparisonPanel({0, 0, 200, 120}, 160, 120, false, 28, figuresOf, titleOf);
+  EXPECT_LT(tiny.figuresFont, 28);
+  EXPECT_GE(tiny.figuresFont, 8);
 }
 
 }  // namespace

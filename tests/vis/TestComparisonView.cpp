@@ -11,6 +11,7 @@
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ConvergencePlot.h"
+#include "raylab/vis/ImageIO.h"
 
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
@@ -180,9 +181,9 @@ TEST(ComparisonView, 03_TitleBandsInTheAlgorithmsColours) {
   ComparisonView view(result, baselineOptions());
   const SrgbImage picture = view.renderOffscreen(960, 600);
   for (int panel = 0; panel < 4; ++panel) {
-    const PixelRect box = view.panelRect(panel, 960, 600);
+    const PixelRect box = view.titleRect(panel, 960, 600);
     // The right end of the band, clear of the left-aligned title text.
-    const Rgb8 band = picture.at(box.x + box.width - 4, box.y + 4);
+    const Rgb8 band = picture.at(box.x + box.width - 3, box.y + 3);
     EXPECT_EQ(band, algorithmColour(result.algorithms[panel].algorithm)) << "panel " << panel;
   }
   // The four colours are distinct.
@@ -198,7 +199,9 @@ TEST(ComparisonView, 04_PanelsListTheFigures) {
   ASSERT_GE(path.size(), 4u);
   EXPECT_EQ(path[0], "Path tracing (Kajiya 1986)");
   EXPECT_TRUE(contains(path, "16 spp")) << ::testing::PrintToString(path);
-  EXPECT_TRUE(contains(path, "error 0.039 vs path ref")) << ::testing::PrintToString(path);
+  EXPECT_TRUE(contains(path, "error 0.039 (lowest)")) << ::testing::PrintToString(path);
+  EXPECT_TRUE(contains(hidden.panelText(2), "error 0.")) << "distributed, not the lowest";
+  EXPECT_FALSE(contains(hidden.panelText(2), "lowest"));
   EXPECT_TRUE(contains(path, "rays 326 k")) << ::testing::PrintToString(path);
   EXPECT_TRUE(contains(path, "diffuse 121 k")) << ::testing::PrintToString(path);
   EXPECT_FALSE(contains(path, " ms")) << "times hidden";
@@ -231,9 +234,10 @@ TEST(ComparisonView, 05_RayTreesBesideTheImagesShareOneCamera) {
   view.setRayTrees(scene, trees, 12, 30);
   ASSERT_TRUE(view.hasRayTrees());
 
-  // Renderers: the header, then per panel background, title, image and tree view.
+  // Renderers: the header, then per panel background, title, image and tree view, then
+  // the explanation.
   const std::vector<vtkRenderer*> renderers = view.renderers();
-  ASSERT_EQ(renderers.size(), 1u + 4u * 4u);
+  ASSERT_EQ(renderers.size(), 1u + 4u * 4u + 1u);
   vtkCamera* shared = renderers[4]->GetActiveCamera();
   for (int panel = 0; panel < 4; ++panel) {
     EXPECT_EQ(renderers[std::size_t(4 * panel + 4)]->GetActiveCamera(), shared);
@@ -282,6 +286,98 @@ TEST(ConvergencePlot, 07_TimeAxisAndPointsThatCannotBeDrawn) {
     }
   EXPECT_GT(orangePixels, 200);
   EXPECT_GT(whitePixels, picture.width * picture.height / 2);
+}
+
+TEST(ComparisonView, 08_EachImageFillsItsQuarterAt1920x1080) {
+  // The classroom picture: at 1920x1080 each image is as tall as its panel allows (a 4:3
+  // image in a quarter of the screen), and the figures are large enough to read from the
+  // back of a room; the fonts scale with the picture.
+  ComparisonView view(syntheticComparison(), baselineOptions());
+  view.renderOffscreen(1920, 1080);
+  for (int panel = 0; panel < 4; ++panel) {
+    const PixelRect box = view.panelRect(panel, 1920, 1080);
+    const PixelRect image = view.imageRect(panel, 1920, 1080);
+    EXPECT_GE(box.width, 959);
+    EXPECT_GE(image.height, 0.9 * box.height) << "panel " << panel;
+    EXPECT_GE(double(image.width) * image.height, 0.55 * box.width * box.height)
+        << "panel " << panel;
+  }
+  EXPECT_GE(view.figuresFontSize(), 26);
+  view.renderOffscreen(960, 540);
+  EXPECT_LE(view.figuresFontSize(), 16);
+  EXPECT_GE(view.figuresFontSize(), 12);
+}
+
+TEST(ComparisonView, 09_TheErrorIsExplainedWhereItIsShown) {
+  ComparisonResult result = syntheticComparison();
+  ComparisonView view(result, baselineOptions());
+  const std::vector<std::string> lines = view.explanationText();
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("RMSE"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("path tracing at 256 spp"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1].find("looks the noisiest yet has the lowest error"), std::string::npos)
+      << lines[1];
+  // When at these samples path tracing is not yet the closest, the text says so instead.
+  result.algorithms[3].rmse = 0.5;
+  view.setResult(result);
+  EXPECT_EQ(view.explanationText()[1].find("has the lowest error"), std::string::npos);
+  EXPECT_NE(view.explanationText()[1].find("with more samples"), std::string::npos);
+  // The explanation band is in the picture, under the panels, and can be hidden.
+  const SrgbImage picture = view.renderOffscreen(1280, 720);
+  const PixelRect lowest = view.panelRect(3, 1280, 720);
+  EXPECT_LT(lowest.y + lowest.height, 720 - 40) << "room for two lines below the panels";
+  ComparisonViewOptions hidden = baselineOptions();
+  hidden.showExplanation = false;
+  view.setOptions(hidden);
+  EXPECT_TRUE(view.explanationText().empty());
+  EXPECT_EQ(view.renderers().size(), 1u + 4u * 3u);
+  view.renderOffscreen(1280, 720);
+  EXPECT_EQ(view.panelRect(3, 1280, 720).y + view.panelRect(3, 1280, 720).height, 720);
+}
+
+TEST(ComparisonView, 10_ChineseCaptions) {
+  ComparisonResult result = syntheticComparison();
+  ComparisonViewOptions options = baselineOptions();
+  options.language = Language::Chinese;
+  ComparisonView view(result, options);
+  EXPECT_EQ(view.panelText(0)[0], "光线投射（Appel 1968）");
+  EXPECT_EQ(view.panelText(1)[0], "Whitted 光线追踪（1979）");
+  EXPECT_EQ(view.panelText(2)[0], "分布式光线追踪（Cook 1984）");
+  EXPECT_EQ(view.panelText(3)[0], "路径追踪（Kajiya 1986）");
+  EXPECT_TRUE(contains(view.panelText(3), "误差 0.039（最低）"))
+      << ::testing::PrintToString(view.panelText(3));
+  EXPECT_TRUE(contains(view.panelText(3), "漫反射光线 121 k"));
+  EXPECT_TRUE(contains(view.panelText(0), "阴影光线"));
+  EXPECT_NE(view.headerText().find("等采样数：每种算法 16 spp"), std::string::npos);
+  EXPECT_NE(view.headerText().find("均方根误差"), std::string::npos);
+  const std::vector<std::string> lines = view.explanationText();
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("参考图像（路径追踪 256 spp）"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1].find("路径追踪看起来噪点最多，误差却最低"), std::string::npos) << lines[1];
+
+  // Drawn with a CJK font: the title bands hold the glyphs' ink (a font without them would
+  // leave the bands empty), as much as the English titles' at least.
+  const auto inkInTitles = [](ComparisonView& v) {
+    const SrgbImage picture = v.renderOffscreen(1280, 720);
+    int ink = 0;
+    for (int panel = 0; panel < 4; ++panel) {
+      const PixelRect band = v.titleRect(panel, 1280, 720);
+      const Rgb8 colour = algorithmColour(v.result().algorithms[std::size_t(panel)].algorithm);
+      for (int y = band.y; y < band.y + band.height; ++y)
+        for (int x = band.x; x < band.x + band.width; ++x) {
+          const Rgb8 p = picture.at(x, y);
+          ink +=
+              std::abs(p[0] - colour[0]) + std::abs(p[1] - colour[1]) + std::abs(p[2] - colour[2]) >
+              120;
+        }
+    }
+    return ink;
+  };
+  const int chineseInk = inkInTitles(view);
+  ComparisonView english(result, baselineOptions());
+  EXPECT_GT(chineseInk, inkInTitles(english) / 2);
+  writePng(view.renderOffscreen(1920, 1080),
+           std::string(RAYLAB_TEMP_DIR) + "/TestComparisonView_Chinese.png");
 }
 
 }  // namespace

@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
@@ -48,6 +49,29 @@ constexpr double kHeaderBackground[3] = {0.06, 0.07, 0.09};
 constexpr double kTextColour[3] = {0.93, 0.93, 0.93};
 /// Colour of the mark around the traced pixel.
 constexpr double kPixelMark[3] = {1.0, 0.9, 0.0};
+/// Colour of the explanation under the panels (a little softer than the figures).
+constexpr double kExplanationColour[3] = {0.80, 0.82, 0.86};
+/// Font sizes at 1920x1080 in pixels, scaled with the picture: the figures and the
+/// explanation readable from the back of a classroom on a projector.
+constexpr double kFiguresFontAt1080 = 28.0;
+constexpr double kExplanationFontAt1080 = 24.0;
+
+/// A font file with Chinese glyphs (VTK's own fonts have none), or empty.
+const std::string& cjkFontFile() {
+  static const std::string file = [] {
+    const char* candidates[] = {
+        "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc",
+        "/usr/share/fonts/opentype/noto/NotoSansCJK-Bold.ttc",
+        "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc",
+        "/usr/share/fonts/truetype/wqy/wqy-zenhei.ttc",
+    };
+    std::error_code ec;
+    for (const char* candidate : candidates)
+      if (std::filesystem::exists(candidate, ec)) return std::string(candidate);
+    return std::string();
+  }();
+  return file;
+}
 
 double channel(std::uint8_t value) { return value / 255.0; }
 
@@ -72,8 +96,14 @@ std::pair<int, int> textSize(vtkTextProperty* property, const std::string& text)
   return {box[1] - box[0] + 1, box[3] - box[2] + 1};
 }
 
-void styleText(vtkTextProperty* p, int size, const double colour[3], bool bold) {
-  p->SetFontFamilyToArial();
+void styleText(vtkTextProperty* p, int size, const double colour[3], bool bold,
+               Language language = Language::English) {
+  if (language == Language::Chinese && !cjkFontFile().empty()) {
+    p->SetFontFamily(VTK_FONT_FILE);
+    p->SetFontFile(cjkFontFile().c_str());
+  } else {
+    p->SetFontFamilyToArial();
+  }
   p->SetFontSize(size);
   p->SetColor(colour[0], colour[1], colour[2]);
   p->SetBold(bold);
@@ -81,6 +111,46 @@ void styleText(vtkTextProperty* p, int size, const double colour[3], bool bold) 
   p->SetVerticalJustificationToTop();
   p->SetLineSpacing(1.15);
   p->ShadowOff();
+}
+
+/// `line` cut into pieces no wider than `width` pixels in `property`'s font: between words,
+/// and between any two Chinese characters (which have no spaces between them), never
+/// inside a word.
+std::vector<std::string> wrapToWidth(vtkTextProperty* property, const std::string& line,
+                                     int width) {
+  // The pieces that may not be split: a word with its following space, or one character
+  // of three or four UTF-8 bytes (CJK) with the punctuation after it.
+  std::vector<std::string> tokens;
+  for (std::size_t i = 0; i < line.size();) {
+    const unsigned char lead = static_cast<unsigned char>(line[i]);
+    std::size_t end = i;
+    if (lead >= 0xE0) {
+      end = i + (lead >= 0xF0 ? 4 : 3);
+    } else {
+      while (end < line.size() && line[end] != ' ' && static_cast<unsigned char>(line[end]) < 0xE0)
+        ++end;
+      while (end < line.size() && line[end] == ' ') ++end;
+    }
+    tokens.push_back(line.substr(i, std::max(end, i + 1) - i));
+    i = std::max(end, i + 1);
+  }
+  std::vector<std::string> out;
+  std::string current;
+  for (const std::string& token : tokens) {
+    const std::string candidate = current + token;
+    std::string trimmed = candidate;
+    while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
+    if (!current.empty() && textSize(property, trimmed).first > width) {
+      while (!current.empty() && current.back() == ' ') current.pop_back();
+      out.push_back(current);
+      current = token;
+    } else {
+      current = candidate;
+    }
+  }
+  while (!current.empty() && current.back() == ' ') current.pop_back();
+  if (!current.empty()) out.push_back(current);
+  return out;
 }
 
 std::string joinLines(const std::vector<std::string>& lines) {
@@ -129,7 +199,9 @@ Rgb8 algorithmColour(Algorithm algorithm) {
 std::string ComparisonViewOptions::toString() const {
   return "ComparisonViewOptions[columns=" + std::to_string(columns) +
          ", showTimes=" + (showTimes ? "on" : "off") +
-         ", showHeader=" + (showHeader ? "on" : "off") + "]";
+         ", showHeader=" + (showHeader ? "on" : "off") +
+         ", showExplanation=" + (showExplanation ? "on" : "off") +
+         ", language=" + raylab::toString(language) + "]";
 }
 
 /// One algorithm's panel: its renderers and actors.
@@ -140,11 +212,12 @@ struct Panel {
   vtkNew<vtkTextActor> titleText;
   vtkNew<vtkTextActor> figuresText;
   vtkNew<vtkImageActor> imageActor;
-  vtkNew<vtkActor> mark;                     ///< The traced pixel (hidden without trees).
-  std::unique_ptr<SceneView> tree;           ///< The 3D view of the pixel's tree, when shown.
-  std::vector<std::string> lines;            ///< Title, then the figures.
-  double titleColour[3] = {1.0, 1.0, 1.0};   ///< Black or white on the band.
-  PixelRect panelRect, imageRect, treeRect;  ///< From the last layout.
+  vtkNew<vtkActor> mark;                    ///< The traced pixel (hidden without trees).
+  std::unique_ptr<SceneView> tree;          ///< The 3D view of the pixel's tree, when shown.
+  std::vector<std::string> lines;           ///< Title, then the figures.
+  std::string titleTwoLines;                ///< Name, then citation (side layout).
+  double titleColour[3] = {1.0, 1.0, 1.0};  ///< Black or white on the band.
+  PixelRect panelRect, titleRect, imageRect, treeRect;  ///< From the last layout.
 };
 
 struct ComparisonView::Impl {
@@ -153,6 +226,9 @@ struct ComparisonView::Impl {
   std::vector<std::unique_ptr<Panel>> panels;
   vtkNew<vtkRenderer> header;
   vtkNew<vtkTextActor> headerText;
+  vtkNew<vtkRenderer> footer;  ///< The explanation band under the panels.
+  vtkNew<vtkTextActor> footerText;
+  int figuresFont = 0;  ///< From the last layout.
   vtkSmartPointer<vtkRenderWindow> offscreen;
   int layoutWidth = 0, layoutHeight = 0;
 
@@ -166,9 +242,20 @@ struct ComparisonView::Impl {
   void build();
   /// The header band's text, empty when it is hidden.
   std::string headerCaption() const {
-    return options.showHeader ? headerLine(result) : std::string();
+    return options.showHeader ? headerLine(result, options.language) : std::string();
   }
-  void layoutPanel(Panel& panel, const PixelRect& rect, int width, int height) const;
+  std::vector<std::string> explanation() const {
+    return options.showExplanation ? errorExplanation(result, options.language)
+                                   : std::vector<std::string>();
+  }
+  void layoutPanel(Panel& panel, const PixelRect& rect, int width, int height, int font);
+  /// Lays out a band of text across the window (the header, the explanation): the font
+  /// `size`, smaller while the text is wider than the window, or (`wrap`) the lines
+  /// wrapped to the window's width (the font smaller only past four lines); returns the
+  /// band's height.
+  int layoutBand(vtkRenderer* band, vtkTextActor* text, const std::vector<std::string>& lines,
+                 int size, const double colour[3], int y, int width, int height, bool top,
+                 bool wrap) const;
   /// Takes every renderer out of the offscreen window (before renderers change).
   void detach();
   /// Panel `panel` laid out for a width x height picture.
@@ -183,12 +270,13 @@ void ComparisonView::Impl::detach() {
     offscreen->RemoveRenderer(vtkRenderer::SafeDownCast(renderers->GetItemAsObject(0)));
 }
 
-void ComparisonView::Impl::layoutPanel(Panel& panel, const PixelRect& rect, int width,
-                                       int height) const {
-  // The rectangles, from the panel's size and the figures' measured text.
+void ComparisonView::Impl::layoutPanel(Panel& panel, const PixelRect& rect, int width, int height,
+                                       int font) {
+  // The rectangles, from the panel's size and the largest measured text of all panels.
+  const Language language = options.language;
   vtkTextProperty* figures = panel.figuresText->GetTextProperty();
-  const auto measure = [&](int font) {
-    styleText(figures, font, kTextColour, false);
+  const auto measure = [&](int size) {
+    styleText(figures, size, kTextColour, false, language);
     std::pair<int, int> largest{0, 0};
     for (const auto& other : panels) {
       const char* text = other->figuresText->GetInput();
@@ -197,23 +285,68 @@ void ComparisonView::Impl::layoutPanel(Panel& panel, const PixelRect& rect, int 
     }
     return largest;
   };
+  vtkTextProperty* title = panel.titleText->GetTextProperty();
+  const auto measureTitle = [&](int size, bool twoLines) {
+    styleText(title, size, panel.titleColour, true, language);
+    std::pair<int, int> largest{0, 0};
+    for (const auto& other : panels) {
+      const auto [w, h] = textSize(title, twoLines ? other->titleTwoLines : other->lines.front());
+      largest = {std::max(largest.first, w), std::max(largest.second, h)};
+    }
+    return largest;
+  };
   const bool trees = panel.tree != nullptr;
-  const PanelLayout laid = layoutComparisonPanel(rect, result.width, result.height, trees, measure);
+  const PanelLayout laid =
+      layoutComparisonPanel(rect, result.width, result.height, trees, font, measure, measureTitle);
+  figuresFont = laid.figuresFont;
 
   // Viewports and text, in VTK's coordinates.
   panel.panelRect = rect;
+  panel.titleRect = laid.titleRect;
   panel.imageRect = laid.imageRect;
   panel.treeRect = laid.treeRect;
   setViewport(panel.background, rect, width, height);
   setViewport(panel.title, laid.titleRect, width, height);
   setViewport(panel.image, panel.imageRect, width, height);
   if (trees) setViewport(panel.tree->renderer(), panel.treeRect, width, height);
-  styleText(figures, laid.figuresFont, kTextColour, false);
+  styleText(figures, laid.figuresFont, kTextColour, false, language);
   panel.figuresText->SetPosition(laid.textX - rect.x, rect.height - (laid.textY - rect.y));
-  vtkTextProperty* title = panel.titleText->GetTextProperty();
-  styleText(title, laid.titleFont, panel.titleColour, true);
+  styleText(title, laid.titleFont, panel.titleColour, true, language);
   title->SetVerticalJustificationToCentered();
-  panel.titleText->SetPosition(laid.margin, laid.titleRect.height / 2.0);
+  panel.titleText->SetInput(laid.side ? panel.titleTwoLines.c_str() : panel.lines.front().c_str());
+  panel.titleText->SetPosition(std::max(3, int(std::lround(laid.titleFont * 0.3))),
+                               laid.titleRect.height / 2.0);
+}
+
+int ComparisonView::Impl::layoutBand(vtkRenderer* band, vtkTextActor* text,
+                                     const std::vector<std::string>& lines, int size,
+                                     const double colour[3], int y, int width, int height, bool top,
+                                     bool wrap) const {
+  const int margin = std::max(4, width / 100);
+  vtkTextProperty* p = text->GetTextProperty();
+  std::vector<std::string> shown;
+  for (size = std::max(8, size);; --size) {
+    styleText(p, size, colour, false, options.language);
+    shown.clear();
+    for (const std::string& line : lines) {
+      if (!wrap) {
+        shown.push_back(line);
+        continue;
+      }
+      for (const std::string& piece : wrapToWidth(p, line, width - 2 * margin))
+        shown.push_back(piece);
+    }
+    const std::string caption = joinLines(shown);
+    if (size <= 8) break;
+    if (wrap ? shown.size() <= 4 : textSize(p, caption).first <= width - 2 * margin) break;
+  }
+  text->SetInput(joinLines(shown).c_str());
+  p->SetVerticalJustificationToCentered();
+  const int count = int(shown.size());
+  const int bandHeight = int(std::lround(size * (count <= 1 ? 1.9 : 1.3 * count + 0.7)));
+  setViewport(band, {0, top ? y : y - bandHeight, width, bandHeight}, width, height);
+  text->SetPosition(margin, bandHeight / 2.0);
+  return bandHeight;
 }
 
 void ComparisonView::Impl::build() {
@@ -222,6 +355,10 @@ void ComparisonView::Impl::build() {
   header->SetBackground(kHeaderBackground[0], kHeaderBackground[1], kHeaderBackground[2]);
   header->AddViewProp(headerText);
   headerText->SetInput(headerCaption().c_str());
+  footer->RemoveAllViewProps();
+  footer->SetBackground(kHeaderBackground[0], kHeaderBackground[1], kHeaderBackground[2]);
+  footer->AddViewProp(footerText);
+  footerText->SetInput(joinLines(explanation()).c_str());
   for (const AlgorithmFigures& figures : result.algorithms) {
     auto panel = std::make_unique<Panel>();
     panel->background->SetBackground(kPanelBackground[0], kPanelBackground[1], kPanelBackground[2]);
@@ -233,9 +370,15 @@ void ComparisonView::Impl::build() {
     panel->title->AddViewProp(panel->titleText);
     const double ink = darkTextOn(colour) ? 0.0 : 1.0;
     std::fill(std::begin(panel->titleColour), std::end(panel->titleColour), ink);
-    panel->lines = {algorithmTitle(figures.algorithm)};
-    for (const std::string& line : figureLines(result, figures, options.showTimes))
+    panel->lines = {panelTitle(figures.algorithm, options.language)};
+    for (const std::string& line :
+         figureLines(result, figures, options.showTimes, options.language))
       panel->lines.push_back(line);
+    // Whitted's name is already the title: the year alone under it.
+    panel->titleTwoLines =
+        algorithmName(figures.algorithm, options.language) + "\n" +
+        (figures.algorithm == Algorithm::Whitted ? std::string("1979")
+                                                 : algorithmCitation(figures.algorithm));
     panel->titleText->SetInput(panel->lines.front().c_str());
     panel->figuresText->SetInput(joinLines({panel->lines.begin() + 1, panel->lines.end()}).c_str());
 
@@ -305,33 +448,34 @@ void ComparisonView::layout(int width, int height) {
   d.layoutWidth = width;
   d.layoutHeight = height;
 
-  // Step 1: the header band across the top, its text as large as fits the width.
-  int headerHeight = 0;
+  // Step 1: the header band across the top and the explanation band across the bottom,
+  // their text as large as fits the width; the fonts follow the picture's size.
+  const double unit = std::min(width / 1920.0, height / 1080.0);
+  int headerHeight = 0, footerHeight = 0;
   if (d.options.showHeader) {
-    const int margin = std::max(4, width / 100);
-    vtkTextProperty* p = d.headerText->GetTextProperty();
-    int size = std::clamp(int(std::lround(std::min(width / 55.0, height / 28.0))), 9, 30);
-    for (;; --size) {
-      styleText(p, size, kTextColour, false);
-      if (size <= 8 || textSize(p, d.headerCaption()).first <= width - 2 * margin) break;
-    }
-    p->SetVerticalJustificationToCentered();
-    headerHeight = int(std::lround(size * 1.9));
-    setViewport(d.header, {0, 0, width, headerHeight}, width, height);
-    d.headerText->SetPosition(margin, headerHeight / 2.0);
+    const int size = std::clamp(int(std::lround(std::min(width / 55.0, height / 28.0))), 9, 40);
+    headerHeight = d.layoutBand(d.header, d.headerText, {d.headerCaption()}, size, kTextColour, 0,
+                                width, height, true, false);
+  }
+  const std::vector<std::string> explanation = d.explanation();
+  if (!explanation.empty()) {
+    const int size = int(std::lround(kExplanationFontAt1080 * unit));
+    footerHeight = d.layoutBand(d.footer, d.footerText, explanation, size, kExplanationColour,
+                                height, width, height, false, true);
   }
 
-  // Step 2: the panels in a grid of `columns` across, row by row.
+  // Step 2: the panels in a grid of `columns` across, row by row, between the bands.
   const int count = panelCount();
   if (count == 0) return;
   const int columns = std::clamp(d.options.columns, 1, count);
   const int rows = (count + columns - 1) / columns;
-  const int below = height - headerHeight;
+  const int below = height - headerHeight - footerHeight;
+  const int font = int(std::lround(kFiguresFontAt1080 * unit));
   for (int i = 0; i < count; ++i) {
     const int r = i / columns, c = i % columns;
     const int x0 = c * width / columns, x1 = (c + 1) * width / columns;
     const int y0 = headerHeight + r * below / rows, y1 = headerHeight + (r + 1) * below / rows;
-    d.layoutPanel(*d.panels[std::size_t(i)], {x0, y0, x1 - x0, y1 - y0}, width, height);
+    d.layoutPanel(*d.panels[std::size_t(i)], {x0, y0, x1 - x0, y1 - y0}, width, height, font);
   }
 
   // Step 3: the shared camera of the tree views sees the whole scene.
@@ -347,6 +491,7 @@ std::vector<vtkRenderer*> ComparisonView::renderers() const {
     out.push_back(panel->image);
     if (panel->tree) out.push_back(panel->tree->renderer());
   }
+  if (!m_impl->explanation().empty()) out.push_back(m_impl->footer);
   return out;
 }
 
@@ -358,6 +503,10 @@ const Panel& ComparisonView::Impl::laidOut(int panel, int width, int height) {
 
 PixelRect ComparisonView::panelRect(int panel, int width, int height) const {
   return m_impl->laidOut(panel, width, height).panelRect;
+}
+
+PixelRect ComparisonView::titleRect(int panel, int width, int height) const {
+  return m_impl->laidOut(panel, width, height).titleRect;
 }
 
 PixelRect ComparisonView::imageRect(int panel, int width, int height) const {
@@ -375,6 +524,10 @@ std::vector<std::string> ComparisonView::panelText(int panel) const {
 }
 
 std::string ComparisonView::headerText() const { return m_impl->headerCaption(); }
+
+std::vector<std::string> ComparisonView::explanationText() const { return m_impl->explanation(); }
+
+int ComparisonView::figuresFontSize() const { return m_impl->figuresFont; }
 
 void ComparisonView::setRayTrees(const Scene& scene, const std::vector<RayTree>& trees, int pixelX,
                                  int pixelY, const RayTreeStyle& style) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/Lesson.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
 #include "raylab/vis/Image.h"
@@ -21,9 +22,14 @@ Rgb8 algorithmColour(Algorithm algorithm);
 
 /// How the four-panel picture is laid out and what it shows.
 struct ComparisonViewOptions {
-  int columns = 2;         ///< Panels per row: 2 (a 2x2 grid) or 4 (one row), 1 (a column).
-  bool showTimes = true;   ///< Show measured times. Off for baselines: times vary by run.
-  bool showHeader = true;  ///< A top line naming the scene, the mode and the reference.
+  int columns = 2;              ///< Panels per row: 2 (a 2x2 grid) or 4 (one row), 1 (a column).
+  bool showTimes = true;        ///< Show measured times. Off for baselines: times vary by run.
+  bool showHeader = true;       ///< A top line naming the scene, the mode and the reference.
+  bool showExplanation = true;  ///< A bottom band saying what the error measures and why
+                                ///< path tracing, the noisiest-looking, has the lowest.
+  /// The language of every word drawn (ComparisonCaptions); Chinese is drawn with a CJK
+  /// font (Noto Sans CJK, fonts-noto-cjk) when one is installed.
+  Language language = Language::English;
   std::string toString() const;
 };
 
@@ -41,9 +47,14 @@ struct PixelRect {
  * background renderer holding the figures text, a title band in the algorithm's colour,
  * the image (a vtkImageActor seen by a parallel camera, nearest-neighbour, never
  * stretched: its viewport has the image's aspect ratio) and, with trees, a 3D view; a
- * header band over all panels. `layout(width, height)` places them for a window of that
- * size (font sizes follow the panel size), so a window can host `renderers()` and call
- * `layout` when it is resized; `renderOffscreen` does both in its own window.
+ * header band over all panels and an explanation band under them. `layout(width,
+ * height)` places them for a window of that size, so a window can host `renderers()` and
+ * call `layout` when it is resized; `renderOffscreen` does both in its own window.
+ *
+ * Sized for a classroom: each image takes its panel's whole height, the title and
+ * figures standing in a column beside it (or, in tall panels, a title band above and the
+ * figures below); the fonts scale with the picture: at 1920x1080 the figures are 28 px
+ * and the titles 34 px, readable from the back of a room on a projector.
  *
  * Synchronised views: the images share one vtkCamera (zooming into one zooms into the same
  * place of all four), and so do the tree views (turning one turns all four).
@@ -83,11 +94,13 @@ class ComparisonView {
   void layout(int width, int height);
   /// Every renderer of the picture in drawing order, for a window to add (at most one
   /// window at a time): the header (when shown), then per panel its background, title
-  /// band, image and tree view (when shown). Valid until setResult / setOptions /
-  /// setRayTrees / clearRayTrees.
+  /// band, image and tree view (when shown), then the explanation band (when shown).
+  /// Valid until setResult / setOptions / setRayTrees / clearRayTrees.
   std::vector<vtkRenderer*> renderers() const;
   /// Where panel `panel` lies in a width x height picture; its title band is at its top.
   PixelRect panelRect(int panel, int width, int height) const;
+  /// Where panel `panel`'s title band (in the algorithm's colour) lies.
+  PixelRect titleRect(int panel, int width, int height) const;
   /// Where panel `panel`'s image lies in a width x height picture.
   PixelRect imageRect(int panel, int width, int height) const;
   /// Where panel `panel`'s ray-tree view lies (width 0 without trees).
@@ -96,6 +109,10 @@ class ComparisonView {
   std::vector<std::string> panelText(int panel) const;
   /// The header line (empty when options().showHeader is false).
   std::string headerText() const;
+  /// The explanation band's lines (empty when options().showExplanation is false).
+  std::vector<std::string> explanationText() const;
+  /// The size in points of the figures text at the last layout.
+  int figuresFontSize() const;
 
   /**
    * \brief Renders the picture offscreen into a width x height image, in this view's own
