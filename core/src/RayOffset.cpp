@@ -5,15 +5,46 @@
 
 namespace raylab {
 
+Vec3 transformedPointError(const Mat4& m, const Point3& p, const Vec3& objectError) {
+  // GLM is column-major: m[c][r] is row r, column c; the translation is column 3.
+  Vec3 error(0.0);
+  const double g3 = roundingGamma(3);
+  for (int r = 0; r < 3; ++r) {
+    double terms = std::abs(m[3][r]), propagated = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      terms += std::abs(m[c][r] * p[c]);
+      propagated += std::abs(m[c][r]) * objectError[c];
+    }
+    error[r] = g3 * terms + (1.0 + g3) * propagated;
+  }
+  return error;
+}
+
 double rayOffsetDistance(const Point3& p) {
   const double largest = std::max({kRayOffsetFloor, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
   return kRayOffsetScale * largest;
 }
 
 Point3 offsetRayOrigin(const SurfaceInteraction& si, const Vec3& w) {
-  // Move along the normal, to the side of the surface the new ray goes to.
-  const double d = rayOffsetDistance(si.p);
-  return glm::dot(si.n, w) < 0.0 ? si.p - d * si.n : si.p + d * si.n;
+  // How far the error box of si.p, widened to a cube, reaches along the normal, with the
+  // margin. The cube: the next intersection test rounds with every coordinate of the point
+  // and of the shape, not only those along n (a floor's p.y may be exact while the test of
+  // a ray leaving it rounds with x and z).
+  const double extent = std::max({si.pError.x, si.pError.y, si.pError.z, kRayOffsetMinError});
+  const double d =
+      kRayOffsetMargin * extent * (std::abs(si.n.x) + std::abs(si.n.y) + std::abs(si.n.z));
+  Vec3 offset = d * si.n;
+  // Move to the side of the surface the new ray goes to.
+  if (glm::dot(si.n, w) < 0.0) offset = -offset;
+  Point3 origin = si.p + offset;
+  // The addition rounds too: step one ulp further away from si.p.
+  for (int i = 0; i < 3; ++i) {
+    if (offset[i] > 0.0)
+      origin[i] = std::nextafter(origin[i], kInfinity);
+    else if (offset[i] < 0.0)
+      origin[i] = std::nextafter(origin[i], -kInfinity);
+  }
+  return origin;
 }
 
 Ray spawnRay(const SurfaceInteraction& si, const Vec3& w, double tMax) {

@@ -235,9 +235,9 @@ TEST(Lesson, 03_ErrorsNameTheFileTheStepAndThePlace) {
        "at /steps/1/scene_changes/0/set/ior: ior (index of refraction) must be positive"},
       {"unknown material key",
        [](json& l) {
-         l["steps"][1]["scene_changes"][0]["set"] = {{"roughness", 0.2}};
+         l["steps"][1]["scene_changes"][0]["set"] = {{"sheen", 0.2}};
        },
-       "at /steps/1/scene_changes/0/set/roughness: unknown key \"roughness\""},
+       "at /steps/1/scene_changes/0/set/sheen: unknown key \"sheen\""},
       {"invalid translate",
        [](json& l) {
          l["steps"][1]["scene_changes"][1]["translate"] = {0, "up", 0};

@@ -1,5 +1,6 @@
 #include "raylab/core/SceneIntersector.h"
 
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Sphere.h"
 #include "scene/SphereLightSampler.h"
 
@@ -95,7 +96,12 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   SceneHit out;
   out.object = nearest;
   out.si = e.shape->surfaceAt(e.moving ? toObjectFrame(ray, e.velocity) : ray, nearestHit);
-  if (e.moving) out.si.p += ray.time * e.velocity;
+  if (e.moving) {
+    // The shift adds two roundings (the product and the sum).
+    const Vec3 shift = ray.time * e.velocity;
+    out.si.pError += roundingGamma(2) * (glm::abs(out.si.p) + glm::abs(shift));
+    out.si.p += shift;
+  }
   return out;
 }
 

@@ -1,5 +1,7 @@
 #include "raylab/core/Box.h"
 
+#include "raylab/core/RayOffset.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -126,6 +128,8 @@ SurfaceInteraction Box::surfaceAt(const Ray& ray, const Hit& hit) const {
   SurfaceInteraction si;
   si.t = hit.t;
   si.p = m_worldFromBox.transformPoint(b);
+  // b lies exactly on its face (b[axis] = +-1): only the map to the world rounds.
+  si.pError = transformedPointError(m_worldFromBox.matrix(), b, Vec3(0.0));
   si.n = faceNormal(hit.primitive);
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
   // uv: the two other box coordinates mapped to [0, 1].

@@ -1,5 +1,6 @@
 #include "raylab/core/Plane.h"
 
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Transform.h"
 
 #include <cmath>
@@ -46,6 +47,8 @@ SurfaceInteraction Plane::surfaceAt(const Ray& ray, const Hit& hit) const {
   // Project onto the plane to remove the rounding of t.
   const Point3 p = ray.at(hit.t);
   si.p = p - glm::dot(p - m_point, m_normal) * m_normal;
+  // The projection: a difference, a dot product, a product and a difference.
+  si.pError = roundingGamma(7) * (glm::abs(p) + glm::abs(m_point));
   si.n = m_normal;
   si.frontFace = glm::dot(ray.direction, m_normal) < 0.0;
   Vec3 t1, t2;

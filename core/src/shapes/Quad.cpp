@@ -1,5 +1,6 @@
 #include "raylab/core/Quad.h"
 
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Transform.h"
 
 #include <cmath>
@@ -39,6 +40,9 @@ SurfaceInteraction Quad::surfaceAt(const Ray& ray, const Hit& hit) const {
   SurfaceInteraction si;
   si.t = hit.t;
   si.p = m_corner + hit.uv.x * m_u + hit.uv.y * m_v;
+  // Two products and two sums: within gamma(4) of the sum of the magnitudes.
+  si.pError =
+      roundingGamma(4) * (glm::abs(m_corner) + glm::abs(hit.uv.x * m_u) + glm::abs(hit.uv.y * m_v));
   si.n = m_normal;
   si.frontFace = glm::dot(ray.direction, m_normal) < 0.0;
   si.uv = hit.uv;

@@ -1,6 +1,7 @@
 #include "raylab/core/Sphere.h"
 
 #include "raylab/core/Check.h"
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
 
 #include <array>
@@ -92,6 +93,10 @@ SurfaceInteraction Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
   si.t = hit.t;
   const Point3 onSurface = m_centre + m_radius * radial;
   si.p = m_hasTransform ? m.transformPoint(onSurface) : onSurface;
+  // Error of centre + r * radial (normalising, scaling, adding: gamma(5)), then of the map.
+  const Vec3 objectError = roundingGamma(5) * (glm::abs(m_centre) + glm::abs(m_radius * radial));
+  si.pError =
+      m_hasTransform ? transformedPointError(m.matrix(), onSurface, objectError) : objectError;
   si.n = m_hasTransform ? m.transformNormal(radial) : radial;
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
   si.uv = sphericalUv(radial);

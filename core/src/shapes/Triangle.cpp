@@ -1,5 +1,6 @@
 #include "raylab/core/Triangle.h"
 
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/Transform.h"
 #include "shapes/WatertightTriangle.h"
@@ -37,6 +38,9 @@ SurfaceInteraction Triangle::surfaceAt(const Ray& ray, const Hit& hit) const {
   const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
   // The barycentric point lies on the triangle up to rounding, unlike ray.at(t).
   si.p = b0 * m_p[0] + b1 * m_p[1] + b2 * m_p[2];
+  // The barycentric sum (pbrt 4th ed., 6.8.5): gamma(7) of the terms' magnitudes.
+  si.pError =
+      roundingGamma(7) * (glm::abs(b0 * m_p[0]) + glm::abs(b1 * m_p[1]) + glm::abs(b2 * m_p[2]));
   si.n = normal(si.p);
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
   si.uv = hit.uv;

@@ -1,6 +1,7 @@
 #include "raylab/core/TriangleMesh.h"
 
 #include "raylab/core/Bvh.h"
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/Transform.h"
 
@@ -122,6 +123,8 @@ SurfaceInteraction TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const
   // The barycentric point lies on the triangle up to rounding, unlike ray.at(t).
   const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
   si.p = b0 * p0 + b1 * p1 + b2 * p2;
+  // The barycentric sum (pbrt 4th ed., 6.8.5): gamma(7) of the terms' magnitudes.
+  si.pError = roundingGamma(7) * (glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2));
   si.n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
   si.uv = hit.uv;

@@ -25,6 +25,10 @@ struct SurfaceInteraction {
   double t = kInfinity;   ///< Ray parameter of the hit.
   Point3 p{0.0};          ///< Hit point, world space.
   Normal3 n{0.0};         ///< Unit geometric normal, world space, pointing outward.
+  Vec3 pError{0.0};       ///< Bound on the rounding error of p, per axis (world units): the
+                          ///< exact surface point lies within p +- pError. Filled by every
+                          ///< shape's surfaceAt; secondary rays leave from outside that box
+                          ///< (RayOffset.h).
   bool frontFace = true;  ///< True when the ray arrives from the side `n` points to.
   Vec2 uv{0.0};           ///< Surface parameters; barycentrics (b1, b2) for triangles.
   int primitive = -1;     ///< Face / triangle index, -1 when not meaningful.
