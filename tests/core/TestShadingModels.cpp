@@ -4,6 +4,7 @@
 // Schlick's approximation (Fresnel.h); the scene format of the new materials. Each expected
 // value is derived in the comment beside it.
 #include "TransportScenes.h"
+#include "raylab/core/Box.h"
 #include "raylab/core/Bsdf.h"
 #include "raylab/core/ClassicShading.h"
 #include "raylab/core/Fresnel.h"
@@ -336,6 +337,85 @@ TEST(Fresnel, 04_DielectricMaterialChoosesItsModel) {
   EXPECT_NEAR(lobes.lobe[1].weight.x, 0.93, 1e-14);
 }
 
+TEST(NestedMedia, 01_WaterAgainstGlassRefractsWithBothIndices) {
+  // Water (1.33) inside glass (1.5): its surface has "ior": 1.33, "ior_outside": 1.5. From
+  // the glass side at 30 degrees Snell gives sin theta_t = 1.5 / 1.33 * 0.5 = 0.5639098,
+  // theta_t = 34.32662 degrees, and Fresnel R = 0.0041646 (eta = 1.5 / 1.33); from the water
+  // side at 30 degrees, sin theta_t = 1.33 / 1.5 * 0.5, theta_t = 26.31676 degrees; from the
+  // glass side past asin(1.33 / 1.5) = 62.457 degrees all light is reflected.
+  Material water = makeMaterial("water", MaterialType::Dielectric, Vec3(1.0));
+  water.ior = 1.33;
+  water.iorOutside = 1.5;
+  SurfaceInteraction si;
+  si.n = kUp;
+  si.frontFace = true;
+  SpecularLobes lobes = bsdf::specularLobes(water, si, atAngle(30.0));
+  ASSERT_EQ(lobes.count, 2);
+  EXPECT_NEAR(lobes.lobe[0].weight.x, 0.00416463337760042, 1e-14);
+  const double degreesOut = std::acos(-lobes.lobe[1].wi.y) * 180.0 / kPi;
+  EXPECT_NEAR(degreesOut, 34.32661830540913, 1e-9);
+  si.frontFace = false;  // wo in the water, below the surface
+  const Vec3 below(-std::sin(radians(30.0)), -std::cos(radians(30.0)), 0.0);
+  lobes = bsdf::specularLobes(water, si, below);
+  ASSERT_EQ(lobes.count, 2);
+  EXPECT_NEAR(std::acos(lobes.lobe[1].wi.y) * 180.0 / kPi, 26.31675512821712, 1e-9);
+  si.frontFace = true;
+  lobes = bsdf::specularLobes(water, si, atAngle(63.0));
+  ASSERT_EQ(lobes.count, 1);
+  EXPECT_EQ(lobes.lobe[0].kind, RayKind::Reflection);
+  EXPECT_EQ(lobes.lobe[0].weight.x, 1.0);
+  EXPECT_EQ(bsdf::specularLobes(water, si, atAngle(62.0)).count, 2);
+}
+
+TEST(NestedMedia, 02_WhittedThroughGlassAndWaterHeadOn) {
+  // A glass block (1.5) with a block of water (1.33) inside, seen head-on in front of a
+  // wall emitting 1. With maxDepth 4 only the straight path counts: four interfaces,
+  // air-glass R1 = (0.5 / 2.5)^2 = 0.04 and glass-water R2 = (0.17 / 2.83)^2 = 0.0036085,
+  // L = (1 - R1)^2 (1 - R2)^2 = 0.9149608. Were the water's surface taken against air
+  // (ior_outside 1) it would be R2' = (0.33 / 2.33)^2 = 0.0200593 and L = 0.8853.
+  auto run = [](double waterOutside) {
+    Scene scene;
+    Material glass = makeMaterial("glass", MaterialType::Dielectric, Vec3(1.0));
+    glass.ior = 1.5;
+    Material water = makeMaterial("water", MaterialType::Dielectric, Vec3(1.0));
+    water.ior = 1.33;
+    water.iorOutside = waterOutside;
+    const int glassM = addMaterial(scene, glass);
+    const int waterM = addMaterial(scene, water);
+    const int lightM =
+        addMaterial(scene, makeMaterial("light", MaterialType::Diffuse, Vec3(0.0), Vec3(1.0)));
+    addObject(scene, "glass", std::make_unique<Box>(Point3(0.0), Vec3(4.0, 4.0, 1.0)), glassM);
+    addObject(scene, "water", std::make_unique<Box>(Point3(0.0), Vec3(2.0, 2.0, 0.5)), waterM);
+    addObject(scene, "wall",
+              std::make_unique<Quad>(Point3(-10, -10, -3), Vec3(20, 0, 0), Vec3(0, 20, 0)), lightM);
+    scene.camera.position = Point3(0.0, 0.0, 5.0);
+    scene.camera.lookAt = Point3(0.0);
+    scene.camera.width = scene.camera.height = 1;
+    RenderSettings settings = settingsFor(Algorithm::Whitted, 1);
+    settings.maxDepth = 4;
+    return Tracer(scene, settings).trace(0, 0, 0).y;
+  };
+  EXPECT_NEAR(run(1.5), 0.9149608397246108, 1e-12);
+  EXPECT_NEAR(run(1.0), 0.96 * 0.96 * std::pow(1.0 - std::pow(0.33 / 2.33, 2.0), 2.0), 1e-12);
+}
+
+TEST(NestedMedia, 03_TheGlassOfWaterLessonSceneLoads) {
+  // The shipped scene: glass (1.5 in air), water inside it (1.33 against glass), an air
+  // bubble in the water (1.0 against water).
+  const Scene s =
+      SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/glass-of-water.json");
+  const Material& water = s.materials[std::size_t(s.findMaterial("water"))];
+  EXPECT_EQ(water.ior, 1.33);
+  EXPECT_EQ(water.iorOutside, 1.5);
+  const Material& bubble = s.materials[std::size_t(s.findMaterial("air bubble"))];
+  EXPECT_EQ(bubble.ior, 1.0);
+  EXPECT_EQ(bubble.iorOutside, 1.33);
+  // A camera ray through the middle of the picture crosses glass, water and back.
+  const Tracer tracer(s, settingsFor(Algorithm::Whitted, 1));
+  const Vec3 L = tracer.trace(s.camera.width / 2, s.camera.height / 2, 0);
+  EXPECT_TRUE(std::isfinite(L.x) && L.x > 0.0);
+}
+
 std::string loadError(const std::string& text) {
   try {
     SceneIO::parse(text, "shading.json");
@@ -358,7 +438,7 @@ TEST(ShadingModelFiles, 01_NewMaterialsRoundTrip) {
        "distribution": "beckmann", "visible_normals": false},
       {"name": "frosted", "type": "rough_dielectric", "ior": 1.5, "roughness": 0.1,
        "fresnel": "schlick"},
-      {"name": "glass", "type": "dielectric", "fresnel": "schlick"}],
+      {"name": "glass", "type": "dielectric", "fresnel": "schlick", "ior_outside": 1.33}],
     "objects": []})";
   const Scene s = SceneIO::parse(text, "shading.json");
   ASSERT_EQ(s.materials.size(), 5u);
@@ -376,12 +456,14 @@ TEST(ShadingModelFiles, 01_NewMaterialsRoundTrip) {
   EXPECT_FALSE(s.materials[2].visibleNormals);
   EXPECT_EQ(s.materials[3].fresnel, FresnelModel::Schlick);
   EXPECT_EQ(s.materials[4].fresnel, FresnelModel::Schlick);
+  EXPECT_EQ(s.materials[4].iorOutside, 1.33);
 
   const std::string written = SceneIO::serialize(s);
   EXPECT_EQ(SceneIO::serialize(SceneIO::parse(written, "again.json")), written);
-  for (const char* key : {"\"ambient\"", "\"diffuse\"", "\"attenuation\"", "\"roughness\"",
-                          "\"distribution\": \"beckmann\"", "\"visible_normals\"",
-                          "\"fresnel\": \"schlick\"", "\"blinn_phong\"", "\"rough_dielectric\""})
+  for (const char* key :
+       {"\"ambient\"", "\"diffuse\"", "\"attenuation\"", "\"roughness\"",
+        "\"distribution\": \"beckmann\"", "\"visible_normals\"", "\"fresnel\": \"schlick\"",
+        "\"blinn_phong\"", "\"rough_dielectric\"", "\"ior_outside\": 1.33"})
     EXPECT_THAT(written, HasSubstr(key));
 }
 
@@ -411,6 +493,8 @@ TEST(ShadingModelFiles, 02_ErrorsNameTheFileThePlaceAndTheProblem) {
        "at /materials/0/roughness: roughness (alpha) must be in [0.0001, 4], got 0"},
       {R"({"name": "m", "type": "rough_dielectric", "visible_normals": "yes"})",
        "at /materials/0/visible_normals: expected true or false"},
+      {R"({"name": "m", "type": "dielectric", "ior_outside": 0})",
+       "at /materials/0/ior_outside: ior_outside (index of the medium outside) must be positive"},
   };
   for (const auto& c : cases) {
     const std::string message = loadError(head + c.material + "]}");

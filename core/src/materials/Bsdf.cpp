@@ -148,7 +148,7 @@ std::optional<BsdfSample> classicSample(const Material& m, const SurfaceInteract
   if (uPick >= c.pDiffuse + c.pLobe) {
     const bool transmit = uPick >= c.pDiffuse + c.pLobe + c.pReflect;
     std::optional<Vec3> wt;
-    if (transmit) wt = refract(wo, nf, si.frontFace ? 1.0 / m.ior : m.ior);
+    if (transmit) wt = refract(wo, nf, si.frontFace ? 1.0 / m.relativeIor() : m.relativeIor());
     // On total internal reflection the transmitted share is reflected, as in Whitted.
     return specularLobe(wt ? *wt : reflect(wo, nf), Vec3(c.total),
                         wt ? RayKind::Refraction : RayKind::Reflection);
@@ -246,7 +246,7 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
   if (!m.isSpecular() && !m.isClassic()) return lobes;
   // The normal on wo's side; entering the object when wo is outside (front face).
   const Normal3 nf = si.facingNormal();
-  const double eta = si.frontFace ? 1.0 / m.ior : m.ior;
+  const double eta = si.frontFace ? 1.0 / m.relativeIor() : m.relativeIor();
   const Vec3 wr = reflect(wo, nf);
   const std::optional<Vec3> wt = refract(wo, nf, eta);
 

@@ -65,7 +65,7 @@ std::optional<DielectricPair> dielectricPair(double ior, const Vec3& wo, const V
 /// Fresnel reflectance at the microfacet for light arriving along wo.
 double dielectricF(const Material& m, const Vec3& wo, const DielectricPair& p) {
   // eta = eta_i / eta_t for light going from wo's side into the other.
-  const double eta = wo.z > 0.0 ? 1.0 / m.ior : m.ior;
+  const double eta = wo.z > 0.0 ? 1.0 / m.relativeIor() : m.relativeIor();
   return fresnel::reflectance(m.fresnel, glm::dot(wo, p.wm), eta);
 }
 
@@ -88,7 +88,7 @@ double conductorPdf(const Material& m, const Vec3& wo, const Vec3& wi) {
 }
 
 Vec3 dielectricEval(const Material& m, const Vec3& wo, const Vec3& wi) {
-  const std::optional<DielectricPair> p = dielectricPair(m.ior, wo, wi);
+  const std::optional<DielectricPair> p = dielectricPair(m.relativeIor(), wo, wi);
   if (!p) return Vec3(0.0);
   const microfacet::Distribution d = distribution(m);
   const double F = dielectricF(m, wo, *p);
@@ -102,7 +102,7 @@ Vec3 dielectricEval(const Material& m, const Vec3& wo, const Vec3& wi) {
 }
 
 double dielectricPdf(const Material& m, const Vec3& wo, const Vec3& wi) {
-  const std::optional<DielectricPair> p = dielectricPair(m.ior, wo, wi);
+  const std::optional<DielectricPair> p = dielectricPair(m.relativeIor(), wo, wi);
   if (!p) return 0.0;
   const double F = dielectricF(m, wo, *p);
   const double pm = normalDensity(m, distribution(m), wo, p->wm);
@@ -151,7 +151,7 @@ std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si
   Vec3 wiL = reflect(woL, wmFacing);
   RayKind kind = RayKind::Glossy;
   if (!conductor) {
-    const double eta = woL.z > 0.0 ? 1.0 / m.ior : m.ior;
+    const double eta = woL.z > 0.0 ? 1.0 / m.relativeIor() : m.relativeIor();
     const double F = fresnel::reflectance(m.fresnel, cosOM, eta);
     if (uPick >= F) {
       const std::optional<Vec3> wt = refract(woL, wmFacing, eta);

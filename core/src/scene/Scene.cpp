@@ -66,7 +66,8 @@ std::string Material::toString() const {
          ", fresnel=" + raylab::toString(fresnel) +
          ", distribution=" + raylab::toString(distribution) +
          ", roughness=" + std::to_string(roughness) +
-         ", visibleNormals=" + (visibleNormals ? "true" : "false") + "]";
+         ", visibleNormals=" + (visibleNormals ? "true" : "false") +
+         ", iorOutside=" + std::to_string(iorOutside) + "]";
 }
 
 std::string PointLight::toString() const {

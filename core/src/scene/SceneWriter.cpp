@@ -166,6 +166,7 @@ ojson materialToJson(const Material& m) {
   if (rough || m.roughness != defaults.roughness) j.add("roughness", m.roughness);
   if (rough || m.visibleNormals != defaults.visibleNormals)
     j.add("visible_normals", m.visibleNormals);
+  if (m.iorOutside != defaults.iorOutside) j.add("ior_outside", m.iorOutside);
   return j.take();
 }
 

@@ -33,7 +33,9 @@ struct SpecularLobes {
  * Conventions: `wo` points from the hit back towards where the ray came from (-ray.d),
  * `wi` away from the surface; both unit, world space. `si.n` is the outward geometric
  * normal and `si.frontFace` says whether wo is on its side (outside for solids).
- * The refractive index is `material.ior` inside over 1 outside.
+ * The relative refractive index is `material.ior` inside over `material.iorOutside` outside
+ * (1 unless the surface separates two media, as water against glass): the per-interface
+ * rule for nested dielectrics, each surface naming the indices on both its sides.
  *
  * Materials (details and hand-checked values in Bsdf.cpp and TestBsdf.cpp):
  * Diffuse is Lambert, colour / pi. Glossy is the modified Phong model (Lafortune and

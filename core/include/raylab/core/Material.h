@@ -53,16 +53,20 @@ struct Material {
                                               ///< Phong, BlinnPhong: kr (default 0 there).
   double refractionRate = 0.0;                ///< Mirror: weight of the refracted ray, [0, 1];
                                               ///< Phong, BlinnPhong: kt.
-  double ior = 1.5;                           ///< Index of refraction (inside / outside).
-  double exponent = 50.0;                     ///< Glossy: Phong exponent (lobe sharpness), > 0;
-                                              ///< Phong, BlinnPhong: the shininess n.
-  double specular = 0.5;                      ///< Glossy: fraction of energy in the lobe,
-                                              ///< the rest (times colour) is diffuse, [0, 1];
-                                              ///< Phong, BlinnPhong: ks, [0, 1].
-  double opacity = 1.0;                       ///< For drawing only: 1 opaque, 0 invisible.
-  Vec3 ambient{0.0};     ///< Phong, BlinnPhong: ka Ia, the ambient light times the ambient
-                         ///< coefficient (RGB, >= 0); the surface returns ambient * colour.
-  double diffuse = 1.0;  ///< Phong, BlinnPhong: kd, the diffuse coefficient, [0, 1].
+  double ior = 1.5;         ///< Index of refraction of the inside (behind the outward normal).
+  double iorOutside = 1.0;  ///< Index of the medium on the outside (front) of this surface:
+                            ///< 1 for air; 1.5 for water's surface against the inside of a
+                            ///< glass, and so on. Nested media follow this per-interface rule:
+                            ///< each surface names the media on both of its sides.
+  double exponent = 50.0;   ///< Glossy: Phong exponent (lobe sharpness), > 0;
+                            ///< Phong, BlinnPhong: the shininess n.
+  double specular = 0.5;    ///< Glossy: fraction of energy in the lobe,
+                            ///< the rest (times colour) is diffuse, [0, 1];
+                            ///< Phong, BlinnPhong: ks, [0, 1].
+  double opacity = 1.0;     ///< For drawing only: 1 opaque, 0 invisible.
+  Vec3 ambient{0.0};        ///< Phong, BlinnPhong: ka Ia, the ambient light times the ambient
+                            ///< coefficient (RGB, >= 0); the surface returns ambient * colour.
+  double diffuse = 1.0;     ///< Phong, BlinnPhong: kd, the diffuse coefficient, [0, 1].
   Vec3 attenuation{0.0, 0.0, 1.0};  ///< Phong, BlinnPhong: light falls off with distance d
                                     ///< as 1 / (c + l d + q d^2) for [c, l, q] (OpenGL's
                                     ///< rule); [0, 0, 1] is the physical 1 / d^2, [1, 0, 0]
@@ -74,6 +78,8 @@ struct Material {
   bool visibleNormals = true;  ///< Rough materials: sample the normals the viewer sees
                                ///< (Heitz 2018; GGX only) instead of D(h) cos(theta_h).
 
+  /// eta_inside / eta_outside, the relative index refraction at this surface uses.
+  double relativeIor() const { return ior / iorOutside; }
   bool isEmitter() const { return emission.x > 0.0 || emission.y > 0.0 || emission.z > 0.0; }
   /// Mirror and Dielectric scatter only into discrete directions (no sampling pdf).
   bool isSpecular() const {

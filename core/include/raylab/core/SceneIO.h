@@ -56,7 +56,9 @@ namespace raylab {
  * "exponent" n, reflection_rate kr (default 0) and refraction_rate kt, ior, "attenuation"
  * [c, l, q] >= 0, not all 0), rough_conductor and rough_dielectric (microfacets:
  * "roughness" alpha in [0.0001, 4], "distribution" "ggx" or "beckmann", "visible_normals"
- * true or false; the dielectric also ior and fresnel); any material with a non-zero
+ * true or false; the dielectric also ior and fresnel). "ior_outside" (> 0, default 1) is
+ * the index on a surface's outer side: nested media (water in glass) name both indices
+ * at each interface; any material with a non-zero
  * emission is an area light (not allowed on a plane).
  * "velocity" is the object's motion over the shutter interval (motion blur).
  * Everything but "raylab_scene", "materials" and "objects" is optional and defaults to
