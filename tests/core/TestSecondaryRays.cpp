@@ -14,6 +14,7 @@
 #include "raylab/core/Plane.h"
 #include "raylab/core/Quad.h"
 #include "raylab/core/Scene.h"
+#include "raylab/core/SceneIO.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/core/Transform.h"
@@ -445,6 +446,50 @@ TEST(SecondaryRays, 08_ALargeSphereThroughTheOriginShowsNoAcne) {
   std::cout << "[secondary] radius-20 sphere through the origin, 256 pixels within 1e-9 of it: "
             << black << " black (acne)\n";
   EXPECT_EQ(black, 0);
+}
+
+TEST(SecondaryRays, 09_TheOffsetSwitchShowsAcne) {
+  // The switch of the acne lesson: RenderSettings::rayOffset off starts secondary rays on
+  // the computed hit point. A unit ball lit from above, 48 x 48 pixels by ray casting: with
+  // the offset no lit pixel is black; without it a good share of them are (the shadow ray
+  // hits the ball itself at t ~ 0 wherever rounding put the point inside), and the scene
+  // file says so with "ray_offset": false.
+  Scene scene;
+  Material white;
+  white.name = "white";
+  scene.materials.push_back(white);
+  scene.objects.emplace_back("ball", std::make_unique<Sphere>(Point3(0.3, -0.2, 0.1), 1.0), 0);
+  PointLight light;
+  light.name = "bulb";
+  light.position = Point3(1.0, 6.0, 3.0);
+  light.intensity = Vec3(50.0);
+  scene.pointLights.push_back(light);
+  scene.camera.position = Point3(0.0, 3.0, 4.0);
+  scene.camera.lookAt = Point3(0.3, -0.2, 0.1);
+  scene.camera.width = scene.camera.height = 48;
+  RenderSettings on;
+  on.algorithm = Algorithm::RayCasting;
+  RenderSettings off = on;
+  off.rayOffset = false;
+  const Tracer withOffset(scene, on), without(scene, off);
+  int lit = 0, acne = 0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 48; ++x) {
+      const Vec3 a = withOffset.trace(x, y, 0);
+      if (isNonPositive(a)) continue;
+      ++lit;
+      acne += isNonPositive(without.trace(x, y, 0));
+    }
+  std::cout << "[secondary] offset switched off: " << acne << " of " << lit
+            << " lit pixels black (acne)\n";
+  EXPECT_GT(lit, 300);
+  EXPECT_GT(acne, lit / 10);
+  scene.render = off;
+  const std::string text = SceneIO::serialize(scene);
+  EXPECT_NE(text.find("\"ray_offset\": false"), std::string::npos);
+  EXPECT_FALSE(SceneIO::parse(text, "acne.json").render.rayOffset);
+  scene.render = on;
+  EXPECT_EQ(SceneIO::serialize(scene).find("ray_offset"), std::string::npos);
 }
 
 }  // namespace

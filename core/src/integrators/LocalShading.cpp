@@ -55,7 +55,9 @@ Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const V
 QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
                    double pdf, double tMax) {
   QueuedRay child;
-  child.ray = spawnRay(context.hit.si, wi, tMax);
+  // Past the hit's error bound, or (the acne lesson's switch) from the computed point.
+  child.ray = context.settings.rayOffset ? spawnRay(context.hit.si, wi, tMax)
+                                         : Ray::make(context.hit.si.p, wi, 0.0, tMax);
   child.ray.time = context.ray.ray.time;
   child.kind = kind;
   child.depth = context.ray.depth + 1;
@@ -75,7 +77,9 @@ Vec3 emitterSeen(const HitContext& context) {
 
 QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
                     const Vec3& Le, bool targetIsSurface) {
-  const Point3 origin = offsetRayOrigin(context.hit.si, target - context.hit.si.p);
+  const Point3 origin = context.settings.rayOffset
+                            ? offsetRayOrigin(context.hit.si, target - context.hit.si.p)
+                            : context.hit.si.p;
   const double distance = glm::length(target - origin);
   // Stop short of a light's surface (its own surface must not block the ray); a point
   // light has no surface.

@@ -37,9 +37,9 @@ Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const V
                     Lobes lobes);
 
 /// A child leaving the hit of `context` in unit world direction `wi`: origin offset by the
-/// RayOffset rule, the parent's time, depth + 1, the given kind, weight and pdf (the
-/// solid-angle density it was sampled with, 0 for a deterministic direction; path tracing
-/// weighs emitters it finds by it), t in [0, tMax].
+/// RayOffset rule (or the hit point itself when settings.rayOffset is off), the parent's time,
+/// depth + 1, the given kind, weight and pdf (the solid-angle density it was sampled with, 0 for a
+/// deterministic direction; path tracing weighs emitters it finds by it), t in [0, tMax].
 QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
                    double pdf, double tMax = kInfinity);
 

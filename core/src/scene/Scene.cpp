@@ -104,7 +104,8 @@ std::string RenderSettings::toString() const {
          ", rrDepth=" + std::to_string(russianRouletteDepth) +
          ", nee=" + (nextEventEstimation ? "on" : "off") +
          ", mis=" + (multipleImportance ? "on" : "off") +
-         ", background=" + raylab::toString(background) + "]";
+         ", background=" + raylab::toString(background) +
+         ", rayOffset=" + (rayOffset ? "on" : "off") + "]";
 }
 
 std::string CameraSpec::toString() const {

@@ -42,7 +42,8 @@ inline constexpr std::array kRenderKeys = {"algorithm",
                                            "russian_roulette_depth",
                                            "next_event_estimation",
                                            "multiple_importance",
-                                           "background"};
+                                           "background",
+                                           "ray_offset"};
 
 /// An object's "shape", per value of "type".
 inline constexpr std::array kSphereKeys = {"type", "centre", "radius", "m", "n"};

@@ -393,6 +393,7 @@ class Reader : private JsonChecks<Reader> {
       if (s.background.x < 0.0 || s.background.y < 0.0 || s.background.z < 0.0)
         fail(p + "/background", "background radiance must not be negative");
     }
+    if (r.contains("ray_offset")) s.rayOffset = boolean(r["ray_offset"], p + "/ray_offset");
   }
 
   /// One entry of "objects"; the scene's materials are read already (objects name them).

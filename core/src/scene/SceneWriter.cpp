@@ -238,8 +238,8 @@ ojson cameraToJson(const CameraSpec& c) {
 }
 
 ojson renderToJson(const RenderSettings& r) {
-  return ObjectWriter(kRenderKeys)
-      .add("algorithm", toString(r.algorithm))
+  ObjectWriter j(kRenderKeys);
+  j.add("algorithm", toString(r.algorithm))
       .add("spp", r.samplesPerPixel)
       .add("max_depth", r.maxDepth)
       .add("seed", r.seed)
@@ -248,8 +248,10 @@ ojson renderToJson(const RenderSettings& r) {
       .add("russian_roulette_depth", r.russianRouletteDepth)
       .add("next_event_estimation", r.nextEventEstimation)
       .add("multiple_importance", r.multipleImportance)
-      .add("background", toJson(r.background))
-      .take();
+      .add("background", toJson(r.background));
+  // Only a scene that switches the offset off says so (the lesson on shadow acne).
+  if (!r.rayOffset) j.add("ray_offset", false);
+  return j.take();
 }
 
 }  // namespace

@@ -36,6 +36,8 @@ std::optional<Algorithm> parseAlgorithm(const std::string& name);
  * | russianRouletteDepth | 3 | path: first depth where paths may be stopped |
  * | nextEventEstimation | true | path: shadow rays to lights at every diffuse/glossy hit |
  * | multipleImportance | true | path: MIS (power heuristic) of light and BSDF sampling |
+ * | rayOffset | true | all: secondary rays start past the hit's error bound (RayOffset.h); |
+ * | | | false starts them on the computed hit point and shows shadow acne (lesson 2) |
  */
 struct RenderSettings {
   Algorithm algorithm = Algorithm::PathTracing;  ///< Which algorithm renders.
@@ -48,6 +50,8 @@ struct RenderSettings {
   bool nextEventEstimation = true;  ///< Path tracing: sample lights directly.
   bool multipleImportance = true;   ///< Path tracing: weight light/BSDF samples by MIS.
   Vec3 background{0.0};             ///< Radiance of escaped rays, linear RGB.
+  bool rayOffset = true;  ///< Secondary rays leave past the hit's error bound; false: from the
+                          ///< computed hit point itself (shows shadow acne, for teaching).
   std::string toString() const;
 };
 

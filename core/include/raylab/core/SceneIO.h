@@ -60,9 +60,10 @@ namespace raylab {
  * the index on a surface's outer side: nested media (water in glass) name both indices
  * at each interface; any material with a non-zero
  * emission is an area light (not allowed on a plane).
- * "velocity" is the object's motion over the shutter interval (motion blur).
- * Everything but "raylab_scene", "materials" and "objects" is optional and defaults to
- * the values of Material, CameraSpec and RenderSettings; unknown keys are errors (a
+ * The render block's "ray_offset" (default true) false starts secondary rays on the
+ * computed hit point, to show shadow acne. "velocity" is the object's motion over the shutter
+ * interval (motion blur). Everything but "raylab_scene", "materials" and "objects" is optional and
+ * defaults to the values of Material, CameraSpec and RenderSettings; unknown keys are errors (a
  * misspelt key would otherwise be ignored).
  *
  * Versions: version 2 added material types and parameters, point lights, velocity,
