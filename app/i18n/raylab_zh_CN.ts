@@ -238,6 +238,111 @@
     </message>
 </context>
 <context>
+    <name>raylab::app::ComparePanel</name>
+    <message>
+        <source>Equal samples</source>
+        <translation>等采样数</translation>
+    </message>
+    <message>
+        <source>Equal time</source>
+        <translation>等时间</translation>
+    </message>
+    <message>
+        <source>Equal samples: every algorithm takes the same samples per pixel.
+Equal time: every algorithm renders for the same time (the fair race).</source>
+        <translation>等采样数：每种算法的每像素采样数相同。
+等时间：每种算法渲染相同的时间（公平的比赛）。</translation>
+    </message>
+    <message>
+        <source> spp</source>
+        <translation> spp</translation>
+    </message>
+    <message>
+        <source>Samples per pixel of every algorithm (equal samples)</source>
+        <translation>每种算法的每像素采样数（等采样数）</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>Rendering time of every algorithm (equal time)</source>
+        <translation>每种算法的渲染时间（等时间）</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>对比</translation>
+    </message>
+    <message>
+        <source>Render the four algorithms side by side on the open scene. Comparing again while one runs cancels it and starts over.</source>
+        <translation>在当前场景上并排渲染四种算法。对比进行时再次对比，会取消当前对比并重新开始。</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop the comparison; the passes finished so far stay</source>
+        <translation>停止对比；已完成的各遍结果会保留</translation>
+    </message>
+    <message>
+        <source>Convergence plot</source>
+        <translation>收敛曲线</translation>
+    </message>
+    <message>
+        <source>Error against samples (or time) for each algorithm, log-log</source>
+        <translation>各算法的误差随采样数（或时间）的变化，双对数坐标</translation>
+    </message>
+    <message>
+        <source>Press Compare to render the four algorithms side by side.</source>
+        <translation>按“对比”并排渲染四种算法。</translation>
+    </message>
+    <message>
+        <source>Click a pixel of any image to trace it with all four algorithms</source>
+        <translation>单击任一图像中的像素，用四种算法分别追踪它</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>Comparing: %1, %2 spp…</source>
+        <translation>正在对比：%1，%2 spp…</translation>
+    </message>
+    <message>
+        <source>Comparing…</source>
+        <translation>正在对比…</translation>
+    </message>
+    <message>
+        <source>Comparing the four algorithms on the open scene…</source>
+        <translation>正在当前场景上对比四种算法…</translation>
+    </message>
+    <message>
+        <source>Error: the root-mean-square difference of each displayed image from a path-traced reference of the same scene at %1 spp (lower is better). At equal samples path tracing looks the noisiest, yet its error is the lowest: the other algorithms leave out light paths (indirect light, soft shadows), so they converge to another, biased image and their error stays, while path tracing&apos;s noise falls as 1/√N.</source>
+        <translation>误差：各显示图像与同一场景的路径追踪参考图像（%1 spp）之间的均方根误差（越低越好）。在采样数相同时，路径追踪看起来噪声最大，误差却最低：其他算法忽略了部分光路（间接光照、软阴影），收敛到另一幅有偏的图像，误差始终存在；而路径追踪的噪声按 1/√N 下降。</translation>
+    </message>
+    <message>
+        <source> (the reference came from the cache)</source>
+        <translation>（参考图像取自缓存）</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>已完成</translation>
+    </message>
+    <message>
+        <source>Comparison cancelled</source>
+        <translation>对比已取消</translation>
+    </message>
+    <message>
+        <source>Comparison done</source>
+        <translation>对比已完成</translation>
+    </message>
+    <message>
+        <source>Pixel (%1, %2) traced with every algorithm: the trees are beside the images</source>
+        <translation>已用每种算法追踪像素 (%1, %2)：光线树显示在图像旁</translation>
+    </message>
+</context>
+<context>
     <name>raylab::app::EditPanel</name>
     <message>
         <source>Rotate about its centre</source>
@@ -736,10 +841,6 @@
         <translation>取消渲染(&amp;C)</translation>
     </message>
     <message>
-        <source>Stop the render; the passes finished so far stay</source>
-        <translation>停止渲染；已完成的各遍结果会保留</translation>
-    </message>
-    <message>
         <source>&amp;Save image…</source>
         <translation>保存图像(&amp;S)…</translation>
     </message>
@@ -1086,6 +1187,22 @@
     <message>
         <source>%1: the lesson has no steps</source>
         <translation>%1：这节课没有任何步骤</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>对比</translation>
+    </message>
+    <message>
+        <source>C&amp;ompare the four algorithms</source>
+        <translation>对比四种算法(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Render ray casting, Whitted, distributed and path tracing side by side on this scene, with their figures and errors</source>
+        <translation>在此场景上并排渲染光线投射、Whitted、分布式与路径追踪，并给出各自的数据和误差</translation>
+    </message>
+    <message>
+        <source>Stop the render and the comparison; the passes finished so far stay</source>
+        <translation>停止渲染和对比；已完成的各遍结果会保留</translation>
     </message>
 </context>
 <context>

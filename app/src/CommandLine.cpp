@@ -116,6 +116,15 @@ int runCommandLine(int argc, char** argv) {
   cli.add_option("--render-spp", renderSamples, "With --render: samples per pixel")
       ->needs(renderOption)
       ->check(CLI::Range(1, 1 << 16));
+  bool compareAtStart = false;
+  CLI::Option* compareOption = cli.add_flag(
+      "--compare", compareAtStart,
+      "Compare the four algorithms beside the 3D view when the window opens; --screenshot "
+      "waits for it");
+  int compareSamples = 0;
+  cli.add_option("--compare-spp", compareSamples, "With --compare: samples per pixel of each")
+      ->needs(compareOption)
+      ->check(CLI::Range(1, 4096));
   bool presentation = false;
   cli.add_flag("--presentation", presentation,
                "Start in presentation mode (full screen, large fonts, thick rays)");
@@ -164,6 +173,8 @@ int runCommandLine(int argc, char** argv) {
   window.render = renderAtStart;
   if (renderSamples > 0) window.renderSamples = renderSamples;
   window.presentation = presentation;
+  window.compare = compareAtStart;
+  if (compareSamples > 0) window.compareSamples = compareSamples;
   window.lesson = lesson;
   window.lessonStep = lessonStep;
   return runWindow(argc, argv, window);

@@ -1,5 +1,6 @@
 #include "MainWindow.h"
 
+#include "ComparePanel.h"
 #include "EditPanel.h"
 #include "InspectorPanel.h"
 #include "InteractorStyle.h"
@@ -43,6 +44,7 @@
 #include <QMouseEvent>
 #include <QPixmap>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
@@ -58,6 +60,8 @@ namespace raylab::app {
 
 namespace {
 
+/// Pixels a vertical scroll bar takes beside a panel.
+constexpr int kScrollBarRoom = 24;
 /// How many files Open Recent lists.
 constexpr int kRecentFiles = 10;
 /// Presentation mode: fonts this many times larger, rays this many times thicker.
@@ -65,6 +69,9 @@ constexpr double kPresentationFontScale = 1.6;
 constexpr double kPresentationLineScale = 2.0;
 /// Most samples per pixel a lesson step renders in the window (as the handout's images).
 constexpr int kLessonImageSpp = 64;
+/// A lesson's comparison in the window: spp of each algorithm, or seconds of each.
+constexpr int kLessonCompareSpp = 8;
+constexpr double kLessonCompareSeconds = 1.0;
 
 /// RayLab's settings (an INI file in the user's configuration folder).
 QSettings settings() {
@@ -95,8 +102,9 @@ QScrollArea* scrolling(QWidget* widget, bool fitWidth = true) {
   scroll->setWidget(widget);
   scroll->setWidgetResizable(true);
   if (fitWidth) {
+    scroll->setObjectName(QStringLiteral("fitWidth"));
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setMinimumWidth(widget->sizeHint().width() + 24);
+    scroll->setMinimumWidth(widget->sizeHint().width() + kScrollBarRoom);
   }
   return scroll;
 }
@@ -136,6 +144,11 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
   m_renderPanel->setScene(scene);
   m_imageTabs = new QTabWidget;
   m_imageTabs->addTab(m_renderPanel, tr("Image"));
+  m_comparePanel = new ComparePanel;
+  m_comparePanel->setScene(scene);
+  m_imageTabs->addTab(m_comparePanel, tr("Compare"));
+  connect(m_comparePanel, &ComparePanel::statusChanged, this,
+          [this](const QString& text) { statusBar()->showMessage(text); });
   m_imageTabs->hide();
   m_splitter = new QSplitter(Qt::Horizontal);
   m_splitter->addWidget(m_vtkWidget);
@@ -308,8 +321,19 @@ void MainWindow::buildMenus() {
            showImageTab(m_renderPanel);
            m_renderPanel->render();
          });
-  action(renderMenu, tr("&Cancel render"), tr("Stop the render; the passes finished so far stay"),
-         {QKeySequence(Qt::SHIFT | Qt::Key_F5)}, [this] { m_renderPanel->cancel(); });
+  action(renderMenu, tr("C&ompare the four algorithms"),
+         tr("Render ray casting, Whitted, distributed and path tracing side by side on this "
+            "scene, with their figures and errors"),
+         {QKeySequence(Qt::CTRL | Qt::Key_F5)}, [this] {
+           showImageTab(m_comparePanel);
+           m_comparePanel->compare();
+         });
+  action(renderMenu, tr("&Cancel render"),
+         tr("Stop the render and the comparison; the passes finished so far stay"),
+         {QKeySequence(Qt::SHIFT | Qt::Key_F5)}, [this] {
+           m_renderPanel->cancel();
+           m_comparePanel->cancel();
+         });
   action(renderMenu, tr("&Save image…"), tr("Save the rendered image (PNG or PFM)"),
          {QKeySequence(Qt::CTRL | Qt::Key_E)}, [this] { saveImageAs(); });
   action(renderMenu, tr("Zoom &in"), tr("Zoom into the image: pixels become squares"),
@@ -525,7 +549,14 @@ void MainWindow::showLessonStep(int index) {
     rays.clearTrace();
   }
 
-  // Step 3: the image beside the 3D view, for the steps that show it.
+  // Step 3: the image or the comparison beside the 3D view, for the steps that show it.
+  if (step.view == LessonView::Compare || step.view == LessonView::Plot) {
+    m_comparePanel->setEqualTime(step.measure == LessonMeasure::Time);
+    m_comparePanel->setSamplesPerPixel(kLessonCompareSpp);
+    m_comparePanel->setSeconds(kLessonCompareSeconds);
+    showImageTab(m_comparePanel);
+    m_comparePanel->compare();
+  }
   if (step.view == LessonView::Image) {
     m_renderPanel->setAlgorithm(step.algorithm);
     m_renderPanel->setSamplesPerPixel(std::min(step.settings().samplesPerPixel, kLessonImageSpp));
@@ -555,10 +586,14 @@ void MainWindow::setPresentationMode(bool on) {
     large.setPointSizeF(large.pointSizeF() * kPresentationFontScale);
     setFont(large);
     m_rayPanel->setLineScale(kPresentationLineScale);
+    fitScrollingDocks();
     showFullScreen();
+    // Without a window manager (Xvfb, some kiosks) full screen does not resize by itself.
+    if (QScreen* s = screen()) setGeometry(s->geometry());
   } else {
     setFont(QApplication::font());
     m_rayPanel->setLineScale(1.0);
+    fitScrollingDocks();
     showNormal();
     restoreState(m_layoutBeforePresenting);
   }
@@ -661,6 +696,7 @@ QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWid
 MainWindow::~MainWindow() {
   m_rayPanel->pause();
   m_renderPanel->cancel();
+  m_comparePanel->cancel();
   // The render window outlives us by a moment (Qt deletes children later): detach the
   // renderer now so it never draws a vis::SceneView that is gone.
   if (m_vtkWidget && m_vtkWidget->renderWindow()) {
@@ -680,10 +716,25 @@ void MainWindow::showImageTab(QWidget* tab) {
     });
   }
   if (tab) m_imageTabs->setCurrentWidget(tab);
+  if (tab == m_comparePanel) {
+    // Four panels need room: the comparison gets three quarters of the central area.
+    QTimer::singleShot(0, this, [this] {
+      const int total =
+          m_splitter->orientation() == Qt::Horizontal ? m_splitter->width() : m_splitter->height();
+      m_splitter->setSizes({total / 4, total - total / 4});
+    });
+  }
   if (m_imagesAction) {
     const QSignalBlocker block(m_imagesAction);
     m_imagesAction->setChecked(true);
   }
+}
+
+void MainWindow::fitScrollingDocks() {
+  // The panels that must not be squeezed keep the width their contents want at this font.
+  for (QScrollArea* scroll : findChildren<QScrollArea*>(QStringLiteral("fitWidth")))
+    if (scroll->widget())
+      scroll->setMinimumWidth(scroll->widget()->sizeHint().width() + kScrollBarRoom);
 }
 
 void MainWindow::fitSplitter() {
@@ -734,6 +785,7 @@ bool MainWindow::saveImageAs() {
 void MainWindow::sceneChanged() {
   m_view->updateScene(m_document->scene());
   m_renderPanel->setScene(m_document->scene());
+  m_comparePanel->setScene(m_document->scene());
   // A tree traced before the change is traced again: never silently wrong.
   m_rayPanel->retrace();
   fillObjectList();
@@ -1008,6 +1060,7 @@ void MainWindow::updateRecentMenu() {
 
 std::unique_ptr<SceneDocument> MainWindow::takeDocument() {
   m_renderPanel->cancel();
+  m_comparePanel->cancel();
   m_rayPanel->pause();
   m_handedOver = true;
   // A stand-in, so the panels still holding a reference never see a dangling one.

@@ -27,6 +27,7 @@ class EditPanel;
 class InspectorPanel;
 class PropertiesPanel;
 class RayTreePanel;
+class ComparePanel;
 class LessonPanel;
 class RenderPanel;
 class SceneDocument;
@@ -113,6 +114,7 @@ class MainWindow : public QMainWindow {
   EditPanel* editPanel() const { return m_editPanel; }
   PropertiesPanel* propertiesPanel() const { return m_properties; }
   RenderPanel* renderPanel() const { return m_renderPanel; }
+  ComparePanel* comparePanel() const { return m_comparePanel; }
   /// The tabs beside the 3D view (the rendered image, the comparison); hidden until used.
   QTabWidget* imageTabs() const { return m_imageTabs; }
   /// Shows the image tabs beside the 3D view with `tab` in front.
@@ -172,6 +174,8 @@ class MainWindow : public QMainWindow {
   /// The 3D view and the image tabs side by side or one above the other, whichever suits
   /// the central area's shape.
   void fitSplitter();
+  /// Scrolling panels as wide as their contents want (after a font change).
+  void fitScrollingDocks();
   /// The layout, algorithm and colouring of last time, from the settings.
   void restoreLayout();
   void showSelection(int row);
@@ -202,6 +206,7 @@ class MainWindow : public QMainWindow {
   EditPanel* m_editPanel = nullptr;
   PropertiesPanel* m_properties = nullptr;
   RenderPanel* m_renderPanel = nullptr;
+  ComparePanel* m_comparePanel = nullptr;
   LessonPanel* m_lessonPanel = nullptr;
   QDockWidget* m_lessonDock = nullptr;
   QMenu* m_lessonsMenu = nullptr;

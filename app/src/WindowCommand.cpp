@@ -1,5 +1,6 @@
 #include "WindowCommand.h"
 
+#include "ComparePanel.h"
 #include "ExitCodes.h"
 #include "Language.h"
 #include "LessonPanel.h"
@@ -114,6 +115,12 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     window->showImageTab(&render);
     render.render();
   }
+  ComparePanel& comparison = *window->comparePanel();
+  if (options.compare) {
+    if (options.compareSamples) comparison.setSamplesPerPixel(*options.compareSamples);
+    window->showImageTab(&comparison);
+    comparison.compare();
+  }
 
   // View > Language: the window is built again in the new language, on the same document
   // (file, edits, undo history), with the same layout, algorithm and traced pixel.
@@ -179,7 +186,9 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     const auto afterDelay = [&application, delay, leave] {
       QTimer::singleShot(delay, &application, leave);
     };
-    if (options.render)
+    if (options.compare)
+      QObject::connect(&comparison, &ComparePanel::comparisonEnded, &application, afterDelay);
+    else if (options.render)
       QObject::connect(&render, &RenderPanel::renderEnded, &application, afterDelay);
     else
       afterDelay();

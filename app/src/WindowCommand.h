@@ -20,12 +20,15 @@ struct WindowOptions {
   std::optional<int> frame;                     ///< With trace: show this animation frame.
   std::optional<int> ray;                       ///< With trace: inspect this ray.
   std::optional<std::pair<int, int>> simulate;  ///< Simulate this grid (across, down).
-  std::string language;              ///< "en" or "zh"; empty: the last chosen, else the system's.
-  bool render = false;               ///< Render the image at start (a screenshot waits for it).
-  std::optional<int> renderSamples;  ///< With render: samples per pixel (else the scene's).
-  bool presentation = false;         ///< Start in presentation mode.
-  std::string lesson;                ///< Open this lesson file at start.
-  int lessonStep = 1;                ///< With lesson: the step shown (1-based).
+  std::string language;               ///< "en" or "zh"; empty: the last chosen, else the system's.
+  bool render = false;                ///< Render the image at start (a screenshot waits for it).
+  std::optional<int> renderSamples;   ///< With render: samples per pixel (else the scene's).
+  bool presentation = false;          ///< Start in presentation mode.
+  bool compare = false;               ///< Compare the four algorithms at start (a screenshot
+                                      ///< waits for it).
+  std::optional<int> compareSamples;  ///< With compare: equal samples, this many spp.
+  std::string lesson;                 ///< Open this lesson file at start.
+  int lessonStep = 1;                 ///< With lesson: the step shown (1-based).
 };
 
 /**

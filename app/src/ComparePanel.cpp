@@ -1,0 +1,368 @@
+#include "ComparePanel.h"
+
+#include "UiWords.h"
+
+#include "raylab/core/PixelTrace.h"
+#include "raylab/core/ReferenceCache.h"
+#include "raylab/vis/ComparisonView.h"
+#include "raylab/vis/ConvergencePlot.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkInteractorStyleUser.h>
+#include <vtkNew.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMetaObject>
+#include <QMouseEvent>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace raylab::app {
+
+namespace {
+
+/// A VTK widget with its own render window.
+QVTKOpenGLNativeWidget* vtkWidget() {
+  auto* widget = new QVTKOpenGLNativeWidget;
+  vtkNew<vtkGenericOpenGLRenderWindow> window;
+  widget->setRenderWindow(window);
+  // No camera moves: the panels are pictures, and a click picks a pixel.
+  vtkNew<vtkInteractorStyleUser> still;
+  widget->interactor()->SetInteractorStyle(still);
+  return widget;
+}
+
+/// Removes every renderer of `widget`'s window.
+void clearRenderers(QVTKOpenGLNativeWidget* widget) {
+  vtkRenderWindow* window = widget->renderWindow();
+  while (vtkRenderer* r = window->GetRenderers()->GetFirstRenderer()) window->RemoveRenderer(r);
+}
+
+}  // namespace
+
+ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+
+  // Step 1: equal samples or equal time, the budget, Compare / Cancel.
+  auto* controls = new QHBoxLayout;
+  m_mode = new QComboBox;
+  m_mode->addItem(tr("Equal samples"), false);
+  m_mode->addItem(tr("Equal time"), true);
+  m_mode->setToolTip(
+      tr("Equal samples: every algorithm takes the same samples per pixel.\n"
+         "Equal time: every algorithm renders for the same time (the fair race)."));
+  m_spp = new QSpinBox;
+  m_spp->setRange(1, 4096);
+  m_spp->setValue(ComparisonSettings{}.samplesPerPixel);
+  m_spp->setSuffix(tr(" spp"));
+  m_spp->setToolTip(tr("Samples per pixel of every algorithm (equal samples)"));
+  m_seconds = new QDoubleSpinBox;
+  m_seconds->setRange(0.1, 600.0);
+  m_seconds->setValue(1.0);
+  m_seconds->setSuffix(tr(" s"));
+  m_seconds->setToolTip(tr("Rendering time of every algorithm (equal time)"));
+  m_seconds->hide();
+  m_compareButton = new QPushButton(tr("Compare"));
+  m_compareButton->setToolTip(
+      tr("Render the four algorithms side by side on the open scene. Comparing again while "
+         "one runs cancels it and starts over."));
+  m_cancelButton = new QPushButton(tr("Cancel"));
+  m_cancelButton->setToolTip(tr("Stop the comparison; the passes finished so far stay"));
+  m_showPlot = new QCheckBox(tr("Convergence plot"));
+  m_showPlot->setToolTip(tr("Error against samples (or time) for each algorithm, log-log"));
+  controls->addWidget(m_mode);
+  controls->addWidget(m_spp);
+  controls->addWidget(m_seconds);
+  controls->addWidget(m_compareButton);
+  controls->addWidget(m_cancelButton);
+  controls->addStretch(1);
+  controls->addWidget(m_showPlot);
+  layout->addLayout(controls);
+  m_progress = new QProgressBar;
+  m_progress->setRange(0, 1000);
+  m_progress->setTextVisible(false);
+  m_progress->setMaximumHeight(8);
+  layout->addWidget(m_progress);
+  m_status = new QLabel(tr("Press Compare to render the four algorithms side by side."));
+  m_status->setWordWrap(true);
+  layout->addWidget(m_status);
+
+  // Step 2: the comparison, and the convergence plot under it.
+  auto* split = new QSplitter(Qt::Vertical);
+  m_widget = vtkWidget();
+  m_widget->installEventFilter(this);
+  m_widget->setToolTip(tr("Click a pixel of any image to trace it with all four algorithms"));
+  m_plotWidget = vtkWidget();
+  m_plotWidget->installEventFilter(this);
+  m_plotWidget->hide();
+  split->addWidget(m_widget);
+  split->addWidget(m_plotWidget);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+  layout->addWidget(split, 1);
+
+  // Step 3: what the error figure measures, where it is shown.
+  m_explanation = new QLabel;
+  m_explanation->setWordWrap(true);
+  layout->addWidget(m_explanation);
+
+  connect(m_mode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
+    const bool time = m_mode->currentData().toBool();
+    m_spp->setVisible(!time);
+    m_seconds->setVisible(time);
+  });
+  connect(m_compareButton, &QPushButton::clicked, this, [this] { compare(); });
+  connect(m_cancelButton, &QPushButton::clicked, this, [this] { cancel(); });
+  connect(m_showPlot, &QCheckBox::toggled, this, [this](bool on) {
+    m_plotWidget->setVisible(on);
+    if (on) showPlot();
+  });
+  updateControls();
+}
+
+ComparePanel::~ComparePanel() {
+  m_pending = false;
+  if (m_worker) {
+    m_worker->comparison->cancel();
+    m_worker->thread.join();
+  }
+  clearRenderers(m_widget);
+  clearRenderers(m_plotWidget);
+}
+
+ComparisonSettings ComparePanel::settings() const {
+  ComparisonSettings s;
+  if (m_mode->currentData().toBool()) {
+    s.secondsPerAlgorithm = m_seconds->value();
+    s.samplesPerPixel = 1 << 16;  // the cap: time decides
+  } else {
+    s.samplesPerPixel = m_spp->value();
+  }
+  return s;
+}
+
+void ComparePanel::setEqualTime(bool on) { m_mode->setCurrentIndex(on ? 1 : 0); }
+void ComparePanel::setSamplesPerPixel(int spp) { m_spp->setValue(spp); }
+void ComparePanel::setSeconds(double seconds) { m_seconds->setValue(seconds); }
+
+void ComparePanel::setScene(const Scene& scene) {
+  m_scene = std::make_shared<const Scene>(scene);
+  // A comparison of an older scene is never left on screen.
+  if (running() || m_result) compare();
+}
+
+void ComparePanel::compare() {
+  if (!m_scene) return;
+  if (m_worker) {
+    // One comparison at a time: this one starts when the running one has stopped.
+    m_worker->comparison->cancel();
+    m_pending = true;
+    updateControls();
+    return;
+  }
+  launch();
+}
+
+void ComparePanel::cancel() {
+  m_pending = false;
+  if (m_worker) {
+    m_worker->comparison->cancel();
+    m_status->setText(tr("Cancelled"));
+  }
+  updateControls();
+}
+
+void ComparePanel::launch() {
+  const int generation = ++m_generation;
+  std::shared_ptr<Comparison> comparison;
+  try {
+    comparison = std::make_shared<Comparison>(*m_scene, m_scene->render, settings());
+  } catch (const std::exception& e) {
+    m_status->setText(QString::fromStdString(e.what()));
+    return;
+  }
+  comparison->setReferenceCache(ReferenceCache::fromEnvironment());
+  // Posts to this object from the worker; the destructor joins the worker first.
+  comparison->setProgress([this, generation](const std::string& stage, double fraction, int spp) {
+    const QString what = QString::fromStdString(stage);
+    QMetaObject::invokeMethod(
+        this,
+        [this, generation, what, fraction, spp] {
+          if (generation != m_generation || m_pending) return;
+          m_progress->setValue(int(1000.0 * fraction));
+          m_status->setText(tr("Comparing: %1, %2 spp…").arg(what).arg(spp));
+        },
+        Qt::QueuedConnection);
+  });
+  comparison->setPassCallback(
+      [this, generation](const ComparisonResult& soFar, int, double fraction) {
+        auto copy = std::make_shared<const ComparisonResult>(soFar);
+        QMetaObject::invokeMethod(
+            this,
+            [this, generation, copy, fraction] {
+              if (generation == m_generation && !m_pending) showPass(copy, fraction);
+            },
+            Qt::QueuedConnection);
+      });
+  Worker worker;
+  worker.comparison = comparison;
+  worker.scene = m_scene;
+  worker.generation = generation;
+  worker.thread = std::thread([this, generation, comparison, scene = m_scene] {
+    std::shared_ptr<const ComparisonResult> result;
+    try {
+      result = std::make_shared<const ComparisonResult>(comparison->run());
+    } catch (const std::exception&) {
+      // Invalid settings are refused before the thread starts; nothing else throws.
+    }
+    QMetaObject::invokeMethod(
+        this, [this, generation, result] { ended(generation, result); }, Qt::QueuedConnection);
+  });
+  m_worker = std::move(worker);
+  m_trees.clear();
+  m_traced = {-1, -1};
+  m_progress->setValue(0);
+  m_status->setText(tr("Comparing…"));
+  emit statusChanged(tr("Comparing the four algorithms on the open scene…"));
+  updateControls();
+}
+
+void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& result,
+                            double fraction) {
+  m_result = result;
+  m_resultScene = m_worker ? m_worker->scene : m_scene;
+  m_progress->setValue(int(1000.0 * fraction));
+  if (!m_view)
+    m_view = std::make_unique<vis::ComparisonView>(*m_result);
+  else
+    m_view->setResult(*m_result);
+  m_explanation->setText(
+      tr("Error: the root-mean-square difference of each displayed image from a path-traced "
+         "reference of the same scene at %1 spp (lower is better). At equal samples path "
+         "tracing looks the noisiest, yet its error is the lowest: the other algorithms leave "
+         "out light paths (indirect light, soft shadows), so they converge to another, biased "
+         "image and their error stays, while path tracing's noise falls as 1/√N.")
+          .arg(m_result->reference.samplesPerPixel));
+  redraw();
+  if (m_plotWidget->isVisible()) showPlot();
+}
+
+void ComparePanel::ended(int generation, const std::shared_ptr<const ComparisonResult>& result) {
+  if (!m_worker || m_worker->generation != generation) return;
+  m_worker->thread.join();
+  m_worker.reset();
+  if (m_pending) {
+    m_pending = false;
+    launch();
+    return;
+  }
+  ++m_ended;
+  const bool cancelled = !result || result->cancelled;
+  if (result && !result->algorithms.empty()) showPass(result, 1.0);
+  if (!cancelled) m_progress->setValue(1000);
+  const QString reference =
+      result && result->reference.cached ? tr(" (the reference came from the cache)") : QString();
+  m_status->setText(cancelled ? tr("Cancelled") : tr("Done") + reference);
+  emit statusChanged(cancelled ? tr("Comparison cancelled") : tr("Comparison done") + reference);
+  updateControls();
+  emit comparisonEnded(cancelled);
+}
+
+void ComparePanel::redraw() {
+  clearRenderers(m_widget);
+  if (!m_view) return;
+  for (vtkRenderer* r : m_view->renderers()) m_widget->renderWindow()->AddRenderer(r);
+  const QSize size = m_widget->size() * m_widget->devicePixelRatioF();
+  m_view->layout(std::max(1, size.width()), std::max(1, size.height()));
+  m_widget->renderWindow()->Render();
+  m_widget->update();
+}
+
+void ComparePanel::showPlot() {
+  clearRenderers(m_plotWidget);
+  if (!m_result) return;
+  const auto axis =
+      m_result->compare.equalTime() ? vis::ConvergenceAxis::Time : vis::ConvergenceAxis::Samples;
+  if (!m_plot)
+    m_plot = std::make_unique<vis::ConvergencePlot>(*m_result, axis);
+  else {
+    m_plot->setAxis(axis);
+    m_plot->setResult(*m_result);
+  }
+  m_plotWidget->renderWindow()->AddRenderer(m_plot->renderer());
+  const QSize size = m_plotWidget->size() * m_plotWidget->devicePixelRatioF();
+  m_plot->layout(std::max(1, size.width()), std::max(1, size.height()));
+  m_plotWidget->renderWindow()->Render();
+  m_plotWidget->update();
+}
+
+std::optional<std::pair<int, int>> ComparePanel::pixelAt(const QPoint& p) const {
+  if (!m_view || !m_result) return std::nullopt;
+  const double ratio = m_widget->devicePixelRatioF();
+  const int w = int(m_widget->width() * ratio), h = int(m_widget->height() * ratio);
+  const int x = int(p.x() * ratio), y = int(p.y() * ratio);
+  for (int panel = 0; panel < m_view->panelCount(); ++panel) {
+    const vis::PixelRect r = m_view->imageRect(panel, w, h);
+    if (r.width <= 0 || x < r.x || y < r.y || x >= r.x + r.width || y >= r.y + r.height) continue;
+    const FloatImage& image = m_result->algorithms[std::size_t(panel)].image;
+    if (image.width <= 0) return std::nullopt;
+    return std::pair{std::min(image.width - 1, (x - r.x) * image.width / r.width),
+                     std::min(image.height - 1, (y - r.y) * image.height / r.height)};
+  }
+  return std::nullopt;
+}
+
+bool ComparePanel::traceAll(int x, int y) {
+  if (!m_result || !m_resultScene || !m_view) return false;
+  const Scene& scene = *m_resultScene;
+  if (x < 0 || y < 0 || x >= scene.camera.width || y >= scene.camera.height) return false;
+  m_trees.clear();
+  for (const AlgorithmFigures& figures : m_result->algorithms) {
+    RenderSettings settings = scene.render;
+    settings.algorithm = figures.algorithm;
+    m_trees.push_back(tracePixel(scene, settings, x, y, 0).tree);
+  }
+  m_traced = {x, y};
+  m_view->setRayTrees(scene, m_trees, x, y);
+  redraw();
+  emit statusChanged(tr("Pixel (%1, %2) traced with every algorithm: the trees are beside the "
+                        "images")
+                         .arg(x)
+                         .arg(y));
+  return true;
+}
+
+bool ComparePanel::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == m_widget) {
+    if (event->type() == QEvent::Resize) {
+      redraw();
+    } else if (event->type() == QEvent::MouseButtonPress) {
+      m_press = static_cast<QMouseEvent*>(event)->pos();
+    } else if (event->type() == QEvent::MouseButtonRelease) {
+      const auto* mouse = static_cast<QMouseEvent*>(event);
+      if (mouse->button() == Qt::LeftButton && (mouse->pos() - m_press).manhattanLength() <= 3)
+        if (const auto pixel = pixelAt(mouse->pos())) traceAll(pixel->first, pixel->second);
+    }
+  } else if (watched == m_plotWidget && event->type() == QEvent::Resize &&
+             m_plotWidget->isVisible()) {
+    showPlot();
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+void ComparePanel::updateControls() { m_cancelButton->setEnabled(running()); }
+
+}  // namespace raylab::app

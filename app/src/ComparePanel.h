@@ -1,0 +1,129 @@
+#pragma once
+
+#include "raylab/core/Comparison.h"
+#include "raylab/core/RenderSettings.h"
+#include "raylab/core/Scene.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <thread>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QVTKOpenGLNativeWidget;
+
+namespace raylab::vis {
+class ComparisonView;
+class ConvergencePlot;
+}  // namespace raylab::vis
+
+namespace raylab::app {
+
+/**
+ * \brief The window's Compare tab: the four algorithms side by side on the open scene
+ * (vis::ComparisonView hosted in a VTK widget), at equal samples or equal time, each panel
+ * with its figures, the error figure explained, and the convergence plot.
+ *
+ * The comparison (core Comparison, with the reference cache of the environment) runs on a
+ * worker thread and shows every pass as it finishes; Cancel keeps what is done; Compare
+ * while one runs cancels it and starts again when it has stopped (never two at once).
+ * Clicking a pixel of any panel traces that pixel with all four algorithms and shows the
+ * four trees beside the images.
+ */
+class ComparePanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ComparePanel(QWidget* parent = nullptr);
+  ~ComparePanel() override;
+
+  /// The scene compared from now on (a running comparison is cancelled and restarted).
+  void setScene(const Scene& scene);
+  /// Starts the comparison with the controls' settings.
+  void compare();
+  /// Stops it; the passes done stay.
+  void cancel();
+  bool running() const { return m_worker.has_value() || m_pending; }
+  /// The comparison shown (the last pass received), null before the first.
+  const ComparisonResult* result() const { return m_result.get(); }
+  /// The settings the controls ask for.
+  ComparisonSettings settings() const;
+  void setEqualTime(bool on);
+  void setSamplesPerPixel(int spp);
+  void setSeconds(double seconds);
+  /// Traces pixel (x, y) with every algorithm compared and shows the trees beside the
+  /// images (what a click on a panel does). False without a comparison.
+  bool traceAll(int x, int y);
+  /// The pixel whose trees are shown, (-1, -1) when none.
+  std::pair<int, int> tracedPixel() const { return m_traced; }
+  /// The trees shown, one per algorithm (empty when none).
+  const std::vector<RayTree>& trees() const { return m_trees; }
+  /// The image pixel under position `p` of the comparison widget, and its panel; nothing
+  /// when `p` is on no image.
+  std::optional<std::pair<int, int>> pixelAt(const QPoint& p) const;
+  /// Comparisons ended (complete or cancelled), for tests.
+  int comparisonsEnded() const { return m_ended; }
+
+  QVTKOpenGLNativeWidget* comparisonWidget() const { return m_widget; }
+  QPushButton* compareButton() const { return m_compareButton; }
+  QPushButton* cancelButton() const { return m_cancelButton; }
+  QLabel* explanationLabel() const { return m_explanation; }
+  QLabel* statusLabel() const { return m_status; }
+
+ signals:
+  void statusChanged(const QString& text);
+  /// A comparison ended.
+  void comparisonEnded(bool cancelled);
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  struct Worker {
+    std::shared_ptr<Comparison> comparison;
+    std::shared_ptr<const Scene> scene;
+    std::thread thread;
+    int generation = 0;
+  };
+  void launch();
+  void showPass(const std::shared_ptr<const ComparisonResult>& result, double fraction);
+  void ended(int generation, const std::shared_ptr<const ComparisonResult>& result);
+  /// The comparison's renderers in the widget, laid out for its size.
+  void redraw();
+  void showPlot();
+  void updateControls();
+
+  std::shared_ptr<const Scene> m_scene;
+  std::optional<Worker> m_worker;
+  bool m_pending = false;  ///< Compare asked while one was stopping.
+  int m_generation = 0;
+  int m_ended = 0;
+  std::shared_ptr<const ComparisonResult> m_result;
+  std::shared_ptr<const Scene> m_resultScene;  ///< The scene m_result was made from.
+  std::unique_ptr<vis::ComparisonView> m_view;
+  std::unique_ptr<vis::ConvergencePlot> m_plot;
+  std::vector<RayTree> m_trees;
+  std::pair<int, int> m_traced{-1, -1};
+  QPoint m_press;
+
+  QComboBox* m_mode = nullptr;
+  QSpinBox* m_spp = nullptr;
+  QDoubleSpinBox* m_seconds = nullptr;
+  QPushButton* m_compareButton = nullptr;
+  QPushButton* m_cancelButton = nullptr;
+  QProgressBar* m_progress = nullptr;
+  QLabel* m_status = nullptr;
+  QLabel* m_explanation = nullptr;
+  QCheckBox* m_showPlot = nullptr;
+  QVTKOpenGLNativeWidget* m_widget = nullptr;
+  QVTKOpenGLNativeWidget* m_plotWidget = nullptr;
+};
+
+}  // namespace raylab::app
