@@ -318,10 +318,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>正在当前场景上对比四种算法…</translation>
     </message>
     <message>
-        <source>Error: the root-mean-square difference of each displayed image from a path-traced reference of the same scene at %1 spp (lower is better). At equal samples path tracing looks the noisiest, yet its error is the lowest: the other algorithms leave out light paths (indirect light, soft shadows), so they converge to another, biased image and their error stays, while path tracing&apos;s noise falls as 1/√N.</source>
-        <translation>误差：各显示图像与同一场景的路径追踪参考图像（%1 spp）之间的均方根误差（越低越好）。在采样数相同时，路径追踪看起来噪声最大，误差却最低：其他算法忽略了部分光路（间接光照、软阴影），收敛到另一幅有偏的图像，误差始终存在；而路径追踪的噪声按 1/√N 下降。</translation>
-    </message>
-    <message>
         <source> (the reference came from the cache)</source>
         <translation>（参考图像取自缓存）</translation>
     </message>

@@ -1,5 +1,6 @@
 #include "ComparePanel.h"
 
+#include "Language.h"
 #include "UiWords.h"
 
 #include "raylab/core/PixelTrace.h"
@@ -113,11 +114,6 @@ ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
   split->setStretchFactor(0, 3);
   split->setStretchFactor(1, 2);
   layout->addWidget(split, 1);
-
-  // Step 3: what the error figure measures, where it is shown.
-  m_explanation = new QLabel;
-  m_explanation->setWordWrap(true);
-  layout->addWidget(m_explanation);
 
   connect(m_mode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
     const bool time = m_mode->currentData().toBool();
@@ -245,17 +241,13 @@ void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& resul
   m_result = result;
   m_resultScene = m_worker ? m_worker->scene : m_scene;
   m_progress->setValue(int(1000.0 * fraction));
-  if (!m_view)
-    m_view = std::make_unique<vis::ComparisonView>(*m_result);
-  else
+  if (!m_view) {
+    // The error is explained in the picture's bottom band, in the window's language.
+    vis::ComparisonViewOptions options;
+    options.language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
+    m_view = std::make_unique<vis::ComparisonView>(*m_result, options);
+  } else
     m_view->setResult(*m_result);
-  m_explanation->setText(
-      tr("Error: the root-mean-square difference of each displayed image from a path-traced "
-         "reference of the same scene at %1 spp (lower is better). At equal samples path "
-         "tracing looks the noisiest, yet its error is the lowest: the other algorithms leave "
-         "out light paths (indirect light, soft shadows), so they converge to another, biased "
-         "image and their error stays, while path tracing's noise falls as 1/√N.")
-          .arg(m_result->reference.samplesPerPixel));
   redraw();
   if (m_plotWidget->isVisible()) showPlot();
 }

@@ -28,8 +28,9 @@ namespace raylab::app {
 
 /**
  * \brief The window's Compare tab: the four algorithms side by side on the open scene
- * (vis::ComparisonView hosted in a VTK widget), at equal samples or equal time, each panel
- * with its figures, the error figure explained, and the convergence plot.
+ * (vis::ComparisonView hosted in a VTK widget, in the window's language), at equal samples
+ * or equal time, each panel with its figures, the error figure explained in the picture's
+ * bottom band, and the convergence plot.
  *
  * The comparison (core Comparison, with the reference cache of the environment) runs on a
  * worker thread and shows every pass as it finishes; Cancel keeps what is done; Compare
@@ -74,7 +75,8 @@ class ComparePanel : public QWidget {
   QVTKOpenGLNativeWidget* comparisonWidget() const { return m_widget; }
   QPushButton* compareButton() const { return m_compareButton; }
   QPushButton* cancelButton() const { return m_cancelButton; }
-  QLabel* explanationLabel() const { return m_explanation; }
+  /// The comparison picture shown (null before the first pass).
+  const vis::ComparisonView* view() const { return m_view.get(); }
   QLabel* statusLabel() const { return m_status; }
 
  signals:
@@ -120,7 +122,6 @@ class ComparePanel : public QWidget {
   QPushButton* m_cancelButton = nullptr;
   QProgressBar* m_progress = nullptr;
   QLabel* m_status = nullptr;
-  QLabel* m_explanation = nullptr;
   QCheckBox* m_showPlot = nullptr;
   QVTKOpenGLNativeWidget* m_widget = nullptr;
   QVTKOpenGLNativeWidget* m_plotWidget = nullptr;
