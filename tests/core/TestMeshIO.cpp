@@ -252,5 +252,28 @@ TEST(MeshIO, 14_AnnouncedCountsMustFitTheFileAndTheLimits) {
   EXPECT_EQ(MeshIO::load(writeMesh("whole.ply", icosphere)).triangleCount(), 80u);
 }
 
+// Found by the fuzz targets (tests/fuzz): a PLY property line before any element made
+// CGAL's reader take back() of an empty list (undefined behaviour), and an OBJ file whose
+// faces CGAL stitches into a broken cycle made the triangle loop run for ever.
+TEST(MeshIO, 15_FuzzFindingsEndWithAnAnswer) {
+  const std::string ply =
+      writeMesh("property-first.ply",
+                "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n");
+  EXPECT_TRUE(contains(readError(ply),
+                       "property-first.ply:3: cannot parse PLY file: property "
+                       "line before any element: 'property float x'"))
+      << readError(ply);
+  std::string outcome;
+  try {
+    outcome = std::to_string(
+        MeshIO::load(std::string(RAYLAB_TEST_DATA_DIR) + "/bad/fuzz-broken-face-cycle.obj")
+            .triangleCount());
+  } catch (const MeshIO::ReadError& e) {
+    outcome = e.what();
+  }
+  EXPECT_EQ(outcome, std::string(RAYLAB_TEST_DATA_DIR) +
+                         "/bad/fuzz-broken-face-cycle.obj: could not triangulate a polygonal face");
+}
+
 }  // namespace
 }  // namespace raylab

@@ -220,7 +220,10 @@ SizeProblem checkPly(const std::string& path, std::uintmax_t size) {
       if (e.name == "face") faces = e.count;
       elements.push_back(e);
     }
-    if (key == "property" && !elements.empty()) {
+    // CGAL's reader adds a property to the last element, even when there is none.
+    if (key == "property" && elements.empty())
+      return Located{lineNo, "property line before any element: '" + trimmed(line) + "'"};
+    if (key == "property") {
       std::string type, countType, itemType;
       words >> type;
       PlyProperty p;
@@ -544,7 +547,8 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
       int k = 0;
       for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
         if (k < 3) tri[k] = static_cast<int>(static_cast<std::size_t>(v));
-        ++k;
+        // A face cycle broken by a bad soup would never close (found by fuzzing).
+        if (++k > 3) break;
       }
       if (k != 3) throw fail("could not triangulate a polygonal face");
       triangles.push_back(tri);
