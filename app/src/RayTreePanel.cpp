@@ -1,5 +1,6 @@
 #include "RayTreePanel.h"
 
+#include "Language.h"
 #include "UiWords.h"
 
 #include "raylab/core/Comparison.h"
@@ -455,6 +456,7 @@ vis::RayTreeStyle RayTreePanel::treeStyle() const {
   s.showArrows = m_arrows->isChecked();
   s.showLegend = m_legend->isChecked();
   s.lineWidth *= m_lineScale;
+  s.language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
   return s;
 }
 

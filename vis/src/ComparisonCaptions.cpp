@@ -85,7 +85,7 @@ std::string rayKindName(RayKind kind, Language language) {
   if (!chinese(language)) return toString(kind);
   switch (kind) {
     case RayKind::Camera:
-      return "主光线";
+      return "相机光线";
     case RayKind::Reflection:
       return "反射光线";
     case RayKind::Refraction:

@@ -3,6 +3,7 @@
 #include "raylab/vis/ComparisonCaptions.h"
 
 #include "ComparisonLayout.h"
+#include "TextFonts.h"
 
 #include "VtkImage.h"
 
@@ -56,23 +57,6 @@ constexpr double kExplanationColour[3] = {0.80, 0.82, 0.86};
 constexpr double kFiguresFontAt1080 = 28.0;
 constexpr double kExplanationFontAt1080 = 24.0;
 
-/// A font file with Chinese glyphs (VTK's own fonts have none), or empty.
-const std::string& cjkFontFile() {
-  static const std::string file = [] {
-    const char* candidates[] = {
-        "/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc",
-        "/usr/share/fonts/opentype/noto/NotoSansCJK-Bold.ttc",
-        "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc",
-        "/usr/share/fonts/truetype/wqy/wqy-zenhei.ttc",
-    };
-    std::error_code ec;
-    for (const char* candidate : candidates)
-      if (std::filesystem::exists(candidate, ec)) return std::string(candidate);
-    return std::string();
-  }();
-  return file;
-}
-
 double channel(std::uint8_t value) { return value / 255.0; }
 
 /// Black or white, whichever reads better on `background` (Rec. 709 luminance of sRGB).
@@ -98,12 +82,7 @@ std::pair<int, int> textSize(vtkTextProperty* property, const std::string& text)
 
 void styleText(vtkTextProperty* p, int size, const double colour[3], bool bold,
                Language language = Language::English) {
-  if (language == Language::Chinese && !cjkFontFile().empty()) {
-    p->SetFontFamily(VTK_FONT_FILE);
-    p->SetFontFile(cjkFontFile().c_str());
-  } else {
-    p->SetFontFamilyToArial();
-  }
+  useFontFor(p, language);
   p->SetFontSize(size);
   p->SetColor(colour[0], colour[1], colour[2]);
   p->SetBold(bold);

@@ -1,5 +1,8 @@
 #include "RayTreeActors.h"
 
+#include "TextFonts.h"
+#include "raylab/vis/ComparisonCaptions.h"
+
 #include <vtkCellArray.h>
 #include <vtkConeSource.h>
 #include <vtkLookupTable.h>
@@ -120,10 +123,8 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_energyBar->SetLabelFormat("%g");
   m_energyBar->DrawAnnotationsOff();
   styleText(m_energyBar->GetLabelTextProperty(), kLegendText);
-  const char* words[] = {"high", "medium", "low / none"};
   for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
     m_energyWords[i] = vtkSmartPointer<vtkTextActor>::New();
-    m_energyWords[i]->SetInput(words[i]);
     styleText(m_energyWords[i]->GetTextProperty(), kLegendText);
     m_energyWords[i]->GetTextProperty()->SetVerticalJustificationToCentered();
   }
@@ -229,10 +230,19 @@ void RayTreeActors::updateLegend() {
     entry->SetInput(text.c_str());
     entry->GetTextProperty()->SetColor(colour.x, colour.y, colour.z);
   };
+  // The legend's words in the style's language.
+  const bool zh = style.language == Language::Chinese;
+  useFontFor(m_legendTitle->GetTextProperty(), style.language);
+  for (auto& entry : m_legendEntries) useFontFor(entry->GetTextProperty(), style.language);
+  const char* energyWords[2][3] = {{"high", "medium", "low / none"}, {"高", "中", "低 / 无"}};
+  for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
+    useFontFor(m_energyWords[i]->GetTextProperty(), style.language);
+    m_energyWords[i]->SetInput(energyWords[zh ? 1 : 0][i]);
+  }
   switch (style.colouring) {
     case RayColouring::Energy: {
       // The shared log scale: grey at `low`, green at the geometric mean, blue at `high`.
-      m_legendTitle->SetInput("ray energy");
+      m_legendTitle->SetInput(zh ? "光线能量" : "ray energy");
       vtkNew<vtkLookupTable> table;
       const int n = 256;
       table->SetNumberOfTableValues(n);
@@ -249,16 +259,17 @@ void RayTreeActors::updateLegend() {
       break;
     }
     case RayColouring::Kind:
-      m_legendTitle->SetInput("ray kind");
+      m_legendTitle->SetInput(zh ? "光线类型" : "ray kind");
       for (int k = 0; k < kRayKindCount; ++k)
-        addEntry(toString(RayKind(k)), kindColour(RayKind(k)));
+        addEntry(rayKindName(RayKind(k), style.language), kindColour(RayKind(k)));
       break;
     case RayColouring::Depth: {
-      m_legendTitle->SetInput("depth");
+      m_legendTitle->SetInput(zh ? "深度" : "depth");
       const int deepest = geometry.deepest;
       const int every = deepest / kLegendEntries + 1;
       for (int d = 0; d <= deepest && m_legendEntryCount < kLegendEntries; d += every)
-        addEntry(d == 0 ? "0 (camera)" : std::to_string(d), depthColour(d, deepest));
+        addEntry(d == 0 ? (zh ? "0（相机）" : "0 (camera)") : std::to_string(d),
+                 depthColour(d, deepest));
       break;
     }
   }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/Lesson.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Types.h"
 
@@ -75,12 +76,13 @@ struct RayTreeStyle {
   RayColouring colouring = RayColouring::Energy;
   EnergyScale scale;
   RayFilter filter;
-  bool widthFollowsEnergy = true;  ///< Thicker lines for more energy (else all `lineWidth`).
-  double lineWidth = 2.0;          ///< Pixels; with widthFollowsEnergy, the width at low.
-  bool showHitPoints = true;       ///< A dot at every hit.
-  bool showNormals = false;        ///< The surface normal at every hit.
-  bool showArrows = false;         ///< An arrow head at the end of every segment.
-  bool showLegend = true;          ///< The colour legend in a corner of the view.
+  bool widthFollowsEnergy = true;         ///< Thicker lines for more energy (else all `lineWidth`).
+  double lineWidth = 2.0;                 ///< Pixels; with widthFollowsEnergy, the width at low.
+  bool showHitPoints = true;              ///< A dot at every hit.
+  bool showNormals = false;               ///< The surface normal at every hit.
+  bool showArrows = false;                ///< An arrow head at the end of every segment.
+  bool showLegend = true;                 ///< The colour legend in a corner of the view.
+  Language language = Language::English;  ///< The legend's words (Chinese: a CJK font).
 };
 
 /// The colouring named `name` ("energy", "kind" or "depth"), nothing for another name.

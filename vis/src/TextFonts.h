@@ -1,0 +1,21 @@
+// Fonts of the words VTK draws: Chinese needs a font file with CJK glyphs (VTK's own
+// fonts have none).
+#pragma once
+
+#include "raylab/core/Lesson.h"
+
+#include <string>
+
+class vtkTextProperty;
+
+namespace raylab::vis {
+
+/// A font file with Chinese glyphs (Noto Sans CJK from fonts-noto-cjk, or WenQuanYi), or
+/// empty when none is installed.
+const std::string& cjkFontFile();
+
+/// Draws `property`'s text with a font for `language`: the CJK font file for Chinese (when
+/// installed), else Arial.
+void useFontFor(vtkTextProperty* property, Language language);
+
+}  // namespace raylab::vis
