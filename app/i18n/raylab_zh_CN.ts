@@ -1197,8 +1197,8 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>在此场景上并排渲染光线投射、Whitted、分布式与路径追踪，并给出各自的数据和误差</translation>
     </message>
     <message>
-        <source>Stop the render and the comparison; the passes finished so far stay</source>
-        <translation>停止渲染和对比；已完成的各遍结果会保留</translation>
+        <source>Stop the render, the comparison and a trace; what is done so far stays</source>
+        <translation>停止渲染、对比和追踪；已完成的部分会保留</translation>
     </message>
 </context>
 <context>
@@ -1541,6 +1541,18 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
     <message>
         <source>no tree yet</source>
         <translation>尚无光线树</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop the trace that runs: the rays traced so far stay (a bushy tree can take long)</source>
+        <translation>停止正在进行的追踪：已追踪的光线会保留（分支很多的光线树可能需要很长时间）</translation>
+    </message>
+    <message>
+        <source>Tracing… (Cancel stops it)</source>
+        <translation>正在追踪…（按“取消”可停止）</translation>
     </message>
 </context>
 <context>

@@ -329,10 +329,11 @@ void MainWindow::buildMenus() {
            m_comparePanel->compare();
          });
   action(renderMenu, tr("&Cancel render"),
-         tr("Stop the render and the comparison; the passes finished so far stay"),
+         tr("Stop the render, the comparison and a trace; what is done so far stays"),
          {QKeySequence(Qt::SHIFT | Qt::Key_F5)}, [this] {
            m_renderPanel->cancel();
            m_comparePanel->cancel();
+           m_rayPanel->cancelTrace();
          });
   action(renderMenu, tr("&Save image…"), tr("Save the rendered image (PNG or PFM)"),
          {QKeySequence(Qt::CTRL | Qt::Key_E)}, [this] { saveImageAs(); });
@@ -1082,6 +1083,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     return;
   }
   if (maybeSave()) {
+    m_rayPanel->cancelTrace();
     saveLayout();
     event->accept();
   } else {

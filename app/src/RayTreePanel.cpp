@@ -26,9 +26,13 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <QCoreApplication>
+
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cstdio>
+#include <future>
 
 namespace raylab::app {
 
@@ -122,7 +126,15 @@ QWidget* RayTreePanel::buildTraceGroup() {
   m_traceButton->setDefault(true);
   m_traceButton->setToolTip(tr("Record this pixel sample's ray tree and show it in the view"));
   connect(m_traceButton, &QPushButton::clicked, this, [this] { trace(); });
-  form->addRow(m_traceButton);
+  m_cancelButton = new QPushButton(tr("Cancel"));
+  m_cancelButton->setToolTip(
+      tr("Stop the trace that runs: the rays traced so far stay (a bushy tree can take long)"));
+  m_cancelButton->setEnabled(false);
+  connect(m_cancelButton, &QPushButton::clicked, this, [this] { cancelTrace(); });
+  auto* traceButtons = new QHBoxLayout;
+  traceButtons->addWidget(m_traceButton, 1);
+  traceButtons->addWidget(m_cancelButton);
+  form->addRow(traceButtons);
   m_traceInfo = new QLabel;
   m_traceInfo->setWordWrap(true);
   form->addRow(m_traceInfo);
@@ -348,8 +360,19 @@ void RayTreePanel::trace() {
   const Scene& scene = m_view.scene();
   RenderSettings settings = scene.render;
   settings.algorithm = algorithm();
-  m_trace = std::make_shared<const PixelTrace>(
-      tracePixel(scene, settings, m_pixelX->value(), m_pixelY->value(), m_sample->value()));
+  // A copy of the scene: an edit while the trace runs must not change it under the worker.
+  auto copy = std::make_shared<const Scene>(scene);
+  const int x = m_pixelX->value(), y = m_pixelY->value(), sample = m_sample->value();
+  PixelTrace traced;
+  if (!runCancellable(
+          [copy, settings, x, y, sample](const std::atomic<bool>* cancel) {
+            TraceLimits limits;
+            limits.cancel = cancel;
+            return tracePixel(*copy, settings, x, y, sample, limits);
+          },
+          traced))
+    return;
+  m_trace = std::make_shared<const PixelTrace>(std::move(traced));
   m_grid = false;
   const PixelTrace& trace = *m_trace;
 
@@ -372,7 +395,16 @@ void RayTreePanel::simulate() {
   RenderSettings settings = scene.render;
   settings.algorithm = algorithm();
   const int across = m_across->value(), down = m_down->value();
-  const GridTrace grid = traceGrid(scene, settings, across, down);
+  auto copy = std::make_shared<const Scene>(scene);
+  GridTrace grid;
+  if (!runCancellable(
+          [copy, settings, across, down](const std::atomic<bool>* cancel) {
+            TraceLimits limits;
+            limits.cancel = cancel;
+            return traceGrid(*copy, settings, across, down, limits);
+          },
+          grid))
+    return;
 
   // The grid as one trace: every tree's rays, narration and counts together.
   auto combined = std::make_shared<PixelTrace>();
@@ -406,6 +438,36 @@ void RayTreePanel::retrace() {
     simulate();
   else
     trace();
+}
+
+template <typename Result, typename Work>
+bool RayTreePanel::runCancellable(Work work, Result& result) {
+  if (m_cancel) {
+    // One trace at a time: a new request stops the running one (which then shows what it
+    // has) and is dropped.
+    m_cancel->store(true);
+    return false;
+  }
+  std::atomic<bool> cancel{false};
+  m_cancel = &cancel;
+  m_cancelButton->setEnabled(true);
+  m_traceButton->setEnabled(false);
+  m_simulateButton->setEnabled(false);
+  setStatus(tr("Tracing… (Cancel stops it)"));
+  std::future<Result> done = std::async(std::launch::async, work, &cancel);
+  // Keep the window alive: repaint, Cancel, Quit. Most trees take milliseconds.
+  while (done.wait_for(std::chrono::milliseconds(5)) != std::future_status::ready)
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+  result = done.get();
+  m_cancel = nullptr;
+  m_cancelButton->setEnabled(false);
+  m_traceButton->setEnabled(true);
+  m_simulateButton->setEnabled(true);
+  return true;
+}
+
+void RayTreePanel::cancelTrace() {
+  if (m_cancel) m_cancel->store(true);
 }
 
 void RayTreePanel::clearTrace() {

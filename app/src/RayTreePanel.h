@@ -9,6 +9,7 @@
 #include <QWidget>
 
 #include <array>
+#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +68,12 @@ class RayTreePanel : public QWidget {
   void retrace();
   /// Removes the tree from the view.
   void clearTrace();
+  /// Stops a trace or Simulate that runs (they run off the UI thread, the window stays
+  /// responsive): it ends within one engine step with the rays traced so far. Safe when
+  /// none runs.
+  void cancelTrace();
+  /// True while a trace or Simulate runs.
+  bool tracing() const { return m_cancel != nullptr; }
   /// True when the tree shown is a Simulate grid.
   bool showsGrid() const { return m_trace && m_grid; }
   /// The tree shown (empty before the first trace).
@@ -163,13 +170,20 @@ class RayTreePanel : public QWidget {
   /// Shows m_trace whole, nothing selected.
   void showTrace();
   void updateFrameControls();
+  /// Runs `work` on a worker thread with a cancel flag, keeping the event loop running (and
+  /// the Cancel button live) until it ends. False when another trace was running: that one
+  /// is cancelled and this request is dropped.
+  template <typename Result, typename Work>
+  bool runCancellable(Work work, Result& result);
 
   vis::SceneView& m_view;
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
-  bool m_grid = false;       ///< m_trace is a Simulate grid.
-  double m_phase = 0.0;      ///< Fraction of a frame the animation has moved on.
-  double m_lineScale = 1.0;  ///< Ray width factor (presentation mode).
+  bool m_grid = false;                    ///< m_trace is a Simulate grid.
+  double m_phase = 0.0;                   ///< Fraction of a frame the animation has moved on.
+  double m_lineScale = 1.0;               ///< Ray width factor (presentation mode).
+  std::atomic<bool>* m_cancel = nullptr;  ///< The running trace's cancel flag.
+  QPushButton* m_cancelButton = nullptr;
   int m_frame = 0;
   int m_selected = -1;
   QString m_status;

@@ -246,5 +246,32 @@ TEST_F(WindowRenderTest, 07_SaveTheImageAsPngAndPfm) {
   EXPECT_TRUE(error.contains(missing)) << error.toStdString();
 }
 
+TEST_F(WindowRenderTest, 08_ABushyTraceIsCancelledAndTheWindowStaysAlive) {
+  // Distributed tracing of an all-glossy closed room: a tree that grows to the ray budget.
+  ASSERT_TRUE(m_window->openFile(
+      QStringLiteral(RAYLAB_SOURCE_DIR "/tests/data/scenes/bushy-glossy-room.json"), false));
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  rays.setAlgorithm(Algorithm::Distributed);
+  const Scene& scene = m_window->document().scene();
+  rays.setPixel(scene.camera.width / 2, scene.camera.height / 2);
+  // The event loop runs while it traces: a timer fires, and cancels it.
+  int ticks = 0;
+  QTimer ticker;
+  QObject::connect(&ticker, &QTimer::timeout, [&ticks] { ++ticks; });
+  ticker.start(10);
+  QTimer::singleShot(150, &rays, [&rays] { rays.cancelTrace(); });
+  rays.trace();
+  ticker.stop();
+  EXPECT_FALSE(rays.tracing());
+  EXPECT_GT(ticks, 5) << "the window did not run while tracing";
+  EXPECT_TRUE(rays.tree().truncated) << "the trace was not cancelled";
+  EXPECT_FALSE(rays.tree().segments.empty()) << "the rays traced so far are shown";
+  EXPECT_NE(rays.tree().message.find("cancel"), std::string::npos) << rays.tree().message;
+  // And it traces again afterwards.
+  rays.setAlgorithm(Algorithm::RayCasting);
+  rays.trace();
+  EXPECT_FALSE(rays.tree().truncated);
+}
+
 }  // namespace
 }  // namespace raylab::app
