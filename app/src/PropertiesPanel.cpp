@@ -1,5 +1,7 @@
 #include "PropertiesPanel.h"
 
+#include "SceneWords.h"
+
 #include "EditPanel.h"
 #include "SceneDocument.h"
 
@@ -11,6 +13,7 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -45,12 +48,16 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
 };
 const std::vector<const char*> kMaterialTypes = {"diffuse", "mirror", "dielectric", "glossy"};
 
-/// Words for a key ("vertical_fov" -> "vertical fov").
+/// Words for a key ("vertical_fov" -> "vertical fov"), in the window's language
+/// (SceneWords.h lists them for the translators).
 QString label(const std::string& key) {
   QString text = QString::fromStdString(key);
   text.replace(QLatin1Char('_'), QLatin1Char(' '));
-  return text;
+  return QCoreApplication::translate("SceneKeys", text.toUtf8().constData());
 }
+
+/// A value of a list ("raycast"), in the window's language.
+QString valueLabel(const char* value) { return QCoreApplication::translate("SceneValues", value); }
 
 bool isNumberTriple(const json& v) {
   return v.is_array() && v.size() == 3 && v[0].is_number() && v[1].is_number() && v[2].is_number();
@@ -171,20 +178,23 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
   if (material && key == "type") {
     // The scattering model: the form then shows that model's parameters.
     auto* box = new QComboBox;
-    for (const char* type : kMaterialTypes) box->addItem(QString::fromLatin1(type));
-    box->setCurrentText(QString::fromStdString(value.get<std::string>()));
+    for (const char* type : kMaterialTypes)
+      box->addItem(valueLabel(type), QString::fromLatin1(type));
+    box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
     box->setToolTip(
         tr("Scattering model: diffuse (Lambert), mirror (reflection and "
            "refraction rates), dielectric (Fresnel glass), glossy (Phong)"));
     connect(box, QOverload<int>::of(&QComboBox::activated), this,
             [this, place, box, undoText](int) {
-              setValue(place, json(box->currentText().toStdString()).dump(), undoText);
+              setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
             });
     return box;
   } else if (kReadOnlyKeys.count(key) || value.is_object() ||
              (value.is_array() && !value.empty() && value[0].is_array() && key == "matrix")) {
-    auto* text = new QLabel(value.is_string() ? QString::fromStdString(value.get<std::string>())
-                                              : QString::fromStdString(value.dump()));
+    // A read-only word of the format (the shape's type) in the window's language.
+    auto* text = new QLabel(!value.is_string() ? QString::fromStdString(value.dump())
+                            : key == "type"    ? valueLabel(value.get<std::string>().c_str())
+                                               : QString::fromStdString(value.get<std::string>()));
     text->setWordWrap(true);
     return text;
   } else if (value.is_boolean()) {
@@ -195,11 +205,11 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
     return box;
   } else if (value.is_string() && kChoices.count(key)) {
     auto* box = new QComboBox;
-    for (const char* c : kChoices.at(key)) box->addItem(QString::fromLatin1(c));
-    box->setCurrentText(QString::fromStdString(value.get<std::string>()));
+    for (const char* c : kChoices.at(key)) box->addItem(valueLabel(c), QString::fromLatin1(c));
+    box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
     connect(box, QOverload<int>::of(&QComboBox::activated), this,
             [this, place, box, undoText](int) {
-              setValue(place, json(box->currentText().toStdString()).dump(), undoText);
+              setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
             });
     return box;
   } else if (value.is_number_integer() || (value.is_number() && kIntegerKeys.count(key))) {

@@ -4,6 +4,8 @@
 #include "WindowTest.h"
 
 #include "ImageView.h"
+#include "Language.h"
+#include "LessonPanel.h"
 #include "RenderJob.h"
 #include "RenderPanel.h"
 
@@ -12,8 +14,11 @@
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneEdit.h"
 
+#include <QAbstractSpinBox>
+#include <QGroupBox>
 #include <QLabel>
 #include <QProgressBar>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QTabWidget>
@@ -271,6 +276,70 @@ TEST_F(WindowRenderTest, 08_ABushyTraceIsCancelledAndTheWindowStaysAlive) {
   rays.setAlgorithm(Algorithm::RayCasting);
   rays.trace();
   EXPECT_FALSE(rays.tree().truncated);
+}
+
+/// Every text the user can read in `root`: labels, buttons, titles, tooltips, placeholder
+/// texts, combo box items, tabs and the actions of every menu.
+QStringList visibleTexts(QWidget* root) {
+  QStringList texts;
+  QList<QWidget*> widgets = root->findChildren<QWidget*>();
+  widgets.prepend(root);
+  for (QWidget* w : widgets) {
+    texts << w->toolTip() << w->windowTitle();
+    if (auto* l = qobject_cast<QLabel*>(w)) texts << l->text();
+    if (auto* b = qobject_cast<QAbstractButton*>(w)) texts << b->text();
+    if (auto* g = qobject_cast<QGroupBox*>(w)) texts << g->title();
+    if (auto* e = qobject_cast<QLineEdit*>(w)) texts << e->placeholderText();
+    if (auto* c = qobject_cast<QComboBox*>(w))
+      for (int i = 0; i < c->count(); ++i) texts << c->itemText(i);
+    if (auto* t = qobject_cast<QTabWidget*>(w))
+      for (int i = 0; i < t->count(); ++i) texts << t->tabText(i);
+    if (auto* sb = qobject_cast<QAbstractSpinBox*>(w)) texts << sb->specialValueText();
+    for (QAction* a : w->actions()) texts << a->text() << a->toolTip();
+  }
+  return texts;
+}
+
+TEST_F(WindowRenderTest, 09_TheChineseWindowHasNoEnglishSentenceLeft) {
+  // A window built in Chinese, with an object selected, a tree, an image and a lesson.
+  ASSERT_TRUE(installLanguage(kChinese)) << "the translation (.qm) was not found";
+  MainWindow window(defaultScene());
+  window.show();
+  window.selectObject(defaultScene().findObject("red sphere"));
+  window.rayTreePanel()->setPixel(90, 100);
+  window.rayTreePanel()->trace();
+  window.openLesson(QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/04-whitted.json"), false);
+  settle();
+  QStringList texts = visibleTexts(&window);
+  for (QMenu* menu : window.findChildren<QMenu*>())
+    for (QAction* a : menu->actions()) texts << a->text() << a->toolTip();
+  texts << window.statusBar()->currentMessage();
+
+  // Names from the scene and the lesson are data; these words stay as they are in Chinese.
+  QStringList allowed = {QStringLiteral("English"), QStringLiteral("RayLab"),
+                         QStringLiteral("sRGB"),    QStringLiteral("spp"),
+                         QStringLiteral("GGX"),     QStringLiteral("Beckmann")};
+  for (const Scene& s : {defaultScene(), window.document().scene()}) {
+    allowed << QString::fromStdString(s.name);
+    for (const SceneObject& o : s.objects) allowed << QString::fromStdString(o.name);
+    for (const Material& m : s.materials) allowed << QString::fromStdString(m.name);
+  }
+  // Longer names first ("green wall" before "green").
+  std::sort(allowed.begin(), allowed.end(),
+            [](const QString& a, const QString& b) { return a.size() > b.size(); });
+  const QRegularExpression cjk(QStringLiteral("[\\x{4e00}-\\x{9fff}]"));
+  const QRegularExpression word(QStringLiteral("[A-Za-z]{3,}"));
+  QStringList english;
+  for (QString text : texts) {
+    // Texts with Chinese are translated; file paths are data.
+    if (text.isEmpty() || text.contains(cjk) || text.startsWith(QLatin1Char('/'))) continue;
+    for (const QString& a : allowed) text.remove(a);
+    if (text.contains(word)) english << text;
+  }
+  english.removeDuplicates();
+  EXPECT_TRUE(english.isEmpty()) << "texts without a Chinese translation:\n  "
+                                 << english.join(QStringLiteral("\n  ")).toStdString();
+  installLanguage(kEnglish);
 }
 
 }  // namespace
