@@ -2,6 +2,273 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>InspectorWords</name>
+    <message>
+        <source>origin</source>
+        <translation>起点</translation>
+    </message>
+    <message>
+        <source>direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>blocked at</source>
+        <translation>被遮挡于</translation>
+    </message>
+    <message>
+        <source>hit point</source>
+        <translation>交点</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>normal</source>
+        <translation>法线</translation>
+    </message>
+    <message>
+        <source>object</source>
+        <translation>物体</translation>
+    </message>
+    <message>
+        <source>material</source>
+        <translation>材质</translation>
+    </message>
+    <message>
+        <source>parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>light point</source>
+        <translation>光源上的点</translation>
+    </message>
+    <message>
+        <source>hit</source>
+        <translation>交点</translation>
+    </message>
+    <message>
+        <source>weight</source>
+        <translation>权重</translation>
+    </message>
+    <message>
+        <source>pdf</source>
+        <translation>概率密度 pdf</translation>
+    </message>
+    <message>
+        <source>throughput</source>
+        <translation>通量权重</translation>
+    </message>
+    <message>
+        <source>emitted</source>
+        <translation>自发光</translation>
+    </message>
+    <message>
+        <source>radiance</source>
+        <translation>辐射亮度</translation>
+    </message>
+    <message>
+        <source>energy</source>
+        <translation>能量</translation>
+    </message>
+    <message>
+        <source>ended</source>
+        <translation>结束方式</translation>
+    </message>
+    <message>
+        <source>exact</source>
+        <translation>精确值</translation>
+    </message>
+    <message>
+        <source>double</source>
+        <translation>双精度</translation>
+    </message>
+    <message>
+        <source>bound</source>
+        <translation>误差界</translation>
+    </message>
+    <message>
+        <source>margin</source>
+        <translation>判定余量</translation>
+    </message>
+    <message>
+        <source>cosine</source>
+        <translation>夹角余弦</translation>
+    </message>
+    <message>
+        <source>verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>differs from double precision:</source>
+        <translation>与双精度结果不同：</translation>
+    </message>
+    <message>
+        <source>agrees with double precision</source>
+        <translation>与双精度结果一致</translation>
+    </message>
+    <message>
+        <source>none (deterministic)</source>
+        <translation>无（确定性方向）</translation>
+    </message>
+    <message>
+        <source>(Schlick&apos;s Fresnel)</source>
+        <translation>（Schlick 近似菲涅耳）</translation>
+    </message>
+    <message>
+        <source>rough_dielectric</source>
+        <translation>粗糙电介质</translation>
+    </message>
+    <message>
+        <source>rough_conductor</source>
+        <translation>粗糙导体</translation>
+    </message>
+    <message>
+        <source>refraction rate</source>
+        <translation>折射系数</translation>
+    </message>
+    <message>
+        <source>reflection rate</source>
+        <translation>反射系数</translation>
+    </message>
+    <message>
+        <source>specular share</source>
+        <translation>镜面反射份额</translation>
+    </message>
+    <message>
+        <source>Phong exponent</source>
+        <translation>Phong 指数</translation>
+    </message>
+    <message>
+        <source>not traced yet</source>
+        <translation>尚未追踪</translation>
+    </message>
+    <message>
+        <source>ThroughVertex</source>
+        <translation>穿过顶点</translation>
+    </message>
+    <message>
+        <source>ThroughEdge</source>
+        <translation>穿过棱边</translation>
+    </message>
+    <message>
+        <source>blinn_phong</source>
+        <translation>Blinn–Phong</translation>
+    </message>
+    <message>
+        <source>attenuation</source>
+        <translation>衰减</translation>
+    </message>
+    <message>
+        <source>dielectric</source>
+        <translation>电介质</translation>
+    </message>
+    <message>
+        <source>(Fresnel)</source>
+        <translation>（菲涅耳）</translation>
+    </message>
+    <message>
+        <source>shininess</source>
+        <translation>高光指数</translation>
+    </message>
+    <message>
+        <source>(robust)</source>
+        <translation>（稳健）</translation>
+    </message>
+    <message>
+        <source>, a light</source>
+        <translation>，是光源</translation>
+    </message>
+    <message>
+        <source>roughness</source>
+        <translation>粗糙度</translation>
+    </message>
+    <message>
+        <source>diffuse</source>
+        <translation>漫反射</translation>
+    </message>
+    <message>
+        <source>Tangent</source>
+        <translation>相切</translation>
+    </message>
+    <message>
+        <source>ambient</source>
+        <translation>环境光</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>per sr</source>
+        <translation>每球面度</translation>
+    </message>
+    <message>
+        <source>albedo</source>
+        <translation>反照率</translation>
+    </message>
+    <message>
+        <source>mirror</source>
+        <translation>镜面</translation>
+    </message>
+    <message>
+        <source>glossy</source>
+        <translation>光泽反射</translation>
+    </message>
+    <message>
+        <source>colour</source>
+        <translation>颜色</translation>
+    </message>
+    <message>
+        <source>emits</source>
+        <translation>自发光</translation>
+    </message>
+    <message>
+        <source>phong</source>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <source>tint</source>
+        <translation>色调</translation>
+    </message>
+    <message>
+        <source>Miss</source>
+        <translation>未击中</translation>
+    </message>
+    <message>
+        <source>Hit</source>
+        <translation>击中</translation>
+    </message>
+    <message>
+        <source>Ray #%1: %2 ray, depth %3</source>
+        <translation>光线 #%1：%2光线，深度 %3</translation>
+    </message>
+    <message>
+        <source>, child of #%1</source>
+        <translation>，父光线为 #%1</translation>
+    </message>
+    <message>
+        <source>, time %1</source>
+        <translation>，时刻 %1</translation>
+    </message>
+    <message>
+        <source>Exact oracle (CGAL) on &apos;%1&apos;:</source>
+        <translation>精确判定器（CGAL）对“%1”的检验：</translation>
+    </message>
+    <message>
+        <source>Exact oracle: not computed</source>
+        <translation>精确判定器：未计算</translation>
+    </message>
+    <message>
+        <source>Exact oracle: no hit to check</source>
+        <translation>精确判定器：没有需要检验的交点</translation>
+    </message>
+    <message>
+        <source>|t error|</source>
+        <translation>|t 误差|</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>R %1  G %2  B %3 (sRGB %4, %5, %6)</source>

@@ -1,5 +1,7 @@
 #include "InspectorPanel.h"
 
+#include "InspectorWords.h"
+
 #include "raylab/core/RayInspector.h"
 #include "raylab/vis/SceneView.h"
 
@@ -78,8 +80,10 @@ void InspectorPanel::showSegment(int id) {
     return;
   }
   const RayInspection inspection = RayInspector::inspect(m_view.scene(), m_view.rayTree(), id);
-  m_text->setPlainText(
-      QString::fromStdString(inspection.rayText() + "\n" + inspection.oracleText()));
+  std::vector<std::string> names;
+  for (const SceneObject& object : m_view.scene().objects) names.push_back(object.name);
+  m_text->setPlainText(inspectorText(inspection.rayText() + "\n" + inspection.oracleText(),
+                                     m_view.rayTree(), id, names));
 }
 
 QString InspectorPanel::text() const { return m_text->toPlainText(); }

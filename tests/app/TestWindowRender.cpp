@@ -4,6 +4,7 @@
 #include "WindowTest.h"
 
 #include "ImageView.h"
+#include "InspectorPanel.h"
 #include "Language.h"
 #include "LessonPanel.h"
 #include "RenderJob.h"
@@ -314,6 +315,14 @@ TEST_F(WindowRenderTest, 09_TheChineseWindowHasNoEnglishSentenceLeft) {
   for (QMenu* menu : window.findChildren<QMenu*>())
     for (QAction* a : menu->actions()) texts << a->text() << a->toolTip();
   texts << window.statusBar()->currentMessage();
+  // The inspector's field names and words, ray by ray (names in quotes are data).
+  for (int id = 0; id < int(window.rayTreePanel()->tree().segments.size()); ++id) {
+    window.rayTreePanel()->selectSegment(id);
+    for (QString line : window.inspectorPanel()->text().split(QLatin1Char('\n'))) {
+      line.remove(QRegularExpression(QStringLiteral("“[^”]*”")));
+      if (!line.startsWith(QStringLiteral("    "))) texts << line;  // core's oracle notes
+    }
+  }
 
   // Names from the scene and the lesson are data; these words stay as they are in Chinese.
   QStringList allowed = {QStringLiteral("English"), QStringLiteral("RayLab"),
