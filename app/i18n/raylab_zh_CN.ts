@@ -1821,6 +1821,14 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Stop the render, the comparison and a trace; what is done so far stays</source>
         <translation>停止渲染、对比和追踪；已完成的部分会保留</translation>
     </message>
+    <message>
+        <source>Take back the last edit (the menu names it)</source>
+        <translation>撤销上一次编辑（菜单中写明是哪一次）</translation>
+    </message>
+    <message>
+        <source>Do again the edit just taken back</source>
+        <translation>重做刚刚撤销的编辑</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::PropertiesPanel</name>

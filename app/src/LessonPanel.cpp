@@ -5,6 +5,7 @@
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QDoubleValidator>
+#include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -27,15 +28,26 @@ QString text(const LocalText& t, Language language) {
   return QString::fromStdString(t.in(language));
 }
 
-/// A label that wraps, with its font `scale` times the panel's.
+/// The property holding a widget's font size relative to the panel's.
+constexpr const char* kFontScale = "raylabFontScale";
+
+/// `font` `scale` times as large (point or pixel sized).
+QFont scaled(QFont font, double scale) {
+  if (font.pointSizeF() > 0)
+    font.setPointSizeF(font.pointSizeF() * scale);
+  else if (font.pixelSize() > 0)
+    font.setPixelSize(int(font.pixelSize() * scale + 0.5));
+  return font;
+}
+
+/// A label that wraps, with its font `scale` times the panel's (kept so when the panel's
+/// font changes, e.g. in presentation mode).
 QLabel* wrapping(double scale = 1.0, bool bold = false) {
   auto* label = new QLabel;
   label->setWordWrap(true);
   label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  QFont font = label->font();
-  font.setPointSizeF(font.pointSizeF() * scale);
-  font.setBold(bold);
-  label->setFont(font);
+  label->setProperty(kFontScale, scale);
+  label->setProperty("raylabBold", bold);
   return label;
 }
 
@@ -140,6 +152,22 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     }
   });
   setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
+  applyFontScales();
+}
+
+void LessonPanel::applyFontScales() {
+  for (QWidget* w : findChildren<QWidget*>()) {
+    const QVariant scale = w->property(kFontScale);
+    if (!scale.isValid()) continue;
+    QFont f = scaled(font(), scale.toDouble());
+    f.setBold(w->property("raylabBold").toBool());
+    w->setFont(f);
+  }
+}
+
+void LessonPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) applyFontScales();
 }
 
 void LessonPanel::setLesson(std::shared_ptr<const Lesson> lesson) {
@@ -224,9 +252,8 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   m_number->setVisible(!choice);
   for (std::size_t i = 0; choice && i < q.choices.size(); ++i) {
     auto* b = new QRadioButton(text(q.choices[i], m_language));
-    QFont font = b->font();
-    font.setPointSizeF(font.pointSizeF() * 1.15);
-    b->setFont(font);
+    b->setProperty(kFontScale, 1.15);
+    b->setFont(scaled(font(), 1.15));
     m_choices->addButton(b, int(i));
     m_choicesLayout->addWidget(b);
   }

@@ -71,7 +71,12 @@ class LessonPanel : public QWidget {
   /// The lesson's language changed.
   void languageChanged();
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  /// The larger fonts of the title, text and question, relative to the panel's font.
+  void applyFontScales();
   void showQuestion(const LessonStep& step);
   void showVerdict(bool right, const QString& expected);
   void refresh();

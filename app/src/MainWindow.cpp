@@ -272,8 +272,10 @@ void MainWindow::buildMenus() {
   QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = m_document->undoStack().createUndoAction(this, tr("&Undo"));
   undo->setShortcuts({QKeySequence::Undo});
+  undo->setToolTip(tr("Take back the last edit (the menu names it)"));
   QAction* redo = m_document->undoStack().createRedoAction(this, tr("&Redo"));
   redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence::Redo});
+  redo->setToolTip(tr("Do again the edit just taken back"));
   editMenu->addAction(undo);
   editMenu->addAction(redo);
   editMenu->addSeparator();
@@ -584,7 +586,10 @@ void MainWindow::setPresentationMode(bool on) {
     m_raysDock->show();
     (m_lessonPanel->lesson() ? m_lessonDock : m_raysDock)->raise();
     QFont large = QApplication::font();
-    large.setPointSizeF(large.pointSizeF() * kPresentationFontScale);
+    if (large.pointSizeF() > 0)
+      large.setPointSizeF(large.pointSizeF() * kPresentationFontScale);
+    else
+      large.setPixelSize(int(large.pixelSize() * kPresentationFontScale + 0.5));
     setFont(large);
     m_rayPanel->setLineScale(kPresentationLineScale);
     fitScrollingDocks();

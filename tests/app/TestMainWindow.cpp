@@ -4,6 +4,8 @@
 // with GLX (QVTKOpenGLNativeWidget needs real OpenGL): runs under xvfb with xcb.
 #include "WindowTest.h"
 
+#include <QMenuBar>
+
 namespace raylab::app {
 namespace {
 
@@ -524,6 +526,70 @@ TEST_F(MainWindowTest, 19_UnsavedChangesAreAskedAbout) {
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), SceneIO::serialize(defaultScene()));
   EXPECT_FALSE(m_window->isWindowModified());
   EXPECT_FALSE(m_window->document().undoStack().canUndo());
+}
+
+TEST_F(MainWindowTest, 20_PresentationModeAndItsKeys) {
+  RayTreePanel& panel = traceCube();
+  const double font = m_window->rayTreePanel()->font().pointSizeF();
+  const QString textBefore = m_window->rayTreePanel()->font().toString();
+  activate();
+  QTest::keyClick(m_window.get(), Qt::Key_F11);
+  settle();
+  ASSERT_TRUE(m_window->presentationMode());
+  EXPECT_GE(m_window->rayTreePanel()->font().pointSizeF(), 1.5 * font) << "fonts not scaled";
+  EXPECT_EQ(panel.lineScale(), 2.0) << "rays not thicker";
+  EXPECT_FALSE(m_window->inspectorPanel()->isVisible()) << "developer panels still shown";
+  EXPECT_FALSE(m_window->editPanel()->isVisible());
+  EXPECT_TRUE(panel.isVisible());
+  // The animation keys: Home, Right steps, Left steps back, End, Space plays.
+  m_window->viewWidget()->setFocus();
+  QTest::keyClick(m_window.get(), Qt::Key_Home);
+  EXPECT_EQ(panel.frame(), 0);
+  QTest::keyClick(m_window.get(), Qt::Key_Right);
+  const int afterRight = panel.frame();
+  EXPECT_GT(afterRight, 0);
+  QTest::keyClick(m_window.get(), Qt::Key_Right);
+  EXPECT_GT(panel.frame(), afterRight);
+  QTest::keyClick(m_window.get(), Qt::Key_Left);
+  EXPECT_EQ(panel.frame(), afterRight);
+  QTest::keyClick(m_window.get(), Qt::Key_End);
+  EXPECT_EQ(panel.frame(), panel.frameCount() - 1);
+  QTest::keyClick(m_window.get(), Qt::Key_Home);
+  QTest::keyClick(m_window.get(), Qt::Key_Space);
+  EXPECT_TRUE(panel.playing());
+  const double speed = panel.speed();
+  QTest::keyClick(m_window.get(), Qt::Key_Plus);
+  EXPECT_GT(panel.speed(), speed);
+  QTest::keyClick(m_window.get(), Qt::Key_Space);
+  EXPECT_FALSE(panel.playing());
+  // F11 again: the layout and the font are back.
+  QTest::keyClick(m_window.get(), Qt::Key_F11);
+  settle();
+  EXPECT_FALSE(m_window->presentationMode());
+  EXPECT_EQ(m_window->rayTreePanel()->font().toString(), textBefore);
+  EXPECT_EQ(panel.lineScale(), 1.0);
+}
+
+TEST_F(MainWindowTest, 21_EveryActionHasATooltipAndTheShortcutTableListsThem) {
+  const QList<QStringList> rows = m_window->shortcutTable();
+  int withKeys = 0;
+  for (QAction* menu : m_window->menuBar()->actions()) {
+    if (!menu->menu()) continue;
+    for (QAction* a : menu->menu()->actions()) {
+      if (a->isSeparator() || a->menu()) continue;
+      const QString text = a->text().remove(QLatin1Char('&'));
+      EXPECT_FALSE(a->toolTip().isEmpty() || a->toolTip() == text)
+          << "no tooltip: " << text.toStdString();
+      if (!a->shortcuts().isEmpty()) ++withKeys;
+    }
+  }
+  EXPECT_GE(rows.size(), withKeys) << "the table misses actions with keys";
+  bool f11 = false, space = false;
+  for (const QStringList& row : rows) {
+    f11 = f11 || row[1].contains(QStringLiteral("F11"));
+    space = space || row[1].contains(QStringLiteral("Space"));
+  }
+  EXPECT_TRUE(f11 && space);
 }
 
 }  // namespace
