@@ -1881,10 +1881,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>渲染设置</translation>
     </message>
     <message>
-        <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong)</source>
-        <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）</translation>
-    </message>
-    <message>
         <source>…</source>
         <translation>…</translation>
     </message>
@@ -1903,6 +1899,46 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>%1 (%2 in the scene file)</source>
         <translation>%1（场景文件中的 %2）</translation>
+    </message>
+    <message>
+        <source>Diffuse coefficient kd of the Phong model, in [0, 1]</source>
+        <translation>漫反射系数 kd（Phong 模型），取值 [0, 1]</translation>
+    </message>
+    <message>
+        <source>Roughness alpha: the width of the microfacet distribution (&gt; 0, about the RMS slope of the microfacets)</source>
+        <translation>粗糙度 α：微表面法线分布的宽度（&gt; 0，约等于微表面斜率的均方根）</translation>
+    </message>
+    <message>
+        <source>Index of refraction of the medium on the outer side of this surface (1 for air)</source>
+        <translation>外侧折射率：该表面外侧（法线所指一侧）介质的折射率（空气为 1）</translation>
+    </message>
+    <message>
+        <source>Ambient coefficient times the ambient light, ka Ia (RGB, &gt;= 0); the surface returns ambient times colour</source>
+        <translation>环境光系数乘以环境光强度，即 ka·Ia（RGB，≥ 0）；表面返回的环境光为该值乘以颜色</translation>
+    </message>
+    <message>
+        <source>Attenuation coefficients [c, l, q]: light falls off with distance d as 1 / (c + l d + q d^2); [0, 0, 1] is the physical 1 / d^2, [1, 0, 0] no falloff</source>
+        <translation>衰减系数 [c, l, q]：光强随距离 d 按 1 / (c + l·d + q·d²) 衰减；[0, 0, 1] 即物理上的 1 / d²，[1, 0, 0] 表示不衰减</translation>
+    </message>
+    <message>
+        <source>Visible normal sampling: sample only the microfacet normals the viewer sees (Heitz 2018; GGX only)</source>
+        <translation>可见法线采样：只对观察方向可见的微表面法线进行采样（Heitz 2018；仅适用于 GGX）</translation>
+    </message>
+    <message>
+        <source>Fresnel reflectance: exact (the Fresnel equations) or schlick (Schlick&apos;s approximation)</source>
+        <translation>菲涅耳反射率：exact（精确，按菲涅耳公式计算）或 schlick（Schlick 近似）</translation>
+    </message>
+    <message>
+        <source>Microfacet distribution: ggx (Trowbridge-Reitz, long tails) or beckmann (Gaussian slopes)</source>
+        <translation>微表面分布：ggx（GGX，即 Trowbridge-Reitz 分布，拖尾较长）或 beckmann（Beckmann 分布，斜率服从高斯分布）</translation>
+    </message>
+    <message>
+        <source>Ray offset: secondary and shadow rays start past the hit point&apos;s error bound; switched off, shadow acne appears</source>
+        <translation>光线偏移：次级光线和阴影光线从交点的误差界之外出发；关闭后会出现阴影失真（shadow acne）</translation>
+    </message>
+    <message>
+        <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn&apos;s half-vector highlight), rough_conductor (microfacet metal), rough_dielectric (microfacet glass)</source>
+        <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）、phong（经典 Phong 光照模型：环境光、漫反射、镜面反射）、blinn_phong（采用 Blinn 半程向量高光的 Phong 模型）、rough_conductor（粗糙导体，微表面金属）、rough_dielectric（粗糙电介质，微表面玻璃）</translation>
     </message>
 </context>
 <context>

@@ -45,8 +45,51 @@ const std::set<std::string> kReadOnlyKeys = {"name", "file", "matrix", "type"};
 /// Choices of the keys that take one word.
 const std::map<std::string, std::vector<const char*>> kChoices = {
     {"algorithm", {"raycast", "whitted", "distributed", "path"}},
+    {"fresnel", {"exact", "schlick"}},
+    {"distribution", {"ggx", "beckmann"}},
 };
-const std::vector<const char*> kMaterialTypes = {"diffuse", "mirror", "dielectric", "glossy"};
+const std::vector<const char*> kMaterialTypes = {
+    "diffuse", "mirror",      "dielectric",      "glossy",
+    "phong",   "blinn_phong", "rough_conductor", "rough_dielectric"};
+
+/// What a key means, for the keys a student may not know from their words (empty for
+/// the others: the form then names the key's place in the file).
+QString tipFor(const std::string& key) {
+  if (key == "diffuse")
+    return PropertiesPanel::tr("Diffuse coefficient kd of the Phong model, in [0, 1]");
+  if (key == "roughness")
+    return PropertiesPanel::tr(
+        "Roughness alpha: the width of the microfacet distribution (> 0, about the RMS slope "
+        "of the microfacets)");
+  if (key == "ior_outside")
+    return PropertiesPanel::tr(
+        "Index of refraction of the medium on the outer side of this surface (1 for air)");
+  if (key == "ambient")
+    return PropertiesPanel::tr(
+        "Ambient coefficient times the ambient light, ka Ia (RGB, >= 0); the surface returns "
+        "ambient times colour");
+  if (key == "attenuation")
+    return PropertiesPanel::tr(
+        "Attenuation coefficients [c, l, q]: light falls off with distance d as "
+        "1 / (c + l d + q d^2); [0, 0, 1] is the physical 1 / d^2, [1, 0, 0] no falloff");
+  if (key == "visible_normals")
+    return PropertiesPanel::tr(
+        "Visible normal sampling: sample only the microfacet normals the viewer sees "
+        "(Heitz 2018; GGX only)");
+  if (key == "fresnel")
+    return PropertiesPanel::tr(
+        "Fresnel reflectance: exact (the Fresnel equations) or schlick (Schlick's "
+        "approximation)");
+  if (key == "distribution")
+    return PropertiesPanel::tr(
+        "Microfacet distribution: ggx (Trowbridge-Reitz, long tails) or beckmann (Gaussian "
+        "slopes)");
+  if (key == "ray_offset")
+    return PropertiesPanel::tr(
+        "Ray offset: secondary and shadow rays start past the hit point's error bound; "
+        "switched off, shadow acne appears");
+  return {};
+}
 
 /// Words for a key ("vertical_fov" -> "vertical fov"), in the window's language
 /// (SceneWords.h lists them for the translators).
@@ -183,7 +226,10 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
     box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
     box->setToolTip(
         tr("Scattering model: diffuse (Lambert), mirror (reflection and "
-           "refraction rates), dielectric (Fresnel glass), glossy (Phong)"));
+           "refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic "
+           "Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn's "
+           "half-vector highlight), rough_conductor (microfacet metal), rough_dielectric "
+           "(microfacet glass)"));
     connect(box, QOverload<int>::of(&QComboBox::activated), this,
             [this, place, box, undoText](int) {
               setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
@@ -290,6 +336,17 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   auto* group = new QGroupBox(title);
   auto* form = new QFormLayout(group);
   const bool material = pointer.rfind("/materials/", 0) == 0;
+  // Keys the file leaves out at their default, shown all the same: the index outside a
+  // refracting surface (after its ior) and the render block's ray offset.
+  if (material && values.contains("ior") && !values.contains("ior_outside")) {
+    json withOutside = json::object();
+    for (auto it = values.begin(); it != values.end(); ++it) {
+      withOutside[it.key()] = it.value();
+      if (it.key() == "ior") withOutside["ior_outside"] = 1.0;
+    }
+    values = std::move(withOutside);
+  }
+  if (pointer == "/render" && !values.contains("ray_offset")) values["ray_offset"] = true;
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
     const std::string place = pointer + "/" + key;
@@ -298,6 +355,7 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
     const QString undoText = tr("Set %1 of %2").arg(what, title);
     QWidget* widget = makeField(key, place, value, material, undoText);
     widget->setObjectName(QString::fromStdString(place));
+    if (widget->toolTip().isEmpty()) widget->setToolTip(tipFor(key));
     if (widget->toolTip().isEmpty())
       widget->setToolTip(tr("%1 (%2 in the scene file)").arg(what, QString::fromStdString(place)));
     form->addRow(what, widget);

@@ -393,6 +393,70 @@ TEST_F(MainWindowTest, 14_EditAMaterialUndoItAndARefusedValue) {
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
 }
 
+// The materials added to the scene format are offered in the properties panel: the
+// sphere's material switched to rough_conductor shows that model's fields, its roughness
+// set through the spin box reaches the scene, a roughness the loader refuses is refused
+// with its message, and undo brings the scene back byte for byte. The render block shows
+// the ray offset, which the file leaves out while it is on.
+TEST_F(MainWindowTest, 14b_SwitchToARoughConductorAndSetItsRoughness) {
+  const std::string original = SceneIO::serialize(m_window->document().scene());
+  const int sphere = m_window->document().scene().findObject("red sphere");
+  m_window->selectObject(sphere);
+  PropertiesPanel& properties = *m_window->propertiesPanel();
+  const std::size_t material =
+      std::size_t(m_window->document().scene().objects[std::size_t(sphere)].material);
+  const std::string base = "/materials/" + std::to_string(material);
+  ASSERT_NE(m_window->document().scene().materials[material].type, MaterialType::RoughConductor);
+  auto* type = qobject_cast<QComboBox*>(properties.field(base + "/type"));
+  ASSERT_NE(type, nullptr);
+  for (const char* offered : {"phong", "blinn_phong", "rough_conductor", "rough_dielectric"})
+    EXPECT_GE(type->findText(QString::fromLatin1(offered)), 0) << offered;
+  type->setCurrentText(QStringLiteral("rough_conductor"));
+  emit type->activated(type->currentIndex());
+  settle();
+  EXPECT_EQ(m_window->document().scene().materials[material].type, MaterialType::RoughConductor);
+
+  // The form now shows the microfacet model's parameters.
+  auto* distribution = qobject_cast<QComboBox*>(properties.field(base + "/distribution"));
+  ASSERT_NE(distribution, nullptr);
+  EXPECT_EQ(distribution->currentText(), QStringLiteral("ggx"));
+  EXPECT_GE(distribution->findText(QStringLiteral("beckmann")), 0);
+  EXPECT_NE(qobject_cast<QCheckBox*>(properties.field(base + "/visible_normals")), nullptr);
+  auto* roughness = qobject_cast<QDoubleSpinBox*>(properties.field(base + "/roughness"));
+  ASSERT_NE(roughness, nullptr);
+  EXPECT_FALSE(roughness->toolTip().isEmpty());
+  roughness->setValue(0.05);
+  settle();
+  EXPECT_NEAR(m_window->document().scene().materials[material].roughness, 0.05, 1e-12);
+  const std::string rough = SceneIO::serialize(m_window->document().scene());
+
+  roughness = qobject_cast<QDoubleSpinBox*>(properties.field(base + "/roughness"));
+  ASSERT_NE(roughness, nullptr);
+  roughness->setValue(0.0);
+  settle();
+  EXPECT_TRUE(m_window->lastError().contains(
+      QStringLiteral("roughness (alpha) must be in [0.0001, 4], got 0")))
+      << m_window->lastError().toStdString();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), rough);
+
+  m_window->document().undoStack().undo();  // the roughness
+  EXPECT_NEAR(m_window->document().scene().materials[material].roughness, Material{}.roughness,
+              1e-12);
+  m_window->document().undoStack().undo();  // the type
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+  EXPECT_FALSE(m_window->document().undoStack().canUndo());
+
+  properties.showObject(-1);
+  auto* offset = qobject_cast<QCheckBox*>(properties.field("/render/ray_offset"));
+  ASSERT_NE(offset, nullptr);
+  EXPECT_TRUE(offset->isChecked());
+  offset->setChecked(false);
+  settle();
+  EXPECT_FALSE(m_window->document().scene().render.rayOffset);
+  m_window->document().undoStack().undo();
+  EXPECT_TRUE(m_window->document().scene().render.rayOffset);
+}
+
 // Simulate 2 x 2: four camera rays spread over the image, each tree equal to
 // tracePixel of its pixel (what `raylab trace --pixel` draws), shown together.
 TEST_F(MainWindowTest, 15_Simulate2x2DrawsFourTrees) {
