@@ -33,14 +33,21 @@ ImageView::ImageView(QWidget* parent) : QWidget(parent) {
   setToolTip(tr("Click a pixel to trace its ray tree in the 3D view; Ctrl+wheel zooms"));
 }
 
-void ImageView::setImage(const FloatImage& image) {
-  const bool resized = image.width != m_image.width || image.height != m_image.height;
-  m_image = image;
+QImage toPicture(const FloatImage& image) {
   const SrgbImage srgb = imageio::toSrgb(image);
-  m_picture = QImage(srgb.width, srgb.height, QImage::Format_RGB888);
+  QImage picture(srgb.width, srgb.height, QImage::Format_RGB888);
   for (int y = 0; y < srgb.height; ++y)
     std::copy_n(srgb.rgb.begin() + std::ptrdiff_t(y) * srgb.width * 3, srgb.width * 3,
-                m_picture.scanLine(y));
+                picture.scanLine(y));
+  return picture;
+}
+
+void ImageView::setImage(const FloatImage& image) { setImage(image, toPicture(image)); }
+
+void ImageView::setImage(const FloatImage& image, const QImage& picture) {
+  const bool resized = image.width != m_image.width || image.height != m_image.height;
+  m_image = image;
+  m_picture = picture;
   if (resized) updateSize();
   update();
 }

@@ -24,6 +24,9 @@ class ImageView : public QWidget {
 
   /// Shows `image` (linear radiance; drawn through the sRGB curve, clamped).
   void setImage(const FloatImage& image);
+  /// Shows `image` with its 8-bit `picture` already made by toPicture(image) (e.g. on a
+  /// render thread, so the UI thread only copies).
+  void setImage(const FloatImage& image, const QImage& picture);
   /// Forgets the image (an empty view with `hint` written in it).
   void clear(const QString& hint);
   const FloatImage& image() const { return m_image; }
@@ -74,6 +77,10 @@ class ImageView : public QWidget {
   QPoint m_marked{-1, -1};
   QPoint m_hovered{-1, -1};
 };
+
+/// The 8-bit picture an ImageView draws of `image`: the sRGB curve, clamped. Safe on any
+/// thread.
+QImage toPicture(const FloatImage& image);
 
 /// "R 0.512 G 0.031 B 0.027 (sRGB 190, 49, 46)": a pixel's linear value and its 8-bit colour.
 QString describePixel(const FloatImage& image, int x, int y);

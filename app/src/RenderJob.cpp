@@ -1,10 +1,18 @@
 #include "RenderJob.h"
 
+#include "ImageView.h"
+
 #include <QMetaObject>
 #include <QPointer>
 
 #include <atomic>
 #include <chrono>
+
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 namespace raylab::app {
 
@@ -38,6 +46,20 @@ void RenderJob::cancel() {
 namespace {
 std::atomic<int> g_running{0};  ///< Render threads running now, in every job.
 std::atomic<int> g_most{0};     ///< The most that ever ran at once.
+
+/// The nice value render threads run at: below the UI thread, so that on a machine whose
+/// every core renders the UI still runs as soon as it has work (a pass to show, a click).
+constexpr int kRenderNice = 10;
+
+/// Lowers the calling thread's scheduling priority (Linux's nice is per thread, and threads
+/// it starts inherit it: the renderer's tile threads). Best effort: elsewhere nothing.
+void lowerThreadPriority() {
+#ifdef __linux__
+  const auto tid = static_cast<id_t>(::syscall(SYS_gettid));
+  const int now = ::getpriority(PRIO_PROCESS, tid);
+  if (now < kRenderNice) ::setpriority(PRIO_PROCESS, tid, kRenderNice);
+#endif
+}
 }  // namespace
 
 int RenderJob::mostAtOnce() { return g_most.load(); }
@@ -65,6 +87,7 @@ void RenderJob::launch(Request request) {
   renderer->setProgress([r, wanted, begin, post](double, const FloatImage& image) {
     RenderProgress progress;
     progress.image = std::make_shared<const FloatImage>(image);
+    progress.picture = toPicture(image);  // here, not on the UI thread
     progress.samplesPerPixel = r->stats().samplesPerPixel;
     progress.samplesWanted = wanted;
     progress.seconds =
@@ -76,6 +99,7 @@ void RenderJob::launch(Request request) {
   worker.renderer = renderer;
   worker.generation = generation;
   worker.thread = std::thread([scene = request.scene, renderer, wanted, post] {
+    lowerThreadPriority();
     const int running = ++g_running;
     for (int most = g_most.load();
          running > most && !g_most.compare_exchange_weak(most, running);) {
@@ -89,7 +113,10 @@ void RenderJob::launch(Request request) {
       last.samplesPerPixel = stats.samplesPerPixel;
       last.seconds = stats.seconds;
       last.rays = stats.rays.total();
-      if (stats.samplesPerPixel > 0) last.image = std::make_shared<const FloatImage>(image);
+      if (stats.samplesPerPixel > 0) {
+        last.image = std::make_shared<const FloatImage>(image);
+        last.picture = toPicture(image);
+      }
       cancelled = stats.cancelled;
     } catch (const std::exception&) {
       // Renderer only throws for an empty image or spp < 1, which the loader refuses;

@@ -5,6 +5,7 @@
 #include "raylab/core/Renderer.h"
 #include "raylab/core/Scene.h"
 
+#include <QImage>
 #include <QObject>
 
 #include <memory>
@@ -20,6 +21,7 @@ struct RenderProgress {
   int samplesWanted = 0;                    ///< Samples the render stops at.
   double seconds = 0.0;                     ///< Wall-clock time since the render began.
   std::uint64_t rays = 0;                   ///< Rays traced so far, every kind.
+  QImage picture;  ///< The image's 8-bit picture (toPicture), made on the render thread.
   /// Rays per second so far (0 before any time has passed).
   double raysPerSecond() const { return seconds > 0.0 ? double(rays) / seconds : 0.0; }
 };
@@ -34,6 +36,10 @@ struct RenderProgress {
  * stopped (the old one's late passes are dropped). cancel() returns at once; the worker
  * stops before its next tile and the passes finished so far stay shown. The destructor
  * cancels and waits for the worker, so no thread outlives the job.
+ *
+ * The UI thread stays responsive while every core renders (tests/bench/BenchWindow.cpp): the
+ * render threads run at a lower priority (nice 10 on Linux), and each pass's 8-bit picture is
+ * made on the worker, so the UI thread only shows it.
  */
 class RenderJob : public QObject {
   Q_OBJECT

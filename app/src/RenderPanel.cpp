@@ -25,8 +25,10 @@ namespace raylab::app {
 
 namespace {
 
-/// Render threads: every hardware thread (the UI thread mostly sleeps).
-int renderThreads() { return std::max(1, int(std::thread::hardware_concurrency())); }
+/// Render threads when none are set: every hardware thread (the UI thread mostly sleeps).
+int renderThreads(int threads) {
+  return threads > 0 ? threads : std::max(1, int(std::thread::hardware_concurrency()));
+}
 
 /// "3.4 M": a rate with a metric prefix.
 QString rate(double perSecond) {
@@ -159,10 +161,11 @@ void RenderPanel::render() {
   settings.algorithm = algorithm();
   settings.samplesPerPixel = m_samples->value();
   m_renderedAlgorithm = settings.algorithm;
-  m_job->start(m_scene, settings, renderThreads());
-  m_progressBar->setValue(0);
-  showFigures(RenderProgress{nullptr, 0, settings.samplesPerPixel, 0.0, 0},
-              tr("Rendering with %1…").arg(algorithmLabel(settings.algorithm)));
+  m_job->start(m_scene, settings, renderThreads(m_threads));
+  setProgressValue(0);
+  RenderProgress start;
+  start.samplesWanted = settings.samplesPerPixel;
+  showFigures(start, tr("Rendering with %1…").arg(algorithmLabel(settings.algorithm)));
   emit statusChanged(tr("Rendering %1 × %2 with %3, %4 spp")
                          .arg(m_scene->camera.width)
                          .arg(m_scene->camera.height)
@@ -180,9 +183,8 @@ void RenderPanel::cancel() {
 
 void RenderPanel::showProgress(const RenderProgress& progress) {
   m_progress = progress;
-  if (progress.image) m_view->setImage(*progress.image);
-  m_progressBar->setValue(
-      int(1000.0 * progress.samplesPerPixel / std::max(1, progress.samplesWanted)));
+  if (progress.image) m_view->setImage(*progress.image, progress.picture);
+  setProgressValue(int(1000.0 * progress.samplesPerPixel / std::max(1, progress.samplesWanted)));
   showFigures(progress, tr("Rendering…"));
 }
 
@@ -190,10 +192,10 @@ void RenderPanel::ended(const RenderProgress& progress, bool cancelled) {
   ++m_rendersEnded;
   if (progress.image) {
     m_progress = progress;
-    m_view->setImage(*progress.image);
+    m_view->setImage(*progress.image, progress.picture);
   }
   showFigures(m_progress, cancelled ? tr("Cancelled") : tr("Done"));
-  if (!cancelled) m_progressBar->setValue(1000);
+  if (!cancelled) setProgressValue(1000);
   emit statusChanged(cancelled ? tr("Render cancelled at %1 spp").arg(m_progress.samplesPerPixel)
                                : tr("Rendered in %1 s").arg(progress.seconds, 0, 'f', 2));
   updateButtons();
@@ -207,6 +209,14 @@ void RenderPanel::showFigures(const RenderProgress& progress, const QString& sta
                          .arg(progress.samplesWanted)
                          .arg(progress.seconds, 0, 'f', 2)
                          .arg(rate(progress.raysPerSecond())));
+}
+
+void RenderPanel::setProgressValue(int value) {
+  // QProgressBar::setValue repaints at once, which with the 3D view's OpenGL widget in the
+  // window composes the whole window a second time in the pass: paint with the rest instead.
+  m_progressBar->setUpdatesEnabled(false);
+  m_progressBar->setValue(value);
+  m_progressBar->setUpdatesEnabled(true);  // schedules the repaint
 }
 
 void RenderPanel::updateButtons() {

@@ -8,6 +8,7 @@
 
 #include <QWidget>
 
+#include <algorithm>
 #include <memory>
 
 class QComboBox;
@@ -50,6 +51,8 @@ class RenderPanel : public QWidget {
   void setAlgorithm(Algorithm algorithm);
   void setSamplesPerPixel(int spp);
   int samplesPerPixel() const;
+  /// Render threads from the next render on; 0 (the default): every hardware thread.
+  void setThreads(int threads) { m_threads = std::max(0, threads); }
   /// True while a render runs (or waits to start).
   bool rendering() const { return m_job->busy(); }
   /// True when an image (complete or not) is shown.
@@ -83,6 +86,8 @@ class RenderPanel : public QWidget {
   void showProgress(const RenderProgress& progress);
   void ended(const RenderProgress& progress, bool cancelled);
   void updateButtons();
+  /// Moves the progress bar, repainted with the next paint of the window.
+  void setProgressValue(int value);
   void showFigures(const RenderProgress& progress, const QString& state);
 
   std::unique_ptr<RenderJob> m_job;
@@ -90,6 +95,7 @@ class RenderPanel : public QWidget {
   Algorithm m_renderedAlgorithm = Algorithm::PathTracing;  ///< Of the image shown.
   RenderProgress m_progress;
   int m_rendersEnded = 0;
+  int m_threads = 0;  ///< 0: every hardware thread.
 
   QComboBox* m_algorithm = nullptr;
   QSpinBox* m_samples = nullptr;
