@@ -21,6 +21,8 @@
 #include <QTimer>
 
 #include <algorithm>
+#include <chrono>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -192,6 +194,23 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
       QObject::connect(&render, &RenderPanel::renderEnded, &application, afterDelay);
     else
       afterDelay();
+  }
+  // The cold-start benchmark (tests/bench/BenchWindow.cpp): with RAYLAB_REPORT_FIRST_FRAME=FILE
+  // the window writes the time its 3D view's first frame reached the screen (steady clock,
+  // CLOCK_MONOTONIC, in ns) to FILE and closes.
+  const QString firstFrameFile = qEnvironmentVariable("RAYLAB_REPORT_FIRST_FRAME");
+  if (!firstFrameFile.isEmpty()) {
+    auto reported = std::make_shared<bool>(false);
+    QObject::connect(window->viewWidget(), &QOpenGLWidget::frameSwapped, &application,
+                     [&window, firstFrameFile, reported] {
+                       if (*reported) return;
+                       *reported = true;
+                       const auto now = std::chrono::steady_clock::now().time_since_epoch();
+                       std::ofstream(firstFrameFile.toStdString())
+                           << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()
+                           << '\n';
+                       window->close();
+                     });
   }
   const int qtCode = QApplication::exec();
   return exitCode != kExitOk ? exitCode : (qtCode == 0 ? kExitOk : kExitRuntimeError);
