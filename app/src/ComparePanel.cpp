@@ -1,6 +1,7 @@
 #include "ComparePanel.h"
 
 #include "Language.h"
+#include "RenderJob.h"
 #include "UiWords.h"
 
 #include "raylab/core/PixelTrace.h"
@@ -218,6 +219,7 @@ void ComparePanel::launch() {
   worker.scene = m_scene;
   worker.generation = generation;
   worker.thread = std::thread([this, generation, comparison, scene = m_scene] {
+    lowerThreadPriority();  // and its tile threads: the window stays live while comparing
     std::shared_ptr<const ComparisonResult> result;
     try {
       result = std::make_shared<const ComparisonResult>(comparison->run());

@@ -51,8 +51,8 @@ std::atomic<int> g_most{0};     ///< The most that ever ran at once.
 /// every core renders the UI still runs as soon as it has work (a pass to show, a click).
 constexpr int kRenderNice = 10;
 
-/// Lowers the calling thread's scheduling priority (Linux's nice is per thread, and threads
-/// it starts inherit it: the renderer's tile threads). Best effort: elsewhere nothing.
+}  // namespace
+
 void lowerThreadPriority() {
 #ifdef __linux__
   const auto tid = static_cast<id_t>(::syscall(SYS_gettid));
@@ -60,7 +60,6 @@ void lowerThreadPriority() {
   if (now < kRenderNice) ::setpriority(PRIO_PROCESS, tid, kRenderNice);
 #endif
 }
-}  // namespace
 
 int RenderJob::mostAtOnce() { return g_most.load(); }
 

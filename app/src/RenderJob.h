@@ -14,6 +14,11 @@
 
 namespace raylab::app {
 
+/// Lowers the calling thread's scheduling priority below the UI thread's (Linux's nice is
+/// per thread, and threads it starts inherit it: a renderer's tile threads), so that with
+/// every core rendering the window still answers at once. Best effort: elsewhere nothing.
+void lowerThreadPriority();
+
 /// What a render has reached after one progressive pass.
 struct RenderProgress {
   std::shared_ptr<const FloatImage> image;  ///< The image of the passes so far.
