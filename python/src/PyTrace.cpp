@@ -237,7 +237,8 @@ Made by raylab.trace or Stepper.tree().)")
       .def_property_readonly("seed", [](const TraceData& d) { return d.settings.seed; })
       .def_property_readonly(
           "estimate", [](const TraceData& d) { return d.trace.estimate; },
-          "The sample's radiance (exact even when the tree is truncated).")
+          "The sample's radiance: the renderer's value when the whole tree was traced; past the "
+          "ray budget (or after a cancel) the radiance of the rays traced.")
       .def_property_readonly(
           "tree_estimate", [](const TraceData& d) { return d.trace.tree.estimate(); },
           "The recorded tree's estimate: the JSON dump's 'estimate'.")
