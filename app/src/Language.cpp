@@ -14,11 +14,6 @@ namespace raylab::app {
 
 namespace {
 
-QSettings settings() {
-  return QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("RayLab"),
-                   QStringLiteral("RayLab"));
-}
-
 /// The translators installed now (owned here; removed before new ones go in).
 struct Installed {
   std::unique_ptr<QTranslator> raylab;
@@ -41,7 +36,7 @@ QStringList translationFolders() {
 
 QString chooseLanguage(const QString& requested) {
   if (requested == kEnglish || requested == kChinese) return requested;
-  const QString chosen = settings().value(QStringLiteral("language")).toString();
+  const QString chosen = raylabSettings().value(QStringLiteral("language")).toString();
   if (chosen == kEnglish || chosen == kChinese) return chosen;
   return QLocale::system().language() == QLocale::Chinese ? kChinese : kEnglish;
 }
@@ -79,10 +74,15 @@ bool installLanguage(const QString& language) {
   return true;
 }
 
+QSettings raylabSettings() {
+  return QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("RayLab"),
+                   QStringLiteral("RayLab"));
+}
+
 QString currentLanguage() { return installed().language; }
 
 void rememberLanguage(const QString& language) {
-  settings().setValue(QStringLiteral("language"), language);
+  raylabSettings().setValue(QStringLiteral("language"), language);
 }
 
 }  // namespace raylab::app

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QSettings>
 #include <QString>
 
 namespace raylab::app {
@@ -28,6 +29,10 @@ QString currentLanguage();
 
 /// Remembers `language` as the one chosen in the Language menu.
 void rememberLanguage(const QString& language);
+
+/// RayLab's settings: an INI file in the user's configuration folder (window layout,
+/// recent files, the language).
+QSettings raylabSettings();
 
 /// Where the compiled translations (.qm) are looked for, in order.
 QStringList translationFolders();

@@ -1,6 +1,7 @@
 #include "LessonPanel.h"
 
 #include "Language.h"
+#include "ScaledFont.h"
 
 #include <QButtonGroup>
 #include <QComboBox>
@@ -30,15 +31,6 @@ QString text(const LocalText& t, Language language) {
 
 /// The property holding a widget's font size relative to the panel's.
 constexpr const char* kFontScale = "raylabFontScale";
-
-/// `font` `scale` times as large (point or pixel sized).
-QFont scaled(QFont font, double scale) {
-  if (font.pointSizeF() > 0)
-    font.setPointSizeF(font.pointSizeF() * scale);
-  else if (font.pixelSize() > 0)
-    font.setPixelSize(int(font.pixelSize() * scale + 0.5));
-  return font;
-}
 
 /// A label that wraps, with its font `scale` times the panel's (kept so when the panel's
 /// font changes, e.g. in presentation mode).
@@ -159,7 +151,7 @@ void LessonPanel::applyFontScales() {
   for (QWidget* w : findChildren<QWidget*>()) {
     const QVariant scale = w->property(kFontScale);
     if (!scale.isValid()) continue;
-    QFont f = scaled(font(), scale.toDouble());
+    QFont f = scaledFont(font(), scale.toDouble());
     f.setBold(w->property("raylabBold").toBool());
     w->setFont(f);
   }
@@ -253,7 +245,7 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   for (std::size_t i = 0; choice && i < q.choices.size(); ++i) {
     auto* b = new QRadioButton(text(q.choices[i], m_language));
     b->setProperty(kFontScale, 1.15);
-    b->setFont(scaled(font(), 1.15));
+    b->setFont(scaledFont(font(), 1.15));
     m_choices->addButton(b, int(i));
     m_choicesLayout->addWidget(b);
   }

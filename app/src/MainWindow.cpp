@@ -9,6 +9,7 @@
 #include "PropertiesPanel.h"
 #include "RayTreePanel.h"
 #include "RenderPanel.h"
+#include "ScaledFont.h"
 #include "SceneDocument.h"
 #include "UiWords.h"
 
@@ -72,12 +73,6 @@ constexpr int kLessonImageSpp = 64;
 /// A lesson's comparison in the window: spp of each algorithm, or seconds of each.
 constexpr int kLessonCompareSpp = 8;
 constexpr double kLessonCompareSeconds = 1.0;
-
-/// RayLab's settings (an INI file in the user's configuration folder).
-QSettings settings() {
-  return QSettings(QSettings::IniFormat, QSettings::UserScope, QStringLiteral("RayLab"),
-                   QStringLiteral("RayLab"));
-}
 
 /// `text` with every number written with 4 significant digits, for people
 /// ("(-1.6000000000000001, 1.2, ...)" -> "(-1.6, 1.2, ...)").
@@ -585,12 +580,7 @@ void MainWindow::setPresentationMode(bool on) {
       if (dock != m_raysDock && dock != m_lessonDock) dock->hide();
     m_raysDock->show();
     (m_lessonPanel->lesson() ? m_lessonDock : m_raysDock)->raise();
-    QFont large = QApplication::font();
-    if (large.pointSizeF() > 0)
-      large.setPointSizeF(large.pointSizeF() * kPresentationFontScale);
-    else
-      large.setPixelSize(int(large.pixelSize() * kPresentationFontScale + 0.5));
-    setFont(large);
+    setFont(scaledFont(QApplication::font(), kPresentationFontScale));
     m_rayPanel->setLineScale(kPresentationLineScale);
     fitScrollingDocks();
     showFullScreen();
@@ -659,7 +649,7 @@ void MainWindow::showShortcuts() {
 }
 
 void MainWindow::saveLayout() {
-  QSettings s = settings();
+  QSettings s = raylabSettings();
   s.setValue(QStringLiteral("window/geometry"), saveGeometry());
   s.setValue(QStringLiteral("window/state"), m_presenting ? m_layoutBeforePresenting : saveState());
   s.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
@@ -671,7 +661,7 @@ void MainWindow::saveLayout() {
 }
 
 void MainWindow::restoreLayout() {
-  QSettings s = settings();
+  QSettings s = raylabSettings();
   if (s.contains(QStringLiteral("window/state"))) {
     restoreGeometry(s.value(QStringLiteral("window/geometry")).toByteArray());
     m_layoutRestored = restoreState(s.value(QStringLiteral("window/state")).toByteArray());
@@ -711,23 +701,20 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::showImageTab(QWidget* tab) {
-  if (!m_imageTabs->isVisible()) {
-    m_imageTabs->show();
-    // Half of the central area each, once the layout has made room for the tabs.
-    QTimer::singleShot(0, this, [this] {
+  const bool first = !m_imageTabs->isVisible();
+  if (first) m_imageTabs->show();
+  if (tab) m_imageTabs->setCurrentWidget(tab);
+  // The 3D view's share of the central area, in quarters: half when the tabs first show,
+  // a quarter beside the comparison (four panels need room); sized once the layout has
+  // made room for the tabs.
+  const int viewQuarters = tab == m_comparePanel ? 1 : first ? 2 : 0;
+  if (viewQuarters > 0) {
+    QTimer::singleShot(0, this, [this, viewQuarters] {
       fitSplitter();
       const int total =
           m_splitter->orientation() == Qt::Horizontal ? m_splitter->width() : m_splitter->height();
-      m_splitter->setSizes({total / 2, total - total / 2});
-    });
-  }
-  if (tab) m_imageTabs->setCurrentWidget(tab);
-  if (tab == m_comparePanel) {
-    // Four panels need room: the comparison gets three quarters of the central area.
-    QTimer::singleShot(0, this, [this] {
-      const int total =
-          m_splitter->orientation() == Qt::Horizontal ? m_splitter->width() : m_splitter->height();
-      m_splitter->setSizes({total / 4, total - total / 4});
+      const int view = total * viewQuarters / 4;
+      m_splitter->setSizes({view, total - view});
     });
   }
   if (m_imagesAction) {
@@ -1019,7 +1006,7 @@ void MainWindow::revert() {
 }
 
 void MainWindow::startUp() {
-  const QString last = settings().value(QStringLiteral("lastScene")).toString();
+  const QString last = raylabSettings().value(QStringLiteral("lastScene")).toString();
   if (last.isEmpty()) {
     statusBar()->showMessage(tr("The built-in default scene (no scene was open last time)"));
     return;
@@ -1036,7 +1023,7 @@ void MainWindow::startUp() {
 }
 
 QStringList MainWindow::recentFiles() const {
-  return settings().value(QStringLiteral("recentFiles")).toStringList();
+  return raylabSettings().value(QStringLiteral("recentFiles")).toStringList();
 }
 
 void MainWindow::rememberFile(const QString& path) {
@@ -1045,7 +1032,7 @@ void MainWindow::rememberFile(const QString& path) {
   files.removeAll(absolute);
   files.prepend(absolute);
   while (files.size() > kRecentFiles) files.removeLast();
-  QSettings s = settings();
+  QSettings s = raylabSettings();
   s.setValue(QStringLiteral("recentFiles"), files);
   s.setValue(QStringLiteral("lastScene"), absolute);
   updateRecentMenu();

@@ -3,6 +3,7 @@
 #include "raylab/core/Image.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RenderSettings.h"
+#include "raylab/core/Renderer.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
 
@@ -97,6 +98,9 @@ Vec3 toVec3(const py::handle& value, const char* what);
 py::array imageToArray(FloatImage image, const py::dtype& dtype);
 /// An H x W x 3 array (any float or integer type) as a FloatImage; ValueError otherwise.
 FloatImage arrayToImage(const py::array& array, const char* what);
+/// A render's figures as a dict: rays, rays_by_kind, spp, seconds, cancelled,
+/// time_limit_reached, non_finite_samples (render() and the comparison's algorithms).
+py::dict statsDict(const RenderStats& stats);
 
 /**
  * \brief Runs `work` on a worker thread while the calling thread, without the GIL, waits

@@ -21,19 +21,6 @@ namespace {
 /// exception unwinds through Comparison::run without leaving work behind.
 struct ComparisonStopped {};
 
-py::dict statsDict(const RenderStats& stats) {
-  py::dict byKind;
-  for (int k = 0; k < kRayKindCount; ++k)
-    byKind[toString(RayKind(k))] = stats.rays.byKind[std::size_t(k)];
-  py::dict out;
-  out["rays"] = stats.rays.total();
-  out["rays_by_kind"] = byKind;
-  out["spp"] = stats.samplesPerPixel;
-  out["seconds"] = stats.seconds;
-  out["time_limit_reached"] = stats.timeLimitReached;
-  return out;
-}
-
 py::dict seriesDict(const std::vector<ConvergencePoint>& series) {
   const py::ssize_t n = py::ssize_t(series.size());
   py::array_t<int> spp(n);

@@ -17,7 +17,16 @@
 namespace raylab::python {
 namespace {
 
-/// The figures of a render as a dict.
+/// The last progress report of the rendering thread, waiting to be handed to Python.
+struct ProgressSlot {
+  std::mutex mutex;
+  bool fresh = false;
+  double fraction = 0.0;
+  FloatImage image;
+};
+
+}  // namespace
+
 py::dict statsDict(const RenderStats& stats) {
   py::dict byKind;
   for (int k = 0; k < kRayKindCount; ++k)
@@ -32,16 +41,6 @@ py::dict statsDict(const RenderStats& stats) {
   out["non_finite_samples"] = stats.nonFiniteSamples;
   return out;
 }
-
-/// The last progress report of the rendering thread, waiting to be handed to Python.
-struct ProgressSlot {
-  std::mutex mutex;
-  bool fresh = false;
-  double fraction = 0.0;
-  FloatImage image;
-};
-
-}  // namespace
 
 void bindRender(py::module_& m) {
   m.def(
