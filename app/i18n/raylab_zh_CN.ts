@@ -2219,6 +2219,26 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
         <source>Tracing… (Cancel stops it)</source>
         <translation>正在追踪…（按“取消”可停止）</translation>
     </message>
+    <message>
+        <source>Trace this many samples of the pixel, from the sample above on, and draw them together: with a lens, the camera rays form the pixel&apos;s bundle</source>
+        <translation>从上面选定的采样起，追踪这个像素的这么多个采样，并把它们画在一起：有透镜时，这些相机光线构成该像素的光线束</translation>
+    </message>
+    <message>
+        <source>Samples drawn</source>
+        <translation>同时绘制的采样数</translation>
+    </message>
+    <message>
+        <source>Every hit along the ray</source>
+        <translation>光线上的所有交点</translation>
+    </message>
+    <message>
+        <source>Mark every surface the selected ray (else the camera ray) crosses, not only the first: green where it enters a solid, red where it leaves, yellow on an open surface</source>
+        <translation>标出选中的光线（未选中时为相机光线）穿过的每一个表面，而不只是第一个：进入实体处为绿色，离开处为红色，穿过开放曲面处为黄色</translation>
+    </message>
+    <message>
+        <source>%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays</source>
+        <translation>%1：像素 (%2, %3)，第 %4 到第 %5 个采样画在一起，共 %6 条光线</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::RenderPanel</name>

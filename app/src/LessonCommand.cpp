@@ -133,7 +133,7 @@ struct HandoutWords {
   const char* notes;
   const char* inspector;
   const char* missing;
-  const char* samplesMissing;
+  const char* crossings;
 };
 const HandoutWords& wordsIn(Language language) {
   static const HandoutWords en{"Step",
@@ -144,7 +144,7 @@ const HandoutWords& wordsIn(Language language) {
                                "Teacher's notes",
                                "The selected ray in the inspector",
                                "This step needs a feature still to come",
-                               "the point cloud of the sampler's directions"};
+                               "Every surface the ray crosses"};
   static const HandoutWords zh{"第",
                                "问题",
                                "教师答案",
@@ -153,7 +153,7 @@ const HandoutWords& wordsIn(Language language) {
                                "教师备注",
                                "检查器中选中的光线",
                                "本步骤需要一个尚未实现的功能",
-                               "采样方向的点云"};
+                               "光线穿过的所有表面"};
   return language == Language::Chinese ? zh : en;
 }
 
@@ -199,23 +199,37 @@ struct StepPicture {
   SrgbImage image;
   std::string inspectorText;  ///< Inspector view: the selected ray's lines.
   std::string note;           ///< A missing feature, said in the handout.
+  std::string crossingsText;  ///< all_hits: the crossings marked, one line each.
 };
 
 /// The 3D view of the step's scene, with its pixel's tree when it has one (and the
 /// selected ray in the inspector view).
-StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool inspector) {
+StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool inspector,
+                         Language language) {
   const Scene& scene = *step.scene;
   vis::SceneView view(scene);
   StepPicture result;
   if (step.pixelX && step.pixelY) {
-    const PixelTrace trace =
-        tracePixel(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample);
-    view.setRayTree(trace.tree, styleOf(step));
-    if (const auto frame = revealOf(step, trace.tree)) view.setReveal(*frame);
+    // One sample's tree, or a bundle of the pixel's samples drawn together.
+    const RayTree tree =
+        step.bundle > 1
+            ? traceBundle(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample,
+                          step.bundle)
+                  .combined
+            : tracePixel(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample).tree;
+    view.setRayTree(tree, styleOf(step));
+    if (const auto frame = revealOf(step, tree)) view.setReveal(*frame);
+    const int id = inspector ? step.selectRay.value_or(0) : 0;
     if (inspector) {
-      const int id = step.selectRay.value_or(0);
       view.setSelectedSegment(id);
-      result.inspectorText = RayInspector::inspect(scene, trace.tree, id).rayText();
+      result.inspectorText = RayInspector::inspect(scene, tree, id).rayText();
+    }
+    if (step.allHits) {
+      const RaySegment& ray = tree.segments.at(std::size_t(id));
+      const std::vector<SceneCrossing> crossings =
+          sceneCrossings(scene, ray.origin, ray.direction, ray.time);
+      view.setCrossings(crossings, ray.origin, ray.direction);
+      result.crossingsText = crossingsText(scene, crossings, language == Language::Chinese);
     }
   }
   const double aspect = double(size.first) / size.second;
@@ -223,6 +237,16 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
     view.setViewCamera(vis::behindCameraView(scene, aspect));
   else
     view.resetViewCamera(aspect);
+  result.image = view.renderOffscreen(size.first, size.second);
+  return result;
+}
+
+/// The samples view: the sampler's directions as a point cloud over the surface.
+StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size) {
+  vis::SceneView view(*step.scene);
+  const LessonSamples samples = step.samples.value_or(LessonSamples{});
+  view.setSampleCloud(samples.directions(), samples.sampler == LessonSamples::Sampler::Sphere);
+  StepPicture result;
   result.image = view.renderOffscreen(size.first, size.second);
   return result;
 }
@@ -278,7 +302,7 @@ StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size) {
     }
     view.setRayTrees(scene, trees, x, y);
   }
-  return {view.renderOffscreen(size.first, size.second), {}, {}};
+  return {view.renderOffscreen(size.first, size.second), {}, {}, {}};
 }
 
 StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size) {
@@ -287,7 +311,7 @@ StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size) {
   vis::ConvergencePlot plot(result, step.measure == LessonMeasure::Time
                                         ? vis::ConvergenceAxis::Time
                                         : vis::ConvergenceAxis::Samples);
-  return {plot.renderOffscreen(size.first, size.second), {}, {}};
+  return {plot.renderOffscreen(size.first, size.second), {}, {}, {}};
 }
 
 /// The picture of one step, by its view. A step needing a feature RayLab lacks (and the
@@ -296,16 +320,12 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
                         Language language) {
   const auto picture = size.value_or(kDefaultPicture);
   const HandoutWords& words = wordsIn(language);
-  std::vector<std::string> missing = step.needs;
-  if (step.view == LessonView::Samples) missing.insert(missing.begin(), "samples-view");
+  const std::vector<std::string>& missing = step.needs;
   if (!missing.empty()) {
-    StepPicture result = scenePicture(step, picture, false);
+    StepPicture result = scenePicture(step, picture, false, language);
     result.note = std::string(words.missing) + (language == Language::Chinese ? "：" : ": ");
     for (std::size_t i = 0; i < missing.size(); ++i)
       result.note += (i ? ", `" : "`") + missing[i] + "`";
-    if (step.view == LessonView::Samples)
-      result.note += std::string(language == Language::Chinese ? "（" : " (") +
-                     words.samplesMissing + (language == Language::Chinese ? "）" : ")");
     result.note += language == Language::Chinese ? "。此处显示的是场景视图。"
                                                  : ". The picture shows the scene view instead.";
     return result;
@@ -318,9 +338,11 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
     case LessonView::Plot:
       return plotPicture(step, picture);
     case LessonView::Inspector:
-      return scenePicture(step, picture, true);
+      return scenePicture(step, picture, true, language);
+    case LessonView::Samples:
+      return samplesPicture(step, picture);
     default:
-      return scenePicture(step, picture, false);
+      return scenePicture(step, picture, false, language);
   }
 }
 
@@ -344,6 +366,8 @@ std::string stepSection(const Lesson& lesson, std::size_t index, const StepPictu
   md += step.text.in(language) + "\n\n";
   md += "![" + step.title.in(language) + "](" + png + ")\n\n";
   if (!picture.note.empty()) md += "> " + picture.note + "\n\n";
+  if (!picture.crossingsText.empty())
+    md += "**" + std::string(words.crossings) + "**\n\n```\n" + picture.crossingsText + "```\n\n";
   if (!picture.inspectorText.empty())
     md += "**" + std::string(words.inspector) + "**\n\n```\n" + picture.inspectorText +
           (picture.inspectorText.back() == '\n' ? "" : "\n") + "```\n\n";

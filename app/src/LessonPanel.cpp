@@ -212,7 +212,6 @@ void LessonPanel::refresh() {
   m_text->setText(text(step.text, m_language));
   QStringList needs;
   for (const std::string& need : step.needs) needs << QString::fromStdString(need);
-  if (step.view == LessonView::Samples) needs.prepend(QStringLiteral("samples-view"));
   m_needs->setVisible(!needs.isEmpty());
   m_needs->setText(tr("This step needs a feature still to come (%1): the view shows the scene "
                       "instead.")

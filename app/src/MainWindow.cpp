@@ -533,6 +533,8 @@ void MainWindow::showLessonStep(int index) {
   rays.reachesLightBox()->setChecked(step.filters.reachingLight);
   rays.minEnergyBox()->setValue(step.filters.minEnergy);
   rays.orderBox()->setCurrentIndex(rays.orderBox()->findData(int(vis::RevealOrder::Depth)));
+  rays.setBundle(step.bundle);
+  rays.allHitsBox()->setChecked(step.allHits);
   if (step.pixelX && step.pixelY) {
     rays.setPixel(*step.pixelX, *step.pixelY);
     rays.setSample(step.sample);
@@ -546,6 +548,13 @@ void MainWindow::showLessonStep(int index) {
   } else {
     rays.clearTrace();
   }
+
+  // A sampler's directions replace the scene in the 3D view (and leave with the step).
+  if (step.view == LessonView::Samples && step.samples)
+    m_view->setSampleCloud(step.samples->directions(),
+                           step.samples->sampler == LessonSamples::Sampler::Sphere);
+  else
+    m_view->clearSampleCloud();
 
   // Step 3: the image or the comparison beside the 3D view, for the steps that show it.
   if (step.view == LessonView::Compare || step.view == LessonView::Plot) {
@@ -776,6 +785,7 @@ bool MainWindow::saveImageAs() {
 }
 
 void MainWindow::sceneChanged() {
+  m_view->clearSampleCloud();  // a lesson's samples step shows it until the scene changes
   m_view->updateScene(m_document->scene());
   m_renderPanel->setScene(m_document->scene());
   m_comparePanel->setScene(m_document->scene());

@@ -4,6 +4,8 @@
 #include "UiWords.h"
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/Lesson.h"
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/SceneView.h"
@@ -121,6 +123,13 @@ QWidget* RayTreePanel::buildTraceGroup() {
                            .arg(std::max(1, scene.render.samplesPerPixel)));
   form->addRow(tr("Sample"), m_sample);
 
+  m_bundle = new QSpinBox;
+  m_bundle->setRange(1, LessonStep::kMaxBundle);
+  m_bundle->setToolTip(
+      tr("Trace this many samples of the pixel, from the sample above on, and draw them "
+         "together: with a lens, the camera rays form the pixel's bundle"));
+  form->addRow(tr("Samples drawn"), m_bundle);
+
   // Step 2: the button and what the last trace found.
   m_traceButton = new QPushButton(tr("Trace"));
   m_traceButton->setDefault(true);
@@ -236,7 +245,41 @@ QWidget* RayTreePanel::buildStyleGroup() {
   for (QCheckBox* box : {m_hitPoints, m_normals, m_arrows, m_legend})
     connect(box, &QCheckBox::toggled, this, [this] { restyle(); });
   form->addRow(tr("Show"), toggles);
+
+  m_allHits = new QCheckBox(tr("Every hit along the ray"));
+  m_allHits->setToolTip(
+      tr("Mark every surface the selected ray (else the camera ray) crosses, not only the "
+         "first: green where it enters a solid, red where it leaves, yellow on an open "
+         "surface"));
+  connect(m_allHits, &QCheckBox::toggled, this, [this] {
+    markCrossings();
+    emit viewChanged();
+  });
+  form->addRow(m_allHits);
+  m_crossingsLabel = new QLabel;
+  m_crossingsLabel->setWordWrap(true);
+  m_crossingsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  m_crossingsLabel->hide();
+  form->addRow(m_crossingsLabel);
   return group;
+}
+
+void RayTreePanel::markCrossings() {
+  m_crossingsText.clear();
+  const RayTree& shown = tree();
+  if (!m_allHits->isChecked() || shown.segments.empty()) {
+    m_view.clearCrossings();
+    m_crossingsLabel->hide();
+    return;
+  }
+  const RaySegment& ray = shown.segments[std::size_t(m_selected >= 0 ? m_selected : 0)];
+  const std::vector<SceneCrossing> crossings =
+      sceneCrossings(m_view.scene(), ray.origin, ray.direction, ray.time);
+  m_view.setCrossings(crossings, ray.origin, ray.direction);
+  m_crossingsText = QString::fromStdString(
+      raylab::crossingsText(m_view.scene(), crossings, currentLanguage() == kChinese));
+  m_crossingsLabel->setText(m_crossingsText.trimmed());
+  m_crossingsLabel->show();
 }
 
 QWidget* RayTreePanel::buildAnimationGroup() {
@@ -363,6 +406,10 @@ void RayTreePanel::trace() {
   // A copy of the scene: an edit while the trace runs must not change it under the worker.
   auto copy = std::make_shared<const Scene>(scene);
   const int x = m_pixelX->value(), y = m_pixelY->value(), sample = m_sample->value();
+  if (m_bundle->value() > 1) {
+    traceBundleOf(copy, settings, x, y, sample, m_bundle->value());
+    return;
+  }
   PixelTrace traced;
   if (!runCancellable(
           [copy, settings, x, y, sample](const std::atomic<bool>* cancel) {
@@ -432,6 +479,46 @@ void RayTreePanel::simulate() {
   if (grid.truncated) setStatus(QString::fromStdString(grid.message));
 }
 
+void RayTreePanel::traceBundleOf(const std::shared_ptr<const Scene>& copy,
+                                 const RenderSettings& settings, int x, int y, int first,
+                                 int count) {
+  GridTrace bundle;
+  if (!runCancellable(
+          [copy, settings, x, y, first, count](const std::atomic<bool>* cancel) {
+            TraceLimits limits;
+            limits.cancel = cancel;
+            return traceBundle(*copy, settings, x, y, first, count, limits);
+          },
+          bundle))
+    return;
+  // The bundle as one trace: every sample's rays, narration and counts together.
+  auto combined = std::make_shared<PixelTrace>();
+  combined->algorithm = settings.algorithm;
+  combined->x = x;
+  combined->y = y;
+  combined->sample = first;
+  combined->tree = bundle.combined;
+  for (const PixelTrace& t : bundle.traces) {
+    combined->stepTexts.insert(combined->stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
+    combined->counts += t.counts;
+    combined->estimate += t.estimate / double(bundle.traces.size());
+  }
+  m_trace = combined;
+  m_grid = false;
+  QString info = tr("%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays")
+                     .arg(algorithmLabel(settings.algorithm))
+                     .arg(x)
+                     .arg(y)
+                     .arg(first)
+                     .arg(first + int(bundle.traces.size()) - 1)
+                     .arg(bundle.combined.segments.size());
+  if (bundle.truncated) info += QStringLiteral("\n") + QString::fromStdString(bundle.message);
+  m_traceInfo->setText(info);
+  showTrace();
+}
+
+void RayTreePanel::setBundle(int samples) { m_bundle->setValue(samples); }
+
 void RayTreePanel::retrace() {
   if (!m_trace) return;
   if (m_grid)
@@ -476,6 +563,8 @@ void RayTreePanel::clearTrace() {
   m_grid = false;
   m_selected = -1;
   m_view.clearRayTree();
+  m_view.clearCrossings();
+  m_crossingsText.clear();
   m_traceInfo->clear();
   updateFrameControls();
   emit treeChanged();
@@ -499,6 +588,7 @@ void RayTreePanel::showTrace() {
   m_view.setRayTree(std::shared_ptr<const RayTree>(m_trace, &m_trace->tree), treeStyle());
   m_frame = frameCount() - 1;
   updateFrameControls();
+  markCrossings();
   emit treeChanged();
   emit segmentSelected(-1);
   showFrame();
@@ -640,6 +730,7 @@ void RayTreePanel::selectSegment(int id) {
   if (id < -1 || id >= int(tree().segments.size())) id = -1;
   m_selected = id;
   m_view.setSelectedSegment(id);
+  markCrossings();
   emit segmentSelected(id);
   emit viewChanged();
 }

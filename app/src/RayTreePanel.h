@@ -58,8 +58,11 @@ class RayTreePanel : public QWidget {
   void setSample(int sample);
   Algorithm algorithm() const;
 
-  /// Records the tree of the chosen (pixel, sample) and shows it whole.
+  /// Records the tree of the chosen (pixel, sample) and shows it whole; with more than one
+  /// sample drawn (setBundle), the trees of samples sample .. sample + n - 1 together.
   void trace();
+  /// How many samples of the pixel the next trace draws together (1..256).
+  void setBundle(int samples);
   /// The original program's Simulate: traces the grid of rays across x down (sample 0 of
   /// each pixel, core traceGrid) and shows all their trees together, coloured by energy.
   void simulate();
@@ -124,6 +127,10 @@ class RayTreePanel : public QWidget {
   QSpinBox* pixelXBox() const { return m_pixelX; }
   QSpinBox* pixelYBox() const { return m_pixelY; }
   QSpinBox* sampleBox() const { return m_sample; }
+  QSpinBox* bundleBox() const { return m_bundle; }
+  QCheckBox* allHitsBox() const { return m_allHits; }
+  /// With "Every hit along the ray" on: the crossings marked, one line each.
+  const QString& crossingsText() const { return m_crossingsText; }
   QPushButton* traceButton() const { return m_traceButton; }
   QComboBox* colouringBox() const { return m_colouring; }
   QCheckBox* kindBox(RayKind kind) const { return m_kinds[std::size_t(kind)]; }
@@ -170,6 +177,12 @@ class RayTreePanel : public QWidget {
   /// Shows m_trace whole, nothing selected.
   void showTrace();
   void updateFrameControls();
+  /// Marks the crossings of the selected ray (the camera ray when none) when "Every hit
+  /// along the ray" is on, clears them otherwise.
+  void markCrossings();
+  /// trace() for more than one sample: core traceBundle, shown as one tree.
+  void traceBundleOf(const std::shared_ptr<const Scene>& copy, const RenderSettings& settings,
+                     int x, int y, int first, int count);
   /// Runs `work` on a worker thread with a cancel flag, keeping the event loop running (and
   /// the Cancel button live) until it ends. False when another trace was running: that one
   /// is cancelled and this request is dropped.
@@ -192,6 +205,10 @@ class RayTreePanel : public QWidget {
   QSpinBox* m_pixelX = nullptr;
   QSpinBox* m_pixelY = nullptr;
   QSpinBox* m_sample = nullptr;
+  QSpinBox* m_bundle = nullptr;
+  QCheckBox* m_allHits = nullptr;
+  QString m_crossingsText;
+  QLabel* m_crossingsLabel = nullptr;
   QPushButton* m_traceButton = nullptr;
   QLabel* m_traceInfo = nullptr;
   QComboBox* m_colouring = nullptr;

@@ -5,7 +5,9 @@
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"
+#include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/ImageIO.h"
@@ -36,24 +38,24 @@ std::optional<std::pair<int, int>> gridSize(const std::string& text) {
 
 struct TraceOptions {
   RayTreeOptions tree;
-  std::string json;  ///< --json; default: --out with .json.
-  int frame = -1;    ///< --frame: draw this frame of the animation; -1 the whole tree.
-  std::string grid;  ///< --grid NxM: the Simulate grid instead of --pixel.
+  std::string json;      ///< --json; default: --out with .json.
+  int frame = -1;        ///< --frame: draw this frame of the animation; -1 the whole tree.
+  std::string grid;      ///< --grid NxM: the Simulate grid instead of --pixel.
+  int bundle = 1;        ///< --bundle N: samples sample .. sample + N - 1 drawn together.
+  bool allHits = false;  ///< --all-hits: mark every surface the camera ray crosses.
 };
 
-/// `raylab trace --grid NxM`: the window's Simulate, headless. Every tree of the grid in
-/// one picture, and one JSON document holding every tree's dump.
-int runGrid(const TraceOptions& options, const Scene& scene, const RenderSettings& settings) {
+/// The picture and one JSON document of many trees (a grid or a bundle): `key` and
+/// `value` name what they are in the dump ("grid": [4, 3]), `what` in the summary line.
+int writeTrees(const TraceOptions& options, const Scene& scene, const RenderSettings& settings,
+               const GridTrace& traced, const std::string& key, const std::string& value,
+               const std::string& what) {
   const RayTreeOptions& o = options.tree;
-  const auto grid = gridSize(options.grid);
-  const GridTrace traced = traceGrid(scene, settings, grid->first, grid->second);
-
   const auto [width, height] = o.pictureSize();
   const std::unique_ptr<vis::SceneView> view = o.makeView(scene, traced.combined);
   const SrgbImage picture = view->renderOffscreen(width, height);
 
-  std::string dump = "{\n\"raylab_ray_trees\": 1,\n\"grid\": [" + std::to_string(grid->first) +
-                     ", " + std::to_string(grid->second) + "],\n\"trees\": [\n";
+  std::string dump = "{\n\"raylab_ray_trees\": 1,\n\"" + key + "\": " + value + ",\n\"trees\": [\n";
   for (std::size_t i = 0; i < traced.traces.size(); ++i)
     dump += (i ? ",\n" : "") + RayTreeJson::serialize(traced.traces[i].tree, scene, settings);
   dump += "\n]\n}\n";
@@ -70,11 +72,21 @@ int runGrid(const TraceOptions& options, const Scene& scene, const RenderSetting
   std::size_t rays = 0;
   for (const PixelTrace& t : traced.traces) rays += t.tree.segments.size();
   std::cout << o.common.out << "\n" << json << "\n";
-  std::cout << "grid " << grid->first << "x" << grid->second << " (" << traced.traces.size()
-            << " pixels), " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
+  std::cout << what << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
             << rays << " rays" << std::endl;
   if (traced.truncated) std::cerr << "raylab: warning: " << traced.message << std::endl;
   return kExitOk;
+}
+
+/// `raylab trace --grid NxM`: the window's Simulate, headless. Every tree of the grid in
+/// one picture, and one JSON document holding every tree's dump.
+int runGrid(const TraceOptions& options, const Scene& scene, const RenderSettings& settings) {
+  const auto grid = gridSize(options.grid);
+  const GridTrace traced = traceGrid(scene, settings, grid->first, grid->second);
+  return writeTrees(options, scene, settings, traced, "grid",
+                    "[" + std::to_string(grid->first) + ", " + std::to_string(grid->second) + "]",
+                    "grid " + std::to_string(grid->first) + "x" + std::to_string(grid->second) +
+                        " (" + std::to_string(traced.traces.size()) + " pixels)");
 }
 
 int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
@@ -102,6 +114,25 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   }
   const RenderSettings settings = o.common.settings(scene);
 
+  if (options.bundle > 1) {
+    if (options.frame >= 0 || options.allHits) {
+      std::cerr << "raylab trace: --bundle draws its trees whole; --frame and --all-hits need "
+                   "one sample"
+                << std::endl;
+      return kExitUsage;
+    }
+    const GridTrace traced =
+        traceBundle(scene, settings, o.pixel.first, o.pixel.second, o.sample, options.bundle);
+    const std::string last = std::to_string(o.sample + int(traced.traces.size()) - 1);
+    return writeTrees(
+        options, scene, settings, traced, "bundle",
+        "{\"pixel\": [" + std::to_string(o.pixel.first) + ", " + std::to_string(o.pixel.second) +
+            "], \"first_sample\": " + std::to_string(o.sample) +
+            ", \"samples\": " + std::to_string(traced.traces.size()) + "}",
+        "pixel (" + std::to_string(o.pixel.first) + ", " + std::to_string(o.pixel.second) +
+            ") samples " + std::to_string(o.sample) + ".." + last);
+  }
+
   // Step 2: trace the sample, recording its tree.
   const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
   const RayTree& tree = trace.tree;
@@ -110,6 +141,14 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   const auto [width, height] = o.pictureSize();
   const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree);
   if (options.frame >= 0) view->setReveal(vis::revealFrame(tree, o.animation(), options.frame));
+  std::string crossings;
+  if (options.allHits) {
+    const RaySegment& ray = tree.segments.front();
+    const std::vector<SceneCrossing> all =
+        sceneCrossings(scene, ray.origin, ray.direction, ray.time);
+    view->setCrossings(all, ray.origin, ray.direction);
+    crossings = crossingsText(scene, all);
+  }
   const SrgbImage picture = view->renderOffscreen(width, height);
 
   // Step 4: the dump, then the picture; either both files are written or neither.
@@ -126,6 +165,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample
             << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
             << trace.summary() << std::endl;
+  if (options.allHits) std::cout << "every surface the camera ray crosses:\n" << crossings;
   if (tree.truncated) std::cerr << "raylab: warning: " << tree.message << std::endl;
   return kExitOk;
 }
@@ -269,6 +309,14 @@ Subcommand addTraceCommand(CLI::App& cli) {
       "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.");
   options->tree.add(command, "PNG file of the 3D view to write", "1024x768", false);
+  command
+      ->add_option("--bundle", options->bundle,
+                   "Trace samples --sample .. --sample + N - 1 of the --pixel and draw them "
+                   "together (with a lens aperture: the pixel's bundle of camera rays)")
+      ->check(CLI::Range(1, LessonStep::kMaxBundle));
+  command->add_flag("--all-hits", options->allHits,
+                    "Mark every surface the camera ray crosses, entering (green), leaving (red) "
+                    "or an open surface (yellow), and list them");
   command
       ->add_option("--grid", options->grid,
                    "Trace a grid of N x M camera rays spread over the image (the window's "

@@ -148,6 +148,55 @@ TEST_F(WindowLessonTest, 06_InspectorAndImageSteps) {
   EXPECT_TRUE(render.hasImage());
 }
 
+// The steps that draw more than one tree or more than the scene: lesson 1's bundle draws
+// 32 samples of its pixel (32 camera rays, the trees of traceBundle); lesson 2 marks
+// every hit along its camera ray; lesson 6's samples steps replace the scene by the
+// sampler's point cloud, which leaves with the next scene step.
+TEST_F(WindowLessonTest, 08_BundleAllHitsAndSamplesSteps) {
+  ASSERT_TRUE(m_window->openLesson(kLesson01));
+  LessonPanel& panel = *m_window->lessonPanel();
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  const Lesson one = LessonIO::load(kLesson01.toStdString());
+  const int bundle = firstStep(one, [](const LessonStep& st) { return st.bundle > 1; });
+  panel.showStep(bundle);
+  settle();
+  const LessonStep& b = one.steps[std::size_t(bundle)];
+  const GridTrace expected =
+      traceBundle(*b.scene, b.settings(), *b.pixelX, *b.pixelY, b.sample, b.bundle);
+  int cameraRays = 0;
+  for (const RaySegment& s : rays.tree().segments) cameraRays += s.kind == RayKind::Camera;
+  EXPECT_EQ(cameraRays, b.bundle);
+  EXPECT_EQ(rays.tree().segments.size(), expected.combined.segments.size());
+  EXPECT_EQ(rays.bundleBox()->value(), b.bundle);
+
+  const QString two =
+      QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/02-intersections-and-exactness.json");
+  ASSERT_TRUE(m_window->openLesson(two));
+  const Lesson lesson2 = LessonIO::load(two.toStdString());
+  const int hits = firstStep(lesson2, [](const LessonStep& st) { return st.allHits; });
+  m_window->lessonPanel()->showStep(hits);
+  settle();
+  EXPECT_EQ(rays.bundleBox()->value(), 1);  // the next lesson's steps draw one sample
+  EXPECT_TRUE(rays.allHitsBox()->isChecked());
+  EXPECT_GE(m_window->sceneView().crossingCount(), 2);
+  EXPECT_TRUE(rays.crossingsText().contains(QStringLiteral("enters 'sphere'")))
+      << rays.crossingsText().toStdString();
+  EXPECT_TRUE(rays.crossingsText().contains(QStringLiteral("leaves 'sphere'")));
+
+  const QString six = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/06-path-tracing.json");
+  ASSERT_TRUE(m_window->openLesson(six));
+  const Lesson lesson6 = LessonIO::load(six.toStdString());
+  const int samples =
+      firstStep(lesson6, [](const LessonStep& st) { return st.view == LessonView::Samples; });
+  m_window->lessonPanel()->showStep(samples);
+  settle();
+  EXPECT_TRUE(m_window->sceneView().showsSampleCloud());
+  EXPECT_EQ(m_window->sceneView().crossingCount(), 0);
+  m_window->lessonPanel()->showStep(0);
+  settle();
+  EXPECT_FALSE(m_window->sceneView().showsSampleCloud());
+}
+
 TEST_F(WindowLessonTest, 07_ABrokenLessonIsRefusedAndTheSceneStays) {
   const std::string before = SceneIO::serialize(m_window->document().scene());
   const QString broken = QStringLiteral(RAYLAB_SOURCE_DIR "/tests/app/broken-lesson.json");

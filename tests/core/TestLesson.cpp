@@ -203,6 +203,14 @@ TEST(Lesson, 03_ErrorsNameTheFileTheStepAndThePlace) {
          l["steps"][0]["pixels"] = {1, 1};
        },
        "at /steps/0/pixels: unknown key \"pixels\""},
+      {"bundle too large", [](json& l) { l["steps"][1]["bundle"] = 300; },
+       "step 2 (\"Snell's law\"): at /steps/1/bundle: a bundle draws at most 256 samples of "
+       "the pixel (300 asked)"},
+      {"bundle in the image view", [](json& l) { l["steps"][0]["bundle"] = 8; },
+       "at /steps/0/bundle: bundle and all_hits belong to the scene and inspector views (this "
+       "step's view is \"image\")"},
+      {"all_hits not a boolean", [](json& l) { l["steps"][1]["all_hits"] = "yes"; },
+       "at /steps/1/all_hits: expected true or false"},
       {"unknown lesson key", [](json& l) { l["author"] = "me"; },
        "test.json: at /author: unknown key \"author\""},
       {"answer out of range", [](json& l) { l["steps"][1]["question"]["answer"] = 2; },
@@ -459,6 +467,56 @@ TEST(Lesson, 08_ComputedAnswersMatchTheProgram) {
   }
   // The lessons ask computed questions, not only typed ones.
   EXPECT_GE(checked, 8);
+}
+
+// The samples view's point cloud: unit directions with the sampler's density. Cosine-
+// weighted directions have mean cos(theta) = integral of cos * cos / pi = 2/3; uniform
+// ones over the hemisphere 1/2; over the sphere the mean z is 0. The standard error of
+// the mean of 4000 values with variance <= 1/12 is <= 0.0046: 0.02 is > 4 of them.
+TEST(Lesson, 10_SamplesViewDirectionsHaveTheSamplersDensity) {
+  const auto meanZ = [](LessonSamples::Sampler sampler, double* minZ) {
+    LessonSamples samples;
+    samples.sampler = sampler;
+    samples.count = 4000;
+    const std::vector<Vec3> d = samples.directions();
+    EXPECT_EQ(d.size(), 4000u);
+    double sum = 0.0;
+    *minZ = 1.0;
+    for (const Vec3& v : d) {
+      EXPECT_NEAR(glm::length(v), 1.0, 1e-12);
+      sum += v.z;
+      *minZ = std::min(*minZ, v.z);
+    }
+    EXPECT_EQ(samples.directions(), d);  // the same cloud every time
+    return sum / double(d.size());
+  };
+  double minZ = 0.0;
+  EXPECT_NEAR(meanZ(LessonSamples::Sampler::Cosine, &minZ), 2.0 / 3.0, 0.02);
+  EXPECT_GE(minZ, 0.0);
+  EXPECT_NEAR(meanZ(LessonSamples::Sampler::Uniform, &minZ), 0.5, 0.02);
+  EXPECT_GE(minZ, 0.0);
+  EXPECT_NEAR(meanZ(LessonSamples::Sampler::Sphere, &minZ), 0.0, 0.04);
+  EXPECT_LT(minZ, -0.9);
+}
+
+// A bundle and all_hits are read for the scene view with a pixel; without a pixel they
+// are refused.
+TEST(Lesson, 11_BundleAndAllHitsNeedAPixel) {
+  json l = baseLesson();
+  l["steps"][1]["bundle"] = 16;
+  l["steps"][1]["all_hits"] = true;
+  const Lesson lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  EXPECT_EQ(lesson.steps[1].bundle, 16);
+  EXPECT_TRUE(lesson.steps[1].allHits);
+  EXPECT_EQ(lesson.steps[0].bundle, 1);
+  EXPECT_FALSE(lesson.steps[0].allHits);
+
+  l = baseLesson();
+  l["defaults"].erase("pixel");
+  l["steps"][1].erase("select_ray");
+  l["steps"][1].erase("reveal");
+  l["steps"][1]["bundle"] = 4;
+  EXPECT_THAT(loadError(l), HasSubstr("at /steps/1/bundle: bundle needs a pixel"));
 }
 
 TEST(Lesson, 09_ListFindsNumberedLessonFilesInOrder) {

@@ -5,6 +5,7 @@
 
 #include "TransportScenes.h"
 #include "raylab/core/Box.h"
+#include "raylab/core/Quad.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Tracer.h"
 
@@ -271,6 +272,43 @@ TEST(RayInspector, 09_UnknownSegmentIsAnError) {
     EXPECT_EQ(std::string(e.what()), "ray #7 is not in the tree (it has 2 rays: #0..#1)");
   }
   EXPECT_THROW(RayInspector::inspect(scene, tree, -1), RayInspector::BadSegment);
+}
+
+// Every hit along a ray: the ball of radius 1 at (0, 0, -5) seen from the origin along -z
+// is entered at t = 4 and left at t = 6; a quad facing the ray at z = -10 is crossed on
+// its front at t = 10; a second ball moving by (0, 0, -2) over the shutter, resting at
+// (0, 0, -14), is met at time 0.5 one unit further: entered at 14, left at 16.
+TEST(RayInspector, 10_SceneCrossingsListEveryHitInOrder) {
+  Scene scene = ballScene();
+  addObject(scene, "wall",
+            std::make_unique<Quad>(Point3(-3, -3, -10), Vec3(6, 0, 0), Vec3(0, 6, 0)), 0);
+  addObject(scene, "mover", std::make_unique<Sphere>(Point3(0, 0, -14), 1.0), 0);
+  scene.objects.back().velocity = Vec3(0, 0, -2);
+  const std::vector<SceneCrossing> c =
+      sceneCrossings(scene, Point3(0.0), Vec3(0, 0, -3), 0.5);  // direction need not be unit
+  ASSERT_EQ(c.size(), 5u);
+  const double t[] = {4, 6, 10, 14, 16};
+  const bool entering[] = {true, false, true, true, false};
+  const int object[] = {0, 0, 1, 2, 2};
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    EXPECT_NEAR(c[i].t, t[i], 1e-12) << i;
+    EXPECT_EQ(c[i].entering, entering[i]) << i;
+    EXPECT_EQ(c[i].object, object[i]) << i;
+    EXPECT_NEAR(c[i].point.z, -t[i], 1e-12) << i;
+  }
+  EXPECT_TRUE(c[0].closed);
+  EXPECT_FALSE(c[2].closed);
+  EXPECT_EQ(crossingsText(scene, c),
+            "t = 4  enters 'ball'\nt = 6  leaves 'ball'\nt = 10  crosses the front of "
+            "'wall'\nt = 14  enters 'mover'\nt = 16  leaves 'mover'\n");
+  EXPECT_NE(crossingsText(scene, c, true).find("进入“ball”"), std::string::npos);
+  // At most maxCount, the nearest; a ray starting inside the ball has only its exit.
+  EXPECT_EQ(sceneCrossings(scene, Point3(0.0), Vec3(0, 0, -1), 0.5, 2).size(), 2u);
+  const auto inside = sceneCrossings(scene, Point3(0, 0, -5), Vec3(0, 0, -1), 0.5);
+  ASSERT_FALSE(inside.empty());
+  EXPECT_NEAR(inside[0].t, 1.0, 1e-12);
+  EXPECT_FALSE(inside[0].entering);
+  EXPECT_EQ(crossingsText(scene, {}), "The ray crosses no surface.\n");
 }
 
 }  // namespace

@@ -595,6 +595,50 @@ TEST(Tracer, 12_GridTracesEachPixelAndStopsAtTheBudget) {
   EXPECT_NE(small.message.find("of 64 pixels"), std::string::npos) << small.message;
 }
 
+// A bundle: samples first .. first + n - 1 of one pixel, each tree equal to tracePixel of
+// that sample. With a thin lens the camera rays start at different points of the lens
+// yet all pass through one point of the plane in focus (the pixel's point there).
+TEST(Tracer, 12b_BundleTracesThePixelsSamplesThroughOneFocusPoint) {
+  Scene scene = defaultScene();
+  scene.camera.aperture = 0.3;
+  scene.camera.focusDistance = 4.9;
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Distributed;
+  const GridTrace bundle = traceBundle(scene, settings, 120, 80, 3, 16);
+  ASSERT_EQ(bundle.traces.size(), 16u);
+  EXPECT_FALSE(bundle.truncated);
+  std::size_t total = 0;
+  for (int i = 0; i < 16; ++i) {
+    const PixelTrace single = tracePixel(scene, settings, 120, 80, 3 + i);
+    EXPECT_EQ(bundle.traces[std::size_t(i)].sample, 3 + i);
+    EXPECT_EQ(bundle.traces[std::size_t(i)].estimate, single.estimate);
+    total += single.tree.segments.size();
+  }
+  EXPECT_EQ(bundle.combined.segments.size(), total);
+  int roots = 0;
+  for (const RaySegment& s : bundle.combined.segments) roots += s.parent < 0;
+  EXPECT_EQ(roots, 16);
+  // Distinct lens points; rays meet the focus plane (4.9 along the view direction).
+  const Vec3 forward = glm::normalize(scene.camera.lookAt - scene.camera.position);
+  std::vector<Point3> starts, onFocus;
+  for (const PixelTrace& t : bundle.traces) {
+    const RaySegment& ray = t.tree.segments[0];
+    starts.push_back(ray.origin);
+    const double along = glm::dot(ray.direction, forward);
+    const double s = (4.9 - glm::dot(ray.origin - scene.camera.position, forward)) / along;
+    onFocus.push_back(ray.origin + s * ray.direction);
+  }
+  double lensSpread = 0.0, focusSpread = 0.0;
+  for (std::size_t i = 1; i < starts.size(); ++i) {
+    lensSpread = std::max(lensSpread, glm::length(starts[i] - starts[0]));
+    focusSpread = std::max(focusSpread, glm::length(onFocus[i] - onFocus[0]));
+  }
+  // A lens of radius 0.3; on the focus plane the pixel is 2 * 4.9 * tan(25 deg) / 240 =
+  // 0.019 wide, its diagonal 0.027: the rays meet within the pixel's footprint there.
+  EXPECT_GT(lensSpread, 0.15);
+  EXPECT_LT(focusSpread, 0.03);
+}
+
 // The built-in scene shows the original course program's two demonstrations. (1) Under
 // distributed tracing a camera ray hits the red sphere, its reflection reaches the blue
 // cube and fans out into glossy rays, some of which bring light back (drawn green) and

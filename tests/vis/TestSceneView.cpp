@@ -3,6 +3,8 @@
 #include "BaselineTest.h"
 #include "ImageChecks.h"
 
+#include "raylab/core/Lesson.h"
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Transform.h"
@@ -189,6 +191,66 @@ TEST(SceneView, 06_EllipsoidFollowsItsTransform) {
   const Vec2 extent = extentOf(view.renderOffscreen(kSize, kSize), isRed);
   ASSERT_GT(extent.y, 10.0);
   EXPECT_NEAR(extent.x / extent.y, 3.0, 0.25) << extent.x << " x " << extent.y;
+}
+
+// The lesson overlays. The samples view replaces the scene by the sampler's points
+// (orange) over the hemisphere, and clearSampleCloud brings back the very same picture.
+TEST(SceneView, 08_SampleCloudReplacesTheSceneUntilCleared) {
+  SceneView view(defaultScene());
+  const SrgbImage before = view.renderOffscreen(kSize, kSize);
+  const auto isOrange = [](const Rgb8& c) {
+    return c[0] >= 180 && c[1] >= 70 && c[1] <= 190 && c[2] < 90 && c[0] > 1.3 * c[1];
+  };
+  LessonSamples samples;
+  samples.count = 400;
+  view.setSampleCloud(samples.directions());
+  EXPECT_TRUE(view.showsSampleCloud());
+  const SrgbImage cloud = view.renderOffscreen(kSize, kSize);
+  EXPECT_GT(fractionOf(cloud, isOrange), 0.01);
+  EXPECT_LT(fractionOf(cloud, isBlue), 0.001);   // the blue cube is gone
+  // Cosine-weighted points crowd at the top: more orange in the upper half of the dome.
+  int upper = 0, lower = 0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      if (isOrange(cloud.at(x, y))) (y < kSize / 2 ? upper : lower)++;
+  EXPECT_GT(upper, lower);
+  view.clearSampleCloud();
+  EXPECT_FALSE(view.showsSampleCloud());
+  EXPECT_EQ(view.renderOffscreen(kSize, kSize).rgb, before.rgb);
+}
+
+// Every hit along a ray: through the blue cube, green where it enters, red where it
+// leaves (seen through the cube, now drawn see-through), yellow on the back wall (an open
+// surface); clearCrossings restores the picture.
+TEST(SceneView, 09_CrossingsMarkEnteringAndLeaving) {
+  const Scene scene = defaultScene();
+  SceneView view(scene);
+  const SrgbImage before = view.renderOffscreen(kSize, kSize);
+  const Point3 centre = view.objectCentre(objectNamed(scene, "blue cube"));
+  const Point3 from = centre + Vec3(0.0, 0.0, 6.0);
+  const std::vector<SceneCrossing> c = sceneCrossings(scene, from, Vec3(0, 0, -1));
+  ASSERT_EQ(c.size(), 3u);  // the cube in and out, the back wall
+  EXPECT_TRUE(c[0].entering && c[0].closed);
+  EXPECT_FALSE(c[1].entering);
+  EXPECT_FALSE(c[2].closed);
+  view.setCrossings(c, from, Vec3(0, 0, -1));
+  EXPECT_EQ(view.crossingCount(), 3);
+  const SrgbImage marked = view.renderOffscreen(kSize, kSize);
+  const auto isGreen = [](const Rgb8& p) {
+    return p[1] >= 120 && p[1] > 1.4 * p[0] && p[1] > 1.4 * p[2];
+  };
+  const auto redderThanBlue = [](const Rgb8& p) { return p[0] > p[2] + 30; };
+  const auto enter = view.worldToImage(c[0].point, kSize, kSize);
+  const auto leave = view.worldToImage(c[1].point, kSize, kSize);
+  const auto wall = view.worldToImage(c[2].point, kSize, kSize);
+  ASSERT_TRUE(enter && leave && wall);
+  EXPECT_GT(fractionNear(marked, *enter, 2, isGreen), 0.3);
+  EXPECT_GT(fractionNear(marked, *leave, 2, redderThanBlue),
+            fractionNear(before, *leave, 2, redderThanBlue) + 0.3);
+  EXPECT_GT(fractionNear(marked, *wall, 2, isYellow), 0.3);
+  view.clearCrossings();
+  EXPECT_EQ(view.crossingCount(), 0);
+  EXPECT_EQ(view.renderOffscreen(kSize, kSize).rgb, before.rgb);
 }
 
 TEST(SceneView, 07_MatchesBaseline) {

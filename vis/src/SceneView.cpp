@@ -2,6 +2,7 @@
 
 #include "RayTreeActors.h"
 #include "ShapeGeometry.h"
+#include "TeachingOverlays.h"
 #include "VtkImage.h"
 
 #include "raylab/core/Check.h"
@@ -189,7 +190,11 @@ struct SceneView::Impl {
   vtkSmartPointer<vtkRenderWindow> offscreen;         ///< Created on first offscreen render.
   RayTreeActors rays{Vec3(kBackground[0], kBackground[1], kBackground[2])};  ///< Ray tree.
   std::vector<bool> oneSided;  ///< Per object: drawn one-sided (culled from behind).
-  Point3 inside{0.0};          ///< The room's inside, which one-sided surfaces face.
+  std::vector<vtkSmartPointer<vtkProp>> crossings;  ///< setCrossings' line and marks.
+  int crossingCount = 0;
+  std::vector<int> crossed;  ///< Solids the crossings' ray passes through (drawn see-through).
+  std::vector<vtkSmartPointer<vtkProp>> cloud;  ///< setSampleCloud's props; empty = scene.
+  Point3 inside{0.0};  ///< The room's inside, which one-sided surfaces face.
 
   ~Impl() {
     if (offscreen) {
@@ -274,10 +279,71 @@ void SceneView::setScene(const Scene& scene) {
   m_impl->rays.addTo(renderer);
   m_impl->rays.markDirty();
   seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
+  for (const auto& prop : m_impl->crossings) renderer->AddViewProp(prop);
+  seeThroughCrossed();
 
-  // Step 5: look at it all from outside.
+  // Step 5: look at it all from outside (or at the sample cloud, which replaces it all).
   resetViewCamera();
+  if (!m_impl->cloud.empty()) showOnlyCloud();
 }
+
+void SceneView::showOnlyCloud() {
+  vtkRenderer* renderer = m_impl->renderer;
+  renderer->RemoveAllViewProps();
+  for (const auto& prop : m_impl->cloud) renderer->AddViewProp(prop);
+  ViewCamera view;
+  view.eye = Point3(2.9, -3.3, 2.1);
+  view.focalPoint = Point3(0.0, 0.0, 0.35);
+  view.up = Vec3(0.0, 0.0, 1.0);
+  view.viewAngle = 30.0;
+  setViewCamera(view);
+}
+
+void SceneView::setCrossings(const std::vector<SceneCrossing>& crossings, const Point3& origin,
+                             const Vec3& direction) {
+  clearCrossings();
+  m_impl->crossings = crossingProps(crossings, origin, direction, 0.6 * m_impl->rays.glyphLength);
+  m_impl->crossingCount = int(crossings.size());
+  for (const SceneCrossing& c : crossings)
+    if (c.closed) m_impl->crossed.push_back(c.object);
+  if (m_impl->cloud.empty())
+    for (const auto& prop : m_impl->crossings) m_impl->renderer->AddViewProp(prop);
+  seeThroughCrossed();
+}
+
+void SceneView::clearCrossings() {
+  for (const auto& prop : m_impl->crossings) m_impl->renderer->RemoveViewProp(prop);
+  m_impl->crossings.clear();
+  m_impl->crossingCount = 0;
+  m_impl->crossed.clear();
+  seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
+}
+
+void SceneView::seeThroughCrossed() {
+  // The marks inside a solid show through it, as glass does while rays are drawn.
+  for (int i : m_impl->crossed)
+    if (i >= 0 && i < int(m_impl->objects.size())) {
+      vtkProperty* p = m_impl->objects[std::size_t(i)]->GetProperty();
+      p->SetOpacity(std::min(p->GetOpacity(), kGlassOpacityWithRays));
+    }
+}
+
+int SceneView::crossingCount() const { return m_impl->crossingCount; }
+
+void SceneView::setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere) {
+  m_impl->cloud = sampleCloudProps(directions, fullSphere);
+  showOnlyCloud();
+}
+
+void SceneView::clearSampleCloud() {
+  if (m_impl->cloud.empty()) return;
+  m_impl->cloud.clear();
+  const int highlighted = m_highlighted;
+  setScene(Scene(m_scene));  // the scene's props again, seen from the default view
+  setHighlighted(highlighted);
+}
+
+bool SceneView::showsSampleCloud() const { return !m_impl->cloud.empty(); }
 
 int SceneView::objectAt(double x, double y, int width, int height) const {
   if (width <= 0 || height <= 0 || m_scene.objects.empty()) return -1;

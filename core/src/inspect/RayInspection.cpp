@@ -1,6 +1,10 @@
 // One recorded ray read against its scene (RayInspector::inspect).
 #include "inspect/InspectorFormat.h"
 #include "raylab/core/RayInspector.h"
+#include "raylab/core/Shape.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace raylab {
 
@@ -37,6 +41,52 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
       scene.objects[std::size_t(s.object)].shape)
     r.oracle = checkHit(scene, s.object, s.origin, s.direction, s.time, s.endPoint);
   return r;
+}
+
+std::vector<SceneCrossing> sceneCrossings(const Scene& scene, const Point3& origin,
+                                          const Vec3& direction, double time,
+                                          std::size_t maxCount) {
+  std::vector<SceneCrossing> all;
+  const double length = glm::length(direction);
+  if (!(length > 0.0) || !std::isfinite(length)) return all;
+  const Vec3 unit = direction / length;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& object = scene.objects[i];
+    if (!object.shape) continue;
+    // A moving object is met in its own frame: the origin moved back by its displacement.
+    const Ray ray = Ray::make(origin - object.displacementAt(time), unit, 0.0, kInfinity, time);
+    const ShapeKind kind = object.shape->kind();
+    const bool closed = kind != ShapeKind::Quad && kind != ShapeKind::Triangle;
+    for (const Crossing& c : object.shape->intersectAll(ray)) {
+      if (!(c.t > 0.0)) continue;
+      all.push_back({int(i), c.t, origin + c.t * unit, c.entering, closed});
+    }
+  }
+  std::stable_sort(all.begin(), all.end(),
+                   [](const SceneCrossing& a, const SceneCrossing& b) { return a.t < b.t; });
+  if (all.size() > maxCount) all.resize(maxCount);
+  return all;
+}
+
+std::string crossingsText(const Scene& scene, const std::vector<SceneCrossing>& crossings,
+                          bool zh) {
+  std::string text;
+  for (const SceneCrossing& c : crossings) {
+    const std::string name = c.object >= 0 && c.object < int(scene.objects.size())
+                                 ? scene.objects[std::size_t(c.object)].name
+                                 : std::string("?");
+    std::string what;
+    if (zh)
+      what = c.closed ? (c.entering ? "进入" : "离开") : (c.entering ? "从正面穿过" : "从背面穿过");
+    else
+      what = c.closed ? (c.entering ? "enters" : "leaves")
+                      : (c.entering ? "crosses the front of" : "crosses the back of");
+    text += "t = " + inspect::number(c.t, 5) +
+            (zh ? "  " + what + "“" + name + "”" : "  " + what + " '" + name + "'") + "\n";
+  }
+  if (crossings.empty())
+    text = zh ? "这条光线没有与任何表面相交。\n" : "The ray crosses no surface.\n";
+  return text;
 }
 
 }  // namespace raylab

@@ -96,18 +96,21 @@ std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, i
   return pixels;
 }
 
-GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
-                    const TraceLimits& limits) {
+namespace {
+
+/// Traces each (x, y, sample) of `jobs` in order into one GridTrace; `unit` names what a
+/// job is in the message ("pixels", "samples").
+GridTrace traceAll(const Scene& scene, const RenderSettings& settings,
+                   const std::vector<std::array<int, 3>>& jobs, const TraceLimits& limits,
+                   const std::string& unit) {
   GridTrace grid;
-  const std::vector<std::pair<int, int>> pixels =
-      gridPixels(scene.camera.width, scene.camera.height, across, down);
   const Tracer tracer(scene, settings);
   std::size_t used = 0;
-  for (const auto& [x, y] : pixels) {
+  for (const auto& [x, y, sample] : jobs) {
     // Each tree gets what the grid's budget has left.
     TraceLimits left = limits;
     left.memoryBudget = limits.memoryBudget - used;
-    PixelTrace trace = tracePixel(tracer, x, y, 0, left);
+    PixelTrace trace = tracePixel(tracer, x, y, sample, left);
     used += trace.tree.segments.size() * sizeof(RaySegment);
     // Its rays join the combined tree with ids after those already there.
     const int offset = int(grid.combined.segments.size());
@@ -123,8 +126,8 @@ GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int acro
     if (full) {
       grid.truncated = true;
       const std::string where = std::to_string(grid.traces.size()) + " of " +
-                                std::to_string(pixels.size()) +
-                                " pixels; the last tree is cut short";
+                                std::to_string(jobs.size()) + " " + unit +
+                                "; the last tree is cut short";
       grid.message = grid.cancelled
                          ? "cancelled after " + where
                          : "ray-tree memory budget (" + std::to_string(limits.memoryBudget >> 20) +
@@ -135,6 +138,27 @@ GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int acro
   grid.combined.truncated = grid.truncated;
   grid.combined.message = grid.message;
   return grid;
+}
+
+}  // namespace
+
+GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
+                    const TraceLimits& limits) {
+  std::vector<std::array<int, 3>> jobs;
+  for (const auto& [x, y] : gridPixels(scene.camera.width, scene.camera.height, across, down))
+    jobs.push_back({x, y, 0});
+  return traceAll(scene, settings, jobs, limits, "pixels");
+}
+
+GridTrace traceBundle(const Scene& scene, const RenderSettings& settings, int x, int y,
+                      int firstSample, int count, const TraceLimits& limits) {
+  std::vector<std::array<int, 3>> jobs;
+  for (int i = 0; i < count; ++i) jobs.push_back({x, y, firstSample + i});
+  GridTrace bundle = traceAll(scene, settings, jobs, limits, "samples");
+  bundle.combined.pixelX = x;
+  bundle.combined.pixelY = y;
+  bundle.combined.sample = firstSample;
+  return bundle;
 }
 
 GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,

@@ -3,6 +3,8 @@
 #include "io/JsonChecks.h"
 #include "io/PrettyJson.h"
 
+#include "raylab/core/Sampler.h"
+#include "raylab/core/Sampling.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Tracer.h"
 
@@ -517,7 +519,7 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   onlyKeys(j, path,
            {"title", "text", "view", "algorithm", "pixel", "sample", "reveal", "colour", "filters",
             "camera_view", "select_ray", "samples", "measure", "scene_changes", "question",
-            "teacher_notes", "requires"});
+            "teacher_notes", "requires", "bundle", "all_hits"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
@@ -607,6 +609,22 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
                " rays (0.." + std::to_string(rays - 1) + ")");
   }
 
+  // A bundle of samples and the hits along a ray are drawn for the step's pixel.
+  if (j.contains("bundle")) {
+    s.bundle = integerAtLeast(j["bundle"], path + "/bundle", 1);
+    if (s.bundle > LessonStep::kMaxBundle)
+      fail(path + "/bundle", "a bundle draws at most " + std::to_string(LessonStep::kMaxBundle) +
+                                 " samples of the pixel (" + std::to_string(s.bundle) + " asked)");
+  }
+  if (j.contains("all_hits")) s.allHits = boolean(j["all_hits"], path + "/all_hits");
+  if (!s.pixelX && (s.bundle > 1 || s.allHits))
+    fail(path + (j.contains("bundle") ? "/bundle" : "/all_hits"),
+         std::string(j.contains("bundle") ? "bundle" : "all_hits") + " needs a pixel");
+  if ((s.bundle > 1 || s.allHits) && s.view != LessonView::Scene && s.view != LessonView::Inspector)
+    fail(path + (j.contains("bundle") ? "/bundle" : "/all_hits"),
+         "bundle and all_hits belong to the scene and inspector views (this step's view is \"" +
+             std::string(toString(s.view)) + "\")");
+
   if (j.contains("question")) s.question = question(j["question"], path + "/question", s);
   return s;
 }
@@ -683,6 +701,35 @@ const char* toString(LessonCameraView view) { return nameOf(kCameraViews, view);
 const char* toString(LessonMeasure measure) { return nameOf(kMeasures, measure); }
 const char* toString(LessonSamples::Sampler sampler) { return nameOf(kSamplers, sampler); }
 const char* toString(LessonCheck::Quantity quantity) { return nameOf(kQuantities, quantity); }
+
+std::vector<Vec3> LessonSamples::directions(std::uint64_t seed) const {
+  std::vector<Vec3> result;
+  result.reserve(std::size_t(std::max(count, 0)));
+  for (int i = 0; i < count; ++i) {
+    // Independent random points (sample i's stream), not a stratified pattern: the
+    // cloud shows the density the sampler draws from, as a renderer meets it.
+    raylab::Sampler random(seed, 0, 0, i);
+    const Vec2 u = random.next2D();
+    switch (sampler) {
+      case Sampler::Cosine:
+        result.push_back(sampleCosineHemisphere(u));
+        break;
+      case Sampler::Uniform: {
+        Vec3 d = sampleUniformSphere(u);
+        d.z = std::abs(d.z);
+        result.push_back(d);
+        break;
+      }
+      case Sampler::Sphere:
+        result.push_back(sampleUniformSphere(u));
+        break;
+      case Sampler::Phong:
+        result.push_back(samplePhongLobe(u, exponent));
+        break;
+    }
+  }
+  return result;
+}
 
 RenderSettings LessonStep::settings() const {
   RenderSettings s = scene->render;

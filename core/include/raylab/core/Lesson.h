@@ -6,6 +6,7 @@
 #include "raylab/core/Scene.h"
 
 #include <climits>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -96,6 +97,10 @@ struct LessonSamples {
   Sampler sampler = Sampler::Cosine;
   int count = 256;        ///< Directions drawn, >= 1.
   double exponent = 0.0;  ///< Phong exponent (> 0, required for "phong" only).
+
+  /// The `count` directions the view draws (unit vectors, local frame), the same for the
+  /// same seed on every machine.
+  std::vector<Vec3> directions(std::uint64_t seed = 0) const;
 };
 const char* toString(LessonSamples::Sampler sampler);
 
@@ -141,6 +146,9 @@ struct LessonQuestion {
 
 /// One step of a lesson: what to show, what to read, what to ask.
 struct LessonStep {
+  /// The most samples a "bundle" draws together.
+  static constexpr int kMaxBundle = 256;
+
   LocalText title;
   LocalText text;
   LessonView view = LessonView::Scene;
@@ -151,8 +159,14 @@ struct LessonStep {
   LessonColouring colouring = LessonColouring::Energy;
   LessonFilters filters;
   LessonCameraView cameraView = LessonCameraView::Default;
-  std::optional<int> selectRay;                    ///< Segment id to select (inspector: default 0).
-  std::optional<LessonSamples> samples;            ///< The "samples" view's sampler.
+  std::optional<int> selectRay;          ///< Segment id to select (inspector: default 0).
+  std::optional<LessonSamples> samples;  ///< The "samples" view's sampler.
+  /// "bundle": samples sample .. sample + bundle - 1 of the pixel are traced and drawn
+  /// together (traceBundle); 1 draws the one sample. At most LessonStep::kMaxBundle.
+  int bundle = 1;
+  /// "all_hits": every surface the pixel's camera ray (the selected ray in the inspector
+  /// view) crosses is marked along it, entering and leaving (sceneCrossings).
+  bool allHits = false;
   LessonMeasure measure = LessonMeasure::Samples;  ///< Compare and plot views only.
   /// The step's scene changes as written (compact JSON, one per change), for captions.
   std::vector<std::string> sceneChanges;
@@ -234,6 +248,10 @@ struct Lesson {
  *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; measure (views compare
  *   and plot only): samples | time, what the comparison holds equal and the plot's x axis
  *   (default samples); teacher_notes {en, zh};
+ *   bundle (scene and inspector views, needs a pixel): draw samples sample .. sample +
+ *   bundle - 1 of the pixel together, 1..256 (a thin lens's camera rays make a bundle);
+ *   all_hits (scene and inspector views, needs a pixel): true marks every surface the
+ *   camera ray (the inspector's selected ray) crosses, entering and leaving;
  *   requires: a feature name or a list of them (the step needs something RayLab does not
  *   have yet; the loader accepts it and Lesson::requiredFeatures lists it).
  * - scene_changes: edits for this step only, applied in order to a copy of the scene

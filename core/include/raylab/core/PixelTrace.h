@@ -100,6 +100,11 @@ struct GridTrace {
 /// (GridTrace::message).
 GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
                     const TraceLimits& limits);
+/// The traces of samples firstSample .. firstSample + count - 1 of one pixel (x, y), and
+/// one tree holding all their rays: drawn together, the camera rays of a thin lens form
+/// the pixel's bundle (a double cone through the plane in focus). Bounded like traceGrid.
+GridTrace traceBundle(const Scene& scene, const RenderSettings& settings, int x, int y,
+                      int firstSample, int count, const TraceLimits& limits = {});
 /// traceGrid within `memoryBudget` bytes, never cancelled.
 GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
                     std::size_t memoryBudget = kDefaultTreeBudget);

@@ -67,6 +67,28 @@ struct RayInspection {
   std::string oracleText() const;
 };
 
+/// One place where a ray crosses a surface of the scene (every hit along the ray, not
+/// only the nearest): the "inside and outside" lesson's marks.
+struct SceneCrossing {
+  int object = -1;       ///< Index in Scene::objects.
+  double t = 0.0;        ///< Distance along the ray (unit direction), world units.
+  Point3 point{0.0};     ///< origin + t * direction, world space.
+  bool entering = true;  ///< Closed shapes: the ray goes from outside to inside here;
+                         ///< open ones (quad, triangle): it arrives on the front side.
+  bool closed = true;    ///< The shape bounds a solid (sphere, box, plane, closed mesh).
+};
+
+/// Every crossing of the ray `origin + t * direction` (t > 0; `direction` need not be
+/// unit) with every object of `scene` at shutter time `time`, sorted by t, at most
+/// `maxCount` (the nearest ones). Each object answers with Shape::intersectAll in its own
+/// frame at that time, as the engine meets moving objects.
+std::vector<SceneCrossing> sceneCrossings(const Scene& scene, const Point3& origin,
+                                          const Vec3& direction, double time = 0.0,
+                                          std::size_t maxCount = 64);
+/// "t = 7.13  enters 'sphere'" lines, one per crossing, in English or (zh true) Chinese.
+std::string crossingsText(const Scene& scene, const std::vector<SceneCrossing>& crossings,
+                          bool zh = false);
+
 /**
  * \brief Reads one segment of a recorded ray tree against its scene and checks its hit
  * with the exact oracle (ExactOracle, CGAL).

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
@@ -110,6 +111,25 @@ class SceneView {
   int segmentAt(double x, double y, int width, int height, double tolerance = 6.0) const;
   /// @}
 
+  /// \name Lesson overlays
+  /// @{
+  /// Marks every crossing along the ray `origin + t * direction` (sceneCrossings): the ray
+  /// drawn on through all of them, a green ball where it enters a solid, red where it
+  /// leaves, yellow where it crosses an open surface; the solids it passes through are
+  /// drawn see-through. Kept until clearCrossings.
+  void setCrossings(const std::vector<SceneCrossing>& crossings, const Point3& origin,
+                    const Vec3& direction);
+  void clearCrossings();
+  /// Number of crossings marked (0 when none).
+  int crossingCount() const;
+  /// Shows only a sampler's unit directions (LessonSamples::directions) as a point cloud
+  /// over a disk (the surface, normal +z drawn up), instead of the scene, seen from the
+  /// side; `fullSphere` outlines the whole sphere. clearSampleCloud brings the scene back.
+  void setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere = false);
+  void clearSampleCloud();
+  bool showsSampleCloud() const;
+  /// @}
+
   /// The VTK renderer, for a window to show (at most one window at a time).
   vtkRenderer* renderer() const;
   /// Builds what changed since the last render (the ray tree's polydata). Offscreen
@@ -134,6 +154,10 @@ class SceneView {
   std::optional<Vec2> worldToImage(const Point3& world, int width, int height) const;
 
  private:
+  /// Puts only the sample cloud in the renderer and looks at it.
+  void showOnlyCloud();
+  /// Draws the solids the marked crossings pass through see-through.
+  void seeThroughCrossed();
   struct Impl;
   std::unique_ptr<Impl> m_impl;
   Scene m_scene;
