@@ -291,7 +291,8 @@ void ComparePanel::showPlot() {
   const auto axis =
       m_result->compare.equalTime() ? vis::ConvergenceAxis::Time : vis::ConvergenceAxis::Samples;
   if (!m_plot)
-    m_plot = std::make_unique<vis::ConvergencePlot>(*m_result, axis);
+    m_plot = std::make_unique<vis::ConvergencePlot>(
+        *m_result, axis, currentLanguage() == kChinese ? Language::Chinese : Language::English);
   else {
     m_plot->setAxis(axis);
     m_plot->setResult(*m_result);

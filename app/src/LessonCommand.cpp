@@ -42,6 +42,7 @@ struct LessonOptions {
   std::string size;  ///< --size WxH: picture size (image views: the largest render).
   bool list = false;
   bool check = false;
+  int maxSpp = 0;  ///< --max-spp N: most spp of image, comparison and plot steps (0: defaults).
 };
 
 /// An output folder that cannot be made or written in.
@@ -217,7 +218,9 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
                           step.bundle)
                   .combined
             : tracePixel(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample).tree;
-    view.setRayTree(tree, styleOf(step));
+    vis::RayTreeStyle style = styleOf(step);
+    style.language = language;
+    view.setRayTree(tree, style);
     if (const auto frame = revealOf(step, tree)) view.setReveal(*frame);
     const int id = inspector ? step.selectRay.value_or(0) : 0;
     if (inspector) {
@@ -253,7 +256,7 @@ StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size) {
 
 /// The step's algorithm's image: the scene's size fitted inside `cap`, at most 64 spp
 /// unless the step sets the render block itself.
-StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap) {
+StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int maxSpp) {
   Scene scene = *step.scene;
   std::tie(scene.camera.width, scene.camera.height) =
       fitInside({scene.camera.width, scene.camera.height}, cap);
@@ -262,6 +265,7 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap) {
       std::any_of(step.sceneChanges.begin(), step.sceneChanges.end(),
                   [](const std::string& c) { return c.find("\"render\"") != std::string::npos; });
   if (!stepSetsRender) settings.samplesPerPixel = std::min(settings.samplesPerPixel, kImageSppCap);
+  if (maxSpp > 0) settings.samplesPerPixel = std::min(settings.samplesPerPixel, maxSpp);
   Renderer renderer(scene, settings);
   const FloatImage image = renderer.render();
   StepPicture result;
@@ -270,7 +274,7 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap) {
 }
 
 /// The four algorithms on a small copy of the step's scene (its pixel scaled with it).
-ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot) {
+ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot, int maxSpp) {
   scene = *step.scene;
   std::tie(scene.camera.width, scene.camera.height) =
       fitInside({scene.camera.width, scene.camera.height}, kCompareImage);
@@ -284,13 +288,21 @@ ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot
   } else {
     compare.samplesPerPixel = kCompareSpp;
   }
+  if (maxSpp > 0) {  // a quick handout: fewer samples, the reference 16 x as many
+    compare.samplesPerPixel = std::min(compare.samplesPerPixel, maxSpp);
+    compare.referenceSamplesPerPixel =
+        std::min(compare.referenceSamplesPerPixel, 16 * std::min(compare.samplesPerPixel, maxSpp));
+  }
   return Comparison(scene, step.settings(), compare).run();
 }
 
-StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size) {
+StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size, int maxSpp,
+                           Language language) {
   Scene scene;
-  const ComparisonResult result = smallComparison(step, scene, false);
-  vis::ComparisonView view(result);
+  const ComparisonResult result = smallComparison(step, scene, false, maxSpp);
+  vis::ComparisonViewOptions options;
+  options.language = language;
+  vis::ComparisonView view(result, options);
   if (step.pixelX && step.pixelY) {
     const int x = *step.pixelX * scene.camera.width / step.scene->camera.width;
     const int y = *step.pixelY * scene.camera.height / step.scene->camera.height;
@@ -305,19 +317,21 @@ StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size) {
   return {view.renderOffscreen(size.first, size.second), {}, {}, {}};
 }
 
-StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size) {
+StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size, int maxSpp,
+                        Language language) {
   Scene scene;
-  const ComparisonResult result = smallComparison(step, scene, true);
-  vis::ConvergencePlot plot(result, step.measure == LessonMeasure::Time
-                                        ? vis::ConvergenceAxis::Time
-                                        : vis::ConvergenceAxis::Samples);
+  const ComparisonResult result = smallComparison(step, scene, true, maxSpp);
+  vis::ConvergencePlot plot(result,
+                            step.measure == LessonMeasure::Time ? vis::ConvergenceAxis::Time
+                                                                : vis::ConvergenceAxis::Samples,
+                            language);
   return {plot.renderOffscreen(size.first, size.second), {}, {}, {}};
 }
 
 /// The picture of one step, by its view. A step needing a feature RayLab lacks (and the
 /// samples view, whose point cloud is not drawn yet) shows the scene view and says so.
 StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<int, int>>& size,
-                        Language language) {
+                        Language language, int maxSpp) {
   const auto picture = size.value_or(kDefaultPicture);
   const HandoutWords& words = wordsIn(language);
   const std::vector<std::string>& missing = step.needs;
@@ -332,11 +346,11 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
   }
   switch (step.view) {
     case LessonView::Image:
-      return imagePicture(step, size.value_or(kImageCap));
+      return imagePicture(step, size.value_or(kImageCap), maxSpp);
     case LessonView::Compare:
-      return comparePicture(step, picture);
+      return comparePicture(step, picture, maxSpp, language);
     case LessonView::Plot:
-      return plotPicture(step, picture);
+      return plotPicture(step, picture, maxSpp, language);
     case LessonView::Inspector:
       return scenePicture(step, picture, true, language);
     case LessonView::Samples:
@@ -438,7 +452,7 @@ int runRender(const LessonOptions& o) {
   std::string md = "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n";
   int pictures = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
-    const StepPicture picture = stepPicture(lesson.steps[i], size, language);
+    const StepPicture picture = stepPicture(lesson.steps[i], size, language, o.maxSpp);
     const std::string png = "step-" + twoDigits(i + 1) + ".png";
     const std::string file = (fs::path(o.out) / png).string();
     vis::writePng(picture.image, file);
@@ -488,6 +502,13 @@ Subcommand addLessonCommand(CLI::App& cli) {
                        "Picture size WIDTHxHEIGHT (default 640x480; image steps: the largest "
                        "render, default 320x240)")
           ->check(CLI::Validator(checkSize, "WxH"));
+  CLI::Option* maxSpp =
+      command
+          ->add_option("--max-spp", options->maxSpp,
+                       "Most samples per pixel of image, comparison and plot steps, for a "
+                       "quick handout (default: images up to 64, comparisons 8 against a "
+                       "128-spp reference, plots up to 16 against 256)")
+          ->check(CLI::Range(1, 1 << 16));
   command->add_option("--dir", options->dir, "Folder of the lesson files")->capture_default_str();
   command->add_option("--lang", options->lang, "Language of titles and the handout: en or zh")
       ->check(CLI::IsMember({"en", "zh"}))
@@ -496,6 +517,7 @@ Subcommand addLessonCommand(CLI::App& cli) {
   check->needs(file)->excludes(out);
   out->needs(file);
   size->needs(out);
+  maxSpp->needs(out);
   command->callback([options]() {
     if (!options->list && !options->check && options->out.empty()) {
       if (!options->file.empty())

@@ -1,8 +1,10 @@
 #include "raylab/vis/ConvergencePlot.h"
 
+#include "TextFonts.h"
 #include "VtkImage.h"
 
 #include "raylab/core/Check.h"
+#include "raylab/vis/ComparisonCaptions.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ImageIO.h"
 
@@ -71,8 +73,9 @@ struct ConvergencePlot::Impl {
   }
 };
 
-ConvergencePlot::ConvergencePlot(const ComparisonResult& result, ConvergenceAxis axis)
-    : m_impl(std::make_unique<Impl>()), m_result(result), m_axis(axis) {
+ConvergencePlot::ConvergencePlot(const ComparisonResult& result, ConvergenceAxis axis,
+                                 Language language)
+    : m_impl(std::make_unique<Impl>()), m_result(result), m_axis(axis), m_language(language) {
   m_impl->view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
   m_impl->view->GetScene()->AddItem(m_impl->chart);
   build();
@@ -87,6 +90,11 @@ void ConvergencePlot::setResult(const ComparisonResult& result) {
 
 void ConvergencePlot::setAxis(ConvergenceAxis axis) {
   m_axis = axis;
+  build();
+}
+
+void ConvergencePlot::setLanguage(Language language) {
+  m_language = language;
   build();
 }
 
@@ -119,7 +127,7 @@ void ConvergencePlot::build() {
     m_impl->counts.push_back(int(x.size()));
     if (x.empty()) continue;
     if (figures.algorithm == Algorithm::PathTracing) path = &figures;
-    auto table = makeTable(algorithmTitle(figures.algorithm), x, y);
+    auto table = makeTable(panelTitle(figures.algorithm, m_language), x, y);
     vtkPlot* line = chart->AddPlot(vtkChart::LINE);
     line->SetInputData(table, 0, 1);
     const Rgb8 colour = algorithmColour(figures.algorithm);
@@ -172,8 +180,11 @@ void ConvergencePlot::build() {
   // Step 3: log-log axes a little wider than the data (whole decades when they fit).
   vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
   vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
-  bottom->SetTitle(samples ? "samples per pixel" : "render time (s)");
-  left->SetTitle("error (RMSE against path-traced reference)");
+  const bool zh = m_language == Language::Chinese;
+  bottom->SetTitle(samples ? (zh ? "每像素采样数" : "samples per pixel")
+                           : (zh ? "渲染时间（秒）" : "render time (s)"));
+  left->SetTitle(zh ? "误差（与路径追踪参考图像的均方根误差）"
+                    : "error (RMSE against path-traced reference)");
   for (vtkAxis* axis : {bottom, left}) {
     axis->SetLogScale(true);
     axis->SetGridVisible(true);
@@ -184,11 +195,20 @@ void ConvergencePlot::build() {
     left->SetBehavior(vtkAxis::FIXED);
     left->SetUnscaledRange(yMin / 1.5, yMax * 1.5);
   }
-  std::string title = "Convergence";
-  if (!m_result.sceneName.empty()) title += ": " + m_result.sceneName;
-  title += " (" + std::to_string(m_result.width) + "x" + std::to_string(m_result.height) + ", " +
-           (m_result.compare.equalTime() ? "equal time" : "equal samples") + ")";
+  std::string title = zh ? "收敛曲线" : "Convergence";
+  if (!m_result.sceneName.empty()) title += (zh ? "：" : ": ") + m_result.sceneName;
+  title += (zh ? "（" : " (") + std::to_string(m_result.width) + "x" +
+           std::to_string(m_result.height) + (zh ? "，" : ", ") +
+           (m_result.compare.equalTime() ? (zh ? "等时间" : "equal time")
+                                         : (zh ? "等采样数" : "equal samples")) +
+           (zh ? "）" : ")");
   chart->SetTitle(title);
+  useFontFor(chart->GetTitleProperties(), m_language);
+  for (vtkAxis* axis : {bottom, left}) {
+    useFontFor(axis->GetTitleProperties(), m_language);
+    useFontFor(axis->GetLabelProperties(), m_language);
+  }
+  useFontFor(chart->GetLegend()->GetLabelProperties(), m_language);
   chart->SetShowLegend(true);
   chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
   chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);

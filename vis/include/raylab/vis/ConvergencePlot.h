@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/Lesson.h"
 #include "raylab/vis/Image.h"
 
 #include <memory>
@@ -30,8 +31,11 @@ const char* toString(ConvergenceAxis axis);
  */
 class ConvergencePlot {
  public:
+  /// A plot of `result`; `language` is that of its words (title, axes, legend; Chinese
+  /// drawn with a CJK font when one is installed).
   explicit ConvergencePlot(const ComparisonResult& result,
-                           ConvergenceAxis axis = ConvergenceAxis::Samples);
+                           ConvergenceAxis axis = ConvergenceAxis::Samples,
+                           Language language = Language::English);
   ~ConvergencePlot();
   ConvergencePlot(const ConvergencePlot&) = delete;
   ConvergencePlot& operator=(const ConvergencePlot&) = delete;
@@ -39,6 +43,8 @@ class ConvergencePlot {
   void setResult(const ComparisonResult& result);
   void setAxis(ConvergenceAxis axis);
   ConvergenceAxis axis() const { return m_axis; }
+  void setLanguage(Language language);
+  Language language() const { return m_language; }
   /// Number of points drawn for each algorithm, in the result's order.
   std::vector<int> pointCounts() const;
 
@@ -57,6 +63,7 @@ class ConvergencePlot {
   std::unique_ptr<Impl> m_impl;
   ComparisonResult m_result;
   ConvergenceAxis m_axis;
+  Language m_language;
 };
 
 }  // namespace raylab::vis
