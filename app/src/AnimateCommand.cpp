@@ -6,6 +6,7 @@
 #include "raylab/core/PixelTrace.h"
 
 #include "raylab/core/Exception.h"
+#include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/ImageIO.h"
 
 #include <cstdio>
@@ -30,10 +31,11 @@ class AnimateError : public Exception {
 
 struct AnimateOptions {
   RayTreeOptions tree;
-  std::string frames;  ///< --frames A:B (inclusive); empty = all.
-  int every = 1;       ///< --every N.
-  std::string video;   ///< --video F.mp4; empty = none.
-  int fps = 24;        ///< --fps of the video.
+  std::string frames;    ///< --frames A:B (inclusive); empty = all.
+  int every = 1;         ///< --every N.
+  std::string video;     ///< --video F.mp4; empty = none.
+  int fps = 24;          ///< --fps of the video.
+  bool captions = true;  ///< --captions: the narration of each frame along its bottom.
 };
 
 /// Parses "A:B" (A <= B, both >= 0); nothing when malformed.
@@ -132,6 +134,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   ProgressBar progress("animate");
   for (std::size_t i = 0; i < frames.size(); ++i) {
     view->setReveal(vis::revealFrame(tree, animation, frames[i]));
+    if (options.captions) view->setCaption(vis::stepCaption(trace, animation, frames[i]));
     view->renderToPng(frameFile(frames[i]), width, height);
     progress.update(double(i + 1) / double(frames.size()),
                     std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " frames");
@@ -168,7 +171,8 @@ Subcommand addAnimateCommand(CLI::App& cli) {
   command->footer(
       "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable folder, no ffmpeg),\n"
       "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
-      "Frame N is the same picture as `raylab trace --frame N` with the same options.\n"
+      "Frame N is the same picture as `raylab trace --frame N` with the same options, with\n"
+      "the narration of that moment along its bottom (--no-captions leaves it out).\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.");
   options->tree.add(command, "Folder for the frames (frame_0000.png, ...)", "640x480");
   command->add_option("--frames", options->frames, "Only frames FIRST:LAST (inclusive)")
@@ -176,6 +180,11 @@ Subcommand addAnimateCommand(CLI::App& cli) {
   command->add_option("--every", options->every, "Write every Nth frame")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str()
+      ->group("Animation");
+  command
+      ->add_flag("--captions,!--no-captions", options->captions,
+                 "Write each frame's narration (which ray travels, what it hit) along its "
+                 "bottom, so a video keeps it (default on)")
       ->group("Animation");
   command->add_option("--video", options->video, "Also encode the frames to this video (ffmpeg)");
   command->add_option("--fps", options->fps, "Frames per second of the video")

@@ -99,6 +99,22 @@ void checkSame(const std::string& a, const std::string& b) {
   check(differ == 0, std::to_string(differ) + " pixels differ");
 }
 
+/// `captioned` is `plain` with a caption along its bottom: the same size, the same pixels
+/// above the bottom fifth, and over a hundred pixels changed within it (the words).
+void checkCaptioned(const std::string& captioned, const std::string& plain) {
+  const SrgbImage x = vis::readPng(captioned), y = vis::readPng(plain);
+  check(x.width == y.width && x.height == y.height,
+        "same size " + x.toString() + " " + y.toString());
+  if (x.width != y.width || x.height != y.height) return;
+  const int band = x.height - x.height / 5;
+  std::size_t above = 0, within = 0;
+  for (int j = 0; j < x.height; ++j)
+    for (int i = 0; i < x.width; ++i)
+      if (x.at(i, j) != y.at(i, j)) (j < band ? above : within)++;
+  check(above == 0, std::to_string(above) + " pixels differ above the caption band");
+  check(within > 100, std::to_string(within) + " pixels of the caption band differ (> 100)");
+}
+
 void checkFrames(const std::string& dir, int count, int width, int height) {
   int found = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
@@ -126,11 +142,13 @@ void checkFrames(const std::string& dir, int count, int width, int height) {
 int main(int argc, char** argv) {
   const std::string usage =
       "usage: raylab_check_ray_tree TREE.json SCENE.json RAYS | --same A.png B.png |"
-      " --frames DIR COUNT WIDTH HEIGHT\n";
+      " --frames DIR COUNT WIDTH HEIGHT | --captioned CAPTIONED.png PLAIN.png\n";
   try {
     const std::string first = argc > 1 ? argv[1] : "";
     if (first == "--same" && argc == 4) {
       checkSame(argv[2], argv[3]);
+    } else if (first == "--captioned" && argc == 4) {
+      checkCaptioned(argv[2], argv[3]);
     } else if (first == "--frames" && argc == 6) {
       checkFrames(argv[2], std::stoi(argv[3]), std::stoi(argv[4]), std::stoi(argv[5]));
     } else if (argc == 4 && first.rfind("--", 0) != 0) {

@@ -3,6 +3,7 @@
 #include "RayTreeActors.h"
 #include "ShapeGeometry.h"
 #include "TeachingOverlays.h"
+#include "TextFonts.h"
 #include "VtkImage.h"
 
 #include "raylab/core/Check.h"
@@ -27,6 +28,8 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkSphereSource.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -194,6 +197,7 @@ struct SceneView::Impl {
   int crossingCount = 0;
   std::vector<int> crossed;  ///< Solids the crossings' ray passes through (drawn see-through).
   std::vector<vtkSmartPointer<vtkProp>> cloud;  ///< setSampleCloud's props; empty = scene.
+  vtkSmartPointer<vtkTextActor> caption;        ///< setCaption's text; null when none.
   Point3 inside{0.0};  ///< The room's inside, which one-sided surfaces face.
 
   ~Impl() {
@@ -281,6 +285,7 @@ void SceneView::setScene(const Scene& scene) {
   seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
   for (const auto& prop : m_impl->crossings) renderer->AddViewProp(prop);
   seeThroughCrossed();
+  if (m_impl->caption) renderer->AddViewProp(m_impl->caption);
 
   // Step 5: look at it all from outside (or at the sample cloud, which replaces it all).
   resetViewCamera();
@@ -344,6 +349,23 @@ void SceneView::clearSampleCloud() {
 }
 
 bool SceneView::showsSampleCloud() const { return !m_impl->cloud.empty(); }
+
+void SceneView::setCaption(const std::string& text, Language language) {
+  if (m_impl->caption) m_impl->renderer->RemoveViewProp(m_impl->caption);
+  m_impl->caption = nullptr;
+  if (text.empty()) return;
+  auto caption = vtkSmartPointer<vtkTextActor>::New();
+  caption->SetInput(text.c_str());
+  vtkTextProperty* p = caption->GetTextProperty();
+  useFontFor(p, language);
+  p->SetColor(0.95, 0.95, 0.95);
+  p->SetBackgroundColor(0.0, 0.0, 0.0);
+  p->SetBackgroundOpacity(0.65);
+  p->SetFrame(false);
+  caption->SetDisplayPosition(8, 8);
+  m_impl->caption = caption;
+  m_impl->renderer->AddViewProp(caption);
+}
 
 int SceneView::objectAt(double x, double y, int width, int height) const {
   if (width <= 0 || height <= 0 || m_scene.objects.empty()) return -1;
@@ -459,6 +481,14 @@ SrgbImage SceneView::renderOffscreen(int width, int height) {
     m_impl->offscreen->Render();
   }
   m_impl->offscreen->SetSize(width, height);
+
+  // The caption's size follows the picture's height (28 lines of it would fill it), and
+  // shrinks to fit its width (a glyph is about 0.55 of the font size wide).
+  if (m_impl->caption) {
+    const double chars = std::max<double>(1.0, std::strlen(m_impl->caption->GetInput()));
+    const int fit = int(std::floor((width - 16) / (0.55 * chars)));
+    m_impl->caption->GetTextProperty()->SetFontSize(std::max(7, std::min(height / 28, fit)));
+  }
 
   // Step 2: render, then read the back buffer.
   renderer->ResetCameraClippingRange();

@@ -128,6 +128,10 @@ class SceneView {
   void setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere = false);
   void clearSampleCloud();
   bool showsSampleCloud() const;
+  /// A line of text along the bottom of the picture, on a dark band (the bounce
+  /// animation's narration in `raylab animate`'s frames); empty removes it. Its size
+  /// follows the picture's height.
+  void setCaption(const std::string& text, Language language = Language::English);
   /// @}
 
   /// The VTK renderer, for a window to show (at most one window at a time).
