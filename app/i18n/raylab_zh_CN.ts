@@ -1159,6 +1159,50 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Click a ray in the 3D view, or choose its number above, to see its origin, direction, hit, material, weight, pdf and energy, and the exact oracle&apos;s check of its hit beside double precision.</source>
         <translation>在三维视图中单击一条光线，或在上方选择它的编号，即可查看它的起点、方向、交点、材质、权重、概率密度（pdf）和能量，以及精确判定器对该交点的检验与双精度结果的对照。</translation>
     </message>
+    <message>
+        <source>Exactness figures</source>
+        <translation>精确性数据</translation>
+    </message>
+    <message>
+        <source>Show the exact oracle&apos;s check of this ray&apos;s hit (CGAL, exact numbers) beside double precision: the t values, their difference in ulps and the error bound</source>
+        <translation>显示精确判定器（CGAL，精确数值运算）对这条光线交点的检验，并与双精度结果对照：t 值、二者相差多少个 ulp，以及误差界</translation>
+    </message>
+    <message>
+        <source>(Exactness figures: the exact oracle&apos;s check of the hit, one click away above.)</source>
+        <translation>（精确性数据：精确判定器对交点的检验，点击上方按钮即可查看。）</translation>
+    </message>
+    <message>
+        <source>Where: towards a light, but &apos;%1&apos; is in the way, %2 units on</source>
+        <translation>去向：射向光源，但在 %2 个单位处被“%1”挡住</translation>
+    </message>
+    <message>
+        <source>Where: from the surface to a point on the light, %1 units away</source>
+        <translation>去向：从表面射向光源上的一点，距离 %1 个单位</translation>
+    </message>
+    <message>
+        <source>Where: it hit &apos;%1&apos;, %2 units from where it started</source>
+        <translation>去向：打中“%1”，距起点 %2 个单位</translation>
+    </message>
+    <message>
+        <source>Where: it hit nothing and left the scene</source>
+        <translation>去向：没有打中任何物体，离开了场景</translation>
+    </message>
+    <message>
+        <source>What it carried: %1% of the light this pixel sample found</source>
+        <translation>携带：这个像素采样所得光能的 %1%</translation>
+    </message>
+    <message>
+        <source>What it carried: no light (this sample found none)</source>
+        <translation>携带：没有光能（这个采样没有找到光）</translation>
+    </message>
+    <message>
+        <source>Why it stopped: %1</source>
+        <translation>为何终止：%1</translation>
+    </message>
+    <message>
+        <source>%1 ray, depth %2</source>
+        <translation>%1光线，深度 %2</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::LessonPanel</name>

@@ -1,6 +1,7 @@
 #include "InspectorPanel.h"
 
 #include "InspectorWords.h"
+#include "UiWords.h"
 
 #include "raylab/core/RayInspector.h"
 #include "raylab/vis/SceneView.h"
@@ -46,7 +47,15 @@ InspectorPanel::InspectorPanel(const vis::SceneView& view, QWidget* parent)
       emit segmentRequested(m_view.rayTree().segments[std::size_t(m_segment)].firstChild);
   });
 
-  // Step 2: the text, the ray's values then the oracle's check.
+  // Step 2: the text: what a student asks first (where, what it carried, why it stopped),
+  // the ray's values, and the exact oracle's figures one click further.
+  m_exact = new QPushButton(tr("Exactness figures"));
+  m_exact->setCheckable(true);
+  m_exact->setToolTip(
+      tr("Show the exact oracle's check of this ray's hit (CGAL, exact numbers) beside "
+         "double precision: the t values, their difference in ulps and the error bound"));
+  connect(m_exact, &QPushButton::toggled, this, [this] { showSegment(m_segment); });
+  header->addWidget(m_exact);
   m_text = new QPlainTextEdit;
   m_text->setReadOnly(true);
   m_text->setLineWrapMode(QPlainTextEdit::WidgetWidth);
@@ -79,11 +88,50 @@ void InspectorPanel::showSegment(int id) {
                         "oracle's check of its hit beside double precision."));
     return;
   }
-  const RayInspection inspection = RayInspector::inspect(m_view.scene(), m_view.rayTree(), id);
+  const bool exact = m_exact->isChecked();
+  const RayInspection inspection =
+      RayInspector::inspect(m_view.scene(), m_view.rayTree(), id, exact);
   std::vector<std::string> names;
   for (const SceneObject& object : m_view.scene().objects) names.push_back(object.name);
-  m_text->setPlainText(inspectorText(inspection.rayText() + "\n" + inspection.oracleText(),
-                                     m_view.rayTree(), id, names));
+  const QString values =
+      inspectorText(inspection.rayText() + (exact ? "\n" + inspection.oracleText() : ""),
+                    m_view.rayTree(), id, names);
+  m_text->setPlainText(
+      inWords(inspection) + QStringLiteral("\n") + values +
+      (exact ? QString()
+             : QStringLiteral("\n") + tr("(Exactness figures: the exact oracle's check of the hit, "
+                                         "one click away above.)")));
+}
+
+QString InspectorPanel::inWords(const RayInspection& r) const {
+  const RaySegment& s = r.segment;
+  const QString object = QString::fromStdString(r.objectName);
+  // Where it went.
+  QString where;
+  if (s.kind == RayKind::Shadow)
+    where = s.endReason == EndReason::Occluded
+                ? tr("Where: towards a light, but '%1' is in the way, %2 units on")
+                      .arg(object)
+                      .arg(r.distance, 0, 'g', 4)
+                : tr("Where: from the surface to a point on the light, %1 units away")
+                      .arg(r.distance, 0, 'g', 4);
+  else if (s.hit)
+    where = tr("Where: it hit '%1', %2 units from where it started")
+                .arg(object)
+                .arg(r.distance, 0, 'g', 4);
+  else
+    where = tr("Where: it hit nothing and left the scene");
+  // What it carried: its share of the pixel's light.
+  const double pixel =
+      m_view.rayTree().segments.empty() ? 0.0 : m_view.rayTree().segments.front().energy();
+  const QString carried = pixel > 0.0
+                              ? tr("What it carried: %1% of the light this pixel sample found")
+                                    .arg(100.0 * r.energy / pixel, 0, 'f', 1)
+                              : tr("What it carried: no light (this sample found none)");
+  // Why it stopped.
+  const QString why = tr("Why it stopped: %1").arg(endReasonLabel(s.endReason));
+  return tr("%1 ray, depth %2").arg(rayKindWord(s.kind)).arg(s.depth) + QStringLiteral("\n") +
+         where + QStringLiteral("\n") + carried + QStringLiteral("\n") + why + QStringLiteral("\n");
 }
 
 QString InspectorPanel::text() const { return m_text->toPlainText(); }

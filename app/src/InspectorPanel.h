@@ -10,6 +10,10 @@ class QPlainTextEdit;
 class QPushButton;
 class QSpinBox;
 
+namespace raylab {
+struct RayInspection;
+}
+
 namespace raylab::vis {
 class SceneView;
 }
@@ -43,17 +47,23 @@ class InspectorPanel : public QWidget {
   QSpinBox* segmentBox() const { return m_number; }
   QPushButton* parentButton() const { return m_parent; }
   QPushButton* childButton() const { return m_child; }
+  /// Shows the exact oracle's figures (off: the values only, the oracle one click away).
+  QPushButton* exactButton() const { return m_exact; }
 
  signals:
   /// The user asked for ray `id` (number box, parent / child buttons).
   void segmentRequested(int id);
 
  private:
+  /// The first lines: the ray's kind, where it went, the share of the pixel's light it
+  /// carried and why it stopped, in the window's language.
+  QString inWords(const RayInspection& inspection) const;
   const vis::SceneView& m_view;
   int m_segment = -1;
   QSpinBox* m_number = nullptr;
   QPushButton* m_parent = nullptr;
   QPushButton* m_child = nullptr;
+  QPushButton* m_exact = nullptr;
   QPlainTextEdit* m_text = nullptr;
 };
 

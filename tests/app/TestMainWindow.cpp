@@ -203,6 +203,15 @@ TEST_F(MainWindowTest, 09_ClickingARayInspectsIt) {
   EXPECT_EQ(m_window->sceneView().selectedSegment(), 0);
   EXPECT_EQ(inspector.segment(), 0);
   EXPECT_EQ(inspector.segmentBox()->value(), 0);
+  // What a student asks comes first; the exact oracle's figures are one click away.
+  const std::string words = inspector.text().toStdString();
+  EXPECT_EQ(words.rfind("camera ray, depth 0\nWhere: it hit 'blue cube', ", 0), 0u) << words;
+  EXPECT_NE(words.find("What it carried: 100.0% of the light this pixel sample found"),
+            std::string::npos)
+      << words;
+  EXPECT_NE(words.find("Why it stopped: "), std::string::npos) << words;
+  EXPECT_EQ(words.find("Exact oracle (CGAL)"), std::string::npos) << words;
+  inspector.exactButton()->click();
   const std::string text = inspector.text().toStdString();
   const RayInspection expected = RayInspector::inspect(defaultScene(), panel.tree(), 0);
   EXPECT_NE(text.find("Ray #0: camera ray, depth 0"), std::string::npos) << text;
