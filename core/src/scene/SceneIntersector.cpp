@@ -134,6 +134,11 @@ bool SceneIntersector::occluded(const Ray& ray) const {
   return false;
 }
 
+const Bvh* SceneIntersector::hierarchy(int object) const {
+  if (object < 0 || object >= static_cast<int>(m_entries.size())) return nullptr;
+  return m_entries[static_cast<std::size_t>(object)].bvh;
+}
+
 std::optional<Hit> SceneIntersector::intersectEntry(const Entry& e, const Ray& ray) const {
   if (!e.bvh) return e.shape->intersect(ray);
   return m_bruteForce ? e.bvh->intersectBruteForce(ray) : e.bvh->intersect(ray);

@@ -80,6 +80,9 @@ class SceneIntersector {
   Vec3 emitted(int object, const SurfaceInteraction& hit, const Vec3& rayDirection) const;
 
   const Scene& scene() const { return *m_scene; }
+  /// The hierarchy searched for mesh object `object` (built with the settings' split; the
+  /// mesh's own when acceleration is off), or null when that object is not a mesh.
+  const Bvh* hierarchy(int object) const;
 
  private:
   /// sampleLightObject for light k of m_lights.
