@@ -511,7 +511,8 @@ double compute(const LessonStep& step, const LessonCheck& c) {
   if (c.quantity == Q::BvhNodes || c.quantity == Q::BvhBoxesEntered ||
       c.quantity == Q::BvhTriangleTests) {
     // The hierarchy the step's render searches, and the camera ray of the check's pixel.
-    const Bvh* bvh = SceneIntersector(scene, step.settings()).hierarchy(c.object);
+    const SceneIntersector intersector(scene, step.settings());  // owns a rebuilt hierarchy
+    const Bvh* bvh = intersector.hierarchy(c.object);
     if (!bvh) {
       ADD_FAILURE() << "object " << c.object << " is not a mesh";
       return -1.0;
