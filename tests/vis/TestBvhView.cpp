@@ -32,6 +32,18 @@ int pixelsOf(const SrgbImage& image, const Vec3& colour) {
   return n;
 }
 
+/// A view close to the mesh ball, so its boxes fill the picture.
+void lookAtBall(SceneView& view, const Scene& scene) {
+  const Point3 centre =
+      scene.objects[std::size_t(scene.findObject("mesh ball"))].shape->bounds().centre();
+  ViewCamera camera;
+  camera.eye = centre + Vec3(2.0, 2.5, 5.0);
+  camera.focalPoint = centre;
+  camera.up = Vec3(0, 1, 0);
+  camera.viewAngle = 35.0;
+  view.setViewCamera(camera);
+}
+
 /// Saves a picture for a person to look at (build/ci/Testing/Temporary).
 void keep(const SrgbImage& image, const std::string& name) {
   std::filesystem::create_directories(RAYLAB_TEMP_DIR);
@@ -47,6 +59,7 @@ TEST(BvhView, 01_LevelsAreDrawnInTheirColours) {
   ASSERT_GE(levels.size(), 4u);
 
   SceneView view(scene);
+  lookAtBall(view, scene);
   const SrgbImage plain = view.renderOffscreen(kSize, kSize);
   for (int d = 0; d < 3; ++d)
     EXPECT_LT(pixelsOf(plain, bvhLevelColour(d)), 20) << "level " << d << "'s colour without boxes";
@@ -56,7 +69,7 @@ TEST(BvhView, 01_LevelsAreDrawnInTheirColours) {
   style.firstLevel = 0;
   style.lastLevel = 2;
   view.setBvh(style);
-  EXPECT_EQ(view.bvhBoxesDrawn(), int(levels[0].size() + levels[1].size() + levels[2].size()));
+  EXPECT_EQ(view.bvhSummary().boxes, int(levels[0].size() + levels[1].size() + levels[2].size()));
   const SrgbImage boxes = view.renderOffscreen(kSize, kSize);
   keep(boxes, "TestBvhView_levels");
   // The root's yellow, level 1's orange and level 2's pink all show, as lines (a few
@@ -72,12 +85,12 @@ TEST(BvhView, 01_LevelsAreDrawnInTheirColours) {
   // One level alone; then the boxes are gone again.
   style.firstLevel = style.lastLevel = 1;
   view.setBvh(style);
-  EXPECT_EQ(view.bvhBoxesDrawn(), int(levels[1].size()));
+  EXPECT_EQ(view.bvhSummary().boxes, int(levels[1].size()));
   const SrgbImage one = view.renderOffscreen(kSize, kSize);
   EXPECT_GT(pixelsOf(one, bvhLevelColour(1)), 100);
   EXPECT_LT(pixelsOf(one, bvhLevelColour(0)), 20);
   view.clearBvh();
-  EXPECT_EQ(view.bvhBoxesDrawn(), 0);
+  EXPECT_EQ(view.bvhSummary().boxes, 0);
   EXPECT_LT(pixelsOf(view.renderOffscreen(kSize, kSize), bvhLevelColour(1)), 20);
 }
 
@@ -95,12 +108,13 @@ TEST(BvhView, 02_TheBoxesOneRayMeets) {
   ASSERT_GT(skipped, 0);
 
   SceneView view(scene);
+  lookAtBall(view, scene);
   BvhStyle style;
   style.object = ball;
   style.lastLevel = 64;
   style.ray = ray;
   view.setBvh(style);
-  EXPECT_EQ(view.bvhBoxesDrawn(), int(trace.visits.size()));
+  EXPECT_EQ(view.bvhSummary().boxes, int(trace.visits.size()));
   const SrgbImage image = view.renderOffscreen(kSize, kSize);
   keep(image, "TestBvhView_visits");
   // The entered root (yellow) and the grey of boxes passed by or culled.
@@ -113,7 +127,7 @@ TEST(BvhView, 02_TheBoxesOneRayMeets) {
   BvhSettings median;
   median.split = BvhSettings::Split::Median;
   const Bvh other(mesh.vertices(), mesh.triangles(), median);
-  EXPECT_EQ(view.bvhBoxesDrawn(), int(other.traceVisits(ray).visits.size()));
+  EXPECT_EQ(view.bvhSummary().boxes, int(other.traceVisits(ray).visits.size()));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "BvhActors.h"
 
+#include "raylab/core/Lesson.h"
 #include "raylab/core/TriangleMesh.h"
 
 #include <vtkCellArray.h>
@@ -103,54 +104,92 @@ void BvhActors::addTo(vtkRenderer* renderer) const {
   renderer->AddActor(skipped);
 }
 
-void BvhActors::build(const Scene& scene, const BvhStyle& newStyle) {
-  style = newStyle;
-  BoxLines levelLines, enteredLines, skippedLines;
+namespace {
+
+/// Walks what `style` draws of `scene`: box(bounds, colour, kind) for every box, kind 0 a
+/// level box, 1 entered, 2 skipped; returns the counts.
+template <class BoxFn>
+BvhSummary walkBoxes(const Scene& scene, const BvhStyle& style, BoxFn&& box) {
+  BvhSummary summary;
   // The hierarchy a render with this split searches (as SceneIntersector chooses it):
   // the mesh's own, or one built with the split.
-  const Bvh* bvh = nullptr;
+  if (!style.shown() || style.object >= static_cast<int>(scene.objects.size())) return summary;
+  const Shape& shape = *scene.objects[static_cast<std::size_t>(style.object)].shape;
+  if (shape.kind() != ShapeKind::TriangleMesh) return summary;
+  const auto& mesh = static_cast<const TriangleMesh&>(shape);
+  const Bvh* bvh = &mesh.bvh();
   std::optional<Bvh> rebuilt;
-  if (style.shown() && style.object < static_cast<int>(scene.objects.size())) {
-    const Shape& shape = *scene.objects[static_cast<std::size_t>(style.object)].shape;
-    if (shape.kind() == ShapeKind::TriangleMesh) {
-      const auto& mesh = static_cast<const TriangleMesh&>(shape);
-      bvh = &mesh.bvh();
-      if (bvh->settings().split != style.split) {
-        BvhSettings settings = bvh->settings();
-        settings.split = style.split;
-        bvh = &rebuilt.emplace(mesh.vertices(), mesh.triangles(), settings);
-      }
-    }
+  if (bvh->settings().split != style.split) {
+    BvhSettings settings = bvh->settings();
+    settings.split = style.split;
+    bvh = &rebuilt.emplace(mesh.vertices(), mesh.triangles(), settings);
   }
-  if (bvh) {
-    const std::vector<std::vector<BvhBox>> levelBoxes = bvh->levels();
-    // Node -> its box, for the ray's visits.
-    std::vector<const BvhBox*> boxOf(static_cast<std::size_t>(bvh->nodeSlots()), nullptr);
+  summary.depth = bvh->stats().depth;
+  summary.nodes = bvh->stats().nodeCount;
+  const std::vector<std::vector<BvhBox>> levelBoxes = bvh->levels();
+  const auto inLevels = [&](int depth) {
+    return depth >= style.firstLevel && depth <= style.lastLevel;
+  };
+  if (!style.ray) {
     for (const auto& level : levelBoxes)
-      for (const BvhBox& box : level) boxOf[static_cast<std::size_t>(box.node)] = &box;
-    const auto inLevels = [&](int depth) {
-      return depth >= style.firstLevel && depth <= style.lastLevel;
-    };
-    if (!style.ray) {
-      for (const auto& level : levelBoxes)
-        for (const BvhBox& box : level)
-          if (inLevels(box.depth)) levelLines.add(box.bounds, bvhLevelColour(box.depth));
+      for (const BvhBox& b : level)
+        if (inLevels(b.depth)) {
+          box(b.bounds, bvhLevelColour(b.depth), 0);
+          ++summary.boxes;
+        }
+    return summary;
+  }
+  // Node -> its box, for the ray's visits.
+  std::vector<const BvhBox*> boxOf(static_cast<std::size_t>(bvh->nodeSlots()), nullptr);
+  for (const auto& level : levelBoxes)
+    for (const BvhBox& b : level) boxOf[static_cast<std::size_t>(b.node)] = &b;
+  const BvhTrace trace = bvh->traceVisits(*style.ray);
+  summary.triangleTests = trace.triangleTests;
+  summary.hit = trace.hit.has_value();
+  for (const BvhVisit& v : trace.visits) {
+    if (!inLevels(v.depth)) continue;
+    const Bounds3& b = boxOf[static_cast<std::size_t>(v.node)]->bounds;
+    ++summary.boxes;
+    if (v.kind == BvhVisitKind::Entered) {
+      ++summary.entered;
+      box(b, bvhLevelColour(v.depth), 1);
+    } else if (v.kind == BvhVisitKind::Missed) {
+      ++summary.missed;
+      box(b, bvhMissedColour(), 2);
     } else {
-      for (const BvhVisit& v : bvh->traceVisits(*style.ray).visits) {
-        if (!inLevels(v.depth)) continue;
-        const Bounds3& b = boxOf[static_cast<std::size_t>(v.node)]->bounds;
-        if (v.kind == BvhVisitKind::Entered)
-          enteredLines.add(b, bvhLevelColour(v.depth));
-        else
-          skippedLines.add(b,
-                           v.kind == BvhVisitKind::Missed ? bvhMissedColour() : bvhCulledColour());
-      }
+      ++summary.culled;
+      box(b, bvhCulledColour(), 2);
     }
   }
-  boxesDrawn = levelLines.boxes + enteredLines.boxes + skippedLines.boxes;
-  levelLines.into(levels);
-  enteredLines.into(entered);
-  skippedLines.into(skipped);
+  return summary;
+}
+
+}  // namespace
+
+BvhSummary summarizeBvh(const Scene& scene, const BvhStyle& style) {
+  return walkBoxes(scene, style, [](const Bounds3&, const Vec3&, int) {});
+}
+
+BvhStyle lessonBvhStyle(const LessonStep& step) {
+  BvhStyle style;
+  if (!step.bvh) return style;
+  style.object = step.bvh->object;
+  style.firstLevel = step.bvh->firstLevel;
+  style.lastLevel = step.bvh->lastLevel;
+  style.split = step.settings().bvhSplit;
+  if (step.bvh->visits) style.ray = step.cameraRay();
+  return style;
+}
+
+void BvhActors::build(const Scene& scene, const BvhStyle& newStyle) {
+  style = newStyle;
+  BoxLines lines[3];
+  summary = walkBoxes(scene, style, [&](const Bounds3& b, const Vec3& colour, int kind) {
+    lines[kind].add(b, colour);
+  });
+  lines[0].into(levels);
+  lines[1].into(entered);
+  lines[2].into(skipped);
 }
 
 }  // namespace raylab::vis

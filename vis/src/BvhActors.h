@@ -18,7 +18,7 @@ struct BvhActors {
   vtkSmartPointer<vtkActor> levels;   ///< Boxes of the levels (no ray), per-box colours.
   vtkSmartPointer<vtkActor> entered;  ///< Boxes the ray entered, thick, per-box colours.
   vtkSmartPointer<vtkActor> skipped;  ///< Boxes the ray missed or culled, thin, greys.
-  int boxesDrawn = 0;                 ///< Boxes in all three actors.
+  BvhSummary summary;                 ///< What is drawn, counted.
 
   BvhActors();
   /// Adds the actors to `renderer` (once per scene: SceneView::setScene clears props).

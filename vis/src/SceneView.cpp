@@ -396,12 +396,12 @@ void SceneView::clearBvh() { setBvh(BvhStyle{}); }
 
 const BvhStyle& SceneView::bvhStyle() const { return m_impl->bvh.style; }
 
-int SceneView::bvhBoxesDrawn() const { return m_impl->bvh.boxesDrawn; }
+const BvhSummary& SceneView::bvhSummary() const { return m_impl->bvh.summary; }
 
 void SceneView::applyOpacities() {
   seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
   seeThroughCrossed();
-  const int mesh = m_impl->bvh.boxesDrawn > 0 ? m_impl->bvh.style.object : -1;
+  const int mesh = m_impl->bvh.summary.boxes > 0 ? m_impl->bvh.style.object : -1;
   if (mesh >= 0 && mesh < static_cast<int>(m_impl->objects.size())) {
     vtkProperty* p = m_impl->objects[static_cast<std::size_t>(mesh)]->GetProperty();
     p->SetOpacity(std::min(p->GetOpacity(), kMeshOpacityWithBoxes));

@@ -4,6 +4,11 @@
 #include "raylab/core/Ray.h"
 #include "raylab/core/Types.h"
 
+namespace raylab {
+struct LessonStep;
+struct Scene;
+}  // namespace raylab
+
 #include <optional>
 
 namespace raylab::vis {
@@ -33,6 +38,26 @@ struct BvhStyle {
 
   bool shown() const { return object >= 0; }
 };
+
+/// What a BvhStyle draws, counted: for captions in the window and the lesson handouts.
+struct BvhSummary {
+  int depth = 0;          ///< Deepest level of the hierarchy (the root: 0).
+  int nodes = 0;          ///< Nodes (boxes) of the hierarchy.
+  int boxes = 0;          ///< Boxes drawn.
+  int entered = 0;        ///< With a ray: drawn boxes it entered ...
+  int missed = 0;         ///< ... passed by ...
+  int culled = 0;         ///< ... and met only beyond its nearest hit so far.
+  int triangleTests = 0;  ///< With a ray: its ray/triangle tests (all levels).
+  bool hit = false;       ///< With a ray: it hits the mesh.
+};
+
+/// Counts what `style` draws of `scene` (nothing when style.object is not a mesh).
+BvhSummary summarizeBvh(const Scene& scene, const BvhStyle& style);
+
+/// The style of a lesson step's "bvh" block (LessonBvh): its mesh and levels, the split of
+/// the step's settings, and with `visits` the camera ray of the step's pixel. A step
+/// without the block gives the empty style (nothing drawn).
+BvhStyle lessonBvhStyle(const LessonStep& step);
 
 /// Colour of the boxes of level `depth` (linear RGB in [0, 1]): yellow, orange, pink,
 /// cyan, blue, lime, red, white, then again from yellow.

@@ -141,8 +141,8 @@ class SceneView {
   /// Removes the boxes.
   void clearBvh();
   const BvhStyle& bvhStyle() const;
-  /// Boxes drawn now (for tests and captions).
-  int bvhBoxesDrawn() const;
+  /// What is drawn now, counted (for tests and captions).
+  const BvhSummary& bvhSummary() const;
   /// @}
 
   /// The VTK renderer, for a window to show (at most one window at a time).
