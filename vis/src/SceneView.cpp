@@ -380,11 +380,17 @@ int SceneView::objectAt(double x, double y, int width, int height) const {
 void SceneView::updateScene(const Scene& scene) {
   const ViewCamera camera = viewCamera();
   const int highlighted = m_highlighted;
+  // The BVH boxes stay with their mesh (by name) when it is still there.
   const BvhStyle bvh = m_impl->bvh.style;
+  const std::string bvhMesh = bvh.shown() && bvh.object < objectCount()
+                                  ? m_scene.objects[std::size_t(bvh.object)].name
+                                  : std::string();
   setScene(scene);
   setViewCamera(camera);
   setHighlighted(highlighted < objectCount() ? highlighted : -1);
-  if (bvh.shown() && bvh.object < objectCount()) setBvh(bvh);
+  if (!bvhMesh.empty() && bvh.object < objectCount() &&
+      m_scene.objects[std::size_t(bvh.object)].name == bvhMesh)
+    setBvh(bvh);
 }
 
 void SceneView::setBvh(const BvhStyle& style) {

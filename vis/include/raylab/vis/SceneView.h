@@ -132,8 +132,9 @@ class SceneView {
   /// @}
 
   /// \name A mesh's bounding volume hierarchy drawn in the view (lesson 8; BvhStyle.h).
-  /// It is drawn together with the ray tree, and kept through updateScene (setScene
-  /// clears it). Building the boxes happens in the setter.
+  /// It is drawn together with the ray tree, and kept through updateScene while the scene
+  /// still has the mesh (an object of the same name at the same index); setScene clears
+  /// it. Building the boxes happens in the setter.
   /// @{
   /// Draws the boxes `style` asks for (style.object -1, or an object that is not a mesh:
   /// none); while they are shown the mesh is see-through.
