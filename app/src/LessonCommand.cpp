@@ -244,6 +244,8 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
   const double aspect = double(size.first) / size.second;
   if (step.cameraView == LessonCameraView::Camera)
     view.setViewCamera(vis::behindCameraView(scene, aspect));
+  else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
+    view.setViewCamera(vis::closeUpView(scene, step.bvh->object, aspect));
   else
     view.resetViewCamera(aspect);
   result.image = view.renderOffscreen(size.first, size.second);

@@ -516,6 +516,8 @@ void MainWindow::showLessonStep(int index) {
       m_vtkWidget->height() > 0 ? double(m_vtkWidget->width()) / m_vtkWidget->height() : 1.0;
   if (step.cameraView == LessonCameraView::Camera)
     m_view->setViewCamera(vis::behindCameraView(*step.scene, aspect));
+  else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
+    m_view->setViewCamera(vis::closeUpView(*step.scene, step.bvh->object, aspect));
   else
     m_view->resetViewCamera(aspect);
 

@@ -287,6 +287,13 @@ TEST(BvhIntrospection, 07_SahSearchesFewerBoxesThanTheMedianSplit) {
         toString(settings.bvhSplit), f.nodes, f.sahCost, f.boxes, f.boxTests, f.triangles, f.hits,
         f.hitBoxes, f.hitTriangles);
   }
+  // Lesson 8 (steps 6, 8 and 9) quotes these figures; they must stay true.
+  EXPECT_EQ(figures[0].nodes, 849);
+  EXPECT_EQ(figures[1].nodes, 1023);
+  EXPECT_NEAR(figures[0].hitBoxes, 13.0, 0.5);
+  EXPECT_NEAR(figures[1].hitBoxes, 15.0, 0.5);
+  EXPECT_NEAR(figures[0].hitTriangles, 5.8, 0.05);
+  EXPECT_NEAR(figures[1].hitTriangles, 6.4, 0.05);
   EXPECT_LT(figures[0].sahCost, figures[1].sahCost);
   EXPECT_LT(figures[0].boxes + figures[0].triangles, figures[1].boxes + figures[1].triangles);
   EXPECT_LT(figures[0].hitBoxes + figures[0].hitTriangles,

@@ -39,7 +39,8 @@ const Named<LessonColouring> kColourings[] = {{"energy", LessonColouring::Energy
                                               {"kind", LessonColouring::Kind},
                                               {"depth", LessonColouring::Depth}};
 const Named<LessonCameraView> kCameraViews[] = {{"default", LessonCameraView::Default},
-                                                {"camera", LessonCameraView::Camera}};
+                                                {"camera", LessonCameraView::Camera},
+                                                {"close_up", LessonCameraView::CloseUp}};
 const Named<LessonMeasure> kMeasures[] = {{"samples", LessonMeasure::Samples},
                                           {"time", LessonMeasure::Time}};
 const Named<LessonSamples::Sampler> kSamplers[] = {{"cosine", LessonSamples::Sampler::Cosine},
@@ -476,6 +477,8 @@ LessonBvh Reader::bvh(const json& j, const std::string& path, const LessonStep& 
                                  ") comes before the first (" + std::to_string(b.firstLevel) + ")");
   }
   if (j.contains("visits")) b.visits = boolean(j["visits"], path + "/visits");
+  // A ray's visits without levels: all of them, root to leaves.
+  if (b.visits && !j.contains("level") && !j.contains("levels")) b.lastLevel = depth;
   if (b.visits && !step.pixelX)
     fail(path + "/visits", "visits needs a pixel (whose camera ray visits the boxes)");
   return b;
@@ -700,6 +703,9 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
                               std::string(toString(s.view)) + "\")");
     s.bvh = bvh(j["bvh"], path + "/bvh", s);
   }
+  if (s.cameraView == LessonCameraView::CloseUp && !s.bvh)
+    fail(path + (j.contains("camera_view") ? "/camera_view" : ""),
+         "the close_up view looks at the step's BVH mesh: it needs a \"bvh\" block");
 
   if (j.contains("question")) s.question = question(j["question"], path + "/question", s);
   return s;

@@ -59,6 +59,7 @@ const char* toString(LessonColouring colouring);
 enum class LessonCameraView {
   Default,  ///< "default": from outside the scene.
   Camera,   ///< "camera": from just behind the scene's camera.
+  CloseUp,  ///< "close_up": close to the mesh of the step's "bvh" block, from the camera's side.
 };
 const char* toString(LessonCameraView view);
 
@@ -269,7 +270,8 @@ struct Lesson {
  *   (required by inspector, and by select_ray and reveal); sample in [0, spp); reveal
  *   {"frame": n} or {"depth": d}; colour: energy | kind | depth; filters (kinds from
  *   camera, reflection, refraction, diffuse, glossy, shadow; max_depth; reaching_light;
- *   min_energy); camera_view: default | camera; select_ray: a segment id of the pixel's
+ *   min_energy); camera_view: default | camera | close_up (close to the step's bvh mesh,
+ *   steps with "bvh" only); select_ray: a segment id of the pixel's
  *   tree (checked by tracing it); samples (view "samples" only): {"sampler": cosine |
  *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; measure (views compare
  *   and plot only): samples | time, what the comparison holds equal and the plot's x axis
@@ -280,8 +282,9 @@ struct Lesson {
  *   camera ray (the inspector's selected ray) crosses, entering and leaving;
  *   bvh (view "scene" only, lesson 8; LessonBvh): {"object": a mesh
  *   object's name (default: the scene's first mesh), "level": d or "levels": [first, last]
- *   (depths from the root, within the tree's depth; default 0), "visits": true to draw only
- *   the boxes the camera ray of the step's pixel meets (needs a pixel)}; which hierarchy
+ *   (depths from the root, within the tree's depth; default 0, with visits every level),
+ *   "visits": true to draw only the boxes the camera ray of the step's pixel meets (needs
+ *   a pixel)}; which hierarchy
  *   is drawn, and whether the meshes are searched at all, are render settings, changed
  *   with scene_changes: {"render": {"bvh_split": "median"}}, {"render": {"acceleration":
  *   "none"}}; teacher_notes {en, zh};
