@@ -283,7 +283,7 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, Langua
   });
   if (meshes)
     result.caption =
-        vis::searchCaption(settings, language) + " " +
+        vis::searchCaption(settings, language) + (language == Language::Chinese ? "" : " ") +
         vis::speedCaption(renderer.stats().rays.total(), renderer.stats().seconds, language);
   return result;
 }
