@@ -81,7 +81,8 @@ class SceneIntersector {
 
   const Scene& scene() const { return *m_scene; }
   /// The hierarchy searched for mesh object `object` (built with the settings' split; the
-  /// mesh's own when acceleration is off), or null when that object is not a mesh.
+  /// mesh's own when acceleration is off), or null when that object is not a mesh. A
+  /// rebuilt hierarchy belongs to this intersector: keep the intersector while using it.
   const Bvh* hierarchy(int object) const;
 
  private:
