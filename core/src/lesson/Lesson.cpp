@@ -588,10 +588,10 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   LessonStep s;
   s.title = text(member(j, path, "title"), path + "/title");
   m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
-  onlyKeys(j, path,
-           {"title", "text", "view", "algorithm", "pixel", "sample", "reveal", "colour", "filters",
-            "camera_view", "select_ray", "samples", "measure", "scene_changes", "question",
-            "teacher_notes", "requires", "bundle", "all_hits", "bvh"});
+  onlyKeys(j, path, {"title",         "text",     "view",    "algorithm",     "pixel",
+                     "sample",        "reveal",   "colour",  "filters",       "camera_view",
+                     "select_ray",    "samples",  "measure", "scene_changes", "question",
+                     "teacher_notes", "requires", "bundle",  "all_hits",      "bvh"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");

@@ -189,7 +189,7 @@ struct LessonStep {
   /// "all_hits": every surface the pixel's camera ray (the selected ray in the inspector
   /// view) crosses is marked along it, entering and leaving (sceneCrossings).
   bool allHits = false;
-  std::optional<LessonBvh> bvh;  ///< Scene view: a mesh's BVH boxes.
+  std::optional<LessonBvh> bvh;                    ///< Scene view: a mesh's BVH boxes.
   LessonMeasure measure = LessonMeasure::Samples;  ///< Compare and plot views only.
   /// The step's scene changes as written (compact JSON, one per change), for captions.
   std::vector<std::string> sceneChanges;
