@@ -537,6 +537,14 @@
         <source>width</source>
         <translation>宽度</translation>
     </message>
+    <message>
+        <source>acceleration</source>
+        <translation>加速结构</translation>
+    </message>
+    <message>
+        <source>bvh split</source>
+        <translation>BVH 划分方式</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>
@@ -627,6 +635,22 @@
     <message>
         <source>whitted</source>
         <translation>Whitted 光线追踪</translation>
+    </message>
+    <message>
+        <source>bvh</source>
+        <translation>BVH（包围盒层次结构）</translation>
+    </message>
+    <message>
+        <source>median</source>
+        <translation>中位数划分</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无（蛮力求交）</translation>
+    </message>
+    <message>
+        <source>sah</source>
+        <translation>表面积启发式（SAH）</translation>
     </message>
 </context>
 <context>
@@ -1984,6 +2008,14 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn&apos;s half-vector highlight), rough_conductor (microfacet metal), rough_dielectric (microfacet glass)</source>
         <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）、phong（经典 Phong 光照模型：环境光、漫反射、镜面反射）、blinn_phong（采用 Blinn 半程向量高光的 Phong 模型）、rough_conductor（粗糙导体，微表面金属）、rough_dielectric（粗糙电介质，微表面玻璃）</translation>
     </message>
+    <message>
+        <source>How rays search the meshes: bvh (through their bounding volume hierarchy) or none (brute force, every triangle; the same image, slower)</source>
+        <translation>光线如何在网格中求交：bvh（通过包围盒层次结构）或 none（蛮力求交，逐一检验每个三角形；图像相同，但更慢）</translation>
+    </message>
+    <message>
+        <source>How the meshes&apos; hierarchies split their boxes: sah (surface area heuristic) or median (half of the triangles on each side); the same image</source>
+        <translation>网格的层次结构如何划分包围盒：sah（表面积启发式）或 median（中位数划分，两边各放一半三角形）；图像相同</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::RayTreePanel</name>
@@ -2387,6 +2419,14 @@ Then click a pixel to see its ray tree.</source>
     <message>
         <source>%1 %2 / %3 spp · %4 s · %5 rays/s</source>
         <translation>%1 %2 / %3 spp · %4 秒 · %5 条光线/秒</translation>
+    </message>
+    <message>
+        <source>brute force, no BVH</source>
+        <translation>蛮力求交，不用包围盒层次结构</translation>
+    </message>
+    <message>
+        <source>BVH with median split</source>
+        <translation>包围盒层次结构，中位数划分</translation>
     </message>
 </context>
 </TS>

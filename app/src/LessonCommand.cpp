@@ -12,6 +12,7 @@
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/vis/BounceAnimation.h"
+#include "raylab/vis/BvhCaptions.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ConvergencePlot.h"
 #include "raylab/vis/ImageIO.h"
@@ -201,6 +202,7 @@ struct StepPicture {
   std::string inspectorText;  ///< Inspector view: the selected ray's lines.
   std::string note;           ///< A missing feature, said in the handout.
   std::string crossingsText;  ///< all_hits: the crossings marked, one line each.
+  std::string caption;        ///< What the picture shows beyond the text (BVH boxes, speed).
 };
 
 /// The 3D view of the step's scene, with its pixel's tree when it has one (and the
@@ -235,9 +237,18 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
       result.crossingsText = crossingsText(scene, crossings, language == Language::Chinese);
     }
   }
+  // A mesh's BVH boxes (lesson 8), said in words under the picture.
+  const vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  if (bvh.shown()) {
+    view.setBvh(bvh);
+    result.caption = vis::bvhCaption(scene, bvh, view.bvhSummary(), language,
+                                     step.pixelX.value_or(-1), step.pixelY.value_or(-1));
+  }
   const double aspect = double(size.first) / size.second;
   if (step.cameraView == LessonCameraView::Camera)
     view.setViewCamera(vis::behindCameraView(scene, aspect));
+  else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
+    view.setViewCamera(vis::closeUpView(scene, step.bvh->object, aspect));
   else
     view.resetViewCamera(aspect);
   result.image = view.renderOffscreen(size.first, size.second);
@@ -256,7 +267,8 @@ StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size) {
 
 /// The step's algorithm's image: the scene's size fitted inside `cap`, at most 64 spp
 /// unless the step sets the render block itself.
-StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int maxSpp) {
+StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int maxSpp,
+                         Language language) {
   Scene scene = *step.scene;
   std::tie(scene.camera.width, scene.camera.height) =
       fitInside({scene.camera.width, scene.camera.height}, cap);
@@ -270,6 +282,14 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int ma
   const FloatImage image = renderer.render();
   StepPicture result;
   result.image = imageio::toSrgb(image);
+  // How the meshes were searched, and how fast (lesson 8 measures it live).
+  const bool meshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const auto& o) {
+    return o.shape->kind() == ShapeKind::TriangleMesh;
+  });
+  if (meshes)
+    result.caption =
+        vis::searchCaption(settings, language) + (language == Language::Chinese ? "" : " ") +
+        vis::speedCaption(renderer.stats().rays.total(), renderer.stats().seconds, language);
   return result;
 }
 
@@ -314,7 +334,9 @@ StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size, int
     }
     view.setRayTrees(scene, trees, x, y);
   }
-  return {view.renderOffscreen(size.first, size.second), {}, {}, {}};
+  StepPicture picture;
+  picture.image = view.renderOffscreen(size.first, size.second);
+  return picture;
 }
 
 StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size, int maxSpp,
@@ -325,7 +347,9 @@ StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size, int ma
                             step.measure == LessonMeasure::Time ? vis::ConvergenceAxis::Time
                                                                 : vis::ConvergenceAxis::Samples,
                             language);
-  return {plot.renderOffscreen(size.first, size.second), {}, {}, {}};
+  StepPicture picture;
+  picture.image = plot.renderOffscreen(size.first, size.second);
+  return picture;
 }
 
 /// The picture of one step, by its view. A step needing a feature RayLab lacks (and the
@@ -346,7 +370,7 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
   }
   switch (step.view) {
     case LessonView::Image:
-      return imagePicture(step, size.value_or(kImageCap), maxSpp);
+      return imagePicture(step, size.value_or(kImageCap), maxSpp, language);
     case LessonView::Compare:
       return comparePicture(step, picture, maxSpp, language);
     case LessonView::Plot:
@@ -379,6 +403,7 @@ std::string stepSection(const Lesson& lesson, std::size_t index, const StepPictu
                    (zh ? " 步：" : ". ") + step.title.in(language) + "\n\n";
   md += step.text.in(language) + "\n\n";
   md += "![" + step.title.in(language) + "](" + png + ")\n\n";
+  if (!picture.caption.empty()) md += "*" + picture.caption + "*\n\n";
   if (!picture.note.empty()) md += "> " + picture.note + "\n\n";
   if (!picture.crossingsText.empty())
     md += "**" + std::string(words.crossings) + "**\n\n```\n" + picture.crossingsText + "```\n\n";

@@ -3,6 +3,8 @@
 #include "Language.h"
 #include "ScaledFont.h"
 
+#include "raylab/vis/BvhCaptions.h"
+
 #include <QButtonGroup>
 #include <QComboBox>
 #include <QDoubleValidator>
@@ -71,8 +73,11 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   m_text = wrapping(1.3);
   m_needs = wrapping(1.0);
   m_needs->setStyleSheet(QStringLiteral("color: #a05a00"));
+  m_caption = wrapping(1.0);
+  m_caption->setStyleSheet(QStringLiteral("color: #2a5d8a"));
   layout->addWidget(m_title);
   layout->addWidget(m_text);
+  layout->addWidget(m_caption);
   layout->addWidget(m_needs);
 
   // Step 3: the question, with its answer box.
@@ -200,6 +205,7 @@ void LessonPanel::refresh() {
     m_title->setText(tr("Choose a lesson in the Lessons menu."));
     m_text->clear();
     m_needs->hide();
+    m_caption->hide();
     m_question->hide();
     m_notesButton->hide();
     m_notes->hide();
@@ -216,11 +222,36 @@ void LessonPanel::refresh() {
   m_needs->setText(tr("This step needs a feature still to come (%1): the view shows the scene "
                       "instead.")
                        .arg(needs.join(QStringLiteral(", "))));
+  const QString caption = viewCaption();
+  m_caption->setText(caption);
+  m_caption->setVisible(!caption.isEmpty());
   showQuestion(step);
   const bool notes = !step.teacherNotes.empty();
   m_notesButton->setVisible(notes);
   m_notes->setText(text(step.teacherNotes, m_language));
   m_notes->setVisible(notes && m_notesButton->isChecked());
+}
+
+void LessonPanel::setBvhView(const vis::BvhStyle& style, const vis::BvhSummary& summary) {
+  m_bvhStyle = style;
+  m_bvhSummary = summary;
+  refresh();
+}
+
+QString LessonPanel::viewCaption() const {
+  if (!m_lesson || m_step < 0) return {};
+  const LessonStep& step = m_lesson->steps[std::size_t(m_step)];
+  if (step.view == LessonView::Scene && m_bvhStyle.shown())
+    return QString::fromStdString(vis::bvhCaption(*step.scene, m_bvhStyle, m_bvhSummary, m_language,
+                                                  step.pixelX.value_or(-1),
+                                                  step.pixelY.value_or(-1)));
+  const auto& objects = step.scene->objects;
+  const bool meshes = std::any_of(objects.begin(), objects.end(), [](const SceneObject& o) {
+    return o.shape->kind() == ShapeKind::TriangleMesh;
+  });
+  if (step.view == LessonView::Image && meshes)
+    return QString::fromStdString(vis::searchCaption(step.settings(), m_language));
+  return {};
 }
 
 void LessonPanel::showQuestion(const LessonStep& step) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Lesson.h"
+#include "raylab/vis/BvhStyle.h"
 
 #include <QWidget>
 
@@ -47,6 +48,13 @@ class LessonPanel : public QWidget {
   /// The lesson's words in `language` (the window's language is the default).
   void setLanguage(Language language);
 
+  /// What the 3D view draws of a mesh's BVH for this step (lesson 8), said in words under
+  /// the step's text in the lesson's language (vis::bvhCaption); an empty style: nothing.
+  void setBvhView(const vis::BvhStyle& style, const vis::BvhSummary& summary);
+  /// The words under the step's text: the BVH view's caption, or for an image step of a
+  /// scene with meshes how they are searched (empty otherwise).
+  QString viewCaption() const;
+
   /// \name The question
   /// @{
   /// Answers a multiple-choice question with choice `index`; true when right. The verdict
@@ -91,6 +99,9 @@ class LessonPanel : public QWidget {
   QLabel* m_title = nullptr;
   QLabel* m_text = nullptr;
   QLabel* m_needs = nullptr;
+  QLabel* m_caption = nullptr;  ///< What the view shows beyond the text (lesson 8).
+  vis::BvhStyle m_bvhStyle;
+  vis::BvhSummary m_bvhSummary;
   QGroupBox* m_question = nullptr;
   QLabel* m_prompt = nullptr;
   QVBoxLayout* m_choicesLayout = nullptr;

@@ -17,6 +17,7 @@
 #include "raylab/core/SceneEdit.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Shape.h"
+#include "raylab/vis/BvhStyle.h"
 #include "raylab/vis/SceneView.h"
 #include "raylab/vis/ViewCamera.h"
 
@@ -515,6 +516,8 @@ void MainWindow::showLessonStep(int index) {
       m_vtkWidget->height() > 0 ? double(m_vtkWidget->width()) / m_vtkWidget->height() : 1.0;
   if (step.cameraView == LessonCameraView::Camera)
     m_view->setViewCamera(vis::behindCameraView(*step.scene, aspect));
+  else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
+    m_view->setViewCamera(vis::closeUpView(*step.scene, step.bvh->object, aspect));
   else
     m_view->resetViewCamera(aspect);
 
@@ -556,7 +559,15 @@ void MainWindow::showLessonStep(int index) {
   else
     m_view->clearSampleCloud();
 
-  // Step 3: the image or the comparison beside the 3D view, for the steps that show it.
+  // Step 3: a mesh's BVH boxes (lesson 8), said in words in the lesson panel.
+  const vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  if (bvh.shown())
+    m_view->setBvh(bvh);
+  else
+    m_view->clearBvh();
+  m_lessonPanel->setBvhView(bvh, m_view->bvhSummary());
+
+  // Step 4: the image or the comparison beside the 3D view, for the steps that show it.
   if (step.view == LessonView::Compare || step.view == LessonView::Plot) {
     m_comparePanel->setEqualTime(step.measure == LessonMeasure::Time);
     m_comparePanel->setSamplesPerPixel(kLessonCompareSpp);

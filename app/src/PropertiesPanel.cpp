@@ -47,6 +47,8 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
     {"algorithm", {"raycast", "whitted", "distributed", "path"}},
     {"fresnel", {"exact", "schlick"}},
     {"distribution", {"ggx", "beckmann"}},
+    {"acceleration", {"bvh", "none"}},
+    {"bvh_split", {"sah", "median"}},
 };
 const std::vector<const char*> kMaterialTypes = {
     "diffuse", "mirror",      "dielectric",      "glossy",
@@ -84,6 +86,14 @@ QString tipFor(const std::string& key) {
     return PropertiesPanel::tr(
         "Microfacet distribution: ggx (Trowbridge-Reitz, long tails) or beckmann (Gaussian "
         "slopes)");
+  if (key == "acceleration")
+    return PropertiesPanel::tr(
+        "How rays search the meshes: bvh (through their bounding volume hierarchy) or none "
+        "(brute force, every triangle; the same image, slower)");
+  if (key == "bvh_split")
+    return PropertiesPanel::tr(
+        "How the meshes' hierarchies split their boxes: sah (surface area heuristic) or median "
+        "(half of the triangles on each side); the same image");
   if (key == "ray_offset")
     return PropertiesPanel::tr(
         "Ray offset: secondary and shadow rays start past the hit point's error bound; "
@@ -347,6 +357,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
     values = std::move(withOutside);
   }
   if (pointer == "/render" && !values.contains("ray_offset")) values["ray_offset"] = true;
+  if (pointer == "/render" && !values.contains("acceleration")) values["acceleration"] = "bvh";
+  if (pointer == "/render" && !values.contains("bvh_split")) values["bvh_split"] = "sah";
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
     const std::string place = pointer + "/" + key;

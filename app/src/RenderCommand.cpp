@@ -20,10 +20,12 @@ namespace {
 
 struct RenderOptions {
   CommonOptions common;
-  std::optional<int> spp;  ///< Samples per pixel; default the scene's.
-  int threads = 0;         ///< Worker threads; 0 = all hardware threads.
-  bool noNee = false;      ///< Path tracing without next-event estimation.
-  bool noMis = false;      ///< Next-event estimation without multiple importance sampling.
+  std::optional<int> spp;    ///< Samples per pixel; default the scene's.
+  int threads = 0;           ///< Worker threads; 0 = all hardware threads.
+  bool noNee = false;        ///< Path tracing without next-event estimation.
+  bool noMis = false;        ///< Next-event estimation without multiple importance sampling.
+  std::string acceleration;  ///< "bvh" or "none" (brute force); empty: the scene's.
+  std::string bvhSplit;      ///< "sah" or "median"; empty: the scene's.
 };
 
 int runRender(const RenderOptions& options, const std::string& topLevelScene) {
@@ -33,6 +35,8 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   if (options.spp) settings.samplesPerPixel = *options.spp;
   if (options.noNee) settings.nextEventEstimation = false;
   if (options.noMis) settings.multipleImportance = false;
+  if (!options.acceleration.empty()) settings.acceleration = options.acceleration == "bvh";
+  if (!options.bvhSplit.empty()) settings.bvhSplit = *parseBvhSplit(options.bvhSplit);
   const std::string& out = options.common.out;
 
   // Step 2: render, reporting each pass.
@@ -58,6 +62,13 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
               << (!settings.nextEventEstimation ? "off"
                   : settings.multipleImportance ? "with MIS"
                                                 : "without MIS");
+  const bool meshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const auto& o) {
+    return o.shape->kind() == ShapeKind::TriangleMesh;
+  });
+  if (meshes)
+    std::cout << ", meshes: "
+              << (settings.acceleration ? std::string("BVH (") + toString(settings.bvhSplit) + ")"
+                                        : std::string("brute force"));
   std::cout << "\n";
   std::cout << "rays:";
   for (int k = 0; k < kRayKindCount; ++k)
@@ -66,7 +77,8 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   const double samples = double(image.width) * image.height * stats.samplesPerPixel;
   std::cout << std::fixed << std::setprecision(3) << "time: " << stats.seconds << " s ("
             << std::setprecision(0) << (stats.seconds > 0.0 ? samples / stats.seconds : 0.0)
-            << " samples/s)" << std::endl;
+            << " samples/s, " << (stats.seconds > 0.0 ? stats.rays.total() / stats.seconds : 0.0)
+            << " rays/s)" << std::endl;
   if (stats.nonFiniteSamples > 0)
     std::cerr << "raylab: warning: " << stats.nonFiniteSamples
               << " samples were NaN or infinite and were counted as black" << std::endl;
@@ -102,6 +114,16 @@ Subcommand addRenderCommand(CLI::App& cli) {
   command->add_flag("--no-mis", options->noMis,
                     "Next-event estimation without multiple importance sampling (light hit by "
                     "a bounce then counts only where it was not sampled)");
+  command
+      ->add_option("--acceleration", options->acceleration,
+                   "How meshes are searched: bvh, or none for brute force (every ray against "
+                   "every triangle; the same image, slower). Default: the scene's")
+      ->check(CLI::IsMember({"bvh", "none"}));
+  command
+      ->add_option("--bvh-split", options->bvhSplit,
+                   "How the meshes' BVHs split: sah (surface area heuristic) or median. "
+                   "Default: the scene's")
+      ->check(CLI::IsMember({"sah", "median"}));
   return {command, [options](const std::string& topLevelScene) {
             return runRender(*options, topLevelScene);
           }};

@@ -93,6 +93,7 @@ class RenderPanel : public QWidget {
   std::unique_ptr<RenderJob> m_job;
   std::shared_ptr<const Scene> m_scene;
   Algorithm m_renderedAlgorithm = Algorithm::PathTracing;  ///< Of the image shown.
+  QString m_renderedSearch;  ///< How its meshes were searched, when not the usual way.
   RenderProgress m_progress;
   int m_rendersEnded = 0;
   int m_threads = 0;  ///< 0: every hardware thread.

@@ -4,7 +4,8 @@
 #   -DDIR=<folder>         its --out folder
 #   -DLANG=<en|zh>         the handout's language
 # Holds when DIR has one step-NN.png per step (and no more) and DIR/lesson.md holds the
-# lesson's title, every step's title and the answers heading, in that language.
+# lesson's title, every step's title and the answers heading, in that language; for a
+# lesson with BVH steps also the captions of the BVH view and of the measured speed.
 foreach(var LESSON DIR LANG)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "CheckLessonHandout.cmake needs -D${var}=...")
@@ -33,6 +34,17 @@ if(LANG STREQUAL "zh")
   list(APPEND expected "## 教师答案")
 else()
   list(APPEND expected "## Teacher's answers")
+endif()
+# Lesson 8's pictures say what the BVH view draws, and image steps of mesh scenes the rays
+# per second measured.
+string(FIND "${json}" "\"bvh\"" has_bvh)
+if(NOT has_bvh EQUAL -1)
+  if(LANG STREQUAL "zh")
+    list(APPEND expected "*三维视图：" "的包围盒层次结构（表面积启发式" "（中位数划分）" "每秒" "蛮力求交")
+  else()
+    list(APPEND expected "*3D view: " "BVH of \"mesh ball\" (surface area heuristic" "(median split)"
+         " rays/s " "Brute force: every ray")
+  endif()
 endif()
 foreach(text IN LISTS expected)
   string(FIND "${handout}" "${text}" at)

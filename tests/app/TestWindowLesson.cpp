@@ -13,8 +13,11 @@
 #include "raylab/core/RayTreeJson.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QMenuBar>
 #include <QTabWidget>
+
+#include <gmock/gmock.h>
 
 #include <chrono>
 
@@ -205,6 +208,47 @@ TEST_F(WindowLessonTest, 07_ABrokenLessonIsRefusedAndTheSceneStays) {
       << m_window->lastError().toStdString();
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), before);
   EXPECT_EQ(m_window->lessonPanel()->lesson(), nullptr);
+}
+
+TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
+  // Lesson 8: a step with a "bvh" block draws the boxes in the 3D view and says in the
+  // panel what they are; the next step without one clears them; a brute-force image
+  // step renders and its figures say so.
+  const QString file = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/08-acceleration.json");
+  ASSERT_TRUE(m_window->openLesson(file));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int visits =
+      firstStep(lesson, [](const LessonStep& st) { return st.bvh && st.bvh->visits && st.pixelX; });
+  panel.showStep(visits);
+  const vis::BvhSummary& summary = m_window->sceneView().bvhSummary();
+  EXPECT_GT(summary.entered, 0);
+  EXPECT_EQ(summary.boxes, summary.entered + summary.missed + summary.culled);
+  EXPECT_FALSE(m_window->rayTreePanel()->tree().segments.empty());
+  EXPECT_THAT(panel.viewCaption().toStdString(),
+              ::testing::HasSubstr(std::to_string(summary.entered) + " entered"));
+  panel.setLanguage(Language::Chinese);
+  EXPECT_THAT(panel.viewCaption().toStdString(),
+              ::testing::HasSubstr("进入 " + std::to_string(summary.entered) + " 个"));
+  panel.setLanguage(Language::English);
+
+  const int plain = firstStep(lesson, [](const LessonStep& st) { return !st.bvh; });
+  panel.showStep(plain);
+  EXPECT_EQ(m_window->sceneView().bvhSummary().boxes, 0);
+
+  const int bruteForce = firstStep(lesson, [](const LessonStep& st) {
+    return st.view == LessonView::Image && !st.settings().acceleration;
+  });
+  panel.showStep(bruteForce);
+  EXPECT_THAT(panel.viewCaption().toStdString(), ::testing::HasSubstr("Brute force"));
+  RenderPanel& render = *m_window->renderPanel();
+  const auto start = std::chrono::steady_clock::now();
+  while (render.rendering() && std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  EXPECT_TRUE(render.hasImage());
+  EXPECT_TRUE(render.figuresLabel()->text().contains(QStringLiteral("rays/s")));
+  EXPECT_TRUE(render.figuresLabel()->text().contains(QStringLiteral("brute force")))
+      << render.figuresLabel()->text().toStdString();
 }
 
 }  // namespace

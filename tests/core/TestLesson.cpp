@@ -3,6 +3,7 @@
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneIO.h"
+#include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Tracer.h"
 
@@ -341,6 +342,100 @@ TEST(Lesson, 05_RequiresIsAcceptedAndReported) {
   EXPECT_EQ(lesson.requiredFeatures(), (std::vector<std::string>{"schlick-fresnel", "bvh-view"}));
 }
 
+/// A lesson on the acceleration lesson's scene (a 1280-triangle mesh ball and a sphere)
+/// with one scene step that draws BVH boxes.
+json bvhLesson() {
+  json l = baseLesson();
+  l["scene"] = std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/bvh.json";
+  l["defaults"] = {{"algorithm", "raycast"}};
+  l["steps"][1].erase("scene_changes");
+  l["steps"][1].erase("select_ray");
+  l["steps"][1].erase("reveal");
+  l["steps"][1]["pixel"] = {199, 110};
+  l["steps"][1]["bvh"] = {{"levels", {0, 2}}};
+  return l;
+}
+
+TEST(Lesson, 05b_BvhStepsNameAMeshAndLevelsItHas) {
+  json l = bvhLesson();
+  Lesson lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  const LessonStep& step = lesson.steps[1];
+  ASSERT_TRUE(step.bvh);
+  EXPECT_EQ(step.bvh->object, step.scene->findObject("mesh ball"));  // the first mesh
+  EXPECT_EQ(step.bvh->firstLevel, 0);
+  EXPECT_EQ(step.bvh->lastLevel, 2);
+  EXPECT_FALSE(step.bvh->visits);
+  // The camera ray of the pixel is the first ray of its tree.
+  const auto ray = step.cameraRay();
+  ASSERT_TRUE(ray);
+  EXPECT_EQ(ray->origin, step.scene->camera.position);
+  EXPECT_FALSE(lesson.steps[0].cameraRay()) << "a step without a pixel has no camera ray";
+
+  l["steps"][1]["bvh"] = {{"object", "mesh ball"}, {"level", 3}, {"visits", true}};
+  l["steps"][1]["scene_changes"] = {{{"render", {{"bvh_split", "median"}}}}};
+  lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  EXPECT_EQ(lesson.steps[1].bvh->firstLevel, 3);
+  EXPECT_EQ(lesson.steps[1].bvh->lastLevel, 3);
+  EXPECT_TRUE(lesson.steps[1].bvh->visits);
+  EXPECT_EQ(lesson.steps[1].settings().bvhSplit, BvhSettings::Split::Median);
+
+  struct Case {
+    const char* name;
+    std::function<void(json&)> breakIt;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"not a mesh", [](json& s) { s["bvh"]["object"] = "sphere"; },
+       "step 2 (\"Snell's law\"): at /steps/1/bvh/object: object \"sphere\" is not a mesh: "
+       "only meshes have a BVH"},
+      {"no such object", [](json& s) { s["bvh"]["object"] = "teapot"; },
+       "at /steps/1/bvh/object: no object named \"teapot\" in the scene"},
+      {"too deep",
+       [](json& s) {
+         s["bvh"]["levels"] = {0, 40};
+       },
+       "at /steps/1/bvh/levels/1: level 40 is below the deepest level of \"mesh ball\"'s BVH "
+       "(sah split: levels 0.."},
+      {"backwards",
+       [](json& s) {
+         s["bvh"]["levels"] = {2, 1};
+       },
+       "at /steps/1/bvh/levels: the last level (1) comes before the first (2)"},
+      {"both", [](json& s) { s["bvh"]["level"] = 1; },
+       "at /steps/1/bvh: give \"level\" or \"levels\", not both"},
+      {"visits without pixel",
+       [](json& s) {
+         s.erase("pixel");
+         s["bvh"]["visits"] = true;
+       },
+       "at /steps/1/bvh/visits: visits needs a pixel"},
+      {"image view", [](json& s) { s["view"] = "image"; },
+       "at /steps/1/bvh: \"bvh\" belongs to the scene view (this step's view is \"image\")"},
+      {"unknown key", [](json& s) { s["bvh"]["depth"] = 2; },
+       "at /steps/1/bvh/depth: unknown key \"depth\" (expected one of object, level, levels, "
+       "visits)"},
+      {"check on a sphere",
+       [](json& s) {
+         s["question"] = {{"type", "number"},
+                          {"prompt", {{"en", "How many?"}, {"zh", "多少？"}}},
+                          {"answer", 1},
+                          {"check", {{"quantity", "bvh_nodes"}, {"object", "sphere"}}},
+                          {"explanation", {{"en", "So."}, {"zh", "如此。"}}}};
+       },
+       "at /steps/1/question/check/object: object \"sphere\" is not a mesh"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    json broken = bvhLesson();
+    c.breakIt(broken["steps"][1]);
+    EXPECT_THAT(loadError(broken), HasSubstr(c.expected));
+  }
+  // Without a mesh in the scene there is no BVH to show.
+  json noMesh = baseLesson();
+  noMesh["steps"][1]["bvh"] = json::object();
+  EXPECT_THAT(loadError(noMesh), HasSubstr("at /steps/1/bvh/object: the scene has no mesh object"));
+}
+
 /// The shipped lessons: lessons/NN-topic.json in the source tree.
 std::vector<std::string> shippedLessons() {
   return LessonIO::list(std::string(RAYLAB_SOURCE_DIR) + "/lessons");
@@ -412,6 +507,23 @@ double compute(const LessonStep& step, const LessonCheck& c) {
     Renderer renderer(scene, settings);
     renderer.render();
     return double(renderer.stats().rays.byKind[static_cast<int>(RayKind::Camera)]);
+  }
+  if (c.quantity == Q::BvhNodes || c.quantity == Q::BvhBoxesEntered ||
+      c.quantity == Q::BvhTriangleTests) {
+    // The hierarchy the step's render searches, and the camera ray of the check's pixel.
+    const SceneIntersector intersector(scene, step.settings());  // owns a rebuilt hierarchy
+    const Bvh* bvh = intersector.hierarchy(c.object);
+    if (!bvh) {
+      ADD_FAILURE() << "object " << c.object << " is not a mesh";
+      return -1.0;
+    }
+    if (c.quantity == Q::BvhNodes) return bvh->stats().nodeCount;
+    LessonStep at = step;
+    at.pixelX = c.pixelX;
+    at.pixelY = c.pixelY;
+    at.sample = c.sample;
+    const BvhTrace trace = bvh->traceVisits(*at.cameraRay());
+    return c.quantity == Q::BvhBoxesEntered ? trace.boxesEntered : trace.triangleTests;
   }
   const Tracer tracer(scene, settings);
   if (c.quantity == Q::PixelLuminance) {

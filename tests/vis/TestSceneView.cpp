@@ -207,7 +207,7 @@ TEST(SceneView, 08_SampleCloudReplacesTheSceneUntilCleared) {
   EXPECT_TRUE(view.showsSampleCloud());
   const SrgbImage cloud = view.renderOffscreen(kSize, kSize);
   EXPECT_GT(fractionOf(cloud, isOrange), 0.01);
-  EXPECT_LT(fractionOf(cloud, isBlue), 0.001);   // the blue cube is gone
+  EXPECT_LT(fractionOf(cloud, isBlue), 0.001);  // the blue cube is gone
   // Cosine-weighted points crowd at the top: more orange in the upper half of the dome.
   int upper = 0, lower = 0;
   for (int y = 0; y < kSize; ++y)

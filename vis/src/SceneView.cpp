@@ -1,5 +1,6 @@
 #include "raylab/vis/SceneView.h"
 
+#include "BvhActors.h"
 #include "RayTreeActors.h"
 #include "ShapeGeometry.h"
 #include "TeachingOverlays.h"
@@ -167,6 +168,8 @@ void addCameraAndLights(const Scene& scene, vtkRenderer* renderer) {
 
 /// Opacity of glass while a ray tree is shown, so the rays inside it can be followed.
 constexpr double kGlassOpacityWithRays = 0.3;
+/// Opacity of a mesh while its BVH is drawn, so the boxes inside it show.
+constexpr double kMeshOpacityWithBoxes = 0.35;
 
 /// Glass (dielectrics, and mirrors that refract) is drawn see-through while a ray tree is
 /// shown (`rays` true), at the material's own opacity otherwise.
@@ -192,6 +195,7 @@ struct SceneView::Impl {
   std::vector<vtkSmartPointer<vtkActor>> highlights;  ///< Hidden outlines, one per object.
   vtkSmartPointer<vtkRenderWindow> offscreen;         ///< Created on first offscreen render.
   RayTreeActors rays{Vec3(kBackground[0], kBackground[1], kBackground[2])};  ///< Ray tree.
+  BvhActors bvh;               ///< A mesh's BVH boxes.
   std::vector<bool> oneSided;  ///< Per object: drawn one-sided (culled from behind).
   std::vector<vtkSmartPointer<vtkProp>> crossings;  ///< setCrossings' line and marks.
   int crossingCount = 0;
@@ -220,6 +224,7 @@ SceneView::~SceneView() = default;
 void SceneView::setScene(const Scene& scene) {
   m_scene = scene;
   m_highlighted = -1;
+  m_impl->bvh.build(m_scene, BvhStyle{});
   vtkRenderer* renderer = m_impl->renderer;
   renderer->RemoveAllViewProps();
   m_impl->objects.clear();
@@ -282,9 +287,9 @@ void SceneView::setScene(const Scene& scene) {
   m_impl->rays.glyphLength = 0.5 * cameraGlyphSize(m_scene);
   m_impl->rays.addTo(renderer);
   m_impl->rays.markDirty();
-  seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
   for (const auto& prop : m_impl->crossings) renderer->AddViewProp(prop);
-  seeThroughCrossed();
+  m_impl->bvh.addTo(renderer);
+  applyOpacities();
   if (m_impl->caption) renderer->AddViewProp(m_impl->caption);
 
   // Step 5: look at it all from outside (or at the sample cloud, which replaces it all).
@@ -321,7 +326,7 @@ void SceneView::clearCrossings() {
   m_impl->crossings.clear();
   m_impl->crossingCount = 0;
   m_impl->crossed.clear();
-  seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
+  applyOpacities();
 }
 
 void SceneView::seeThroughCrossed() {
@@ -397,9 +402,38 @@ int SceneView::objectAt(double x, double y, int width, int height) const {
 void SceneView::updateScene(const Scene& scene) {
   const ViewCamera camera = viewCamera();
   const int highlighted = m_highlighted;
+  // The BVH boxes stay with their mesh (by name) when it is still there.
+  const BvhStyle bvh = m_impl->bvh.style;
+  const std::string bvhMesh = bvh.shown() && bvh.object < objectCount()
+                                  ? m_scene.objects[std::size_t(bvh.object)].name
+                                  : std::string();
   setScene(scene);
   setViewCamera(camera);
   setHighlighted(highlighted < objectCount() ? highlighted : -1);
+  if (!bvhMesh.empty() && bvh.object < objectCount() &&
+      m_scene.objects[std::size_t(bvh.object)].name == bvhMesh)
+    setBvh(bvh);
+}
+
+void SceneView::setBvh(const BvhStyle& style) {
+  m_impl->bvh.build(m_scene, style);
+  applyOpacities();
+}
+
+void SceneView::clearBvh() { setBvh(BvhStyle{}); }
+
+const BvhStyle& SceneView::bvhStyle() const { return m_impl->bvh.style; }
+
+const BvhSummary& SceneView::bvhSummary() const { return m_impl->bvh.summary; }
+
+void SceneView::applyOpacities() {
+  seeThroughGlass(m_scene, m_impl->objects, m_impl->rays.shown);
+  seeThroughCrossed();
+  const int mesh = m_impl->bvh.summary.boxes > 0 ? m_impl->bvh.style.object : -1;
+  if (mesh >= 0 && mesh < static_cast<int>(m_impl->objects.size())) {
+    vtkProperty* p = m_impl->objects[static_cast<std::size_t>(mesh)]->GetProperty();
+    p->SetOpacity(std::min(p->GetOpacity(), kMeshOpacityWithBoxes));
+  }
 }
 
 Point3 SceneView::objectCentre(int index) const {
@@ -513,7 +547,7 @@ void SceneView::setRayTree(std::shared_ptr<const RayTree> tree, const RayTreeSty
   rays.selected = -1;
   rays.shown = rays.tree != nullptr;
   rays.markDirty();
-  seeThroughGlass(m_scene, m_impl->objects, rays.shown);
+  applyOpacities();
 }
 
 void SceneView::clearRayTree() { setRayTree(std::shared_ptr<const RayTree>(), m_impl->rays.style); }

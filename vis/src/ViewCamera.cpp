@@ -213,6 +213,34 @@ std::optional<Vec2> projectToImage(const ViewCamera& camera, const Point3& world
   return Vec2(dx, height - dy);
 }
 
+ViewCamera closeUpView(const Scene& scene, int index, double aspect) {
+  if (index < 0 || index >= static_cast<int>(scene.objects.size()))
+    return defaultViewCamera(scene, aspect);
+  const Bounds3 box = scene.objects[static_cast<std::size_t>(index)].shape->bounds();
+  const Vec3 extent = box.extent();
+  if (box.empty() || !std::isfinite(extent.x) || !std::isfinite(extent.y) ||
+      !std::isfinite(extent.z))
+    return defaultViewCamera(scene, aspect);
+  const Point3 centre = box.centre();
+  const double radius = std::max(0.5 * glm::length(extent), 1e-6);
+  const Vec3 up =
+      glm::length(scene.camera.up) > 0.0 ? glm::normalize(scene.camera.up) : Vec3(0.0, 1.0, 0.0);
+  // From the scene camera's side, raised by a quarter of the way.
+  Vec3 back = scene.camera.position - centre;
+  if (!(glm::length(back) > 0.0)) back = Vec3(0.0, 0.0, 1.0);
+  back = glm::normalize(glm::normalize(back) + 0.25 * up);
+  ViewCamera view;
+  view.viewAngle = 30.0;
+  // The sphere around the box spans 80% of the narrower side of the picture.
+  const double halfV = radians(view.viewAngle) / 2.0;
+  const double halfNarrow = aspect >= 1.0 ? halfV : std::atan(std::tan(halfV) * aspect);
+  const double distance = radius / std::sin(0.8 * halfNarrow);
+  view.eye = centre + distance * back;
+  view.focalPoint = centre;
+  view.up = up;
+  return view;
+}
+
 ViewCamera behindCameraView(const Scene& scene, double aspect) {
   const CameraSpec& camera = scene.camera;
   const Vec3 toTarget = camera.lookAt - camera.position;

@@ -293,6 +293,76 @@ struct NearestTriangle {
   }
 };
 
+/**
+ * The closest-hit search, recorded box by box for teaching (Bvh::traceVisits). It is
+ * ClosestHit run by the same `traverse`, so it visits exactly the boxes intersect() does;
+ * it only watches. `traverse` does not tell its policy which node it is at, so the
+ * recorder follows along: it keeps a copy of the traversal's stack (`waiting`), pushing
+ * the far child whenever nearSide() is asked (both children hit) and popping it whenever
+ * stillNeeded() is asked (the traversal pops its own stack then).
+ */
+struct RecordedClosestHit : ClosestHit {
+  const BvhNodePair* pairs;
+  const int* depthOf;  // node -> depth
+  double rayTMax;      // the ray's own tMax, to tell culled boxes from missed ones
+  BvhTrace* trace;
+  std::vector<int> waiting{};
+  int pendingOffset = -1;  // first child of the node whose children were both hit
+  double pendingEntry[2] = {kInfinity, kInfinity};  // ... and their entry distances
+
+  void record(int node, BvhVisitKind kind, double tEntry) {
+    trace->visits.push_back(BvhVisit{node, depthOf[node], kind, tEntry, 0});
+    if (kind == BvhVisitKind::Entered) ++trace->boxesEntered;
+  }
+
+  bool enterRoot(const BvhNodePair& root) {
+    double tEntry;
+    const bool hit = ray.slab(root, 0, tMax, tEntry);
+    ++trace->boxTests;
+    record(0, hit ? BvhVisitKind::Entered : BvhVisitKind::Missed, hit ? tEntry : kInfinity);
+    return hit;
+  }
+  int children(const BvhNodePair& pair, double tEntry[2]) {
+    const int mask = ClosestHit::children(pair, tEntry);
+    const int offset = 2 * static_cast<int>(&pair - pairs);
+    trace->boxTests += 2;
+    for (int lane = 0; lane < 2; ++lane) {
+      if (mask & (1 << lane)) continue;
+      // Not entered: passed by, or met only beyond the nearest hit so far?
+      double t;
+      const bool beyond = ray.slab(pair, lane, rayTMax, t);
+      record(offset + lane, beyond ? BvhVisitKind::Culled : BvhVisitKind::Missed,
+             beyond ? t : kInfinity);
+    }
+    if (mask == 1 || mask == 2)
+      record(offset + (mask >> 1), BvhVisitKind::Entered, tEntry[mask >> 1]);
+    if (mask == 3) {
+      pendingOffset = offset;
+      pendingEntry[0] = tEntry[0];
+      pendingEntry[1] = tEntry[1];
+    }
+    return mask;
+  }
+  int nearSide(int axis, const double* key) {
+    const int side = ClosestHit::nearSide(axis, key);
+    waiting.push_back(pendingOffset + 1 - side);
+    record(pendingOffset + side, BvhVisitKind::Entered, pendingEntry[side]);
+    return side;
+  }
+  bool stillNeeded(double tEntry) {
+    const int node = waiting.back();
+    waiting.pop_back();
+    const bool keep = ClosestHit::stillNeeded(tEntry);
+    record(node, keep ? BvhVisitKind::Entered : BvhVisitKind::Culled, tEntry);
+    return keep;
+  }
+  bool visitLeaf(int begin, int end) {
+    trace->visits.back().trianglesTested = end - begin;
+    trace->triangleTests += end - begin;
+    return ClosestHit::visitLeaf(begin, end);
+  }
+};
+
 }  // namespace
 
 std::optional<Hit> Bvh::intersect(const Ray& ray) const {
@@ -328,6 +398,44 @@ int Bvh::closestTriangle(const Point3& p) const {
   NearestTriangle query{p, m_triVerts.data(), m_primIds.data()};
   traverse(m_pairs.data(), query);
   return query.bestId;
+}
+
+}  // namespace raylab
+
+namespace raylab {
+
+std::optional<Hit> Bvh::intersectBruteForce(const Ray& ray) const {
+  if (m_primIds.empty()) return std::nullopt;
+  // One "leaf" holding every triangle slot: each is tested, whatever the boxes say.
+  const PreparedRay r(ray);
+  ClosestHit query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
+  query.visitLeaf(0, static_cast<int>(m_primIds.size()));
+  if (query.bestId == INT_MAX) return std::nullopt;
+  return Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
+}
+
+bool Bvh::occludedBruteForce(const Ray& ray) const {
+  if (m_primIds.empty()) return false;
+  const PreparedRay r(ray);
+  AnyHit query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
+  query.visitLeaf(0, static_cast<int>(m_primIds.size()));
+  return query.found;
+}
+
+BvhTrace Bvh::traceVisits(const Ray& ray) const {
+  BvhTrace trace;
+  if (m_primIds.empty()) return trace;
+  const std::vector<int> depth = nodeDepths();
+  const PreparedRay r(ray);
+  RecordedClosestHit query{{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}},
+                           m_pairs.data(),
+                           depth.data(),
+                           ray.tMax,
+                           &trace};
+  traverse(m_pairs.data(), query);
+  if (query.bestId != INT_MAX)
+    trace.hit = Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
+  return trace;
 }
 
 }  // namespace raylab

@@ -129,7 +129,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
 }  // namespace
 
 Tracer::Tracer(const Scene& scene, const RenderSettings& settings)
-    : m_intersector(scene),
+    : m_intersector(scene, settings),
       m_settings(settings),
       m_camera(scene.camera),
       m_rule(SpawnRule::create(settings)) {

@@ -6,6 +6,7 @@
 #include "raylab/core/Sampler.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/SceneIO.h"
+#include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Tracer.h"
 
 #include <nlohmann/json.hpp>
@@ -38,7 +39,8 @@ const Named<LessonColouring> kColourings[] = {{"energy", LessonColouring::Energy
                                               {"kind", LessonColouring::Kind},
                                               {"depth", LessonColouring::Depth}};
 const Named<LessonCameraView> kCameraViews[] = {{"default", LessonCameraView::Default},
-                                                {"camera", LessonCameraView::Camera}};
+                                                {"camera", LessonCameraView::Camera},
+                                                {"close_up", LessonCameraView::CloseUp}};
 const Named<LessonMeasure> kMeasures[] = {{"samples", LessonMeasure::Samples},
                                           {"time", LessonMeasure::Time}};
 const Named<LessonSamples::Sampler> kSamplers[] = {{"cosine", LessonSamples::Sampler::Cosine},
@@ -51,7 +53,10 @@ const Named<LessonCheck::Quantity> kQuantities[] = {
     {"estimate_luminance", LessonCheck::Quantity::EstimateLuminance},
     {"pixel_luminance", LessonCheck::Quantity::PixelLuminance},
     {"ray_length", LessonCheck::Quantity::RayLength},
-    {"camera_rays", LessonCheck::Quantity::CameraRays}};
+    {"camera_rays", LessonCheck::Quantity::CameraRays},
+    {"bvh_nodes", LessonCheck::Quantity::BvhNodes},
+    {"bvh_boxes_entered", LessonCheck::Quantity::BvhBoxesEntered},
+    {"bvh_triangle_tests", LessonCheck::Quantity::BvhTriangleTests}};
 const Named<Algorithm> kAlgorithms[] = {{"raycast", Algorithm::RayCasting},
                                         {"whitted", Algorithm::Whitted},
                                         {"distributed", Algorithm::Distributed},
@@ -222,6 +227,9 @@ class Reader : private JsonChecks<Reader> {
                    const std::string& path, std::size_t& index) const;
   LessonQuestion question(const json& j, const std::string& path, const LessonStep& step) const;
   LessonCheck check(const json& j, const std::string& path, const LessonStep& step) const;
+  /// A mesh object named by `name` (null: the scene's first mesh), as an index.
+  int meshObject(const json& name, const std::string& path, const Scene& scene) const;
+  LessonBvh bvh(const json& j, const std::string& path, const LessonStep& step) const;
 };
 
 Display Reader::display(const json& j, const std::string& path) const {
@@ -424,6 +432,58 @@ std::shared_ptr<const Scene> Reader::changedScene(const json& changes, const std
   return scene;
 }
 
+int Reader::meshObject(const json& name, const std::string& path, const Scene& scene) const {
+  if (name.is_null()) {
+    // The scene's first mesh.
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      if (scene.objects[i].shape->kind() == ShapeKind::TriangleMesh) return static_cast<int>(i);
+    fail(path, "the scene has no mesh object (whose BVH is meant?)");
+  }
+  const std::string text = string(name, path);
+  const int index = scene.findObject(text);
+  if (index < 0) fail(path, "no object named \"" + text + "\" in the scene");
+  if (scene.objects[static_cast<std::size_t>(index)].shape->kind() != ShapeKind::TriangleMesh)
+    fail(path, "object \"" + text + "\" is not a mesh: only meshes have a BVH");
+  return index;
+}
+
+LessonBvh Reader::bvh(const json& j, const std::string& path, const LessonStep& step) const {
+  onlyKeys(j, path, {"object", "level", "levels", "visits"});
+  LessonBvh b;
+  const Scene& scene = *step.scene;
+  b.object = meshObject(j.contains("object") ? j["object"] : json(), path + "/object", scene);
+  // The depth of the hierarchy the step's settings search.
+  const int depth = SceneIntersector(scene, step.settings()).hierarchy(b.object)->stats().depth;
+  const auto level = [&](const json& v, const std::string& at) {
+    const int d = integerAtLeast(v, at, 0);
+    if (d > depth)
+      fail(at, "level " + std::to_string(d) + " is below the deepest level of \"" +
+                   scene.objects[static_cast<std::size_t>(b.object)].name + "\"'s BVH (" +
+                   toString(step.settings().bvhSplit) + " split: levels 0.." +
+                   std::to_string(depth) + ")");
+    return d;
+  };
+  if (j.contains("level") && j.contains("levels"))
+    fail(path, "give \"level\" or \"levels\", not both");
+  if (j.contains("level")) b.firstLevel = b.lastLevel = level(j["level"], path + "/level");
+  if (j.contains("levels")) {
+    const json& range = j["levels"];
+    if (!range.is_array() || range.size() != 2)
+      fail(path + "/levels", "expected [first, last] (levels from the root, 0 = the root)");
+    b.firstLevel = level(range[0], path + "/levels/0");
+    b.lastLevel = level(range[1], path + "/levels/1");
+    if (b.lastLevel < b.firstLevel)
+      fail(path + "/levels", "the last level (" + std::to_string(b.lastLevel) +
+                                 ") comes before the first (" + std::to_string(b.firstLevel) + ")");
+  }
+  if (j.contains("visits")) b.visits = boolean(j["visits"], path + "/visits");
+  // A ray's visits without levels: all of them, root to leaves.
+  if (b.visits && !j.contains("level") && !j.contains("levels")) b.lastLevel = depth;
+  if (b.visits && !step.pixelX)
+    fail(path + "/visits", "visits needs a pixel (whose camera ray visits the boxes)");
+  return b;
+}
+
 LessonCheck Reader::check(const json& j, const std::string& path, const LessonStep& step) const {
   const std::string quantityName = string(member(j, path, "quantity"), path + "/quantity");
   const auto quantity = lookup(kQuantities, quantityName);
@@ -448,6 +508,13 @@ LessonCheck Reader::check(const json& j, const std::string& path, const LessonSt
     case Q::CameraRays:
       onlyKeys(j, path, {"quantity"});
       break;
+    case Q::BvhNodes:
+      onlyKeys(j, path, {"quantity", "object"});
+      break;
+    case Q::BvhBoxesEntered:
+    case Q::BvhTriangleTests:
+      onlyKeys(j, path, {"quantity", "pixel", "sample", "object"});
+      break;
   }
   LessonCheck c;
   c.quantity = *quantity;
@@ -459,7 +526,12 @@ LessonCheck Reader::check(const json& j, const std::string& path, const LessonSt
   if (j.contains("end")) c.end = named(j["end"], path + "/end", kEnds, "end reason");
   if (j.contains("ray")) c.ray = integerAtLeast(j["ray"], path + "/ray", 0);
   if (j.contains("spp")) c.spp = integerAtLeast(j["spp"], path + "/spp", 1);
-  if (c.quantity != Q::CameraRays) {
+  if (c.quantity == Q::BvhNodes || c.quantity == Q::BvhBoxesEntered ||
+      c.quantity == Q::BvhTriangleTests)
+    c.object = j.contains("object") ? meshObject(j["object"], path + "/object", *step.scene)
+               : step.bvh           ? step.bvh->object
+                                    : meshObject(json(), path, *step.scene);
+  if (c.quantity != Q::CameraRays && c.quantity != Q::BvhNodes) {
     std::pair<int, int> p;
     if (j.contains("pixel")) {
       p = pixel(j["pixel"], path + "/pixel");
@@ -516,10 +588,10 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   LessonStep s;
   s.title = text(member(j, path, "title"), path + "/title");
   m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
-  onlyKeys(j, path,
-           {"title", "text", "view", "algorithm", "pixel", "sample", "reveal", "colour", "filters",
-            "camera_view", "select_ray", "samples", "measure", "scene_changes", "question",
-            "teacher_notes", "requires", "bundle", "all_hits"});
+  onlyKeys(j, path, {"title",         "text",     "view",    "algorithm",     "pixel",
+                     "sample",        "reveal",   "colour",  "filters",       "camera_view",
+                     "select_ray",    "samples",  "measure", "scene_changes", "question",
+                     "teacher_notes", "requires", "bundle",  "all_hits",      "bvh"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
@@ -624,6 +696,16 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
     fail(path + (j.contains("bundle") ? "/bundle" : "/all_hits"),
          "bundle and all_hits belong to the scene and inspector views (this step's view is \"" +
              std::string(toString(s.view)) + "\")");
+
+  if (j.contains("bvh")) {
+    if (s.view != LessonView::Scene)
+      fail(path + "/bvh", "\"bvh\" belongs to the scene view (this step's view is \"" +
+                              std::string(toString(s.view)) + "\")");
+    s.bvh = bvh(j["bvh"], path + "/bvh", s);
+  }
+  if (s.cameraView == LessonCameraView::CloseUp && !s.bvh)
+    fail(path + (j.contains("camera_view") ? "/camera_view" : ""),
+         "the close_up view looks at the step's BVH mesh: it needs a \"bvh\" block");
 
   if (j.contains("question")) s.question = question(j["question"], path + "/question", s);
   return s;
@@ -735,6 +817,15 @@ RenderSettings LessonStep::settings() const {
   RenderSettings s = scene->render;
   s.algorithm = algorithm;
   return s;
+}
+
+std::optional<Ray> LessonStep::cameraRay() const {
+  if (!pixelX || !pixelY) return std::nullopt;
+  const Tracer tracer(*scene, settings());
+  Stepper stepper(tracer, *pixelX, *pixelY, sample);
+  stepper.step();
+  const RaySegment& camera = stepper.tree().segments.at(0);
+  return Ray::make(camera.origin, camera.direction, 0.0, kInfinity, camera.time);
 }
 
 int Lesson::questionCount() const {

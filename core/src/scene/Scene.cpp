@@ -105,7 +105,9 @@ std::string RenderSettings::toString() const {
          ", nee=" + (nextEventEstimation ? "on" : "off") +
          ", mis=" + (multipleImportance ? "on" : "off") +
          ", background=" + raylab::toString(background) +
-         ", rayOffset=" + (rayOffset ? "on" : "off") + "]";
+         ", rayOffset=" + (rayOffset ? "on" : "off") +
+         ", acceleration=" + (acceleration ? "bvh" : "none") +
+         ", bvhSplit=" + raylab::toString(bvhSplit) + "]";
 }
 
 std::string CameraSpec::toString() const {

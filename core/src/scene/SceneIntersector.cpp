@@ -1,7 +1,9 @@
 #include "raylab/core/SceneIntersector.h"
 
+#include "raylab/core/Bvh.h"
 #include "raylab/core/RayOffset.h"
 #include "raylab/core/Sphere.h"
+#include "raylab/core/TriangleMesh.h"
 #include "scene/SphereLightSampler.h"
 
 #include <algorithm>
@@ -25,7 +27,10 @@ bool isMoving(const SceneObject& object) {
 
 }  // namespace
 
-SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(&scene) {
+SceneIntersector::SceneIntersector(const Scene& scene) : SceneIntersector(scene, scene.render) {}
+
+SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& settings)
+    : m_scene(&scene), m_bruteForce(!settings.acceleration) {
   for (const SceneObject& object : scene.objects) {
     Entry e;
     e.shape = object.shape.get();
@@ -34,6 +39,18 @@ SceneIntersector::SceneIntersector(const Scene& scene) : m_scene(&scene) {
     if (!e.moving && object.shape->kind() == ShapeKind::Sphere &&
         static_cast<const Sphere&>(*object.shape).isRound())
       e.round = static_cast<const Sphere*>(object.shape.get());
+    if (object.shape->kind() == ShapeKind::TriangleMesh) {
+      // The mesh's own hierarchy, or one built with the split the settings ask for.
+      const auto& mesh = static_cast<const TriangleMesh&>(*object.shape);
+      e.bvh = &mesh.bvh();
+      if (!m_bruteForce && mesh.bvh().settings().split != settings.bvhSplit) {
+        BvhSettings bvhSettings = mesh.bvh().settings();
+        bvhSettings.split = settings.bvhSplit;
+        m_rebuilt.push_back(
+            std::make_shared<const Bvh>(mesh.vertices(), mesh.triangles(), bvhSettings));
+        e.bvh = m_rebuilt.back().get();
+      }
+    }
     m_entries.push_back(e);
   }
 
@@ -81,7 +98,7 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
       }
       continue;
     }
-    const std::optional<Hit> hit = e.shape->intersect(e.moving ? toObjectFrame(r, e.velocity) : r);
+    const std::optional<Hit> hit = intersectEntry(e, e.moving ? toObjectFrame(r, e.velocity) : r);
     if (hit) {
       nearest = static_cast<int>(i);
       nearestHit = *hit;
@@ -110,11 +127,27 @@ bool SceneIntersector::occluded(const Ray& ray) const {
   for (const Entry& e : m_entries) {
     if (e.round) {
       if (e.round->nearestRoot(ray)) return true;
-    } else if (e.shape->intersect(e.moving ? toObjectFrame(ray, e.velocity) : ray)) {
+    } else if (occludedEntry(e, e.moving ? toObjectFrame(ray, e.velocity) : ray)) {
       return true;
     }
   }
   return false;
+}
+
+const Bvh* SceneIntersector::hierarchy(int object) const {
+  if (object < 0 || object >= static_cast<int>(m_entries.size())) return nullptr;
+  return m_entries[static_cast<std::size_t>(object)].bvh;
+}
+
+std::optional<Hit> SceneIntersector::intersectEntry(const Entry& e, const Ray& ray) const {
+  if (!e.bvh) return e.shape->intersect(ray);
+  return m_bruteForce ? e.bvh->intersectBruteForce(ray) : e.bvh->intersect(ray);
+}
+
+bool SceneIntersector::occludedEntry(const Entry& e, const Ray& ray) const {
+  if (!e.bvh) return bool(e.shape->intersect(ray));
+  // A mesh stops at the first triangle that blocks (any hit), not the nearest.
+  return m_bruteForce ? e.bvh->occludedBruteForce(ray) : e.bvh->occluded(ray);
 }
 
 std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight,

@@ -43,7 +43,9 @@ inline constexpr std::array kRenderKeys = {"algorithm",
                                            "next_event_estimation",
                                            "multiple_importance",
                                            "background",
-                                           "ray_offset"};
+                                           "ray_offset",
+                                           "acceleration",
+                                           "bvh_split"};
 
 /// An object's "shape", per value of "type".
 inline constexpr std::array kSphereKeys = {"type", "centre", "radius", "m", "n"};

@@ -394,6 +394,20 @@ class Reader : private JsonChecks<Reader> {
         fail(p + "/background", "background radiance must not be negative");
     }
     if (r.contains("ray_offset")) s.rayOffset = boolean(r["ray_offset"], p + "/ray_offset");
+    if (r.contains("acceleration")) {
+      const std::string name = string(r["acceleration"], p + "/acceleration");
+      if (name != "bvh" && name != "none")
+        fail(p + "/acceleration",
+             "unknown acceleration \"" + name + "\" (expected bvh, or none for brute force)");
+      s.acceleration = name == "bvh";
+    }
+    if (r.contains("bvh_split")) {
+      const std::string name = string(r["bvh_split"], p + "/bvh_split");
+      const auto split = parseBvhSplit(name);
+      if (!split)
+        fail(p + "/bvh_split", "unknown BVH split \"" + name + "\" (expected sah or median)");
+      s.bvhSplit = *split;
+    }
   }
 
   /// One entry of "objects"; the scene's materials are read already (objects name them).

@@ -251,6 +251,9 @@ ojson renderToJson(const RenderSettings& r) {
       .add("background", toJson(r.background));
   // Only a scene that switches the offset off says so (the lesson on shadow acne).
   if (!r.rayOffset) j.add("ray_offset", false);
+  // Likewise the lesson on acceleration structures: brute force, or a median split.
+  if (!r.acceleration) j.add("acceleration", "none");
+  if (r.bvhSplit != BvhSettings::Split::Sah) j.add("bvh_split", toString(r.bvhSplit));
   return j.take();
 }
 

@@ -33,6 +33,11 @@ struct BvhSettings {
   std::string toString() const;
 };
 
+/// "sah" or "median" (the names in scene files' "bvh_split").
+const char* toString(BvhSettings::Split split);
+/// Parses "sah" and "median"; nothing for anything else.
+std::optional<BvhSettings::Split> parseBvhSplit(const std::string& name);
+
 /// Figures of a built Bvh, for tests, benchmarks and the lessons on acceleration.
 struct BvhStats {
   int triangleCount = 0;       ///< Triangles in the hierarchy.
@@ -73,6 +78,45 @@ struct alignas(64) BvhNodePair {
   std::uint8_t pad[2] = {0, 0};
 };
 static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
+
+/// One box of the hierarchy for drawing and teaching (Bvh::levels): where it is in the
+/// tree and what it holds.
+struct BvhBox {
+  int node = 0;           ///< Node index (0 = root), as Bvh::node.
+  int depth = 0;          ///< Edges from the root (root: 0).
+  Bounds3 bounds;         ///< The node's box, world space (the stored float box).
+  int triangleCount = 0;  ///< Leaf: its triangles; interior node: 0.
+  bool leaf() const { return triangleCount > 0; }
+};
+
+/// What happened to one box while a ray searched the hierarchy for its nearest hit.
+enum class BvhVisitKind {
+  Entered,  ///< The ray entered the box and the traversal went inside (a leaf: its
+            ///< triangles were tested).
+  Missed,   ///< The slab test found the ray passes by the box.
+  Culled,   ///< The ray meets the box, but only beyond the nearest hit found so far: skipped
+            ///< when its pair was tested, or when it was taken off the stack.
+};
+/// "entered", "missed", "culled".
+const char* toString(BvhVisitKind kind);
+
+/// One event of a ray's traversal, in the order the traversal met the boxes.
+struct BvhVisit {
+  int node = 0;   ///< Node index (0 = root).
+  int depth = 0;  ///< Edges from the root.
+  BvhVisitKind kind = BvhVisitKind::Entered;
+  double tEntry = kInfinity;  ///< Where the ray enters the box (Entered, Culled); else inf.
+  int trianglesTested = 0;    ///< Entered leaves: the ray/triangle tests made in it.
+};
+
+/// A ray's nearest-hit search, recorded box by box (Bvh::traceVisits).
+struct BvhTrace {
+  std::vector<BvhVisit> visits;  ///< In traversal order; the root first.
+  std::optional<Hit> hit;        ///< Equal to Bvh::intersect(ray).
+  int boxTests = 0;              ///< Slab tests made (root + two per interior node entered).
+  int boxesEntered = 0;          ///< Visits of kind Entered.
+  int triangleTests = 0;         ///< Ray/triangle tests made in the leaves entered.
+};
 
 /**
  * \brief A bounding volume hierarchy over triangles, built with the binned surface-area
@@ -116,6 +160,22 @@ class Bvh {
   /// -1 for an empty hierarchy.
   int closestTriangle(const Point3& p) const;
 
+  /// Brute force, the simple variant beside the hierarchy (lesson 8): every triangle is
+  /// tested, no box is. The same answer as intersect(), bit for bit (the same triangle
+  /// test, the same tie rule).
+  std::optional<Hit> intersectBruteForce(const Ray& ray) const;
+  /// Brute-force any-hit: every triangle in turn until one blocks; the same as occluded().
+  bool occludedBruteForce(const Ray& ray) const;
+
+  /// The boxes of the hierarchy level by level: levels()[d] holds the nodes at depth d
+  /// (the root alone at 0), in node order. Leaves appear at their own depth only, so
+  /// a leaf above the deepest level is absent from the levels below it. Empty for an
+  /// empty hierarchy.
+  std::vector<std::vector<BvhBox>> levels() const;
+  /// The nearest-hit search of intersect(), recorded: every box the traversal tests or
+  /// drops, in order, and the hit (equal to intersect(ray)).
+  BvhTrace traceVisits(const Ray& ray) const;
+
   /// World-space bounds of all triangles (exact, in double).
   const Bounds3& bounds() const { return m_bounds; }
   const BvhStats& stats() const { return m_stats; }
@@ -128,6 +188,8 @@ class Bvh {
 
  private:
   struct Builder;
+  /// Depth of every node slot (slot 1, the padding: -1), found by walking down from the root.
+  std::vector<int> nodeDepths() const;
 
   BvhSettings m_settings;
   std::vector<BvhNodePair> m_pairs;  ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).

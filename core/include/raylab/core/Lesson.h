@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Exception.h"
+#include "raylab/core/Ray.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
 #include "raylab/core/Scene.h"
@@ -58,6 +59,7 @@ const char* toString(LessonColouring colouring);
 enum class LessonCameraView {
   Default,  ///< "default": from outside the scene.
   Camera,   ///< "camera": from just behind the scene's camera.
+  CloseUp,  ///< "close_up": close to the mesh of the step's "bvh" block, from the camera's side.
 };
 const char* toString(LessonCameraView view);
 
@@ -118,6 +120,10 @@ struct LessonCheck {
     PixelLuminance,     ///< "pixel_luminance": mean luminance of samples 0..spp-1 of the pixel.
     RayLength,          ///< "ray_length": distance from ray `ray`'s origin to its hit point.
     CameraRays,         ///< "camera_rays": camera rays of a whole image at the scene's spp.
+    BvhNodes,           ///< "bvh_nodes": nodes (boxes) of a mesh's BVH, with the step's split.
+    BvhBoxesEntered,    ///< "bvh_boxes_entered": boxes of that BVH the camera ray of the
+                        ///< pixel's sample enters (Bvh::traceVisits on the mesh alone).
+    BvhTriangleTests,   ///< "bvh_triangle_tests": ray/triangle tests that search makes.
   };
   Quantity quantity = Quantity::TreeRays;
   Algorithm algorithm = Algorithm::PathTracing;  ///< Default: the step's algorithm.
@@ -127,9 +133,25 @@ struct LessonCheck {
   std::optional<EndReason> end;                  ///< tree_rays: only rays that ended so.
   int ray = 0;                                   ///< ray_length: the segment id.
   int spp = 0;                                   ///< pixel_luminance: samples (0: scene's).
+  int object = -1;  ///< bvh_*: the mesh object (default: the step's bvh object, else the
+                    ///< scene's first mesh); an index into the step scene's objects.
 };
 /// "tree_rays", "tree_depth", ...
 const char* toString(LessonCheck::Quantity quantity);
+
+/**
+ * \brief What a step shows of a mesh's bounding volume hierarchy (lesson 8), drawn in the
+ * scene view over the ray tree: the boxes of levels firstLevel..lastLevel in their level's
+ * colours, or, with `visits`, only the boxes of those levels that the camera ray of the
+ * step's pixel meets (entered thick; missed and culled thin and grey). The hierarchy is
+ * the one the step's render settings search (their bvh_split, see RenderSettings).
+ */
+struct LessonBvh {
+  int object = 0;       ///< The mesh object, an index into the step scene's objects.
+  int firstLevel = 0;   ///< First level drawn (the root is level 0).
+  int lastLevel = 0;    ///< Last level drawn, inclusive (at most the tree's depth).
+  bool visits = false;  ///< Only the boxes the step pixel's camera ray meets.
+};
 
 /// A question for the student: multiple choice, or a number with a tolerance.
 struct LessonQuestion {
@@ -167,6 +189,7 @@ struct LessonStep {
   /// "all_hits": every surface the pixel's camera ray (the selected ray in the inspector
   /// view) crosses is marked along it, entering and leaving (sceneCrossings).
   bool allHits = false;
+  std::optional<LessonBvh> bvh;                    ///< Scene view: a mesh's BVH boxes.
   LessonMeasure measure = LessonMeasure::Samples;  ///< Compare and plot views only.
   /// The step's scene changes as written (compact JSON, one per change), for captions.
   std::vector<std::string> sceneChanges;
@@ -180,6 +203,9 @@ struct LessonStep {
   /// The settings the step renders and traces with: the step scene's render block with
   /// the step's algorithm.
   RenderSettings settings() const;
+  /// The camera ray of the step's pixel and sample (world space, the first ray of its
+  /// tree, unbounded); nothing when the step has no pixel.
+  std::optional<Ray> cameraRay() const;
 };
 
 /// A lesson: a scene and the steps a class goes through, in English and Chinese.
@@ -221,6 +247,7 @@ struct Lesson {
  *          "filters": {"kinds": ["camera", "refraction"], "max_depth": 3,
  *                      "reaching_light": false, "min_energy": 0},
  *          "camera_view": "default", "select_ray": 1,
+ *          "bvh": {"object": "mesh ball", "levels": [0, 2], "visits": false},
  *          "scene_changes": [{"material": "glass", "set": {"ior": 1.0}}],
  *          "question": {"type": "number",
  *                       "prompt": {"en": "How many rays ...?", "zh": "..."},
@@ -243,15 +270,24 @@ struct Lesson {
  *   (required by inspector, and by select_ray and reveal); sample in [0, spp); reveal
  *   {"frame": n} or {"depth": d}; colour: energy | kind | depth; filters (kinds from
  *   camera, reflection, refraction, diffuse, glossy, shadow; max_depth; reaching_light;
- *   min_energy); camera_view: default | camera; select_ray: a segment id of the pixel's
+ *   min_energy); camera_view: default | camera | close_up (close to the step's bvh mesh,
+ *   steps with "bvh" only); select_ray: a segment id of the pixel's
  *   tree (checked by tracing it); samples (view "samples" only): {"sampler": cosine |
  *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; measure (views compare
  *   and plot only): samples | time, what the comparison holds equal and the plot's x axis
- *   (default samples); teacher_notes {en, zh};
+ *   (default samples);
  *   bundle (scene and inspector views, needs a pixel): draw samples sample .. sample +
  *   bundle - 1 of the pixel together, 1..256 (a thin lens's camera rays make a bundle);
  *   all_hits (scene and inspector views, needs a pixel): true marks every surface the
  *   camera ray (the inspector's selected ray) crosses, entering and leaving;
+ *   bvh (view "scene" only, lesson 8; LessonBvh): {"object": a mesh
+ *   object's name (default: the scene's first mesh), "level": d or "levels": [first, last]
+ *   (depths from the root, within the tree's depth; default 0, with visits every level),
+ *   "visits": true to draw only the boxes the camera ray of the step's pixel meets (needs
+ *   a pixel)}; which hierarchy
+ *   is drawn, and whether the meshes are searched at all, are render settings, changed
+ *   with scene_changes: {"render": {"bvh_split": "median"}}, {"render": {"acceleration":
+ *   "none"}}; teacher_notes {en, zh};
  *   requires: a feature name or a list of them (the step needs something RayLab does not
  *   have yet; the loader accepts it and Lesson::requiredFeatures lists it).
  * - scene_changes: edits for this step only, applied in order to a copy of the scene
@@ -269,9 +305,11 @@ struct Lesson {
  * - question: "type" choice (choices [{en, zh}, ...], "answer" = index) or number
  *   ("answer", "tolerance" >= 0, optional "check"); "prompt" and "explanation" {en, zh}.
  *   check: {"quantity": tree_rays | tree_depth | estimate_luminance | pixel_luminance |
- *   ray_length | camera_rays, "algorithm", "pixel", "sample" (default: the step's),
- *   "kind", "end" (tree_rays: escaped, hit_light, max_depth, russian_roulette, absorbed,
- *   occluded, reached_light, spawned), "ray" (ray_length), "spp" (pixel_luminance)}.
+ *   ray_length | camera_rays | bvh_nodes | bvh_boxes_entered | bvh_triangle_tests,
+ *   "algorithm", "pixel", "sample" (default: the step's), "kind", "end" (tree_rays:
+ *   escaped, hit_light, max_depth, russian_roulette, absorbed, occluded, reached_light,
+ *   spawned), "ray" (ray_length), "spp" (pixel_luminance), "object" (bvh_*: a mesh
+ *   object's name; default the step's bvh object, else the first mesh)}.
  * - Unknown keys are errors everywhere (a misspelt key would otherwise be ignored).
  *
  * Every error throws LoadError naming the file, the step (1-based number and English

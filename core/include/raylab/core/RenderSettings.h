@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/Bvh.h"
 #include "raylab/core/Types.h"
 
 #include <cstdint>
@@ -38,6 +39,10 @@ std::optional<Algorithm> parseAlgorithm(const std::string& name);
  * | multipleImportance | true | path: MIS (power heuristic) of light and BSDF sampling |
  * | rayOffset | true | all: secondary rays start past the hit's error bound (RayOffset.h); |
  * | | | false starts them on the computed hit point and shows shadow acne (lesson 2) |
+ * | acceleration | true | all: meshes are searched through their BVH; false tests every |
+ * | | | triangle of every mesh (brute force, lesson 8): the same hits, bit for bit, slower |
+ * | bvhSplit | sah | all: how the meshes' BVHs split nodes (surface-area heuristic or median); |
+ * | | | the hits are the same either way, only the boxes visited differ (lesson 8) |
  */
 struct RenderSettings {
   Algorithm algorithm = Algorithm::PathTracing;  ///< Which algorithm renders.
@@ -52,6 +57,12 @@ struct RenderSettings {
   Vec3 background{0.0};             ///< Radiance of escaped rays, linear RGB.
   bool rayOffset = true;  ///< Secondary rays leave past the hit's error bound; false: from the
                           ///< computed hit point itself (shows shadow acne, for teaching).
+  /// Meshes are searched through their bounding volume hierarchy; false: every ray is
+  /// tested against every triangle (brute force, for teaching). The hits are identical.
+  bool acceleration = true;
+  /// How the meshes' hierarchies choose their splits; a mesh built with another split is
+  /// rebuilt for the render (SceneIntersector). The hits are identical either way.
+  BvhSettings::Split bvhSplit = BvhSettings::Split::Sah;
   std::string toString() const;
 };
 

@@ -9,6 +9,7 @@
 
 namespace raylab {
 
+class Bvh;
 class Sphere;
 class SphereLightSampler;
 
@@ -35,6 +36,11 @@ struct LightSample {
  * objects (moving objects at the ray's time), and the list of area lights with their
  * sampling (lights chosen in proportion to their emitted power).
  *
+ * Meshes are searched as the render settings say (lesson 8): through their BVH, one built
+ * with the settings' split (the mesh's own when it matches, else one built here), or by
+ * brute force over every triangle when acceleration is off. The hits are the same either
+ * way, bit for bit; only the work differs.
+ *
  * Light points: round sphere lights are sampled by solid angle, in the cone they subtend,
  * restricted to the part of the light no other sphere separates from the shading point
  * (SphereLightSampler, core/src/scene); every other shape uniformly by area. Moving lights
@@ -42,7 +48,10 @@ struct LightSample {
  */
 class SceneIntersector {
  public:
+  /// The scene with its own render block's acceleration settings.
   explicit SceneIntersector(const Scene& scene);
+  /// The scene searched as `settings` say (acceleration, bvhSplit; the rest is unused).
+  SceneIntersector(const Scene& scene, const RenderSettings& settings);
 
   /// Nearest hit with t in [ray.tMin, ray.tMax], over every object.
   std::optional<SceneHit> intersect(const Ray& ray) const;
@@ -71,6 +80,10 @@ class SceneIntersector {
   Vec3 emitted(int object, const SurfaceInteraction& hit, const Vec3& rayDirection) const;
 
   const Scene& scene() const { return *m_scene; }
+  /// The hierarchy searched for mesh object `object` (built with the settings' split; the
+  /// mesh's own when acceleration is off), or null when that object is not a mesh. A
+  /// rebuilt hierarchy belongs to this intersector: keep the intersector while using it.
+  const Bvh* hierarchy(int object) const;
 
  private:
   /// sampleLightObject for light k of m_lights.
@@ -81,12 +94,20 @@ class SceneIntersector {
   struct Entry {
     const Shape* shape = nullptr;
     const Sphere* round = nullptr;  ///< Static round spheres: intersected without a virtual call.
+    const Bvh* bvh = nullptr;       ///< Meshes: the hierarchy searched (null: other shapes).
     bool moving = false;
     Vec3 velocity{0.0};
   };
 
+  /// Nearest hit of entry `e` (not a static round sphere) with `ray`, in the object's frame.
+  std::optional<Hit> intersectEntry(const Entry& e, const Ray& ray) const;
+  bool occludedEntry(const Entry& e, const Ray& ray) const;
+
   const Scene* m_scene;
+  bool m_bruteForce = false;     ///< RenderSettings::acceleration off: test every triangle.
   std::vector<Entry> m_entries;  ///< Parallel to Scene::objects.
+  /// Meshes' hierarchies rebuilt with the settings' split (Entry::bvh points into them).
+  std::vector<std::shared_ptr<const Bvh>> m_rebuilt;
   std::vector<int> m_lights;
   std::vector<double> m_lightCdf;  ///< Cumulative pick probabilities (by power).
   /// Per light (parallel to m_lights): its solid-angle sampler, null for area sampling.

@@ -5,6 +5,7 @@
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
 #include "raylab/vis/BounceAnimation.h"
+#include "raylab/vis/BvhStyle.h"
 #include "raylab/vis/Image.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/ViewCamera.h"
@@ -134,6 +135,21 @@ class SceneView {
   void setCaption(const std::string& text, Language language = Language::English);
   /// @}
 
+  /// \name A mesh's bounding volume hierarchy drawn in the view (lesson 8; BvhStyle.h).
+  /// It is drawn together with the ray tree, and kept through updateScene while the scene
+  /// still has the mesh (an object of the same name at the same index); setScene clears
+  /// it. Building the boxes happens in the setter.
+  /// @{
+  /// Draws the boxes `style` asks for (style.object -1, or an object that is not a mesh:
+  /// none); while they are shown the mesh is see-through.
+  void setBvh(const BvhStyle& style);
+  /// Removes the boxes.
+  void clearBvh();
+  const BvhStyle& bvhStyle() const;
+  /// What is drawn now, counted (for tests and captions).
+  const BvhSummary& bvhSummary() const;
+  /// @}
+
   /// The VTK renderer, for a window to show (at most one window at a time).
   vtkRenderer* renderer() const;
   /// Builds what changed since the last render (the ray tree's polydata). Offscreen
@@ -162,6 +178,10 @@ class SceneView {
   void showOnlyCloud();
   /// Draws the solids the marked crossings pass through see-through.
   void seeThroughCrossed();
+  /// Object opacities: glass see-through while rays are shown, the solids crossings pass
+  /// through, a mesh while its BVH is drawn.
+  void applyOpacities();
+
   struct Impl;
   std::unique_ptr<Impl> m_impl;
   Scene m_scene;

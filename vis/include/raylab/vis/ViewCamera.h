@@ -75,5 +75,10 @@ std::optional<Vec2> projectToImage(const ViewCamera& camera, const Point3& world
 /// a slightly wider field of view: the rays leave the camera towards the viewer's scene
 /// (`raylab trace --view camera`).
 ViewCamera behindCameraView(const Scene& scene, double aspect);
+/// A close view of object `index`: from the side of the scene camera (and a little above),
+/// looking at the centre of the object's bounds from just far enough that the sphere
+/// around them fills about 80% of the picture's height or width, whichever is smaller.
+/// For an unbounded object (a plane), the default view.
+ViewCamera closeUpView(const Scene& scene, int index, double aspect);
 
 }  // namespace raylab::vis
