@@ -473,7 +473,8 @@ int runRender(const LessonOptions& o) {
   const Lesson lesson = LessonIO::load(path);
   const Language language = *parseLanguage(o.lang);
   prepareFolder(o.out);
-  const std::optional<std::pair<int, int>> size = o.size.empty() ? std::nullopt : parseSize(o.size);
+  std::optional<std::pair<int, int>> size;  // (assigned, not ?:, which GCC 12 misreads)
+  if (!o.size.empty()) size = parseSize(o.size);
   std::string md = "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n";
   int pictures = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
