@@ -537,6 +537,10 @@
         <source>width</source>
         <translation>宽度</translation>
     </message>
+    <message>
+        <source>near clip shape</source>
+        <translation>近裁剪面形状</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>
@@ -1939,6 +1943,10 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn&apos;s half-vector highlight), rough_conductor (microfacet metal), rough_dielectric (microfacet glass)</source>
         <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）、phong（经典 Phong 光照模型：环境光、漫反射、镜面反射）、blinn_phong（采用 Blinn 半程向量高光的 Phong 模型）、rough_conductor（粗糙导体，微表面金属）、rough_dielectric（粗糙电介质，微表面玻璃）</translation>
+    </message>
+    <message>
+        <source>Where camera rays start, near clip away from the eye: on a plane in front of the eye (plane) or along each ray (sphere, as smallpt)</source>
+        <translation>相机光线的起点，与视点相距“近裁剪距离”：plane 表示在视点正前方的平面上，sphere 表示沿每条光线量取（即以视点为球心的球面上，与 smallpt 相同）</translation>
     </message>
 </context>
 <context>

@@ -47,6 +47,7 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
     {"algorithm", {"raycast", "whitted", "distributed", "path"}},
     {"fresnel", {"exact", "schlick"}},
     {"distribution", {"ggx", "beckmann"}},
+    {"near_clip_shape", {"plane", "sphere"}},
 };
 const std::vector<const char*> kMaterialTypes = {
     "diffuse", "mirror",      "dielectric",      "glossy",
@@ -84,6 +85,10 @@ QString tipFor(const std::string& key) {
     return PropertiesPanel::tr(
         "Microfacet distribution: ggx (Trowbridge-Reitz, long tails) or beckmann (Gaussian "
         "slopes)");
+  if (key == "near_clip_shape")
+    return PropertiesPanel::tr(
+        "Where camera rays start, near clip away from the eye: on a plane in front of the eye "
+        "(plane) or along each ray (sphere, as smallpt)");
   if (key == "ray_offset")
     return PropertiesPanel::tr(
         "Ray offset: secondary and shadow rays start past the hit point's error bound; "
@@ -337,7 +342,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   auto* form = new QFormLayout(group);
   const bool material = pointer.rfind("/materials/", 0) == 0;
   // Keys the file leaves out at their default, shown all the same: the index outside a
-  // refracting surface (after its ior) and the render block's ray offset.
+  // refracting surface (after its ior), the render block's ray offset and the shape of a
+  // camera's near clip.
   if (material && values.contains("ior") && !values.contains("ior_outside")) {
     json withOutside = json::object();
     for (auto it = values.begin(); it != values.end(); ++it) {
@@ -347,6 +353,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
     values = std::move(withOutside);
   }
   if (pointer == "/render" && !values.contains("ray_offset")) values["ray_offset"] = true;
+  if (pointer == "/camera" && values.contains("near_clip") && !values.contains("near_clip_shape"))
+    values["near_clip_shape"] = "plane";
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
     const std::string place = pointer + "/" + key;
