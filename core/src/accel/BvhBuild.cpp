@@ -4,6 +4,7 @@
 
 #include "accel/BvhLimits.h"
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -24,6 +25,26 @@ namespace {
 
 /// Ranges larger than this are built on their own oneTBB task.
 constexpr int kParallelGrain = 8192;
+/// Ranges larger than this have their bounds and bins computed by several tasks, in chunks
+/// of this size (the top levels, which would otherwise run on one thread).
+constexpr int kParallelBinGrain = 32768;
+
+/// Runs body(chunkBegin, chunkEnd, chunk) over [begin, end) cut into chunks of `grain`
+/// (the last one shorter), on oneTBB tasks when `parallel`. The chunks depend on the range
+/// only, never on the thread count, so a result merged in chunk order is always the same.
+template <typename Body>
+void forChunks(bool parallel, int begin, int end, int grain, const Body& body) {
+  const int chunks = (end - begin + grain - 1) / grain;
+  const auto run = [&](int c) {
+    body(begin + c * grain, std::min(end, begin + (c + 1) * grain), c);
+  };
+  if (parallel && chunks > 1)
+    tbb::parallel_for(0, chunks, run);
+  else
+    for (int c = 0; c < chunks; ++c) run(c);
+}
+
+int chunkCount(int begin, int end, int grain) { return (end - begin + grain - 1) / grain; }
 
 float roundDown(double d) {
   float f = static_cast<float>(d);
@@ -95,18 +116,21 @@ struct Bvh::Builder {
         triangles(t),
         prims(triangles.size()),
         nodes(std::max<std::size_t>(2, 2 * triangles.size() + 2)) {
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
-      const Index3& tri = triangles[i];
-      Bounds3 b(vertices[tri[0]], vertices[tri[1]]);
-      b.extend(vertices[tri[2]]);
-      PrimRef& r = prims[i];
-      for (int a = 0; a < 3; ++a) {
-        r.lower[a] = b.lower[a];
-        r.upper[a] = b.upper[a];
-        r.centroid[a] = 0.5 * (b.lower[a] + b.upper[a]);
+    const int n = static_cast<int>(triangles.size());
+    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int) {
+      for (int i = begin; i < end; ++i) {
+        const Index3& tri = triangles[i];
+        Bounds3 b(vertices[tri[0]], vertices[tri[1]]);
+        b.extend(vertices[tri[2]]);
+        PrimRef& r = prims[i];
+        for (int a = 0; a < 3; ++a) {
+          r.lower[a] = b.lower[a];
+          r.upper[a] = b.upper[a];
+          r.centroid[a] = 0.5 * (b.lower[a] + b.upper[a]);
+        }
+        r.id = i;
       }
-      r.id = static_cast<int>(i);
-    }
+    });
     nodes[1] = BvhNode{};
     setBox(nodes[1], Bounds3{});
   }
@@ -129,16 +153,20 @@ struct Bvh::Builder {
     const int n = static_cast<int>(prims.size());
     primIds.resize(static_cast<std::size_t>(n));
     triVerts.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-      const PrimRef& r = prims[i];
-      primIds[i] = r.id;
-      for (int k = 0; k < 3; ++k) {
-        const Point3& p = vertices[triangles[r.id][k]];
-        for (int a = 0; a < 3; ++a) triVerts[i][3 * k + a] = p[a];
+    std::vector<Bounds3> chunkBounds(std::size_t(chunkCount(0, n, kParallelBinGrain)));
+    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int chunk) {
+      for (int i = begin; i < end; ++i) {
+        const PrimRef& r = prims[i];
+        primIds[i] = r.id;
+        for (int k = 0; k < 3; ++k) {
+          const Point3& p = vertices[triangles[r.id][k]];
+          for (int a = 0; a < 3; ++a) triVerts[i][3 * k + a] = p[a];
+        }
+        chunkBounds[chunk].extend(primBounds(r));
       }
-      bounds.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                            Point3(r.upper[0], r.upper[1], r.upper[2])));
-    }
+    });
+    // Minimum and maximum are exact, so the chunks' order does not change the bounds.
+    for (const Bounds3& b : chunkBounds) bounds.extend(b);
   }
 
   /// Step 3: the nodes laid out depth first, each pair of children right after the
@@ -184,6 +212,52 @@ struct Bvh::Builder {
     return flat;
   }
 
+  static Bounds3 primBounds(const PrimRef& r) {
+    return Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
+                   Point3(r.upper[0], r.upper[1], r.upper[2]));
+  }
+
+  /// Whether a range is large enough for its bounds and bins to be split over tasks.
+  bool parallelRange(int count) const { return settings.parallel && count > kParallelBinGrain; }
+
+  /// Grows `box` and `centroids` by the triangles of prims[begin, end) and their centroids.
+  void rangeBounds(int begin, int end, Bounds3& box, Bounds3& centroids) const {
+    for (int i = begin; i < end; ++i) {
+      const PrimRef& r = prims[i];
+      box.extend(primBounds(r));
+      centroids.extend(Point3(r.centroid[0], r.centroid[1], r.centroid[2]));
+    }
+  }
+
+  /// The SAH bins of all three axes, filled in one pass over the triangles.
+  struct Binning {
+    Bin bins[3][64];
+    /// Adds another chunk's bins (counts add, boxes grow: exact, order-free).
+    void merge(const Binning& other, int binCount) {
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < binCount; ++b) {
+          bins[a][b].count += other.bins[a][b].count;
+          bins[a][b].box.extend(other.bins[a][b].box);
+        }
+    }
+  };
+
+  /// Bins prims[begin, end) on every axis with scale[a] > 0: bin of a centroid =
+  /// min(binCount - 1, (c - lo) * scale), the formula the partition uses too.
+  void binRange(int begin, int end, const double lo[3], const double scale[3], Binning& out) const {
+    const int binCount = settings.binCount;
+    for (int i = begin; i < end; ++i) {
+      const PrimRef& r = prims[i];
+      const Bounds3 rb = primBounds(r);
+      for (int a = 0; a < 3; ++a) {
+        if (!(scale[a] > 0.0)) continue;
+        const int b = std::min(binCount - 1, static_cast<int>((r.centroid[a] - lo[a]) * scale[a]));
+        out.bins[a][b].count++;
+        out.bins[a][b].box.extend(rb);
+      }
+    }
+  }
+
   void makeLeaf(BvhNode& node, int begin, int end) {
     node.offset = begin;
     node.count = static_cast<std::uint16_t>(end - begin);
@@ -195,13 +269,21 @@ struct Bvh::Builder {
     BvhNode& node = nodes[nodeIndex];
     const int count = end - begin;
 
-    // Bounds of the triangles and of their centroids.
+    // Bounds of the triangles and of their centroids (in chunks on several threads at the
+    // top levels; minimum and maximum are exact, so the result is the same).
     Bounds3 box, centroids;
-    for (int i = begin; i < end; ++i) {
-      const PrimRef& r = prims[i];
-      box.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                         Point3(r.upper[0], r.upper[1], r.upper[2])));
-      centroids.extend(Point3(r.centroid[0], r.centroid[1], r.centroid[2]));
+    if (parallelRange(count)) {
+      std::vector<std::pair<Bounds3, Bounds3>> chunks(
+          std::size_t(chunkCount(begin, end, kParallelBinGrain)));
+      forChunks(true, begin, end, kParallelBinGrain, [&](int b, int e, int chunk) {
+        rangeBounds(b, e, chunks[chunk].first, chunks[chunk].second);
+      });
+      for (const auto& [chunkBox, chunkCentroids] : chunks) {
+        box.extend(chunkBox);
+        centroids.extend(chunkCentroids);
+      }
+    } else {
+      rangeBounds(begin, end, box, centroids);
     }
     setBox(node, box);
     if (count <= settings.maxLeafSize) return makeLeaf(node, begin, end);
@@ -254,22 +336,28 @@ struct Bvh::Builder {
     const double area = box.surfaceArea();
     double bestCost = kInfinity;
     int bestAxis = -1, bestBin = -1;
-    Bin bins[64];
     double rightArea[64];
     int rightCount[64];
+    // Count the centroids per bin and grow the bins' boxes, every axis in one pass (in
+    // chunks on several threads at the top levels, merged in chunk order).
+    double lo[3], scale[3];
     for (int a = 0; a < 3; ++a) {
-      const double lo = centroids.lower[a], extent = centroids.extent()[a];
-      if (!(extent > 0.0)) continue;
-      const double scale = binCount / extent;
-      // Count the centroids per bin and grow the bins' boxes.
-      for (int b = 0; b < binCount; ++b) bins[b] = Bin{};
-      for (int i = begin; i < end; ++i) {
-        const PrimRef& r = prims[i];
-        const int b = std::min(binCount - 1, static_cast<int>((r.centroid[a] - lo) * scale));
-        bins[b].count++;
-        bins[b].box.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                                   Point3(r.upper[0], r.upper[1], r.upper[2])));
-      }
+      const double extent = centroids.extent()[a];
+      lo[a] = centroids.lower[a];
+      scale[a] = extent > 0.0 ? binCount / extent : 0.0;
+    }
+    Binning binning;
+    if (parallelRange(count)) {
+      std::vector<Binning> chunks(std::size_t(chunkCount(begin, end, kParallelBinGrain)));
+      forChunks(true, begin, end, kParallelBinGrain,
+                [&](int b, int e, int chunk) { binRange(b, e, lo, scale, chunks[chunk]); });
+      for (const Binning& chunk : chunks) binning.merge(chunk, binCount);
+    } else {
+      binRange(begin, end, lo, scale, binning);
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (!(scale[a] > 0.0)) continue;
+      const Bin* bins = binning.bins[a];
       // Sweep from the right to get the area and count right of each plane ...
       Bounds3 acc;
       int n = 0;
@@ -310,10 +398,10 @@ struct Bvh::Builder {
 
     // Partition by the same bin computation, so the counts match the sweep.
     axis = bestAxis;
-    const double lo = centroids.lower[axis];
-    const double scale = binCount / centroids.extent()[axis];
+    const double axisLo = lo[axis], axisScale = scale[axis];
     auto it = std::partition(prims.begin() + begin, prims.begin() + end, [&](const PrimRef& r) {
-      return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - lo) * scale)) < bestBin;
+      return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - axisLo) * axisScale)) <
+             bestBin;
     });
     return static_cast<int>(it - prims.begin());
   }
