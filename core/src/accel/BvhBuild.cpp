@@ -12,6 +12,7 @@
 #include <climits>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -58,14 +59,25 @@ float roundUp(double d) {
   return f;
 }
 
-void setBox(BvhNode& node, const Bounds3& b) {
+/// A node while the tree is built: BvhNode's fields without its initialiser, so the array
+/// of 2n + 2 of them is not written (and its pages not touched) before the build uses them.
+struct BuildNode {
+  float box[6];
+  std::int32_t offset;
+  std::uint16_t count;
+  std::uint8_t axis;
+};
+
+template <typename Node>
+void setBox(Node& node, const Bounds3& b) {
   for (int a = 0; a < 3; ++a) {
     node.box[a] = roundDown(b.lower[a]);
     node.box[3 + a] = roundUp(b.upper[a]);
   }
 }
 
-double boxArea(const BvhNode& n) {
+template <typename Node>
+double boxArea(const Node& n) {
   const double dx = double(n.box[3]) - n.box[0];
   const double dy = double(n.box[4]) - n.box[1];
   const double dz = double(n.box[5]) - n.box[2];
@@ -74,16 +86,26 @@ double boxArea(const BvhNode& n) {
 
 /// Stores the depth-first node array as cache-line pairs: node i becomes lane i % 2 of
 /// pair i / 2 (see BvhNodePair; Bvh::node undoes it).
-std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat) {
+std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat, bool parallel) {
   std::vector<BvhNodePair> pairs(flat.size() / 2);
-  for (std::size_t i = 0; i < flat.size(); ++i) {
-    BvhNodePair& pair = pairs[i / 2];
-    const int lane = static_cast<int>(i % 2);
-    for (int k = 0; k < 6; ++k) pair.box[k][lane] = flat[i].box[k];
-    pair.offset[lane] = flat[i].offset;
-    pair.count[lane] = flat[i].count;
-    pair.axis[lane] = flat[i].axis;
-  }
+  const auto fill = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      BvhNodePair& pair = pairs[i / 2];
+      const int lane = static_cast<int>(i % 2);
+      for (int k = 0; k < 6; ++k) pair.box[k][lane] = flat[i].box[k];
+      pair.offset[lane] = flat[i].offset;
+      pair.count[lane] = flat[i].count;
+      pair.axis[lane] = flat[i].axis;
+    }
+  };
+  // Each pair is written by one chunk (chunks of an even number of nodes).
+  const std::size_t grain = 2 * std::size_t(kParallelBinGrain);
+  if (parallel && flat.size() > grain)
+    tbb::parallel_for(std::size_t(0), (flat.size() + grain - 1) / grain, [&](std::size_t c) {
+      fill(c * grain, std::min(flat.size(), (c + 1) * grain));
+    });
+  else
+    fill(0, flat.size());
   return pairs;
 }
 
@@ -106,16 +128,20 @@ struct Bvh::Builder {
   const BvhSettings& settings;
   const std::vector<Point3>& vertices;
   const std::vector<Index3>& triangles;
-  std::vector<PrimRef> prims;
-  std::vector<BvhNode> nodes;  // unordered build nodes: 0 root, 1 padding, then pairs
+  int primCount;
+  // Triangle references, then build nodes (0 root, 1 padding, then pairs in the order they
+  // were made): allocated without being written, filled by the build.
+  std::unique_ptr<PrimRef[]> prims;
+  std::unique_ptr<BuildNode[]> nodes;
   std::atomic<int> nextNode{2};
 
   Builder(const BvhSettings& s, const std::vector<Point3>& v, const std::vector<Index3>& t)
       : settings(s),
         vertices(v),
         triangles(t),
-        prims(triangles.size()),
-        nodes(std::max<std::size_t>(2, 2 * triangles.size() + 2)) {
+        primCount(static_cast<int>(triangles.size())),
+        prims(new PrimRef[triangles.size()]),
+        nodes(new BuildNode[std::max<std::size_t>(2, 2 * triangles.size() + 2)]) {
     const int n = static_cast<int>(triangles.size());
     forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int) {
       for (int i = begin; i < end; ++i) {
@@ -131,13 +157,13 @@ struct Bvh::Builder {
         r.id = i;
       }
     });
-    nodes[1] = BvhNode{};
+    nodes[1] = BuildNode{};
     setBox(nodes[1], Bounds3{});
   }
 
   /// Step 1: the tree over all triangles (for none, a lone empty leaf).
   void buildTree() {
-    const int n = static_cast<int>(prims.size());
+    const int n = primCount;
     if (n > 0)
       build(0, 0, n, 0);
     else {
@@ -150,7 +176,7 @@ struct Bvh::Builder {
   /// vertices, so a leaf reads its triangles contiguously, and the exact bounds of all.
   void copyTriangles(std::vector<int>& primIds, std::vector<std::array<double, 9>>& triVerts,
                      Bounds3& bounds) const {
-    const int n = static_cast<int>(prims.size());
+    const int n = primCount;
     primIds.resize(static_cast<std::size_t>(n));
     triVerts.resize(static_cast<std::size_t>(n));
     std::vector<Bounds3> chunkBounds(std::size_t(chunkCount(0, n, kParallelBinGrain)));
@@ -173,10 +199,10 @@ struct Bvh::Builder {
   /// subtree that precedes it (the left subtree first), slot 1 the padding. Counts nodes,
   /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way.
   std::vector<BvhNode> flatten(BvhStats& stats) const {
-    const bool empty = prims.empty();
+    const bool empty = primCount == 0;
     const int used = nextNode.load();
     std::vector<BvhNode> flat(static_cast<std::size_t>(used));
-    flat[1] = nodes[1];
+    flat[1] = toNode(nodes[1]);
     int next = 2;
     struct Item {
       int newIndex, oldIndex, depth;
@@ -188,7 +214,7 @@ struct Bvh::Builder {
       const Item item = stack.back();
       stack.pop_back();
       BvhNode& node = flat[item.newIndex];
-      node = nodes[item.oldIndex];
+      node = toNode(nodes[item.oldIndex]);
       // Each node's share of the SAH cost is weighted by its area relative to the root's.
       const double rel = rootArea > 0.0 ? boxArea(node) / rootArea : 1.0;
       stats.nodeCount++;
@@ -258,7 +284,16 @@ struct Bvh::Builder {
     }
   }
 
-  void makeLeaf(BvhNode& node, int begin, int end) {
+  static BvhNode toNode(const BuildNode& b) {
+    BvhNode n;
+    std::copy(b.box, b.box + 6, n.box);
+    n.offset = b.offset;
+    n.count = b.count;
+    n.axis = b.axis;
+    return n;
+  }
+
+  void makeLeaf(BuildNode& node, int begin, int end) {
     node.offset = begin;
     node.count = static_cast<std::uint16_t>(end - begin);
     node.axis = 0;
@@ -266,7 +301,7 @@ struct Bvh::Builder {
 
   /// Builds the subtree of `nodeIndex` over prims[begin, end).
   void build(int nodeIndex, int begin, int end, int depth) {
-    BvhNode& node = nodes[nodeIndex];
+    BuildNode& node = nodes[nodeIndex];
     const int count = end - begin;
 
     // Bounds of the triangles and of their centroids (in chunks on several threads at the
@@ -321,7 +356,7 @@ struct Bvh::Builder {
   }
 
   void partitionMedian(int axis, int begin, int mid, int end) {
-    std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end,
+    std::nth_element(prims.get() + begin, prims.get() + mid, prims.get() + end,
                      [axis](const PrimRef& a, const PrimRef& b) {
                        return a.centroid[axis] < b.centroid[axis] ||
                               (a.centroid[axis] == b.centroid[axis] && a.id < b.id);
@@ -399,11 +434,11 @@ struct Bvh::Builder {
     // Partition by the same bin computation, so the counts match the sweep.
     axis = bestAxis;
     const double axisLo = lo[axis], axisScale = scale[axis];
-    auto it = std::partition(prims.begin() + begin, prims.begin() + end, [&](const PrimRef& r) {
+    auto it = std::partition(prims.get() + begin, prims.get() + end, [&](const PrimRef& r) {
       return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - axisLo) * axisScale)) <
              bestBin;
     });
-    return static_cast<int>(it - prims.begin());
+    return static_cast<int>(it - prims.get());
   }
 };
 
@@ -444,7 +479,7 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
   m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
   // Step 4: interleave sibling pairs into cache-line pairs.
-  m_pairs = interleave(flat);
+  m_pairs = interleave(flat, m_settings.parallel);
 }
 
 BvhNode Bvh::node(int index) const {
