@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <utility>
 
@@ -255,9 +256,17 @@ struct Bvh::Builder {
     }
   }
 
-  /// The SAH bins of all three axes, filled in one pass over the triangles.
+  /// The SAH bins of all three axes, filled in one pass over the triangles. Only the first
+  /// binCount bins of each axis are constructed (set empty): a build makes one Binning per
+  /// interior node, and setting all 3 x 64 bins cost more than filling them.
   struct Binning {
-    Bin bins[3][64];
+    explicit Binning(int binCount) {
+      for (auto& axisBins : bins)
+        for (int b = 0; b < binCount; ++b) new (&axisBins[b]) Bin();
+    }
+    union {
+      Bin bins[3][64];
+    };
     /// Adds another chunk's bins (counts add, boxes grow: exact, order-free).
     void merge(const Binning& other, int binCount) {
       for (int a = 0; a < 3; ++a)
@@ -381,9 +390,12 @@ struct Bvh::Builder {
       lo[a] = centroids.lower[a];
       scale[a] = extent > 0.0 ? binCount / extent : 0.0;
     }
-    Binning binning;
+    Binning binning(binCount);
     if (parallelRange(count)) {
-      std::vector<Binning> chunks(std::size_t(chunkCount(begin, end, kParallelBinGrain)));
+      std::vector<Binning> chunks;
+      chunks.reserve(std::size_t(chunkCount(begin, end, kParallelBinGrain)));
+      for (int c = 0; c < chunkCount(begin, end, kParallelBinGrain); ++c)
+        chunks.emplace_back(binCount);
       forChunks(true, begin, end, kParallelBinGrain,
                 [&](int b, int e, int chunk) { binRange(b, e, lo, scale, chunks[chunk]); });
       for (const Binning& chunk : chunks) binning.merge(chunk, binCount);
