@@ -134,7 +134,15 @@ struct Bvh::Builder {
   // were made): allocated without being written, filled by the build.
   std::unique_ptr<PrimRef[]> prims;
   std::unique_ptr<BuildNode[]> nodes;
-  std::atomic<int> nextNode{2};
+  std::atomic<int> nextNode{2};   // next free slot
+  std::atomic<int> usedSlots{2};  // slots holding nodes (a block may leave some unused)
+
+  /// Node slots reserved for one serially built subtree, handed out without the shared
+  /// counter: threads that allocated from it in turn wrote neighbouring nodes, whose cache
+  /// lines then went back and forth between the cores.
+  struct SlotBlock {
+    int next, end;
+  };
 
   Builder(const BvhSettings& s, const std::vector<Point3>& v, const std::vector<Index3>& t)
       : settings(s),
@@ -142,7 +150,7 @@ struct Bvh::Builder {
         triangles(t),
         primCount(static_cast<int>(triangles.size())),
         prims(new PrimRef[triangles.size()]),
-        nodes(new BuildNode[std::max<std::size_t>(2, 2 * triangles.size() + 2)]) {
+        nodes(new BuildNode[slotCapacity(triangles.size())]) {
     const int n = static_cast<int>(triangles.size());
     forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int) {
       for (int i = begin; i < end; ++i) {
@@ -201,7 +209,7 @@ struct Bvh::Builder {
   /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way.
   std::vector<BvhNode> flatten(BvhStats& stats) const {
     const bool empty = primCount == 0;
-    const int used = nextNode.load();
+    const int used = usedSlots.load();
     std::vector<BvhNode> flat(static_cast<std::size_t>(used));
     flat[1] = toNode(nodes[1]);
     int next = 2;
@@ -309,9 +317,28 @@ struct Bvh::Builder {
   }
 
   /// Builds the subtree of `nodeIndex` over prims[begin, end).
-  void build(int nodeIndex, int begin, int end, int depth) {
+  /// Slots the node array needs: 0 and 1; two per node built in parallel (those with more
+  /// than kParallelGrain triangles form a binary tree with fewer than n / kParallelGrain
+  /// leaves, so fewer than 2 n / kParallelGrain nodes); a block of 2 count per serial subtree
+  /// of count triangles (its nodes below its root: at most 2 count - 2).
+  static std::size_t slotCapacity(std::size_t n) {
+    return 2 * n + 2 + 4 * (n / std::size_t(kParallelGrain) + 1);
+  }
+
+  /// Builds the subtree of `nodeIndex` over prims[begin, end). `block`: the slots reserved
+  /// for the serial subtree this node belongs to, or null above them (nodes built in
+  /// parallel take their children's slots from the shared counter).
+  void build(int nodeIndex, int begin, int end, int depth, SlotBlock* block = nullptr) {
     BuildNode& node = nodes[nodeIndex];
     const int count = end - begin;
+    if (!block && !(settings.parallel && count > kParallelGrain)) {
+      // The subtree is built serially from here: reserve its slots in one go.
+      const int first = nextNode.fetch_add(2 * count);
+      SlotBlock mine{first, first + 2 * count};
+      build(nodeIndex, begin, end, depth, &mine);
+      usedSlots.fetch_add(mine.next - first);
+      return;
+    }
 
     // Bounds of the triangles and of their centroids (in chunks on several threads at the
     // top levels; minimum and maximum are exact, so the result is the same).
@@ -351,7 +378,15 @@ struct Bvh::Builder {
     }
 
     // Allocate the two children side by side and build them (in parallel when large).
-    const int child = nextNode.fetch_add(2);
+    int child;
+    if (block) {
+      child = block->next;
+      block->next += 2;
+      RAYLAB_DCHECK(block->next <= block->end);
+    } else {
+      child = nextNode.fetch_add(2);
+      usedSlots.fetch_add(2);
+    }
     node.offset = child;
     node.count = 0;
     node.axis = static_cast<std::uint8_t>(axis);
@@ -359,8 +394,8 @@ struct Bvh::Builder {
       tbb::parallel_invoke([&] { build(child, begin, mid, depth + 1); },
                            [&] { build(child + 1, mid, end, depth + 1); });
     } else {
-      build(child, begin, mid, depth + 1);
-      build(child + 1, mid, end, depth + 1);
+      build(child, begin, mid, depth + 1, block);
+      build(child + 1, mid, end, depth + 1, block);
     }
   }
 
