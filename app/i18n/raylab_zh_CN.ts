@@ -545,6 +545,10 @@
         <source>bvh split</source>
         <translation>BVH 划分方式</translation>
     </message>
+    <message>
+        <source>near clip shape</source>
+        <translation>近裁剪面形状</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>
@@ -2015,6 +2019,10 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>How the meshes&apos; hierarchies split their boxes: sah (surface area heuristic) or median (half of the triangles on each side); the same image</source>
         <translation>网格的层次结构如何划分包围盒：sah（表面积启发式）或 median（中位数划分，两边各放一半三角形）；图像相同</translation>
+    </message>
+    <message>
+        <source>Where camera rays start, near clip away from the eye: on a plane in front of the eye (plane) or along each ray (sphere, as smallpt)</source>
+        <translation>相机光线的起点，与视点相距“近裁剪距离”：plane 表示在视点正前方的平面上，sphere 表示沿每条光线量取（即以视点为球心的球面上，与 smallpt 相同）</translation>
     </message>
 </context>
 <context>

@@ -49,6 +49,7 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
     {"distribution", {"ggx", "beckmann"}},
     {"acceleration", {"bvh", "none"}},
     {"bvh_split", {"sah", "median"}},
+    {"near_clip_shape", {"plane", "sphere"}},
 };
 const std::vector<const char*> kMaterialTypes = {
     "diffuse", "mirror",      "dielectric",      "glossy",
@@ -94,6 +95,10 @@ QString tipFor(const std::string& key) {
     return PropertiesPanel::tr(
         "How the meshes' hierarchies split their boxes: sah (surface area heuristic) or median "
         "(half of the triangles on each side); the same image");
+  if (key == "near_clip_shape")
+    return PropertiesPanel::tr(
+        "Where camera rays start, near clip away from the eye: on a plane in front of the eye "
+        "(plane) or along each ray (sphere, as smallpt)");
   if (key == "ray_offset")
     return PropertiesPanel::tr(
         "Ray offset: secondary and shadow rays start past the hit point's error bound; "
@@ -347,7 +352,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   auto* form = new QFormLayout(group);
   const bool material = pointer.rfind("/materials/", 0) == 0;
   // Keys the file leaves out at their default, shown all the same: the index outside a
-  // refracting surface (after its ior) and the render block's ray offset.
+  // refracting surface (after its ior), the render block's ray offset and the shape of a
+  // camera's near clip.
   if (material && values.contains("ior") && !values.contains("ior_outside")) {
     json withOutside = json::object();
     for (auto it = values.begin(); it != values.end(); ++it) {
@@ -359,6 +365,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   if (pointer == "/render" && !values.contains("ray_offset")) values["ray_offset"] = true;
   if (pointer == "/render" && !values.contains("acceleration")) values["acceleration"] = "bvh";
   if (pointer == "/render" && !values.contains("bvh_split")) values["bvh_split"] = "sah";
+  if (pointer == "/camera" && values.contains("near_clip") && !values.contains("near_clip_shape"))
+    values["near_clip_shape"] = "plane";
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
     const std::string place = pointer + "/" + key;

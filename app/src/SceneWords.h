@@ -43,6 +43,7 @@ inline constexpr const char* kSceneKeyWords[] = {
     QT_TRANSLATE_NOOP("SceneKeys", "n"),
     QT_TRANSLATE_NOOP("SceneKeys", "name"),
     QT_TRANSLATE_NOOP("SceneKeys", "near clip"),
+    QT_TRANSLATE_NOOP("SceneKeys", "near clip shape"),
     QT_TRANSLATE_NOOP("SceneKeys", "next event estimation"),
     QT_TRANSLATE_NOOP("SceneKeys", "normal"),
     QT_TRANSLATE_NOOP("SceneKeys", "objects"),

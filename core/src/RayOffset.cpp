@@ -2,8 +2,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace raylab {
+
+namespace {
+
+/// std::nextafter(x, +inf) (up) or (x, -inf) (down), bit for bit, without the library call:
+/// the next double is one step of the bit pattern away from zero for x on that side of
+/// zero, towards zero on the other (IEEE 754 doubles are ordered like sign-magnitude
+/// integers); +-0 steps to the smallest denormal; infinities and NaN stay.
+double nextDouble(double x, bool up) {
+  if (!(std::abs(x) < kInfinity)) {
+    if (std::isnan(x) || (x > 0.0) == up) return x;
+    return up ? -std::numeric_limits<double>::max() : std::numeric_limits<double>::max();
+  }
+  if (x == 0.0)
+    return up ? std::numeric_limits<double>::denorm_min()
+              : -std::numeric_limits<double>::denorm_min();
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  bits = ((x > 0.0) == up) ? bits + 1 : bits - 1;
+  std::memcpy(&x, &bits, sizeof bits);
+  return x;
+}
+
+}  // namespace
 
 Vec3 transformedPointError(const Mat4& m, const Point3& p, const Vec3& objectError) {
   // GLM is column-major: m[c][r] is row r, column c; the translation is column 3.
@@ -40,9 +65,9 @@ Point3 offsetRayOrigin(const SurfaceInteraction& si, const Vec3& w) {
   // The addition rounds too: step one ulp further away from si.p.
   for (int i = 0; i < 3; ++i) {
     if (offset[i] > 0.0)
-      origin[i] = std::nextafter(origin[i], kInfinity);
+      origin[i] = nextDouble(origin[i], true);
     else if (offset[i] < 0.0)
-      origin[i] = std::nextafter(origin[i], -kInfinity);
+      origin[i] = nextDouble(origin[i], false);
   }
   return origin;
 }

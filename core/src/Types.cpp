@@ -12,10 +12,6 @@ std::string toString(const Vec3& v) {
   return buffer;
 }
 
-bool isFinite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 std::string Bounds3::toString() const {
   return "Bounds3[" + raylab::toString(lower) + " .. " + raylab::toString(upper) + "]";
 }

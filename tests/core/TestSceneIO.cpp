@@ -2,6 +2,7 @@
 #include "raylab/core/Box.h"
 #include "raylab/core/Camera.h"
 #include "raylab/core/SceneIO.h"
+#include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Transform.h"
 #include "raylab/core/TriangleMesh.h"
@@ -701,14 +702,15 @@ TEST(ShippedScenes, 02_SmallptIsTheNineSphereCornellBox) {
   EXPECT_NEAR(glm::length(dir - expected), 0.0, 1e-12);
   EXPECT_EQ(s.camera.width, 1024);
   EXPECT_EQ(s.camera.height, 768);
-  // smallpt starts camera rays 140 units along the (unnormalised) pixel direction: inside
+  // smallpt starts camera rays 140 units along the normalised pixel direction: inside
   // the box, past the black front wall (z = 170) that the eye at z = 295.6 is behind.
   EXPECT_EQ(s.camera.nearClip, 140.0);
+  EXPECT_EQ(s.camera.nearClipShape, NearClipShape::Sphere);
   const Ray centre = Camera(s.camera).generateRay(Vec2(512.0, 384.0), Vec2(0.5), 0.0);
   EXPECT_NEAR(glm::length(centre.origin - (s.camera.position + 140.0 * expected)), 0.0, 1e-9);
   EXPECT_LT(centre.origin.z, 170.0);
   const Ray corner = Camera(s.camera).generateRay(Vec2(0.0), Vec2(0.5), 0.0);
-  EXPECT_NEAR(glm::dot(corner.origin - s.camera.position, expected), 140.0, 1e-9);
+  EXPECT_NEAR(glm::length(corner.origin - s.camera.position), 140.0, 1e-9);
 
   const auto sphere = [&](const char* name) -> const Sphere& {
     const int i = s.findObject(name);
@@ -734,6 +736,95 @@ TEST(ShippedScenes, 02_SmallptIsTheNineSphereCornellBox) {
   EXPECT_EQ(material("glass").ior, 1.5);
   EXPECT_EQ(sphere("glass").radius(), 16.5);
   EXPECT_EQ(sphere("glass").centre(), Point3(73, 16.5, 78));
+}
+
+/// smallpt's camera ray through film position (fx, fy) of a w x h image (fy in RayLab's
+/// pixels, down from the top), written as smallpt writes it (explicit.cpp, line 79-86):
+/// cam(Vec(50,52,295.6), Vec(0,-0.042612,-1).norm()), cx = Vec(w*.5135/h),
+/// cy = (cx%cam.d).norm()*.5135, d = cx*(fx/w - .5) + cy*(fy'/h - .5) + cam.d with fy' up
+/// from the bottom, and Ray(cam.o+d*140, d.norm()) with d normalised first (g++ evaluates
+/// the arguments right to left).
+Ray smallptCameraRay(double fx, double fy, int w, int h) {
+  const Point3 camO(50, 52, 295.6);
+  const Vec3 camD = glm::normalize(Vec3(0, -0.042612, -1));
+  const Vec3 cx(w * .5135 / h, 0, 0);
+  const Vec3 cy = glm::normalize(glm::cross(cx, camD)) * .5135;
+  const Vec3 d = glm::normalize(cx * (fx / w - .5) + cy * ((h - fy) / h - .5) + camD);
+  Ray r;
+  r.origin = camO + d * 140.0;
+  r.direction = d;
+  return r;
+}
+
+TEST(ShippedScenes, 03_SmallptTopRowsSeeTheCeilingAsSmallptDoes) {
+  // The light (a sphere of radius 600 at y = 681.33) pokes 0.27 below the ceiling
+  // (y = 81.6). A camera ray that started 140 in front of the eye on the near plane would
+  // start above the ceiling in the top rows of the image (52 + 140 tan(14.4 - 2.44 deg)
+  // = 81.7 > 81.6 at the top edge), outside the room, and see the light (radiance 12,
+  // white) there: RayLab's picture had 4 white rows at 1024 x 768 that smallpt's has not.
+  // Started 140 along each ray, as smallpt does, they stay in the room and hit the ceiling.
+  const Scene s = SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/smallpt.json");
+  const SceneIntersector scene(s);
+  const Camera camera(s.camera);
+  const int w = s.camera.width, h = s.camera.height;
+  const auto objectHit = [&](const Ray& r) {
+    const auto hit = scene.intersect(r);
+    return hit ? s.objects[hit->object].name : std::string("nothing");
+  };
+  for (const double fy : {0.0, 0.5, 1.0, 2.5, 3.99})
+    for (const double fx : {0.0, 100.5, 512.0, 700.25, 1024.0}) {
+      SCOPED_TRACE("film (" + std::to_string(fx) + ", " + std::to_string(fy) + ")");
+      const Ray ours = camera.generateRay(Vec2(fx, fy), Vec2(0.5), 0.0);
+      const Ray theirs = smallptCameraRay(fx, fy, w, h);
+      EXPECT_NEAR(glm::length(ours.origin - theirs.origin), 0.0, 1e-9);
+      EXPECT_NEAR(glm::length(ours.direction - theirs.direction), 0.0, 1e-12);
+      EXPECT_LT(ours.origin.y, 81.6);
+      EXPECT_EQ(objectHit(ours), "top");
+    }
+  // The near plane (the old smallpt.json) leaves the room at the top edge, 4 rows deep:
+  // what this test guards against.
+  CameraSpec planeSpec = s.camera;
+  planeSpec.nearClipShape = NearClipShape::Plane;
+  const Camera plane(planeSpec);
+  for (const double fy : {0.0, 3.5}) {
+    const Ray r = plane.generateRay(Vec2(512.0, fy), Vec2(0.5), 0.0);
+    EXPECT_GT(r.origin.y, 81.6) << fy;
+    EXPECT_EQ(objectHit(r), "light") << fy;
+  }
+  EXPECT_EQ(objectHit(plane.generateRay(Vec2(512.0, 4.5), Vec2(0.5), 0.0)), "top");
+}
+
+TEST(ShippedScenes, 04_NearClipShapeRoundTripsAndBadShapesAreRefused) {
+  Scene s = defaultScene();
+  s.camera.nearClip = 2.0;
+  EXPECT_EQ(SceneIO::serialize(s).find("near_clip_shape"), std::string::npos);
+  s.camera.nearClipShape = NearClipShape::Sphere;
+  const std::string text = SceneIO::serialize(s);
+  EXPECT_THAT(text, HasSubstr("\"near_clip_shape\": \"sphere\""));
+  EXPECT_EQ(SceneIO::parse(text, "sphere.json").camera.nearClipShape, NearClipShape::Sphere);
+  std::string bad = text;
+  const std::string key = "\"near_clip_shape\": \"sphere\"";
+  bad.replace(bad.find(key), key.size(), "\"near_clip_shape\": \"ball\"");
+  try {
+    SceneIO::parse(bad, "ball.json");
+    FAIL() << "an unknown near clip shape was accepted";
+  } catch (const SceneIO::LoadError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("ball.json"));
+    EXPECT_THAT(e.what(), HasSubstr("/camera/near_clip_shape"));
+    EXPECT_THAT(e.what(), HasSubstr("unknown near clip shape \"ball\" (expected plane or sphere)"));
+  }
+  // On the sphere every camera ray starts exactly nearClip from the eye; on the plane
+  // the corner rays start farther (nearClip / cos of their angle to the axis).
+  const Camera sphere(s.camera);
+  s.camera.nearClipShape = NearClipShape::Plane;
+  const Camera planar(s.camera);
+  for (const Vec2 film : {Vec2(0.0), Vec2(160.0, 120.0), Vec2(320.0, 17.0)}) {
+    const Ray a = sphere.generateRay(film, Vec2(0.5), 0.0);
+    const Ray b = planar.generateRay(film, Vec2(0.5), 0.0);
+    EXPECT_NEAR(glm::length(a.origin - s.camera.position), 2.0, 1e-12);
+    EXPECT_EQ(a.direction, b.direction);
+    EXPECT_NEAR(glm::dot(b.origin - s.camera.position, planar.forward()), 2.0, 1e-12);
+  }
 }
 
 }  // namespace

@@ -25,7 +25,9 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <random>
 #include <sstream>
@@ -490,6 +492,46 @@ TEST(SecondaryRays, 09_TheOffsetSwitchShowsAcne) {
   EXPECT_FALSE(SceneIO::parse(text, "acne.json").render.rayOffset);
   scene.render = on;
   EXPECT_EQ(SceneIO::serialize(scene).find("ray_offset"), std::string::npos);
+}
+
+TEST(SecondaryRays, 10_TheUlpStepEqualsNextafterBitForBit) {
+  // offsetRayOrigin steps one ulp by the bit pattern; it must equal std::nextafter towards
+  // the side of the offset for every kind of coordinate: zeros of both signs, denormals,
+  // both signs, the largest doubles (which overflow to infinity), ordinary values.
+  const double big = std::numeric_limits<double>::max();
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const double values[] = {
+      0.0,  -0.0, tiny, -tiny, 1e-310, -1e-310, 1.0,
+      -1.0, 0.1,  -3e6, 2e300, big,    -big,    std::numeric_limits<double>::min()};
+  const Normal3 normals[] = {glm::normalize(Normal3(1, -2, 3)), Normal3(0, 0, 1),
+                             glm::normalize(Normal3(-1, 1, 0))};
+  int checked = 0;
+  for (const double x : values)
+    for (const double y : values)
+      for (const Normal3& n : normals)
+        for (const double side : {1.0, -1.0}) {
+          SurfaceInteraction si;
+          si.p = Point3(x, y, -x);
+          si.n = n;
+          si.pError = Vec3(1e-12, 0.0, 3e-13);
+          const Vec3 w = side * n;
+          // The rule of RayOffset.cpp, with the library's nextafter.
+          const double d =
+              kRayOffsetMargin * 1e-12 * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z));
+          const Vec3 offset = side * d * n;
+          Point3 expected = si.p + offset;
+          for (int i = 0; i < 3; ++i)
+            if (offset[i] != 0.0)
+              expected[i] = std::nextafter(expected[i], offset[i] > 0.0 ? kInfinity : -kInfinity);
+          const Point3 got = offsetRayOrigin(si, w);
+          for (int i = 0; i < 3; ++i) {
+            EXPECT_EQ(std::memcmp(&got[i], &expected[i], sizeof(double)), 0)
+                << "p " << toString(si.p) << " n " << toString(n) << " side " << side << " axis "
+                << i << ": " << got[i] << " vs " << expected[i];
+          }
+          ++checked;
+        }
+  EXPECT_EQ(checked, 14 * 14 * 3 * 2);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "accel/BvhLimits.h"
 
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include <climits>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <new>
 #include <sstream>
 #include <utility>
 
@@ -24,6 +27,26 @@ namespace {
 
 /// Ranges larger than this are built on their own oneTBB task.
 constexpr int kParallelGrain = 8192;
+/// Ranges larger than this have their bounds and bins computed by several tasks, in chunks
+/// of this size (the top levels, which would otherwise run on one thread).
+constexpr int kParallelBinGrain = 32768;
+
+/// Runs body(chunkBegin, chunkEnd, chunk) over [begin, end) cut into chunks of `grain`
+/// (the last one shorter), on oneTBB tasks when `parallel`. The chunks depend on the range
+/// only, never on the thread count, so a result merged in chunk order is always the same.
+template <typename Body>
+void forChunks(bool parallel, int begin, int end, int grain, const Body& body) {
+  const int chunks = (end - begin + grain - 1) / grain;
+  const auto run = [&](int c) {
+    body(begin + c * grain, std::min(end, begin + (c + 1) * grain), c);
+  };
+  if (parallel && chunks > 1)
+    tbb::parallel_for(0, chunks, run);
+  else
+    for (int c = 0; c < chunks; ++c) run(c);
+}
+
+int chunkCount(int begin, int end, int grain) { return (end - begin + grain - 1) / grain; }
 
 float roundDown(double d) {
   float f = static_cast<float>(d);
@@ -37,14 +60,25 @@ float roundUp(double d) {
   return f;
 }
 
-void setBox(BvhNode& node, const Bounds3& b) {
+/// A node while the tree is built: BvhNode's fields without its initialiser, so the array
+/// of 2n + 2 of them is not written (and its pages not touched) before the build uses them.
+struct BuildNode {
+  float box[6];
+  std::int32_t offset;
+  std::uint16_t count;
+  std::uint8_t axis;
+};
+
+template <typename Node>
+void setBox(Node& node, const Bounds3& b) {
   for (int a = 0; a < 3; ++a) {
     node.box[a] = roundDown(b.lower[a]);
     node.box[3 + a] = roundUp(b.upper[a]);
   }
 }
 
-double boxArea(const BvhNode& n) {
+template <typename Node>
+double boxArea(const Node& n) {
   const double dx = double(n.box[3]) - n.box[0];
   const double dy = double(n.box[4]) - n.box[1];
   const double dz = double(n.box[5]) - n.box[2];
@@ -53,16 +87,26 @@ double boxArea(const BvhNode& n) {
 
 /// Stores the depth-first node array as cache-line pairs: node i becomes lane i % 2 of
 /// pair i / 2 (see BvhNodePair; Bvh::node undoes it).
-std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat) {
+std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat, bool parallel) {
   std::vector<BvhNodePair> pairs(flat.size() / 2);
-  for (std::size_t i = 0; i < flat.size(); ++i) {
-    BvhNodePair& pair = pairs[i / 2];
-    const int lane = static_cast<int>(i % 2);
-    for (int k = 0; k < 6; ++k) pair.box[k][lane] = flat[i].box[k];
-    pair.offset[lane] = flat[i].offset;
-    pair.count[lane] = flat[i].count;
-    pair.axis[lane] = flat[i].axis;
-  }
+  const auto fill = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      BvhNodePair& pair = pairs[i / 2];
+      const int lane = static_cast<int>(i % 2);
+      for (int k = 0; k < 6; ++k) pair.box[k][lane] = flat[i].box[k];
+      pair.offset[lane] = flat[i].offset;
+      pair.count[lane] = flat[i].count;
+      pair.axis[lane] = flat[i].axis;
+    }
+  };
+  // Each pair is written by one chunk (chunks of an even number of nodes).
+  const std::size_t grain = 2 * std::size_t(kParallelBinGrain);
+  if (parallel && flat.size() > grain)
+    tbb::parallel_for(std::size_t(0), (flat.size() + grain - 1) / grain, [&](std::size_t c) {
+      fill(c * grain, std::min(flat.size(), (c + 1) * grain));
+    });
+  else
+    fill(0, flat.size());
   return pairs;
 }
 
@@ -85,35 +129,50 @@ struct Bvh::Builder {
   const BvhSettings& settings;
   const std::vector<Point3>& vertices;
   const std::vector<Index3>& triangles;
-  std::vector<PrimRef> prims;
-  std::vector<BvhNode> nodes;  // unordered build nodes: 0 root, 1 padding, then pairs
-  std::atomic<int> nextNode{2};
+  int primCount;
+  // Triangle references, then build nodes (0 root, 1 padding, then pairs in the order they
+  // were made): allocated without being written, filled by the build.
+  std::unique_ptr<PrimRef[]> prims;
+  std::unique_ptr<BuildNode[]> nodes;
+  std::atomic<int> nextNode{2};   // next free slot
+  std::atomic<int> usedSlots{2};  // slots holding nodes (a block may leave some unused)
+
+  /// Node slots reserved for one serially built subtree, handed out without the shared
+  /// counter: threads that allocated from it in turn wrote neighbouring nodes, whose cache
+  /// lines then went back and forth between the cores.
+  struct SlotBlock {
+    int next, end;
+  };
 
   Builder(const BvhSettings& s, const std::vector<Point3>& v, const std::vector<Index3>& t)
       : settings(s),
         vertices(v),
         triangles(t),
-        prims(triangles.size()),
-        nodes(std::max<std::size_t>(2, 2 * triangles.size() + 2)) {
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
-      const Index3& tri = triangles[i];
-      Bounds3 b(vertices[tri[0]], vertices[tri[1]]);
-      b.extend(vertices[tri[2]]);
-      PrimRef& r = prims[i];
-      for (int a = 0; a < 3; ++a) {
-        r.lower[a] = b.lower[a];
-        r.upper[a] = b.upper[a];
-        r.centroid[a] = 0.5 * (b.lower[a] + b.upper[a]);
+        primCount(static_cast<int>(triangles.size())),
+        prims(new PrimRef[triangles.size()]),
+        nodes(new BuildNode[slotCapacity(triangles.size())]) {
+    const int n = static_cast<int>(triangles.size());
+    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int) {
+      for (int i = begin; i < end; ++i) {
+        const Index3& tri = triangles[i];
+        Bounds3 b(vertices[tri[0]], vertices[tri[1]]);
+        b.extend(vertices[tri[2]]);
+        PrimRef& r = prims[i];
+        for (int a = 0; a < 3; ++a) {
+          r.lower[a] = b.lower[a];
+          r.upper[a] = b.upper[a];
+          r.centroid[a] = 0.5 * (b.lower[a] + b.upper[a]);
+        }
+        r.id = i;
       }
-      r.id = static_cast<int>(i);
-    }
-    nodes[1] = BvhNode{};
+    });
+    nodes[1] = BuildNode{};
     setBox(nodes[1], Bounds3{});
   }
 
   /// Step 1: the tree over all triangles (for none, a lone empty leaf).
   void buildTree() {
-    const int n = static_cast<int>(prims.size());
+    const int n = primCount;
     if (n > 0)
       build(0, 0, n, 0);
     else {
@@ -126,29 +185,33 @@ struct Bvh::Builder {
   /// vertices, so a leaf reads its triangles contiguously, and the exact bounds of all.
   void copyTriangles(std::vector<int>& primIds, std::vector<std::array<double, 9>>& triVerts,
                      Bounds3& bounds) const {
-    const int n = static_cast<int>(prims.size());
+    const int n = primCount;
     primIds.resize(static_cast<std::size_t>(n));
     triVerts.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-      const PrimRef& r = prims[i];
-      primIds[i] = r.id;
-      for (int k = 0; k < 3; ++k) {
-        const Point3& p = vertices[triangles[r.id][k]];
-        for (int a = 0; a < 3; ++a) triVerts[i][3 * k + a] = p[a];
+    std::vector<Bounds3> chunkBounds(std::size_t(chunkCount(0, n, kParallelBinGrain)));
+    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int chunk) {
+      for (int i = begin; i < end; ++i) {
+        const PrimRef& r = prims[i];
+        primIds[i] = r.id;
+        for (int k = 0; k < 3; ++k) {
+          const Point3& p = vertices[triangles[r.id][k]];
+          for (int a = 0; a < 3; ++a) triVerts[i][3 * k + a] = p[a];
+        }
+        chunkBounds[chunk].extend(primBounds(r));
       }
-      bounds.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                            Point3(r.upper[0], r.upper[1], r.upper[2])));
-    }
+    });
+    // Minimum and maximum are exact, so the chunks' order does not change the bounds.
+    for (const Bounds3& b : chunkBounds) bounds.extend(b);
   }
 
   /// Step 3: the nodes laid out depth first, each pair of children right after the
   /// subtree that precedes it (the left subtree first), slot 1 the padding. Counts nodes,
   /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way.
   std::vector<BvhNode> flatten(BvhStats& stats) const {
-    const bool empty = prims.empty();
-    const int used = nextNode.load();
+    const bool empty = primCount == 0;
+    const int used = usedSlots.load();
     std::vector<BvhNode> flat(static_cast<std::size_t>(used));
-    flat[1] = nodes[1];
+    flat[1] = toNode(nodes[1]);
     int next = 2;
     struct Item {
       int newIndex, oldIndex, depth;
@@ -160,7 +223,7 @@ struct Bvh::Builder {
       const Item item = stack.back();
       stack.pop_back();
       BvhNode& node = flat[item.newIndex];
-      node = nodes[item.oldIndex];
+      node = toNode(nodes[item.oldIndex]);
       // Each node's share of the SAH cost is weighted by its area relative to the root's.
       const double rel = rootArea > 0.0 ? boxArea(node) / rootArea : 1.0;
       stats.nodeCount++;
@@ -184,24 +247,114 @@ struct Bvh::Builder {
     return flat;
   }
 
-  void makeLeaf(BvhNode& node, int begin, int end) {
+  static Bounds3 primBounds(const PrimRef& r) {
+    return Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
+                   Point3(r.upper[0], r.upper[1], r.upper[2]));
+  }
+
+  /// Whether a range is large enough for its bounds and bins to be split over tasks.
+  bool parallelRange(int count) const { return settings.parallel && count > kParallelBinGrain; }
+
+  /// Grows `box` and `centroids` by the triangles of prims[begin, end) and their centroids.
+  void rangeBounds(int begin, int end, Bounds3& box, Bounds3& centroids) const {
+    for (int i = begin; i < end; ++i) {
+      const PrimRef& r = prims[i];
+      box.extend(primBounds(r));
+      centroids.extend(Point3(r.centroid[0], r.centroid[1], r.centroid[2]));
+    }
+  }
+
+  /// The SAH bins of all three axes, filled in one pass over the triangles. Only the first
+  /// binCount bins of each axis are constructed (set empty): a build makes one Binning per
+  /// interior node, and setting all 3 x 64 bins cost more than filling them.
+  struct Binning {
+    explicit Binning(int binCount) {
+      for (auto& axisBins : bins)
+        for (int b = 0; b < binCount; ++b) new (&axisBins[b]) Bin();
+    }
+    union {
+      Bin bins[3][64];
+    };
+    /// Adds another chunk's bins (counts add, boxes grow: exact, order-free).
+    void merge(const Binning& other, int binCount) {
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < binCount; ++b) {
+          bins[a][b].count += other.bins[a][b].count;
+          bins[a][b].box.extend(other.bins[a][b].box);
+        }
+    }
+  };
+
+  /// Bins prims[begin, end) on every axis with scale[a] > 0: bin of a centroid =
+  /// min(binCount - 1, (c - lo) * scale), the formula the partition uses too.
+  void binRange(int begin, int end, const double lo[3], const double scale[3], Binning& out) const {
+    const int binCount = settings.binCount;
+    for (int i = begin; i < end; ++i) {
+      const PrimRef& r = prims[i];
+      const Bounds3 rb = primBounds(r);
+      for (int a = 0; a < 3; ++a) {
+        if (!(scale[a] > 0.0)) continue;
+        const int b = std::min(binCount - 1, static_cast<int>((r.centroid[a] - lo[a]) * scale[a]));
+        out.bins[a][b].count++;
+        out.bins[a][b].box.extend(rb);
+      }
+    }
+  }
+
+  static BvhNode toNode(const BuildNode& b) {
+    BvhNode n;
+    std::copy(b.box, b.box + 6, n.box);
+    n.offset = b.offset;
+    n.count = b.count;
+    n.axis = b.axis;
+    return n;
+  }
+
+  void makeLeaf(BuildNode& node, int begin, int end) {
     node.offset = begin;
     node.count = static_cast<std::uint16_t>(end - begin);
     node.axis = 0;
   }
 
   /// Builds the subtree of `nodeIndex` over prims[begin, end).
-  void build(int nodeIndex, int begin, int end, int depth) {
-    BvhNode& node = nodes[nodeIndex];
-    const int count = end - begin;
+  /// Slots the node array needs: 0 and 1; two per node built in parallel (those with more
+  /// than kParallelGrain triangles form a binary tree with fewer than n / kParallelGrain
+  /// leaves, so fewer than 2 n / kParallelGrain nodes); a block of 2 count per serial subtree
+  /// of count triangles (its nodes below its root: at most 2 count - 2).
+  static std::size_t slotCapacity(std::size_t n) {
+    return 2 * n + 2 + 4 * (n / std::size_t(kParallelGrain) + 1);
+  }
 
-    // Bounds of the triangles and of their centroids.
+  /// Builds the subtree of `nodeIndex` over prims[begin, end). `block`: the slots reserved
+  /// for the serial subtree this node belongs to, or null above them (nodes built in
+  /// parallel take their children's slots from the shared counter).
+  void build(int nodeIndex, int begin, int end, int depth, SlotBlock* block = nullptr) {
+    BuildNode& node = nodes[nodeIndex];
+    const int count = end - begin;
+    if (!block && !(settings.parallel && count > kParallelGrain)) {
+      // The subtree is built serially from here: reserve its slots in one go.
+      const int first = nextNode.fetch_add(2 * count);
+      SlotBlock mine{first, first + 2 * count};
+      build(nodeIndex, begin, end, depth, &mine);
+      usedSlots.fetch_add(mine.next - first);
+      return;
+    }
+
+    // Bounds of the triangles and of their centroids (in chunks on several threads at the
+    // top levels; minimum and maximum are exact, so the result is the same).
     Bounds3 box, centroids;
-    for (int i = begin; i < end; ++i) {
-      const PrimRef& r = prims[i];
-      box.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                         Point3(r.upper[0], r.upper[1], r.upper[2])));
-      centroids.extend(Point3(r.centroid[0], r.centroid[1], r.centroid[2]));
+    if (parallelRange(count)) {
+      std::vector<std::pair<Bounds3, Bounds3>> chunks(
+          std::size_t(chunkCount(begin, end, kParallelBinGrain)));
+      forChunks(true, begin, end, kParallelBinGrain, [&](int b, int e, int chunk) {
+        rangeBounds(b, e, chunks[chunk].first, chunks[chunk].second);
+      });
+      for (const auto& [chunkBox, chunkCentroids] : chunks) {
+        box.extend(chunkBox);
+        centroids.extend(chunkCentroids);
+      }
+    } else {
+      rangeBounds(begin, end, box, centroids);
     }
     setBox(node, box);
     if (count <= settings.maxLeafSize) return makeLeaf(node, begin, end);
@@ -225,7 +378,15 @@ struct Bvh::Builder {
     }
 
     // Allocate the two children side by side and build them (in parallel when large).
-    const int child = nextNode.fetch_add(2);
+    int child;
+    if (block) {
+      child = block->next;
+      block->next += 2;
+      RAYLAB_DCHECK(block->next <= block->end);
+    } else {
+      child = nextNode.fetch_add(2);
+      usedSlots.fetch_add(2);
+    }
     node.offset = child;
     node.count = 0;
     node.axis = static_cast<std::uint8_t>(axis);
@@ -233,13 +394,13 @@ struct Bvh::Builder {
       tbb::parallel_invoke([&] { build(child, begin, mid, depth + 1); },
                            [&] { build(child + 1, mid, end, depth + 1); });
     } else {
-      build(child, begin, mid, depth + 1);
-      build(child + 1, mid, end, depth + 1);
+      build(child, begin, mid, depth + 1, block);
+      build(child + 1, mid, end, depth + 1, block);
     }
   }
 
   void partitionMedian(int axis, int begin, int mid, int end) {
-    std::nth_element(prims.begin() + begin, prims.begin() + mid, prims.begin() + end,
+    std::nth_element(prims.get() + begin, prims.get() + mid, prims.get() + end,
                      [axis](const PrimRef& a, const PrimRef& b) {
                        return a.centroid[axis] < b.centroid[axis] ||
                               (a.centroid[axis] == b.centroid[axis] && a.id < b.id);
@@ -254,22 +415,31 @@ struct Bvh::Builder {
     const double area = box.surfaceArea();
     double bestCost = kInfinity;
     int bestAxis = -1, bestBin = -1;
-    Bin bins[64];
     double rightArea[64];
     int rightCount[64];
+    // Count the centroids per bin and grow the bins' boxes, every axis in one pass (in
+    // chunks on several threads at the top levels, merged in chunk order).
+    double lo[3], scale[3];
     for (int a = 0; a < 3; ++a) {
-      const double lo = centroids.lower[a], extent = centroids.extent()[a];
-      if (!(extent > 0.0)) continue;
-      const double scale = binCount / extent;
-      // Count the centroids per bin and grow the bins' boxes.
-      for (int b = 0; b < binCount; ++b) bins[b] = Bin{};
-      for (int i = begin; i < end; ++i) {
-        const PrimRef& r = prims[i];
-        const int b = std::min(binCount - 1, static_cast<int>((r.centroid[a] - lo) * scale));
-        bins[b].count++;
-        bins[b].box.extend(Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                                   Point3(r.upper[0], r.upper[1], r.upper[2])));
-      }
+      const double extent = centroids.extent()[a];
+      lo[a] = centroids.lower[a];
+      scale[a] = extent > 0.0 ? binCount / extent : 0.0;
+    }
+    Binning binning(binCount);
+    if (parallelRange(count)) {
+      std::vector<Binning> chunks;
+      chunks.reserve(std::size_t(chunkCount(begin, end, kParallelBinGrain)));
+      for (int c = 0; c < chunkCount(begin, end, kParallelBinGrain); ++c)
+        chunks.emplace_back(binCount);
+      forChunks(true, begin, end, kParallelBinGrain,
+                [&](int b, int e, int chunk) { binRange(b, e, lo, scale, chunks[chunk]); });
+      for (const Binning& chunk : chunks) binning.merge(chunk, binCount);
+    } else {
+      binRange(begin, end, lo, scale, binning);
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (!(scale[a] > 0.0)) continue;
+      const Bin* bins = binning.bins[a];
       // Sweep from the right to get the area and count right of each plane ...
       Bounds3 acc;
       int n = 0;
@@ -310,12 +480,12 @@ struct Bvh::Builder {
 
     // Partition by the same bin computation, so the counts match the sweep.
     axis = bestAxis;
-    const double lo = centroids.lower[axis];
-    const double scale = binCount / centroids.extent()[axis];
-    auto it = std::partition(prims.begin() + begin, prims.begin() + end, [&](const PrimRef& r) {
-      return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - lo) * scale)) < bestBin;
+    const double axisLo = lo[axis], axisScale = scale[axis];
+    auto it = std::partition(prims.get() + begin, prims.get() + end, [&](const PrimRef& r) {
+      return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - axisLo) * axisScale)) <
+             bestBin;
     });
-    return static_cast<int>(it - prims.begin());
+    return static_cast<int>(it - prims.get());
   }
 };
 
@@ -356,7 +526,7 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
   m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
   // Step 4: interleave sibling pairs into cache-line pairs.
-  m_pairs = interleave(flat);
+  m_pairs = interleave(flat, m_settings.parallel);
 }
 
 BvhNode Bvh::node(int index) const {

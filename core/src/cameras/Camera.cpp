@@ -45,11 +45,7 @@ Ray Camera::generateRay(const Vec2& film, const Vec2& lens, double time) const {
   const double sx = (2.0 * film.x / m_spec.width - 1.0) * aspect * m_tanHalfFov;
   const double sy = (1.0 - 2.0 * film.y / m_spec.height) * m_tanHalfFov;
   const Vec3 direction = m_forward + sx * m_right + sy * m_up;
-  // The near plane: `direction` has a forward component of 1, so position + nearClip *
-  // direction lies nearClip in front of the eye (smallpt starts its rays there).
-  if (m_spec.aperture <= 0.0)
-    return Ray::make(m_spec.position + m_spec.nearClip * direction, direction, 0.0, kInfinity,
-                     time);
+  if (m_spec.aperture <= 0.0) return nearStart(m_spec.position, direction, 1.0, time);
 
   // Thin lens: every ray through this film point meets the pinhole ray on the plane in
   // focus (perpendicular to forward, m_focusDistance away); start it from a uniform point
@@ -58,8 +54,19 @@ Ray Camera::generateRay(const Vec2& film, const Vec2& lens, double time) const {
   const Vec2 disk = m_spec.aperture * sampleUniformDisk(lens);
   const Point3 origin = m_spec.position + disk.x * m_right + disk.y * m_up;
   const Vec3 toFocus = focus - origin;  // forward component m_focusDistance
-  return Ray::make(origin + (m_spec.nearClip / m_focusDistance) * toFocus, toFocus, 0.0, kInfinity,
-                   time);
+  return nearStart(origin, toFocus, m_focusDistance, time);
+}
+
+Ray Camera::nearStart(const Point3& eye, const Vec3& direction, double forward, double time) const {
+  // On the near plane, nearClip in front of the eye along the viewing direction:
+  // `direction` scaled to a forward component of nearClip. On the near sphere, nearClip
+  // along the unit direction, as smallpt's Ray(cam.o + d * 140, d.norm()) does once g++
+  // has normalised d (it evaluates the arguments right to left).
+  if (m_spec.nearClip == 0.0) return Ray::make(eye, direction, 0.0, kInfinity, time);
+  const Vec3 offset = m_spec.nearClipShape == NearClipShape::Sphere
+                          ? m_spec.nearClip * glm::normalize(direction)
+                          : (m_spec.nearClip / forward) * direction;
+  return Ray::make(eye + offset, direction, 0.0, kInfinity, time);
 }
 
 }  // namespace raylab

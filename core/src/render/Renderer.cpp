@@ -87,11 +87,15 @@ FloatImage Renderer::render() {
 
     // Each worker takes the next tile until none is left or the render is cancelled.
     const auto worker = [&](int w) {
-      RayCounts& myCounts = counts[w];
+      // Counted on the thread's own stack and handed over at the end: counters side by
+      // side in one vector share cache lines, which every ray's count would then bounce
+      // between the cores.
+      RayCounts myCounts;
+      std::uint64_t myNonFinite = 0;
       for (;;) {
-        if (m_cancel) return;
+        if (m_cancel) break;
         const int t = nextTile.fetch_add(1);
-        if (t >= int(tiles.size())) return;
+        if (t >= int(tiles.size())) break;
         const Tile& tile = tiles[t];
         for (int y = tile.y0; y < tile.y1; ++y)
           for (int x = tile.x0; x < tile.x1; ++x) {
@@ -103,13 +107,15 @@ FloatImage Renderer::render() {
               if (std::isfinite(L.x) && std::isfinite(L.y) && std::isfinite(L.z)) {
                 sum += L;
               } else {
-                ++nonFinite[w];
+                ++myNonFinite;
               }
             }
             working[i] = sum;
           }
         finishedTiles.fetch_add(1);
       }
+      counts[w] = myCounts;
+      nonFinite[w] = myNonFinite;
     };
     if (threadCount == 1) {
       worker(0);

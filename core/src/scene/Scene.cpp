@@ -110,10 +110,17 @@ std::string RenderSettings::toString() const {
          ", bvhSplit=" + raylab::toString(bvhSplit) + "]";
 }
 
+const char* toString(NearClipShape shape) {
+  return shape == NearClipShape::Sphere ? "sphere" : "plane";
+}
+
 std::string CameraSpec::toString() const {
+  std::string near;
+  if (nearClip != 0.0)
+    near = ", near=" + std::to_string(nearClip) + " (" + raylab::toString(nearClipShape) + ")";
   return "Camera[position=" + raylab::toString(position) + ", lookAt=" + raylab::toString(lookAt) +
          ", up=" + raylab::toString(up) + ", vfov=" + std::to_string(verticalFov) + ", " +
-         std::to_string(width) + "x" + std::to_string(height) + "]";
+         std::to_string(width) + "x" + std::to_string(height) + near + "]";
 }
 
 int Scene::findObject(const std::string& objectName) const {

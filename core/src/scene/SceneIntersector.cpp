@@ -36,6 +36,8 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
     e.shape = object.shape.get();
     e.moving = isMoving(object);
     e.velocity = object.velocity;
+    if (object.shape->kind() == ShapeKind::Sphere)
+      e.sphere = static_cast<const Sphere*>(object.shape.get());
     if (!e.moving && object.shape->kind() == ShapeKind::Sphere &&
         static_cast<const Sphere&>(*object.shape).isRound())
       e.round = static_cast<const Sphere*>(object.shape.get());
@@ -108,11 +110,13 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   if (nearest < 0) return std::nullopt;
 
   // Surface geometry of the nearest hit only, moved back to where the object is at the
-  // ray's time.
+  // ray's time. A sphere's uv is left out: nothing in the engine reads it (Sphere::uvAt).
   const Entry& e = m_entries[static_cast<std::size_t>(nearest)];
   SceneHit out;
   out.object = nearest;
-  out.si = e.shape->surfaceAt(e.moving ? toObjectFrame(ray, e.velocity) : ray, nearestHit);
+  const Ray objectRay = e.moving ? toObjectFrame(ray, e.velocity) : ray;
+  out.si = e.sphere ? e.sphere->geometryAt(objectRay, nearestHit)
+                    : e.shape->surfaceAt(objectRay, nearestHit);
   if (e.moving) {
     // The shift adds two roundings (the product and the sum).
     const Vec3 shift = ray.time * e.velocity;

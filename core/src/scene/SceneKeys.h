@@ -29,9 +29,9 @@ inline constexpr std::array kTransformStepKeys = {"translate", "scale", "rotate"
 /// One entry of "point_lights".
 inline constexpr std::array kPointLightKeys = {"name", "position", "intensity"};
 /// The "camera" object.
-inline constexpr std::array kCameraKeys = {"position",     "look_at",        "up",
-                                           "vertical_fov", "width",          "height",
-                                           "aperture",     "focus_distance", "near_clip"};
+inline constexpr std::array kCameraKeys = {
+    "position", "look_at",        "up",        "vertical_fov",   "width", "height",
+    "aperture", "focus_distance", "near_clip", "near_clip_shape"};
 /// The "render" object.
 inline constexpr std::array kRenderKeys = {"algorithm",
                                            "spp",

@@ -328,6 +328,16 @@ class Reader : private JsonChecks<Reader> {
     if (c.contains("focus_distance"))
       cam.focusDistance = bounded(c["focus_distance"], "/camera/focus_distance");
     if (c.contains("near_clip")) cam.nearClip = bounded(c["near_clip"], "/camera/near_clip");
+    if (c.contains("near_clip_shape")) {
+      const std::string shape = string(c["near_clip_shape"], "/camera/near_clip_shape");
+      if (shape == "plane")
+        cam.nearClipShape = NearClipShape::Plane;
+      else if (shape == "sphere")
+        cam.nearClipShape = NearClipShape::Sphere;
+      else
+        fail("/camera/near_clip_shape",
+             "unknown near clip shape \"" + shape + "\" (expected plane or sphere)");
+    }
     if (cam.position == cam.lookAt) fail("/camera/look_at", "camera looks at its own position");
     if (glm::length(glm::cross(cam.lookAt - cam.position, cam.up)) == 0.0)
       fail("/camera/up", "up is parallel to the viewing direction");

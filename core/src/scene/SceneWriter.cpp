@@ -222,7 +222,8 @@ ojson pointLightToJson(const PointLight& l) {
       .take();
 }
 
-/// Every camera field; near_clip only when set (files before it was added stay the same).
+/// Every camera field; near_clip and near_clip_shape only when set (files before they were
+/// added stay the same).
 ojson cameraToJson(const CameraSpec& c) {
   ObjectWriter camera(kCameraKeys);
   camera.add("position", toJson(c.position))
@@ -234,6 +235,8 @@ ojson cameraToJson(const CameraSpec& c) {
       .add("aperture", c.aperture)
       .add("focus_distance", c.focusDistance);
   if (c.nearClip != 0.0) camera.add("near_clip", c.nearClip);
+  if (c.nearClipShape != NearClipShape::Plane)
+    camera.add("near_clip_shape", toString(c.nearClipShape));
   return camera.take();
 }
 

@@ -80,6 +80,19 @@ std::optional<Hit> Sphere::intersect(const Ray& ray) const {
 }
 
 SurfaceInteraction Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
+  SurfaceInteraction si = geometryAt(ray, hit);
+  si.uv = uvAt(si.p);
+  return si;
+}
+
+Vec2 Sphere::uvAt(const Point3& p) const {
+  const Point3 object = m_hasTransform ? m_worldFromObject.inverseTransformPoint(p) : p;
+  const Vec3 radial = object - m_centre;
+  const double length = glm::length(radial);
+  return sphericalUv(length > 0.0 ? radial / length : Vec3(0.0, 0.0, 1.0));
+}
+
+SurfaceInteraction Sphere::geometryAt(const Ray& ray, const Hit& hit) const {
   const Transform& m = m_worldFromObject;
   const Point3 world = ray.at(hit.t);
   // Project the hit back onto the surface in object space: ray.at(t) is off by the
@@ -99,7 +112,6 @@ SurfaceInteraction Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
       m_hasTransform ? transformedPointError(m.matrix(), onSurface, objectError) : objectError;
   si.n = m_hasTransform ? m.transformNormal(radial) : radial;
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
-  si.uv = sphericalUv(radial);
   si.primitive = 0;
   return si;
 }

@@ -28,7 +28,8 @@ struct BvhSettings {
                                   ///< costs more; bigger nodes are always split.
   double traversalCost = 1.0;     ///< Cost of visiting an interior node, in triangle tests.
   double intersectionCost = 1.0;  ///< Cost of one ray/triangle test (the unit).
-  bool parallel = true;           ///< Build large subtrees on oneTBB tasks.
+  bool parallel = true;           ///< Build large subtrees, and bin the top levels, on oneTBB
+                                  ///< tasks (the same tree whatever the thread count).
 
   std::string toString() const;
 };

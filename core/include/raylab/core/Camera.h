@@ -27,6 +27,10 @@ class Camera {
   Vec3 forward() const { return m_forward; }
 
  private:
+  /// The ray from `eye` along `direction` (whose forward component is `forward`), started at
+  /// the near clip (world space).
+  Ray nearStart(const Point3& eye, const Vec3& direction, double forward, double time) const;
+
   CameraSpec m_spec;
   Vec3 m_forward, m_right, m_up;  ///< Orthonormal camera frame, world space.
   double m_tanHalfFov;            ///< tan(vertical fov / 2).

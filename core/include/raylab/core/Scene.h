@@ -44,6 +44,14 @@ struct SceneObject {
   std::string toString() const;
 };
 
+/// Where a camera ray starts when the camera has a near clip distance d.
+enum class NearClipShape {
+  Plane,   ///< On the plane d in front of the eye: d along the viewing direction (OpenGL's).
+  Sphere,  ///< d along the ray itself, on a sphere of radius d around the eye (smallpt's).
+};
+/// The scene file's word for a near clip shape: "plane" or "sphere".
+const char* toString(NearClipShape shape);
+
 /// The scene's camera: a pinhole looking from `position` at `lookAt` (down its local -z).
 struct CameraSpec {
   Point3 position{0.0, 0.0, 5.0};  ///< Eye, world space.
@@ -55,9 +63,10 @@ struct CameraSpec {
   double aperture = 0.0;           ///< Thin lens: lens radius, world units; 0 = pinhole.
   double focusDistance = 0.0;      ///< Thin lens: distance to the plane in focus; 0 means
                                    ///< the distance from position to lookAt.
-  double nearClip = 0.0;           ///< Camera rays start on the plane this far in front of
-                                   ///< the eye (along the viewing direction), world units;
+  double nearClip = 0.0;           ///< Camera rays start this far from the eye (or lens),
+                                   ///< world units, measured as nearClipShape says;
                                    ///< smallpt's 140. 0 = at the eye (or lens).
+  NearClipShape nearClipShape = NearClipShape::Plane;  ///< How nearClip is measured.
   std::string toString() const;
 };
 

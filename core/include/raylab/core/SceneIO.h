@@ -36,7 +36,8 @@ namespace raylab {
  *       "point_lights": [ {"name": "key", "position": [2, 5, 2], "intensity": [20, 20, 20]} ],
  *       "camera": {"position": [0, 2, 5], "look_at": [0, 1, 0], "up": [0, 1, 0],
  *                  "vertical_fov": 45, "width": 320, "height": 240,
- *                  "aperture": 0, "focus_distance": 0, "near_clip": 0},
+ *                  "aperture": 0, "focus_distance": 0, "near_clip": 0,
+ *                  "near_clip_shape": "plane"},
  *       "render": {"algorithm": "path", "spp": 16, "max_depth": 5, "seed": 1,
  *                  "shadow_samples": 4, "glossy_samples": 4, "russian_roulette_depth": 3,
  *                  "next_event_estimation": true, "multiple_importance": true,
@@ -60,6 +61,10 @@ namespace raylab {
  * the index on a surface's outer side: nested media (water in glass) name both indices
  * at each interface; any material with a non-zero
  * emission is an area light (not allowed on a plane).
+ * The camera's "near_clip" d starts camera rays d away from the eye (or the lens point):
+ * with "near_clip_shape" "plane" (the default) on the plane d in front of the eye, like
+ * OpenGL's near plane; with "sphere" d along each ray, on a sphere around the eye, as
+ * smallpt starts its rays (Ray(cam.o + d * 140, d.norm()) with d normalised first).
  * The render block's "ray_offset" (default true) false starts secondary rays on the
  * computed hit point, to show shadow acne. "velocity" is the object's motion over the shutter
  * interval (motion blur). Everything but "raylab_scene", "materials" and "objects" is optional and

@@ -16,7 +16,8 @@ class SphereLightSampler;
 /// The nearest hit of a ray in a scene.
 struct SceneHit {
   int object = -1;        ///< Index in Scene::objects.
-  SurfaceInteraction si;  ///< World-space geometry of the hit (moved objects included).
+  SurfaceInteraction si;  ///< World-space geometry of the hit (moved objects included);
+                          ///< uv is left (0, 0) on spheres (ask Sphere::uvAt).
 };
 
 /// A point sampled on an area light, seen from a reference point.
@@ -93,8 +94,9 @@ class SceneIntersector {
   /// What the inner loops need of an object, gathered once.
   struct Entry {
     const Shape* shape = nullptr;
-    const Sphere* round = nullptr;  ///< Static round spheres: intersected without a virtual call.
-    const Bvh* bvh = nullptr;       ///< Meshes: the hierarchy searched (null: other shapes).
+    const Sphere* round = nullptr;   ///< Static round spheres: intersected without a virtual call.
+    const Sphere* sphere = nullptr;  ///< Any sphere: its hit geometry without uv (geometryAt).
+    const Bvh* bvh = nullptr;        ///< Meshes: the hierarchy searched (null: other shapes).
     bool moving = false;
     Vec3 velocity{0.0};
   };

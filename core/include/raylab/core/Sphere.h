@@ -28,6 +28,13 @@ class Sphere final : public Shape {
   ShapeKind kind() const override { return ShapeKind::Sphere; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
+  /// surfaceAt without the surface parameters (si.uv stays (0, 0)): the same point, normal
+  /// and error bound, bit for bit, minus an atan2 and an acos. What the renderer asks
+  /// (SceneIntersector): no material reads uv, and a texture would ask uvAt.
+  SurfaceInteraction geometryAt(const Ray& ray, const Hit& hit) const;
+  /// Spherical parameters of a world-space point on the surface: u = azimuth / 2pi about the
+  /// object-space z axis, v = polar angle / pi (what surfaceAt puts in si.uv).
+  Vec2 uvAt(const Point3& p) const;
   std::vector<Crossing> intersectAll(const Ray& ray) const override;
   Normal3 normal(const Point3& p) const override;
   bool inside(const Point3& p) const override;

@@ -36,8 +36,10 @@ std::string toString(const Vec3& v);
 /// place these weights are written (lobe and light choice, ray energy, text contrast).
 constexpr double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
-/// True when no component is NaN or infinite.
-bool isFinite(const Vec3& v);
+/// True when no component is NaN or infinite (inline: the engine asks it of every ray).
+inline bool isFinite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 /// True when every component is exactly 0 (a lobe or light that carries nothing).
 constexpr bool isZero(const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }

@@ -1,0 +1,379 @@
+// RayLab's BVH against Embree 3 (issue 16): the same meshes and the same rays for both, one
+// thread, single-ray closest hit (Bvh::intersect against rtcIntersect1), and the BVH build
+// of the 1M-triangle mesh on 1 and 2 threads. Built only when libembree-dev is installed
+// (an optional dependency of this benchmark, never of the program). After the Google
+// Benchmark table it prints RayLab's rate divided by Embree's per case, and how many rays
+// each engine got wrong.
+//
+// Cases (1,048,576 rays each):
+//   Sphere80k   icosphere, 6 subdivisions: 81,920 triangles
+//   Noisy1M     UV sphere 501 x 1000 (1,000,000 triangles), every vertex moved radially by
+//               a seeded uniform factor in [0.98, 1.02]
+//   Camera rays: a pinhole at (0, 0, 3) looking down -z, a 1024 x 1024 grid over the square
+//   [-1.1, 1.1]^2 on z = 0 (about 80 % hit). Random rays: origins uniform on the sphere of
+//   radius 2, aimed at uniform points in the ball of radius 0.95 (all hit).
+//
+// Wrong rays: every ray is traced by both engines. Where they agree (both miss, or both hit
+// with t equal to 1e-4 relative: Embree works in float), both count as right; where they do
+// not, and for a seeded sample of rays per case besides, the ray is traced by brute force
+// (every triangle, RayLab's watertight test in double, the lowest index on a tie). RayLab is
+// wrong when its (t, triangle) differs from brute force at all, Embree when its hit or miss
+// differs or its t is off by more than 1e-4 relative.
+//
+// Queries run on one thread and are timed in CPU time, builds in wall time. Run by hand
+// (interleaved repetitions, so load from other work falls on both engines alike):
+//   build/ci/tests/bench/raylab_bench_embree --benchmark_repetitions=3
+//       --benchmark_enable_random_interleaving=true
+// Filter with --benchmark_filter=Query or =Build; --benchmark_min_time=0.01 for a quick look.
+
+#include "raylab/core/Bvh.h"
+#include "raylab/core/MeshFactory.h"
+#include "raylab/core/Triangle.h"
+#include "raylab/core/TriangleMesh.h"
+
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+#include <tbb/global_control.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace raylab {
+namespace {
+
+constexpr int kImageSide = 1024;
+constexpr int kRayCount = kImageSide * kImageSide;
+
+/// Pinhole camera at (0, 0, 3) looking down -z at the square [-1.1, 1.1]^2 on z = 0.
+std::vector<Ray> cameraRays() {
+  std::vector<Ray> rays;
+  rays.reserve(kRayCount);
+  const Point3 eye(0.0, 0.0, 3.0);
+  for (int y = 0; y < kImageSide; ++y)
+    for (int x = 0; x < kImageSide; ++x) {
+      const Point3 target(-1.1 + 2.2 * (x + 0.5) / kImageSide, -1.1 + 2.2 * (y + 0.5) / kImageSide,
+                          0.0);
+      rays.push_back(Ray::make(eye, target - eye));
+    }
+  return rays;
+}
+
+Vec3 uniformSphere(std::mt19937_64& rng) {
+  std::normal_distribution<double> n;
+  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+}
+
+/// Origins uniform on the sphere of radius 2, aimed at uniform points in the unit ball.
+std::vector<Ray> randomRays() {
+  std::mt19937_64 rng(1234);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Ray> rays;
+  rays.reserve(kRayCount);
+  for (int i = 0; i < kRayCount; ++i) {
+    const Point3 origin = 2.0 * uniformSphere(rng);
+    const Point3 target = std::cbrt(u(rng)) * 0.95 * uniformSphere(rng);
+    rays.push_back(Ray::make(origin, target - origin));
+  }
+  return rays;
+}
+
+TriangleMesh noisySphere() {
+  const TriangleMesh sphere = MeshFactory::makeUvSphere(Point3(0.0), 1.0, 501, 1000);
+  std::vector<Point3> vertices = sphere.vertices();
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> factor(0.98, 1.02);
+  for (Point3& v : vertices) v *= factor(rng);
+  return TriangleMesh(std::move(vertices), sphere.triangles());
+}
+
+const std::vector<Ray>& rays(bool camera) {
+  static const std::vector<Ray> cam = cameraRays();
+  static const std::vector<Ray> random = randomRays();
+  return camera ? cam : random;
+}
+
+const TriangleMesh& mesh(bool big) {
+  static const TriangleMesh sphere80k = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 6);
+  static const TriangleMesh noisy1M = noisySphere();
+  return big ? noisy1M : sphere80k;
+}
+
+/// A closest hit: t and triangle, or none.
+struct Answer {
+  double t = kInfinity;
+  int primitive = -1;
+};
+
+/// The mesh in Embree: float vertices (padded for Embree's 16-byte loads) shared with a
+/// device limited to `threads` build threads (0: Embree's default), committed with Embree's
+/// defaults. Embree limits oneTBB for the whole process while a device with "threads=N"
+/// lives, so the query scenes, which live to the end, leave the thread count alone.
+class EmbreeScene {
+ public:
+  EmbreeScene(const TriangleMesh& mesh, int threads) {
+    const std::string config = "threads=" + std::to_string(threads);
+    m_device = rtcNewDevice(threads > 0 ? config.c_str() : nullptr);
+    m_vertices.resize(3 * mesh.vertices().size() + 1);
+    for (std::size_t i = 0; i < mesh.vertices().size(); ++i)
+      for (int a = 0; a < 3; ++a) m_vertices[3 * i + a] = float(mesh.vertices()[i][a]);
+    m_indices.reserve(3 * mesh.triangles().size());
+    for (const auto& tri : mesh.triangles())
+      for (int k = 0; k < 3; ++k) m_indices.push_back(unsigned(tri[k]));
+    m_triangleCount = mesh.triangles().size();
+    build();
+  }
+  ~EmbreeScene() {
+    if (m_scene) rtcReleaseScene(m_scene);
+    rtcReleaseDevice(m_device);
+  }
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  /// Builds the scene again (the build benchmark).
+  void build() {
+    if (m_scene) rtcReleaseScene(m_scene);
+    m_scene = rtcNewScene(m_device);
+    RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               m_vertices.data(), 0, 3 * sizeof(float),
+                               (m_vertices.size() - 1) / 3);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                               m_indices.data(), 0, 3 * sizeof(unsigned), m_triangleCount);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(m_scene, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(m_scene);
+  }
+
+  Answer intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = float(ray.origin.x);
+    rh.ray.org_y = float(ray.origin.y);
+    rh.ray.org_z = float(ray.origin.z);
+    rh.ray.dir_x = float(ray.direction.x);
+    rh.ray.dir_y = float(ray.direction.y);
+    rh.ray.dir_z = float(ray.direction.z);
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = std::numeric_limits<float>::infinity();
+    rh.ray.time = 0.0f;
+    rh.ray.mask = ~0u;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_scene, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
+    return {double(rh.ray.tfar), int(rh.hit.primID)};
+  }
+
+ private:
+  RTCDevice m_device = nullptr;
+  RTCScene m_scene = nullptr;
+  std::vector<float> m_vertices;
+  std::vector<unsigned> m_indices;
+  std::size_t m_triangleCount = 0;
+};
+
+const EmbreeScene& embree(bool big) {
+  static const EmbreeScene sphere80k(mesh(false), 0);
+  static const EmbreeScene noisy1M(mesh(true), 0);
+  return big ? noisy1M : sphere80k;
+}
+
+Answer raylabAnswer(const Bvh& bvh, const Ray& ray) {
+  const auto hit = bvh.intersect(ray);
+  return hit ? Answer{hit->t, hit->primitive} : Answer{};
+}
+
+/// Every triangle, in index order: the nearest hit, the lowest index on a tie.
+Answer bruteForce(const TriangleMesh& mesh, const Ray& ray) {
+  Answer best;
+  const auto& v = mesh.vertices();
+  const auto& tris = mesh.triangles();
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    const auto hit = intersectTriangle(ray, v[tris[i][0]], v[tris[i][1]], v[tris[i][2]]);
+    if (hit && hit->t < best.t) best = {hit->t, int(i)};
+  }
+  return best;
+}
+
+/// Same surface: both miss, or both hit at t equal to `relative`.
+bool agree(const Answer& a, const Answer& b, double relative) {
+  if ((a.primitive < 0) != (b.primitive < 0)) return false;
+  return a.primitive < 0 || std::abs(a.t - b.t) <= relative * std::max(1.0, std::abs(b.t));
+}
+
+struct WrongRays {
+  int raylab = 0, embree = 0, disagreements = 0, bruteForced = 0;
+};
+
+/// The wrong-ray count of one case (see the file comment), computed once.
+WrongRays wrongRays(bool big, bool camera) {
+  static std::map<int, WrongRays> done;
+  const int key = 2 * big + camera;
+  if (auto it = done.find(key); it != done.end()) return it->second;
+  const TriangleMesh& m = mesh(big);
+  const std::vector<Ray>& rs = rays(camera);
+  const EmbreeScene& e = embree(big);
+  constexpr double kFloatTolerance = 1e-4;
+  // The sample: every stride-th ray, a seeded offset.
+  const int sampled = big ? 64 : 512;
+  const std::size_t stride = rs.size() / sampled;
+  std::mt19937_64 rng(7 + key);
+  const std::size_t offset = rng() % stride;
+  WrongRays w;
+  for (std::size_t i = 0; i < rs.size(); ++i) {
+    const Answer ours = raylabAnswer(m.bvh(), rs[i]);
+    const Answer theirs = e.intersect(rs[i]);
+    const bool disagree = !agree(theirs, ours, kFloatTolerance);
+    w.disagreements += disagree;
+    if (!disagree && i % stride != offset) continue;
+    const Answer truth = bruteForce(m, rs[i]);
+    w.bruteForced++;
+    w.raylab += ours.primitive != truth.primitive || ours.t != truth.t;
+    w.embree += !agree(theirs, truth, kFloatTolerance);
+  }
+  done[key] = w;
+  return w;
+}
+
+void query(benchmark::State& state, bool big, bool camera, bool useEmbree) {
+  const std::vector<Ray>& rs = rays(camera);
+  const Bvh& bvh = mesh(big).bvh();
+  const EmbreeScene& e = embree(big);
+  const WrongRays wrong = wrongRays(big, camera);
+  int hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    if (useEmbree)
+      for (const Ray& r : rs) hits += e.intersect(r).primitive >= 0;
+    else
+      for (const Ray& r : rs) hits += bvh.intersect(r).has_value();
+    benchmark::DoNotOptimize(hits);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rs.size()));
+  state.counters["hit_fraction"] = double(hits) / rs.size();
+  state.counters["wrong"] = useEmbree ? wrong.embree : wrong.raylab;
+  state.counters["disagree"] = wrong.disagreements;
+  state.counters["brute_forced"] = wrong.bruteForced;
+}
+
+void buildRaylab(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+  const TriangleMesh& m = mesh(true);
+  for (auto _ : state) {
+    const Bvh bvh(m.vertices(), m.triangles());
+    benchmark::DoNotOptimize(bvh.stats().nodeCount);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(m.triangleCount()));
+}
+
+void buildEmbree(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  EmbreeScene scene(mesh(true), threads);
+  for (auto _ : state) scene.build();
+  state.SetItemsProcessed(state.iterations() *
+                          static_cast<std::int64_t>(mesh(true).triangleCount()));
+}
+
+/// Collects each run's rate (queries: rays/s; builds: time) and prints RayLab / Embree per
+/// case after the usual table; with repetitions, the median of the runs.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  /// Colours only on a terminal, tabular counters.
+  RatioReporter() : ConsoleReporter(isatty(STDOUT_FILENO) ? OO_ColorTabular : OO_Tabular) {}
+
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.run_type != Run::RT_Iteration || run.error_occurred) continue;
+      const auto rate = run.counters.find("items_per_second");
+      const std::string args = run.run_name.args.empty() ? "" : "/" + run.run_name.args;
+      if (rate != run.counters.end())
+        m_rates[run.run_name.function_name + args].push_back(rate->second.value);
+      const auto wrong = run.counters.find("wrong");
+      if (wrong != run.counters.end())
+        m_wrong[run.run_name.function_name] = static_cast<int>(wrong->second.value);
+    }
+  }
+
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    std::printf("\nRayLab / Embree (median rate of each; builds: Embree time / RayLab time)\n");
+    std::printf("%-28s %14s %14s %8s %12s %12s\n", "case", "RayLab /s", "Embree /s", "ratio",
+                "RayLab wrong", "Embree wrong");
+    for (const auto& [name, rates] : m_rates) {
+      const std::string::size_type slash = name.find("/RayLab");
+      if (slash == std::string::npos) continue;
+      const std::string embreeName = name.substr(0, slash) + "/Embree" + name.substr(slash + 7);
+      const auto other = m_rates.find(embreeName);
+      if (other == m_rates.end()) continue;
+      const double ours = median(rates), theirs = median(other->second);
+      const auto wrongOurs = m_wrong.find(name.substr(0, slash) + "/RayLab");
+      const auto wrongTheirs = m_wrong.find(name.substr(0, slash) + "/Embree");
+      std::printf("%-28s %14.4g %14.4g %8.3f",
+                  (name.substr(0, slash) + name.substr(slash + 7)).c_str(), ours, theirs,
+                  ours / theirs);
+      if (wrongOurs != m_wrong.end() && wrongTheirs != m_wrong.end())
+        std::printf(" %12d %12d", wrongOurs->second, wrongTheirs->second);
+      std::printf("\n");
+    }
+  }
+
+ private:
+  static double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  }
+  std::map<std::string, std::vector<double>> m_rates;
+  std::map<std::string, int> m_wrong;
+};
+
+void registerAll() {
+  struct Case {
+    const char* name;
+    bool big, camera;
+  };
+  for (const Case c :
+       {Case{"Sphere80k_Camera", false, true}, Case{"Sphere80k_Random", false, false},
+        Case{"Noisy1M_Camera", true, true}, Case{"Noisy1M_Random", true, false}})
+    for (const bool useEmbree : {false, true}) {
+      const std::string name = std::string("Query/") + c.name + (useEmbree ? "/Embree" : "/RayLab");
+      benchmark::RegisterBenchmark(name.c_str(), [c, useEmbree](benchmark::State& s) {
+        query(s, c.big, c.camera, useEmbree);
+      })->Unit(benchmark::kMillisecond);
+    }
+  for (const bool useEmbree : {false, true})
+    benchmark::RegisterBenchmark(useEmbree ? "Build/Noisy1M/Embree" : "Build/Noisy1M/RayLab",
+                                 useEmbree ? buildEmbree : buildRaylab)
+        ->ArgName("threads")
+        ->Arg(1)
+        ->Arg(2)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+}
+
+}  // namespace
+}  // namespace raylab
+
+int main(int argc, char** argv) {
+  raylab::registerAll();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  raylab::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
