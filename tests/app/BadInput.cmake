@@ -129,3 +129,10 @@ add_test(NAME app.InterruptedRenderLeavesTheOldOutput
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/InterruptRender.sh ${raylab_exe} ${out}/app_interrupt)
 set_tests_properties(app.InterruptedRenderLeavesTheOldOutput PROPERTIES LABELS app TIMEOUT 60
   PASS_REGULAR_EXPRESSION "SIGTERM: render ended, old output intact, no temporary left")
+
+# Two renders writing one output at once: each round leaves one complete file, byte for
+# byte one of the two images, and no temporary (it used to be a shared F.part.png).
+add_test(NAME app.ConcurrentRendersLeaveOneCompleteFile
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/ConcurrentRenders.sh ${raylab_exe} ${out}/app_concurrent 8)
+set_tests_properties(app.ConcurrentRendersLeaveOneCompleteFile PROPERTIES LABELS app TIMEOUT 120
+  PASS_REGULAR_EXPRESSION "two renders into one output: passed")
