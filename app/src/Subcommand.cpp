@@ -38,6 +38,13 @@ std::size_t utf8Length(const std::string& text, std::size_t i) {
 
 }  // namespace
 
+std::string cappedSamplesWarning(std::uint64_t count) {
+  return std::to_string(count) + (count == 1 ? " sample" : " samples") + " reached the cap of " +
+         std::to_string(limits::kMaxRaysPerSample) +
+         " rays per sample: their rays past it were not traced, so those pixels miss some "
+         "light (fewer glossy or shadow samples, or a smaller max depth, avoid it)";
+}
+
 // printable: see Subcommand.h.
 /// `text` as valid UTF-8 without terminal controls: control bytes and bytes that are not
 /// UTF-8 (a file name in another encoding, a scene file's stray byte) are written as \xNN,

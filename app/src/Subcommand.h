@@ -66,6 +66,10 @@ std::string checkSize(const std::string& text);
 /// letters pass through.
 std::string printable(const std::string& text);
 
+/// The warning of a render in which `count` samples reached the cap on rays per sample
+/// (limits::kMaxRaysPerSample; RenderStats::cappedSamples).
+std::string cappedSamplesWarning(std::uint64_t count);
+
 /**
  * \brief A progress bar on stderr for long runs: "[#####.....]  45% detail" redrawn in
  * place when stderr is a terminal, one "label: 45% (detail)" line per update otherwise

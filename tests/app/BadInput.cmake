@@ -136,3 +136,11 @@ add_test(NAME app.ConcurrentRendersLeaveOneCompleteFile
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/ConcurrentRenders.sh ${raylab_exe} ${out}/app_concurrent 8)
 set_tests_properties(app.ConcurrentRendersLeaveOneCompleteFile PROPERTIES LABELS app TIMEOUT 120
   PASS_REGULAR_EXPRESSION "two renders into one output: passed")
+
+# A bushy distributed scene renders with every sample stopped at the cap on rays per
+# sample (limits::kMaxRaysPerSample), with a warning that counts them.
+raylab_add_cli_test(app.RenderCapsRaysPerSample CODE 0
+  STDOUT "2x2, 1 spp"
+  STDERR "raylab: warning: 4 samples reached the cap of 65536 rays per sample: their rays past it were not traced"
+  LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/capped-rays.json --out ${out}/app_render_capped.png)
