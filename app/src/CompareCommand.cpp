@@ -186,11 +186,15 @@ ComparisonResult runComparison(const Scene& scene, const RenderSettings& setting
                  "--reference-spp "
               << 16 * pathSpp << " or more" << std::endl;
   }
-  for (const AlgorithmFigures& figures : result.algorithms)
+  for (const AlgorithmFigures& figures : result.algorithms) {
     if (figures.stats.nonFiniteSamples > 0)
       std::cerr << "raylab: warning: " << toString(figures.algorithm) << ": "
                 << figures.stats.nonFiniteSamples
                 << " samples were NaN or infinite and were counted as black" << std::endl;
+    if (figures.stats.cappedSamples > 0)
+      std::cerr << "raylab: warning: " << toString(figures.algorithm) << ": "
+                << cappedSamplesWarning(figures.stats.cappedSamples) << std::endl;
+  }
   return result;
 }
 

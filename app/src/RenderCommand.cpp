@@ -82,6 +82,8 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   if (stats.nonFiniteSamples > 0)
     std::cerr << "raylab: warning: " << stats.nonFiniteSamples
               << " samples were NaN or infinite and were counted as black" << std::endl;
+  if (stats.cappedSamples > 0)
+    std::cerr << "raylab: warning: " << cappedSamplesWarning(stats.cappedSamples) << std::endl;
   return kExitOk;
 }
 

@@ -3,12 +3,20 @@
 #include "raylab/core/Scene.h"
 
 #include <string>
+#include <vector>
 
 namespace raylab::app {
 
 /// The scene a command works on: the file at `path` (through SceneIO::load, which throws
 /// SceneIO::LoadError naming the file and the place), or the built-in default scene when
-/// `path` is empty.
+/// `path` is empty. A scene that will render black or empty is loaded all the same, with a
+/// warning on stderr naming the file (sceneWarnings).
 Scene loadSceneOrDefault(const std::string& path);
+
+/// What a command warns about a scene it was given: no objects (every pixel shows the
+/// background), or nothing that gives light (no point light, emissive material, ambient
+/// term or background). Such a scene is valid (a teacher may start from it), so these
+/// are warnings, not errors.
+std::vector<std::string> sceneWarnings(const Scene& scene);
 
 }  // namespace raylab::app

@@ -60,6 +60,16 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 /// CLI11 check text for --size: empty when `text` parses, else what is expected.
 std::string checkSize(const std::string& text);
 
+/// `text` as valid UTF-8 without terminal controls, for a message on the terminal: control
+/// bytes and bytes that are not UTF-8 (a file name in another encoding, a scene file's
+/// stray byte) become \xNN, C1 controls \u00NN (issue 14). Newlines, tabs and UTF-8
+/// letters pass through.
+std::string printable(const std::string& text);
+
+/// The warning of a render in which `count` samples reached the cap on rays per sample
+/// (limits::kMaxRaysPerSample; RenderStats::cappedSamples).
+std::string cappedSamplesWarning(std::uint64_t count);
+
 /**
  * \brief A progress bar on stderr for long runs: "[#####.....]  45% detail" redrawn in
  * place when stderr is a terminal, one "label: 45% (detail)" line per update otherwise

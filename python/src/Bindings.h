@@ -99,7 +99,8 @@ py::array imageToArray(FloatImage image, const py::dtype& dtype);
 /// An H x W x 3 array (any float or integer type) as a FloatImage; ValueError otherwise.
 FloatImage arrayToImage(const py::array& array, const char* what);
 /// A render's figures as a dict: rays, rays_by_kind, spp, seconds, cancelled,
-/// time_limit_reached, non_finite_samples (render() and the comparison's algorithms).
+/// time_limit_reached, non_finite_samples, capped_samples (render() and the comparison's
+/// algorithms).
 py::dict statsDict(const RenderStats& stats);
 
 /**

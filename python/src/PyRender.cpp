@@ -39,6 +39,7 @@ py::dict statsDict(const RenderStats& stats) {
   out["cancelled"] = stats.cancelled;
   out["time_limit_reached"] = stats.timeLimitReached;
   out["non_finite_samples"] = stats.nonFiniteSamples;
+  out["capped_samples"] = stats.cappedSamples;
   return out;
 }
 

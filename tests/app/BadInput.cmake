@@ -35,6 +35,57 @@ foreach(row
     NO_FILE ${out}/app_bad_${name}.png LABELS app
     COMMAND ${raylab_exe} render --scene ${bad}/${file} --size 16x16 --out ${out}/app_bad_${name}.png)
 endforeach()
+
+# The table of bad scene files (issue 14), one row per kind: exit 1, the message names the
+# file, the place (line:column for JSON text, the JSON path for content) and the problem,
+# and no output is written. (Rows avoid ';' and brackets: CMake lists split at them.)
+foreach(row
+    "Empty|empty.json|: the file is empty \\(expected a JSON object\\)\n"
+    "SyntaxError|syntax-error.json|:3:31: JSON syntax error: syntax error while parsing value - unexpected '.'"
+    "WrongType|wrong-type.json|: at /objects/0/shape/radius: expected a number, got \"big\"\n"
+    "UnknownKey|unknown-key.json|: at /materials/0/color: unknown key \"color\" \\(expected one of name, type, colour, "
+    "NaN|nan.json|:4:57: JSON syntax error: .*invalid literal.* \\(JSON has no NaN or Infinity: write a finite number\\)\n"
+    "Infinity|infinity.json|:4:61: JSON syntax error: .*expected digit after '-'.* \\(JSON has no NaN or Infinity: write a finite number\\)\n"
+    "NumberTooLargeForADouble|huge-number.json|:4:74: number '1e999' is too large for a double \\(largest about 1\\.8e308, RayLab's coordinates are at most 1e12\\)\n"
+    "NonUtf8NameInTheScene|non-utf8-name.json|:3:28: JSON syntax error: .*invalid string: ill-formed UTF-8 byte.* last read: '\"ball\\\\xff' \\(RayLab reads UTF-8 text: save the file as UTF-8\\)\n")
+  string(REPLACE "|" ";" row "${row}")
+  list(GET row 0 name)
+  list(GET row 1 file)
+  list(GET row 2 message)
+  string(REPLACE "." "\\." file_regex "${file}")
+  raylab_add_cli_test(app.BadInput.${name} CODE 1
+    STDERR "^raylab: error: [^\n]*/tests/data/bad/${file_regex}${message}"
+    NO_FILE ${out}/app_bad_${name}.png LABELS app
+    COMMAND ${raylab_exe} render --scene ${bad}/${file} --size 16x16 --out ${out}/app_bad_${name}.png)
+endforeach()
+raylab_add_cli_test(app.BadInput.MissingScene CODE 1
+  STDERR "^raylab: error: [^\n]*/app_no_such_scene\\.json: cannot open scene file: No such file or directory\n"
+  NO_FILE ${out}/app_bad_missing.png LABELS app
+  COMMAND ${raylab_exe} render --scene ${out}/app_no_such_scene.json --out ${out}/app_bad_missing.png)
+# A path through a file: fails for root too (unlike a mode-000 file, below).
+raylab_add_cli_test(app.BadInput.PathThroughAFile CODE 1
+  STDERR "^raylab: error: [^\n]*/empty\\.json/scene\\.json: cannot open scene file: Not a directory\n"
+  NO_FILE ${out}/app_bad_notdir.png LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/empty.json/scene.json --out ${out}/app_bad_notdir.png)
+# A mode-000 file (as root: run as the user nobody, or skip saying why) and file names
+# that are not UTF-8 (a valid scene renders; an error quotes the byte as \xe8).
+foreach(mode unreadable non-utf8-argv)
+  add_test(NAME app.BadInput.Paths.${mode}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/BadInputPaths.sh ${mode} ${raylab_exe} ${out}/app_bad_${mode})
+  set_tests_properties(app.BadInput.Paths.${mode} PROPERTIES LABELS app TIMEOUT 60
+    SKIP_RETURN_CODE 77 PASS_REGULAR_EXPRESSION "^${mode}: [^\n]*raylab: error: ")
+endforeach()
+# Scenes that are valid but render black or empty: loaded with a warning naming the file,
+# exit 0, the image written.
+raylab_add_cli_test(app.BadInput.NoLights CODE 0
+  STDERR "raylab: warning: [^\n]*/no-lights\\.json: the scene has no light \\(no point light, no emissive material, no ambient term, a black background\\): the image is black\n"
+  LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/no-lights.json --out ${out}/app_bad_no_lights.png)
+raylab_add_cli_test(app.BadInput.NoObjects CODE 0
+  STDERR "raylab: warning: [^\n]*/no-objects\\.json: the scene has no objects: every pixel shows the background\n"
+  LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/no-objects.json --size 16x16 --out ${out}/app_bad_no_objects.png)
+
 raylab_add_cli_test(app.BadInput.DeviceAsScene CODE 1
   STDERR "raylab: error: /dev/zero: cannot read scene file: not a regular file \\(a folder or a device\\?\\)"
   NO_FILE ${out}/app_bad_dev_zero.png LABELS app
@@ -78,3 +129,18 @@ add_test(NAME app.InterruptedRenderLeavesTheOldOutput
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/InterruptRender.sh ${raylab_exe} ${out}/app_interrupt)
 set_tests_properties(app.InterruptedRenderLeavesTheOldOutput PROPERTIES LABELS app TIMEOUT 60
   PASS_REGULAR_EXPRESSION "SIGTERM: render ended, old output intact, no temporary left")
+
+# Two renders writing one output at once: each round leaves one complete file, byte for
+# byte one of the two images, and no temporary (it used to be a shared F.part.png).
+add_test(NAME app.ConcurrentRendersLeaveOneCompleteFile
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/ConcurrentRenders.sh ${raylab_exe} ${out}/app_concurrent 8)
+set_tests_properties(app.ConcurrentRendersLeaveOneCompleteFile PROPERTIES LABELS app TIMEOUT 120
+  PASS_REGULAR_EXPRESSION "two renders into one output: passed")
+
+# A bushy distributed scene renders with every sample stopped at the cap on rays per
+# sample (limits::kMaxRaysPerSample), with a warning that counts them.
+raylab_add_cli_test(app.RenderCapsRaysPerSample CODE 0
+  STDOUT "2x2, 1 spp"
+  STDERR "raylab: warning: 4 samples reached the cap of 65536 rays per sample: their rays past it were not traced"
+  LABELS app
+  COMMAND ${raylab_exe} render --scene ${bad}/capped-rays.json --out ${out}/app_render_capped.png)

@@ -188,5 +188,68 @@ TEST(RayTreeJson, 04_SaveIsAtomicAndErrorsNameThePlace) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue 14 (fuzzing the reader): a dump whose links are not a tree the engine makes was
+// read as is, and RayTree::propagate then indexed outside the segments; a number too
+// large for a double escaped as nlohmann's exception; /dev/zero read without end. Each is
+// now a RayTreeJson::Error naming the file and the segment.
+TEST(RayTreeJson, 05_BrokenTreesAndFilesAreRefused) {
+  const Scene scene = allMaterialsScene();
+  const std::string good =
+      RayTreeJson::serialize(handMadeTree(), scene, settingsFor(Algorithm::Whitted, 1));
+  const auto messageOf = [](const std::string& text) -> std::string {
+    try {
+      RayTree tree = RayTreeJson::parse(text, "t.json");
+      tree.propagate();
+      return "";
+    } catch (const RayTreeJson::Error& e) {
+      return e.what();
+    }
+  };
+  ASSERT_EQ(messageOf(good), "");
+  struct Case {
+    const char* what;
+    int segment;
+    const char* key;
+    int value;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"children past the end", 3, "first_child", 8,
+       "t.json: /segments/3: children 8..9 are not later rays of the tree"},
+      {"children before the ray", 2, "first_child", 1,
+       "t.json: /segments/2: children 1..2 are not later rays"},
+      {"negative child count", 4, "child_count", -3,
+       "t.json: /segments/4: child_count is negative"},
+      {"id not its index", 5, "id", 6, "t.json: /segments/5: id 6 is not its index"},
+      {"parent after the ray", 4, "parent", 7,
+       "t.json: /segments/4: parent 7 is not an earlier ray"},
+      {"camera ray with a parent", 0, "parent", 0,
+       "t.json: /segments/0: parent 0 (the camera ray has none: -1)"},
+      {"child of another ray", 4, "parent", 0,
+       "t.json: /segments/4: parent is not ray 1, which lists it"},
+      {"huge first child", 1, "first_child", 2147483647,
+       "t.json: /segments/1: children 2147483647..2147483648"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    nlohmann::json doc = nlohmann::json::parse(good);
+    doc["segments"][std::size_t(c.segment)][c.key] = c.value;
+    EXPECT_EQ(messageOf(doc.dump()).rfind(c.expected, 0), 0u) << messageOf(doc.dump());
+  }
+  std::string huge = good;
+  huge.replace(huge.find("\"time\": "), 8, "\"time\": 1e999, \"x\": ");
+  EXPECT_EQ(messageOf(huge).rfind("t.json: not JSON (", 0), 0u) << messageOf(huge);
+  // Only regular files: a device or a folder is named, never read without end.
+  for (const std::string& path : {std::string("/dev/zero"), std::string(RAYLAB_TEST_DATA_DIR)}) {
+    try {
+      RayTreeJson::load(path);
+      ADD_FAILURE() << path << " should be refused";
+    } catch (const RayTreeJson::Error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                path + ": cannot read ray tree file: not a regular file (a folder or a device?)");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace raylab

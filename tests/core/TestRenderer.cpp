@@ -1,5 +1,6 @@
 // The image renderer: deterministic for any thread count, progressive, cancellable, with
 // progress reports and ray counts, never a NaN in the picture.
+#include "raylab/core/Limits.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneIO.h"
 
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace raylab {
@@ -215,6 +217,62 @@ TEST(Renderer, 08_RenderedImageRoundTripsThroughPfm) {
   imageio::writePfm(image, path);
   expectIdentical(imageio::readPfm(path), image);
   EXPECT_EQ(imageio::rmse(imageio::readPfm(path), image), 0.0);
+}
+
+// Issue 14: within the loader's limits (256 glossy samples, depth 64) a distributed sample
+// can ask for rays without end; the bushy glossy room (depth 8, 8 glossy and 8 shadow
+// samples) asks for about 8^8. Tracer::trace stops spawning at limits::kMaxRaysPerSample
+// rays, exactly as a Stepper whose budget holds that many segments, and the renderer
+// counts the capped samples the same way on 1 and 2 threads.
+TEST(Renderer, 09_RaysPerSampleAreCapped) {
+  Scene scene = SceneIO::load(std::string(RAYLAB_TEST_DATA_DIR) + "/scenes/bushy-glossy-room.json");
+  scene.camera.width = 4;
+  scene.camera.height = 3;
+  const RenderSettings settings = scene.render;
+  const Tracer tracer(scene, settings);
+  constexpr std::size_t cap = limits::kMaxRaysPerSample;
+  // One ray spawns at most 8 glossy and 8 shadow rays per light here: a capped sample
+  // stops within 16 rays of the cap.
+  for (const auto& [x, y] : {std::pair{0, 0}, std::pair{3, 2}}) {
+    SCOPED_TRACE("pixel " + std::to_string(x) + ", " + std::to_string(y));
+    RayCounts counts;
+    bool capped = false;
+    const Vec3 L = tracer.trace(x, y, 0, &counts, &capped);
+    EXPECT_TRUE(capped);
+    EXPECT_LE(counts.total(), cap);
+    EXPECT_GT(counts.total(), cap - 16);
+    Stepper stepper(tracer, x, y, 0, cap * sizeof(RaySegment));
+    stepper.runToEnd();
+    EXPECT_TRUE(stepper.tree().truncated);
+    EXPECT_EQ(stepper.estimate(), L) << "the same rays as the recorded tree, bit for bit";
+    EXPECT_EQ(stepper.counts().byKind, counts.byKind);
+  }
+  // Any cap: 100 rays, the same as a 100-segment tree.
+  RayCounts small;
+  bool smallCapped = false;
+  const Vec3 L100 = tracer.trace(1, 1, 0, &small, &smallCapped, 100);
+  Stepper stepper100(tracer, 1, 1, 0, 100 * sizeof(RaySegment));
+  stepper100.runToEnd();
+  EXPECT_TRUE(smallCapped);
+  EXPECT_LE(small.total(), 100u);
+  EXPECT_EQ(stepper100.estimate(), L100);
+  EXPECT_EQ(stepper100.counts().byKind, small.byKind);
+
+  // The render: every sample capped, the count and the image the same on 1 and 2 threads.
+  RenderStats one, two;
+  const FloatImage a = render(scene, settings, 1, &one);
+  const FloatImage b = render(scene, settings, 2, &two);
+  expectIdentical(a, b);
+  EXPECT_EQ(one.cappedSamples, 12u);
+  EXPECT_EQ(two.cappedSamples, 12u);
+  EXPECT_LE(one.rays.total(), 12 * cap);
+  EXPECT_EQ(one.rays.byKind, two.rays.byKind);
+
+  // An ordinary distributed render is never capped.
+  const Scene cornell = shippedScene("cornell", 8, 8);
+  RenderStats ordinary;
+  render(cornell, settingsFor(cornell, Algorithm::Distributed, 2), 2, &ordinary);
+  EXPECT_EQ(ordinary.cappedSamples, 0u);
 }
 
 }  // namespace

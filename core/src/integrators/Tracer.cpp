@@ -63,6 +63,15 @@ QueuedRay cameraRay(const Tracer& tracer, int x, int y, Sampler& sampler) {
   return q;
 }
 
+/// The image renderer's bound on the rays of one sample (Tracer::trace): the rays queued
+/// so far, camera ray included, against the cap. Once children do not fit, no ray spawns
+/// any more, as when a Stepper's tree budget runs out (TreeRecorder::reserve).
+struct RayCap {
+  std::size_t queued = 1;
+  std::size_t limit = limits::kMaxRaysPerSample;
+  bool reached = false;
+};
+
 /**
  * The engine, one step: take the first ray of the queue, find where it ends, let the
  * rule spawn children, add the ray's own contribution `throughput * emitted` to the
@@ -72,7 +81,7 @@ QueuedRay cameraRay(const Tracer& tracer, int x, int y, Sampler& sampler) {
 template <typename Queue>
 void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
                 std::vector<QueuedRay>& children, Vec3& estimate, RayCounts* counts,
-                TreeRecorder* recorder) {
+                TreeRecorder* recorder, RayCap* cap) {
   const SceneIntersector& intersector = tracer.intersector();
 
   // 1. Take the first ray of the queue.
@@ -122,6 +131,15 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     child.parent = ray.id;
     child.throughput = ray.throughput * child.weight;
   }
+  if (cap && !children.empty()) {
+    if (cap->reached || cap->queued + children.size() > cap->limit) {
+      cap->reached = true;
+      children.clear();
+      end = EndReason::Stopped;
+    } else {
+      cap->queued += children.size();
+    }
+  }
   if (recorder) recorder->recordStep(ray, hit, end, emitted, children);
   for (const QueuedRay& child : children) queue.push_back(child);
 }
@@ -154,15 +172,21 @@ const Material& Tracer::materialOf(int object) const {
 
 Tracer::~Tracer() = default;
 
-Vec3 Tracer::trace(int x, int y, int sample, RayCounts* counts) const {
+Vec3 Tracer::trace(int x, int y, int sample, RayCounts* counts, bool* capped,
+                   std::size_t rayCap) const {
   // One reusable queue per thread: no allocation per sample once warmed up.
   thread_local RayFifo queue;
   thread_local std::vector<QueuedRay> children;
   queue.clear();
   Sampler sampler(m_settings.seed, x, y, sample);
-  queue.push_back(cameraRay(*this, x, y, sampler));
+  // A cap below one ray traces nothing, as a Stepper's budget below one segment.
+  RayCap cap;
+  cap.limit = rayCap;
+  if (rayCap >= 1) queue.push_back(cameraRay(*this, x, y, sampler));
   Vec3 estimate(0.0);
-  while (!queue.empty()) engineStep(*this, queue, sampler, children, estimate, counts, nullptr);
+  while (!queue.empty())
+    engineStep(*this, queue, sampler, children, estimate, counts, nullptr, &cap);
+  if (capped) *capped = cap.reached;
   return estimate;
 }
 
@@ -196,7 +220,7 @@ void Stepper::reset() {
 bool Stepper::step() {
   if (m_queue.empty()) return false;
   TreeRecorder recorder(*m_tracer, m_tree, m_event, m_budget);
-  engineStep(*m_tracer, m_queue, m_sampler, m_children, m_estimate, &m_counts, &recorder);
+  engineStep(*m_tracer, m_queue, m_sampler, m_children, m_estimate, &m_counts, &recorder, nullptr);
   // Once the queue is empty every ray has ended: propagate energy up the tree.
   if (m_queue.empty()) m_tree.propagate();
   return true;

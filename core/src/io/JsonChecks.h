@@ -6,9 +6,12 @@
 #include "raylab/core/Limits.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -38,6 +41,40 @@ inline std::string excerpt(const nlohmann::json& j) {
   return j.dump();
 }
 
+/// Finds the byte offset of the first error nlohmann's SAX parser reports in a text (the
+/// DOM parser reports a number too large for a double without its place).
+struct JsonErrorPlace {
+  std::size_t byte = std::string::npos;
+  static std::size_t find(const std::string& text) {
+    JsonErrorPlace place;
+    nlohmann::json::sax_parse(text, &place);
+    return place.byte;
+  }
+  using number_integer_t = nlohmann::json::number_integer_t;
+  using number_unsigned_t = nlohmann::json::number_unsigned_t;
+  using number_float_t = nlohmann::json::number_float_t;
+  using string_t = nlohmann::json::string_t;
+  using binary_t = nlohmann::json::binary_t;
+  bool null() { return true; }
+  bool boolean(bool) { return true; }
+  bool number_integer(number_integer_t) { return true; }
+  bool number_unsigned(number_unsigned_t) { return true; }
+  bool number_float(number_float_t, const string_t&) { return true; }
+  bool string(string_t&) { return true; }
+  bool binary(binary_t&) { return true; }
+  bool start_object(std::size_t) { return true; }
+  bool key(string_t&) { return true; }
+  bool end_object() { return true; }
+  bool start_array(std::size_t) { return true; }
+  bool end_array() { return true; }
+  bool parse_error(std::size_t position, const std::string& token,
+                   const nlohmann::json::exception&) {
+    // `position` is just past the token: point at its first character.
+    byte = position >= token.size() ? position - token.size() : 0;
+    return false;
+  }
+};
+
 /// Parses `text` (read from `origin`) into `out`; on failure the message, naming the place
 /// of a syntax error (file:line:column) or the parser's other refusal (a number too large
 /// for a double). The loaders throw it in their own error types.
@@ -66,10 +103,44 @@ inline std::optional<std::string> parseJson(const std::string& text, const std::
       --depth;
     }
   }
+  // An empty file is named as such (nlohmann would say "unexpected end of input" at 1:1).
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    return origin + ": the file is empty (expected a JSON object)";
   try {
     out = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    return jsonSyntaxMessage(origin, text, e.byte, e.what());
+    std::string message = jsonSyntaxMessage(origin, text, e.byte, e.what());
+    // The usual cause of two of nlohmann's refusals, in RayLab's words.
+    std::size_t start = e.byte > 0 ? std::min(e.byte - 1, text.size()) : 0;
+    while (start > 0 && std::isalpha(static_cast<unsigned char>(text[start - 1]))) --start;
+    std::string word;
+    for (std::size_t i = start; i < text.size() && i < start + 3; ++i)
+      word += char(std::tolower(static_cast<unsigned char>(text[i])));
+    if (word == "nan" || word == "inf")
+      message += " (JSON has no NaN or Infinity: write a finite number)";
+    else if (message.find("ill-formed UTF-8") != std::string::npos)
+      message += " (RayLab reads UTF-8 text: save the file as UTF-8)";
+    return message;
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number too large for a double (1e999): nlohmann's DOM parser drops the place, its
+    // SAX parser reports it; parse again to find it.
+    if (e.id == 406) {
+      const std::size_t byte = JsonErrorPlace::find(text);
+      if (byte != std::string::npos) {
+        std::string what = e.what();
+        const auto quote = what.find('\'');
+        const std::string number = quote == std::string::npos ? "" : what.substr(quote);
+        const auto [line, column] = lineColumn(text, byte);
+        return origin + ":" + std::to_string(line) + ":" + std::to_string(column) + ": number " +
+               (number.empty() ? "" : number + " ") +
+               "is too large for a double (largest about 1.8e308, RayLab's coordinates are "
+               "at most 1e12)";
+      }
+    }
+    std::string what = e.what();
+    const auto tag = what.find("] ");
+    if (tag != std::string::npos) what = what.substr(tag + 2);
+    return origin + ": JSON error: " + what;
   } catch (const nlohmann::json::exception& e) {
     // nlohmann's words without its "[json.exception...] " tag.
     std::string what = e.what();
@@ -95,8 +166,14 @@ inline std::optional<std::string> readTextFile(const std::string& path, const st
       return path + ": " + what + " is " + std::to_string(size >> 20) + " MiB; RayLab reads " +
              what + "s of at most " + std::to_string(limits::kMaxJsonFileBytes >> 20) + " MiB";
   }
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) return path + ": cannot open " + what + " (does it exist and is it readable?)";
+  if (!in) {
+    // Why, in the system's words: "No such file or directory", "Permission denied", ...
+    const int error = errno;
+    return path + ": cannot open " + what + ": " +
+           (error != 0 ? std::strerror(error) : "does it exist and is it readable?");
+  }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) return path + ": read error";

@@ -1,6 +1,8 @@
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/AtomicFile.h"
 
+#include "io/JsonChecks.h"
+
 #include <nlohmann/json.hpp>
 
 #include <fcntl.h>
@@ -8,6 +10,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -41,6 +44,38 @@ Vec3 vecField(const json& s, const char* key, std::size_t index, const std::stri
     throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(index) + "/" + key +
                              " must have 3 numbers");
   return Vec3(a[0], a[1], a[2]);
+}
+
+/// The links of a tree as the engine makes them (RayTree): segment i has id i; the camera
+/// ray (segment 0) alone has no parent, every other ray's parent comes before it; a ray's
+/// children are the consecutive ids firstChild .. firstChild + childCount - 1, after it,
+/// and name it as their parent. RayTree::propagate and the views rely on this, so a dump
+/// that breaks it is refused (issue 14: it indexed outside the segments).
+void checkStructure(const RayTree& tree, const std::string& origin) {
+  const auto fail = [&](std::size_t i, const std::string& what) {
+    throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(i) + ": " + what);
+  };
+  const auto count = std::int64_t(tree.segments.size());
+  // Each ray's own id and parent first, then the children each ray lists.
+  for (std::size_t i = 0; i < tree.segments.size(); ++i) {
+    const RaySegment& s = tree.segments[i];
+    if (s.id != std::int64_t(i)) fail(i, "id " + std::to_string(s.id) + " is not its index");
+    if (i == 0 ? s.parent != -1 : (s.parent < 0 || s.parent >= s.id))
+      fail(i, "parent " + std::to_string(s.parent) +
+                  (i == 0 ? " (the camera ray has none: -1)" : " is not an earlier ray"));
+    if (s.childCount < 0) fail(i, "child_count is negative");
+  }
+  for (std::size_t i = 0; i < tree.segments.size(); ++i) {
+    const RaySegment& s = tree.segments[i];
+    if (s.childCount == 0) continue;
+    const std::int64_t first = s.firstChild;
+    if (first <= std::int64_t(i) || first + s.childCount > count)
+      fail(i, "children " + std::to_string(first) + ".." +
+                  std::to_string(first + s.childCount - 1) + " are not later rays of the tree");
+    for (std::int64_t c = first; c < first + s.childCount; ++c)
+      if (tree.segments[std::size_t(c)].parent != s.id)
+        fail(std::size_t(c), "parent is not ray " + std::to_string(s.id) + ", which lists it");
+  }
 }
 
 }  // namespace
@@ -108,7 +143,8 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
   json doc;
   try {
     doc = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // A syntax error, or a number too large for a double (1e999: out_of_range).
     throw Error(origin + ": not JSON (" + e.what() + ")");
   }
   if (!doc.is_object() || !doc.contains("raylab_ray_tree"))
@@ -174,16 +210,17 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
     s.endReason = *known;
     read.objectNames.push_back(j.value("object_name", std::string()));
   }
+  checkStructure(tree, origin);
   if (info) *info = std::move(read);
   return tree;
 }
 
 RayTree RayTreeJson::load(const std::string& path, Info* info) {
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse(text.str(), path, info);
+  // A regular file of at most limits::kMaxJsonFileBytes (a whole tree of the default
+  // 16 MiB budget dumps to about 55 MB): /dev/zero or a folder would read without end.
+  std::string text;
+  if (const auto problem = readTextFile(path, "ray tree file", text)) throw Error(*problem);
+  return parse(text, path, info);
 }
 
 }  // namespace raylab

@@ -84,6 +84,7 @@ FloatImage Renderer::render() {
     std::atomic<int> finishedTiles{0};
     std::vector<RayCounts> counts(threadCount);
     std::vector<std::uint64_t> nonFinite(threadCount, 0);
+    std::vector<std::uint64_t> capped(threadCount, 0);
 
     // Each worker takes the next tile until none is left or the render is cancelled.
     const auto worker = [&](int w) {
@@ -102,7 +103,9 @@ FloatImage Renderer::render() {
             const std::size_t i = std::size_t(y) * width + x;
             glm::dvec3 sum = committed[i];
             for (int s = first; s < last; ++s) {
-              const Vec3 L = m_tracer.trace(x, y, s, &myCounts);
+              bool reachedCap = false;
+              const Vec3 L = m_tracer.trace(x, y, s, &myCounts, &reachedCap);
+              capped[w] += reachedCap ? 1 : 0;
               // A non-finite estimate would poison the pixel for good: count it as black.
               if (std::isfinite(L.x) && std::isfinite(L.y) && std::isfinite(L.z)) {
                 sum += L;
@@ -130,6 +133,7 @@ FloatImage Renderer::render() {
     for (int w = 0; w < threadCount; ++w) {
       m_stats.rays += counts[w];
       m_stats.nonFiniteSamples += nonFinite[w];
+      m_stats.cappedSamples += capped[w];
     }
     if (finishedTiles.load() < int(tiles.size())) break;  // cancelled mid-pass
 

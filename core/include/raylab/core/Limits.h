@@ -29,6 +29,15 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 constexpr int kMaxDepth = 64;
 /// Most shadow rays per area light, and glossy rays, at one hit (distributed tracing).
 constexpr int kMaxLightSamples = 256;
+/// Most rays one camera sample of an image may trace (Tracer::trace), the camera ray and
+/// every ray queued after it included. Within the limits above a distributed sample can
+/// still ask for 256^64 rays; past this cap no ray of the sample spawns children any more
+/// (the rays already queued are traced), so one sample costs at most this many rays (a
+/// quarter of a second on one core for the bushy test room) and 11 MB of queue per
+/// thread. The renderer counts such samples (RenderStats::cappedSamples) and `raylab
+/// render` and `compare` warn. A ray tree stops at its 16 MiB budget (kDefaultTreeBudget,
+/// about 60,000 rays) first, so a tree `raylab trace` records whole is never capped.
+constexpr std::size_t kMaxRaysPerSample = std::size_t(1) << 16;
 
 /// Largest magnitude of a coordinate, size or radius, world units: squares and products of
 /// such numbers stay far from overflowing a double.

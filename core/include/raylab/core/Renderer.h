@@ -20,6 +20,10 @@ struct RenderStats {
   std::uint64_t nonFiniteSamples = 0;  ///< NaN / Inf estimates from the tracer, counted
                                        ///< as black so they never reach the image (a
                                        ///< tracer bug when non-zero).
+  std::uint64_t cappedSamples = 0;     ///< Samples that reached limits::kMaxRaysPerSample:
+                                       ///< their rays past the cap were not traced, so
+                                       ///< they miss some light (the same whatever the
+                                       ///< thread count).
 };
 
 /**

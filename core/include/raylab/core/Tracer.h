@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Camera.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
 #include "raylab/core/Sampler.h"
@@ -74,7 +75,13 @@ class Tracer {
 
   /// Estimate of sample `sample` of pixel (x, y): radiance, linear RGB. Adds the rays
   /// traced to `counts` when given. Thread-safe (const).
-  Vec3 trace(int x, int y, int sample, RayCounts* counts = nullptr) const;
+  ///
+  /// At most `rayCap` rays are traced (limits::kMaxRaysPerSample by default), the camera
+  /// ray included: once a ray's children would pass the cap, none of them is queued and
+  /// no later ray spawns any, just as a Stepper whose budget holds `rayCap` segments (the
+  /// estimates are then equal). `capped`, when given, is set to whether that happened.
+  Vec3 trace(int x, int y, int sample, RayCounts* counts = nullptr, bool* capped = nullptr,
+             std::size_t rayCap = limits::kMaxRaysPerSample) const;
 
   const Scene& scene() const { return m_intersector.scene(); }
   const SceneIntersector& intersector() const { return m_intersector; }
