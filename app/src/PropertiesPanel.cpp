@@ -49,6 +49,7 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
     {"distribution", {"ggx", "beckmann"}},
     {"acceleration", {"bvh", "none"}},
     {"bvh_split", {"sah", "median"}},
+    {"normals", {"file", "flat", "smooth"}},
 };
 const std::vector<const char*> kMaterialTypes = {
     "diffuse", "mirror",      "dielectric",      "glossy",
@@ -94,6 +95,14 @@ QString tipFor(const std::string& key) {
     return PropertiesPanel::tr(
         "How the meshes' hierarchies split their boxes: sah (surface area heuristic) or median "
         "(half of the triangles on each side); the same image");
+  if (key == "normals")
+    return PropertiesPanel::tr(
+        "Shading normals of the mesh: file (the file's vertex normals, flat without them), "
+        "flat (each triangle's own normal) or smooth (computed, with the crease angle)");
+  if (key == "crease_angle")
+    return PropertiesPanel::tr(
+        "Crease angle in degrees [0, 180]: edges between faces whose normals differ by more "
+        "stay sharp when the normals are smooth");
   if (key == "ray_offset")
     return PropertiesPanel::tr(
         "Ray offset: secondary and shadow rays start past the hit point's error bound; "
@@ -359,6 +368,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   if (pointer == "/render" && !values.contains("ray_offset")) values["ray_offset"] = true;
   if (pointer == "/render" && !values.contains("acceleration")) values["acceleration"] = "bvh";
   if (pointer == "/render" && !values.contains("bvh_split")) values["bvh_split"] = "sah";
+  // A mesh's normals, "file" when the file leaves them out.
+  if (values.value("type", "") == "mesh" && !values.contains("normals")) values["normals"] = "file";
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
     const std::string place = pointer + "/" + key;
