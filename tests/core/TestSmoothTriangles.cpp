@@ -7,7 +7,10 @@
 #include "raylab/core/Camera.h"
 #include "raylab/core/MeshFactory.h"
 #include "raylab/core/MeshIO.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/Quad.h"
+#include "raylab/core/RayInspector.h"
+#include "raylab/core/RayTreeJson.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Tracer.h"
@@ -550,6 +553,32 @@ TEST(SmoothTriangles, 13_NoLightLeaksThroughTheShadingNormal) {
   EXPECT_LT(glm::dot(lobes.lobe[0].wi, si->n), -0.9);
   for (Algorithm a : kAllAlgorithms)
     EXPECT_EQ(renderCentre(mirrorScene, a, 4), Vec3(0.0)) << toString(a);
+}
+
+TEST(SmoothTriangles, 15_TheRayTreeAndInspectorShowTheInterpolatedNormal) {
+  // The camera ray onto the tilted floor records both normals; the inspector shows the
+  // shading normal as interpolated, and a ray tree dump keeps it.
+  Scene scene = tiltedFloorScene(makeMaterial("white", MaterialType::Diffuse, Vec3(0.8)));
+  scene.pointLights.push_back({"lamp", Point3(5.0, 0.0, 0.5), Vec3(50.0)});
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Whitted;
+  settings.samplesPerPixel = 1;
+  const PixelTrace trace = tracePixel(scene, settings, 0, 0);
+  ASSERT_GE(trace.tree.segments.size(), 1u);
+  const RaySegment& camera = trace.tree.segments[0];
+  EXPECT_EQ(camera.normal, Normal3(0, 0, 1));
+  expectNear(camera.shadingNormal, glm::normalize(Vec3(1, 0, 0.2)), 1e-15);
+  const std::string text = RayInspector::inspect(scene, trace.tree, 0, false).toString();
+  EXPECT_TRUE(contains(text, "  shading     (0.9806, 0, 0.1961) interpolated")) << text;
+  const RayTree back = RayTreeJson::parse(RayTreeJson::serialize(trace.tree, scene, settings), "t");
+  EXPECT_EQ(back.segments[0].shadingNormal, camera.shadingNormal);
+  // A flat surface shows one normal only.
+  Scene flat = scene;
+  static_cast<TriangleMesh&>(*flat.objects[0].shape).clearNormals();
+  const PixelTrace flatTrace = tracePixel(flat, settings, 0, 0);
+  EXPECT_TRUE(isZero(flatTrace.tree.segments[0].shadingNormal));
+  EXPECT_FALSE(
+      contains(RayInspector::inspect(flat, flatTrace.tree, 0, false).toString(), "interpolated"));
 }
 
 /// The camera of the ball pictures: 64 x 64 from (0, 0, 4).
