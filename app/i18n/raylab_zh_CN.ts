@@ -267,6 +267,14 @@
         <source>|t error|</source>
         <translation>|t 误差|</translation>
     </message>
+    <message>
+        <source>shading</source>
+        <translation>着色法线</translation>
+    </message>
+    <message>
+        <source>interpolated</source>
+        <translation>（由顶点法线插值）</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -549,6 +557,14 @@
         <source>near clip shape</source>
         <translation>近裁剪面形状</translation>
     </message>
+    <message>
+        <source>crease angle</source>
+        <translation>折痕角</translation>
+    </message>
+    <message>
+        <source>normals</source>
+        <translation>法线</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>
@@ -655,6 +671,18 @@
     <message>
         <source>sah</source>
         <translation>表面积启发式（SAH）</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>flat</source>
+        <translation>平面着色</translation>
+    </message>
+    <message>
+        <source>smooth</source>
+        <translation>平滑着色</translation>
     </message>
 </context>
 <context>
@@ -2023,6 +2051,14 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>Where camera rays start, near clip away from the eye: on a plane in front of the eye (plane) or along each ray (sphere, as smallpt)</source>
         <translation>相机光线的起点，与视点相距“近裁剪距离”：plane 表示在视点正前方的平面上，sphere 表示沿每条光线量取（即以视点为球心的球面上，与 smallpt 相同）</translation>
+    </message>
+    <message>
+        <source>Shading normals of the mesh: file (the file&apos;s vertex normals, flat without them), flat (each triangle&apos;s own normal) or smooth (computed, with the crease angle)</source>
+        <translation>网格的着色法线：file（使用文件中的顶点法线，文件中没有时按平面着色）、flat（每个三角形用自身的法线）或 smooth（按折痕角计算顶点法线）</translation>
+    </message>
+    <message>
+        <source>Crease angle in degrees [0, 180]: edges between faces whose normals differ by more stay sharp when the normals are smooth</source>
+        <translation>折痕角，单位为度，范围 [0, 180]：平滑着色时，相邻面法线夹角大于此值的棱边保持锐利</translation>
     </message>
 </context>
 <context>

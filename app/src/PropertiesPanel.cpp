@@ -50,6 +50,7 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
     {"acceleration", {"bvh", "none"}},
     {"bvh_split", {"sah", "median"}},
     {"near_clip_shape", {"plane", "sphere"}},
+    {"normals", {"file", "flat", "smooth"}},
 };
 const std::vector<const char*> kMaterialTypes = {
     "diffuse", "mirror",      "dielectric",      "glossy",
@@ -99,6 +100,14 @@ QString tipFor(const std::string& key) {
     return PropertiesPanel::tr(
         "Where camera rays start, near clip away from the eye: on a plane in front of the eye "
         "(plane) or along each ray (sphere, as smallpt)");
+  if (key == "normals")
+    return PropertiesPanel::tr(
+        "Shading normals of the mesh: file (the file's vertex normals, flat without them), "
+        "flat (each triangle's own normal) or smooth (computed, with the crease angle)");
+  if (key == "crease_angle")
+    return PropertiesPanel::tr(
+        "Crease angle in degrees [0, 180]: edges between faces whose normals differ by more "
+        "stay sharp when the normals are smooth");
   if (key == "ray_offset")
     return PropertiesPanel::tr(
         "Ray offset: secondary and shadow rays start past the hit point's error bound; "
@@ -367,6 +376,8 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   if (pointer == "/render" && !values.contains("bvh_split")) values["bvh_split"] = "sah";
   if (pointer == "/camera" && values.contains("near_clip") && !values.contains("near_clip_shape"))
     values["near_clip_shape"] = "plane";
+  // A mesh's normals, "file" when the file leaves them out.
+  if (values.value("type", "") == "mesh" && !values.contains("normals")) values["normals"] = "file";
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
     const std::string place = pointer + "/" + key;

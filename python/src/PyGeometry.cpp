@@ -70,6 +70,9 @@ void bindGeometry(py::module_& m) {
       .def_readonly("uv", &SurfaceInteraction::uv)
       .def_readonly("primitive", &SurfaceInteraction::primitive)
       .def_property_readonly("facing_normal", &SurfaceInteraction::facingNormal)
+      .def_property_readonly("shading_normal", &SurfaceInteraction::shadingNormal,
+                             "Unit shading normal, outward: a smooth mesh's interpolated vertex "
+                             "normals, else the geometric normal.")
       .def("__repr__", &SurfaceInteraction::toString);
 
   py::class_<Crossing>(m, "Crossing", "One crossing of a surface along a ray.")
@@ -122,7 +125,13 @@ Made with Sphere, Box, Plane, Quad, Triangle, TriangleMesh or Scene.shape(name).
                        const std::vector<std::array<int, 3>>& triangles) {
              return std::make_shared<TriangleMesh>(vertices, triangles);
            }),
-           py::arg("vertices"), py::arg("triangles"));
+           py::arg("vertices"), py::arg("triangles"))
+      .def(
+          "compute_crease_normals",
+          [](TriangleMesh& mesh, double degrees) { mesh.computeCreaseNormals(radians(degrees)); },
+          py::arg("crease_angle"),
+          "Smooth shading: vertex normals averaged over the faces within crease_angle degrees.")
+      .def_property_readonly("has_normals", &TriangleMesh::hasNormals);
 
   py::class_<ExactResult>(m, "ExactResult", "The exact (CGAL) answer for one ray and one shape.")
       .def_property_readonly(

@@ -25,7 +25,9 @@ foreach(row
     "HugeSpp|huge-spp.json|/render/spp: must be at most 1048576, got 1000000000"
     "HugeDepth|huge-depth.json|/render/max_depth: must be at most 64, got 1000000"
     "HugeTessellation|huge-tessellation.json|/objects/0/shape/m: m and n \\(sphere slices\\) must be at most 1024"
-    "DeepNesting|deep-nesting.json|:1:[0-9]+: JSON nested deeper than 64 levels")
+    "DeepNesting|deep-nesting.json|:1:[0-9]+: JSON nested deeper than 64 levels"
+    "WideCreaseAngle|wide-crease-angle.json|/objects/0/shape/crease_angle: crease angle 270 must be in \\[0, 180\\] degrees"
+    "MeshNormalIndex|mesh-normal-index.json|/objects/0/shape/file: cannot load mesh \"normal-index\\.obj\": [^\n]*normal-index\\.obj:8: cannot read the normals of the OBJ file: face normal index 4 refers to no normal \\(3 defined so far\\)")
   string(REPLACE "|" ";" row "${row}")
   list(GET row 0 name)
   list(GET row 1 file)

@@ -466,6 +466,51 @@ TEST_F(MainWindowTest, 14b_SwitchToARoughConductorAndSetItsRoughness) {
   EXPECT_TRUE(m_window->document().scene().render.rayOffset);
 }
 
+// A mesh's shading normals are offered in the properties panel: "file" shown although the
+// file leaves it out, switched to "smooth" the crease angle appears (60), set to 30 it
+// reaches the scene, 200 is refused with the loader's message, and undo restores the file.
+TEST_F(MainWindowTest, 14c_SmoothAMeshAndSetItsCreaseAngle) {
+  m_window->document().open(QString::fromLatin1(RAYLAB_SOURCE_DIR) +
+                            "/lessons/scenes/smooth-shading.json");
+  settle();
+  const Scene& scene = m_window->document().scene();
+  const int ball = scene.findObject("smooth (file normals)");
+  ASSERT_GE(ball, 0);
+  const std::string original = SceneIO::serialize(scene);
+  m_window->selectObject(ball);
+  PropertiesPanel& properties = *m_window->propertiesPanel();
+  const std::string base = "/objects/" + std::to_string(ball) + "/shape";
+  auto* normals = qobject_cast<QComboBox*>(properties.field(base + "/normals"));
+  ASSERT_NE(normals, nullptr);
+  EXPECT_EQ(normals->currentData().toString(), QStringLiteral("file"));
+  EXPECT_GE(normals->findData(QStringLiteral("flat")), 0);
+  EXPECT_FALSE(normals->toolTip().isEmpty());
+  EXPECT_EQ(properties.field(base + "/crease_angle"), nullptr);
+  normals->setCurrentIndex(normals->findData(QStringLiteral("smooth")));
+  emit normals->activated(normals->currentIndex());
+  settle();
+  EXPECT_EQ(m_window->document().scene().objects[std::size_t(ball)].meshNormals,
+            MeshNormals::Smooth);
+
+  auto* crease = qobject_cast<QDoubleSpinBox*>(properties.field(base + "/crease_angle"));
+  ASSERT_NE(crease, nullptr);
+  EXPECT_EQ(crease->value(), 60.0);
+  crease->setValue(30.0);
+  settle();
+  EXPECT_EQ(m_window->document().scene().objects[std::size_t(ball)].creaseAngle, 30.0);
+  crease = qobject_cast<QDoubleSpinBox*>(properties.field(base + "/crease_angle"));
+  ASSERT_NE(crease, nullptr);
+  crease->setValue(200.0);
+  settle();
+  EXPECT_TRUE(m_window->lastError().contains(
+      QStringLiteral("/shape/crease_angle: crease angle 200.0 must be in [0, 180] degrees")))
+      << m_window->lastError().toStdString();
+  m_window->document().undoStack().undo();  // the crease angle
+  m_window->document().undoStack().undo();  // smooth
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+  EXPECT_FALSE(m_window->document().undoStack().canUndo());
+}
+
 // Simulate 2 x 2: four camera rays spread over the image, each tree equal to
 // tracePixel of its pixel (what `raylab trace --pixel` draws), shown together.
 TEST_F(MainWindowTest, 15_Simulate2x2DrawsFourTrees) {

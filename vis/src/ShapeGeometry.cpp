@@ -132,6 +132,31 @@ vtkSmartPointer<vtkPolyData> triangleGeometry(const Triangle& triangle, const Dr
 }
 
 vtkSmartPointer<vtkPolyData> meshGeometry(const TriangleMesh& mesh) {
+  // A mesh with corner normals is drawn with them, as the ray tracer shades it: a point
+  // per corner, each with its normal turned to its triangle's side.
+  if (mesh.hasNormals()) {
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> triangles;
+    vtkNew<vtkDoubleArray> normals;
+    normals->SetNumberOfComponents(3);
+    normals->SetName("Normals");
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+      const TriangleMesh::Index3& tri = mesh.triangles()[t];
+      vtkIdType ids[3];
+      for (int k = 0; k < 3; ++k) {
+        const Point3& p = mesh.vertices()[std::size_t(tri[k])];
+        ids[k] = points->InsertNextPoint(p.x, p.y, p.z);
+        const Normal3 n = mesh.shadingNormal(int(t), k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0);
+        normals->InsertNextTuple3(n.x, n.y, n.z);
+      }
+      triangles->InsertNextCell(3, ids);
+    }
+    auto data = vtkSmartPointer<vtkPolyData>::New();
+    data->SetPoints(points);
+    data->SetPolys(triangles);
+    data->GetPointData()->SetNormals(normals);
+    return data;
+  }
   vtkNew<vtkPoints> points;
   for (const Point3& p : mesh.vertices()) points->InsertNextPoint(p.x, p.y, p.z);
   vtkNew<vtkCellArray> triangles;

@@ -135,6 +135,9 @@ std::string RayInspection::rayText() const {
     line(out, segment.kind == RayKind::Shadow ? "blocked at" : "hit point", vec(segment.endPoint));
     line(out, "distance", number(distance));
     line(out, "normal", vec(segment.normal));
+    // A smooth surface shades with another normal, interpolated from its vertices'.
+    if (!isZero(segment.shadingNormal) && segment.shadingNormal != segment.normal)
+      line(out, "shading", vec(segment.shadingNormal) + " interpolated");
     line(out, "object", "'" + objectName + "'");
     if (material) {
       line(out, "material",

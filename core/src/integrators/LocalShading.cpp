@@ -21,7 +21,7 @@ Vec3 localFactor(const HitContext& context, const Vec3& wi, Lobes lobes) {
   const Vec3 wo = -context.ray.ray.direction;
   if (context.material.isRough())
     return lobes == Lobes::All ? bsdf::eval(context.material, context.hit.si, wo, wi) : Vec3(0.0);
-  return classicShading(context.material, context.hit.si.facingNormal(), wo, wi, lobes);
+  return classicShading(context.material, context.hit.si.facingShadingNormal(), wo, wi, lobes);
 }
 
 /// The radiance a light of intensity `I` times `scale` (1, or a flat light's projected

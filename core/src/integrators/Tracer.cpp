@@ -115,6 +115,12 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
       return !valid;
     };
     children.erase(std::remove_if(children.begin(), children.end(), invalid), children.end());
+    // The no-leak rule of smooth surfaces: a child whose direction lies on one side of the
+    // shading surface and the other of the geometric one (a reflection below the triangle,
+    // a light behind it) is absorbed: the shading normal never lets light through.
+    const SurfaceInteraction& si = hit->si;
+    const auto leaks = [&si](const QueuedRay& c) { return !si.sidesAgree(c.ray.direction); };
+    children.erase(std::remove_if(children.begin(), children.end(), leaks), children.end());
     end = !children.empty()                    ? EndReason::Spawned
           : decision.end == EndReason::Spawned ? EndReason::Absorbed
                                                : decision.end;

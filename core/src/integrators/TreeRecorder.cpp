@@ -115,6 +115,7 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const std::optional<SceneHit
     seg.endPoint = hit->si.p;
     seg.object = hit->object;
     seg.normal = hit->si.n;
+    seg.shadingNormal = hit->si.ns;
   } else {
     setFarEnd(seg, ray, end);
   }

@@ -1,5 +1,6 @@
 #include "raylab/core/MeshIO.h"
 
+#include "io/MeshNormals.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Limits.h"
 
@@ -509,6 +510,31 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                  std::to_string(polygons[f].size()) + " vertices");
   }
 
+  // Step 3b: the file's vertex normals, if it has any, beside the soup as it was read.
+  std::optional<meshnormals::FileNormals> fileNormals;
+  std::vector<Point3> soupPoints;
+  std::vector<Polygon> soupPolygons;
+  try {
+    if (ext == ".obj") fileNormals = meshnormals::readObj(path);
+    if (ext == ".ply") fileNormals = meshnormals::readPly(path);
+  } catch (const meshnormals::Problem& problem) {
+    throw fail("cannot read the normals of the " + upperFormat + " file: " + problem.what(),
+               problem.line());
+  }
+  if (fileNormals) {
+    if (fileNormals->perVertex ? fileNormals->normals.size() != points.size()
+                               : fileNormals->corners.size() != polygons.size())
+      throw fail("the file's normals do not match its " +
+                 std::string(fileNormals->perVertex ? "vertices" : "faces") + " (" +
+                 std::to_string(fileNormals->perVertex ? fileNormals->normals.size()
+                                                       : fileNormals->corners.size()) +
+                 " for " +
+                 std::to_string(fileNormals->perVertex ? points.size() : polygons.size()) + ")");
+    soupPoints.reserve(points.size());
+    for (const CgalPoint& p : points) soupPoints.emplace_back(p.x(), p.y(), p.z());
+    soupPolygons = polygons;
+  }
+
   // Step 4: repair (merge duplicate points, drop degenerate / duplicate faces), orient.
   PMP::repair_polygon_soup(points, polygons);
   if (polygons.empty()) throw fail("no faces left after removing degenerate faces");
@@ -559,7 +585,16 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                " triangles once its faces are triangulated; RayLab reads meshes of at most " +
                std::to_string(limits::kMaxMeshTriangles));
   orientOutward(vertices, triangles);
+  // Step 6: the file's normals at the corners of the final triangles.
+  std::vector<Normal3> normals;
+  std::vector<TriangleMesh::Index3> normalIndices;
+  if (fileNormals)
+    meshnormals::attach(*fileNormals, soupPoints, soupPolygons, vertices, triangles, normals,
+                        normalIndices);
   try {
+    if (fileNormals)
+      return TriangleMesh(std::move(vertices), std::move(triangles), std::move(normals),
+                          std::move(normalIndices));
     return TriangleMesh(std::move(vertices), std::move(triangles));
   } catch (const Exception& e) {
     throw fail(e.what());

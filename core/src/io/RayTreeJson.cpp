@@ -120,6 +120,7 @@ std::string RayTreeJson::serialize(const RayTree& tree, const Scene& scene,
     j["object"] = s.object;
     j["object_name"] = named ? scene.objects[std::size_t(s.object)].name : std::string();
     j["normal"] = vec(s.normal);
+    if (!isZero(s.shadingNormal)) j["shading_normal"] = vec(s.shadingNormal);
     j["weight"] = vec(s.weight);
     j["pdf"] = s.pdf;
     j["throughput"] = vec(s.throughput);
@@ -197,6 +198,7 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
     s.lightPoint = vecField(j, "light_point", i, origin);
     s.object = field<int>(j, "object", i, origin);
     s.normal = vecField(j, "normal", i, origin);
+    if (j.contains("shading_normal")) s.shadingNormal = vecField(j, "shading_normal", i, origin);
     s.weight = vecField(j, "weight", i, origin);
     s.pdf = field<double>(j, "pdf", i, origin);
     s.throughput = vecField(j, "throughput", i, origin);

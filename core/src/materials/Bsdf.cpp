@@ -3,6 +3,9 @@
 // Conventions, as in the header: wo points back along the incoming ray, wi away from the
 // surface, both unit and in world space; si.n is the outward geometric normal and
 // si.frontFace tells whether wo is on its side. "eval" returns f(wo, wi) |cos theta_i|.
+// Every frame and cosine here is the shading normal's (si.facingShadingNormal(): the
+// interpolated normal of a smooth mesh, else n); which side of the geometric surface a
+// direction lies on is the engine's business (SurfaceInteraction::sidesAgree).
 //
 // Refraction and radiance: crossing into a denser medium compresses solid angle, so
 // radiance scales by (eta_t / eta_i)^2 (Veach 1997, 5.2). RayLab does NOT apply that
@@ -139,7 +142,7 @@ double classicPdf(const Material& m, const Normal3& nf, const Vec3& wo, const Ve
 
 std::optional<BsdfSample> classicSample(const Material& m, const SurfaceInteraction& si,
                                         const Vec3& wo, Sampler& sampler) {
-  const Normal3 nf = si.facingNormal();
+  const Normal3 nf = si.facingShadingNormal();
   const double uPick = sampler.next1D();
   const Vec2 u = sampler.next2D();
   const ClassicParts c = classicParts(m);
@@ -199,7 +202,7 @@ double fresnelDielectric(double cosThetaI, double eta) {
 }
 
 Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi) {
-  const Normal3 nf = si.facingNormal();
+  const Normal3 nf = si.facingShadingNormal();
   switch (m.type) {
     case MaterialType::Diffuse: {
       // Lambert: f = colour / pi, on the side wo is on.
@@ -222,7 +225,7 @@ Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const
 }
 
 double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi) {
-  const Normal3 nf = si.facingNormal();
+  const Normal3 nf = si.facingShadingNormal();
   switch (m.type) {
     case MaterialType::Diffuse:
       return cosineHemispherePdf(glm::dot(wi, nf));
@@ -245,7 +248,7 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
   SpecularLobes lobes;
   if (!m.isSpecular() && !m.isClassic()) return lobes;
   // The normal on wo's side; entering the object when wo is outside (front face).
-  const Normal3 nf = si.facingNormal();
+  const Normal3 nf = si.facingShadingNormal();
   const double eta = si.frontFace ? 1.0 / m.relativeIor() : m.relativeIor();
   const Vec3 wr = reflect(wo, nf);
   const std::optional<Vec3> wt = refract(wo, nf, eta);
@@ -283,7 +286,7 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
 
 std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si, const Vec3& wo,
                                  Sampler& sampler) {
-  const Normal3 nf = si.facingNormal();
+  const Normal3 nf = si.facingShadingNormal();
   switch (m.type) {
     case MaterialType::Diffuse: {
       // Cosine-weighted hemisphere: f cos / pdf = (colour / pi) cos / (cos / pi) = colour.

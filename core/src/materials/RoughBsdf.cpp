@@ -1,9 +1,10 @@
 // The microfacet materials (RoughBsdf.h): rough conductor and rough dielectric.
 //
-// Both work in the local frame of a normal: the conductor in that of the normal facing wo
-// (two-sided, as RayLab's other opaque materials), the dielectric in that of the outward
-// normal si.n, where the sign of cos theta_o says whether wo is outside (eta_t / eta_i =
-// ior) or inside (1 / ior).
+// Both work in the local frame of the shading normal (si.shadingNormal(): n, or a smooth
+// mesh's interpolated normal): the conductor in that of the normal facing wo (two-sided,
+// as RayLab's other opaque materials), the dielectric in that of the outward normal, where
+// the sign of cos theta_o says whether wo is outside (eta_t / eta_i = ior) or inside
+// (1 / ior).
 #include "materials/RoughBsdf.h"
 
 #include "raylab/core/Fresnel.h"
@@ -116,26 +117,26 @@ double dielectricPdf(const Material& m, const Vec3& wo, const Vec3& wi) {
 
 Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi) {
   if (m.type == MaterialType::RoughConductor) {
-    const Frame f(si.facingNormal());
+    const Frame f(si.facingShadingNormal());
     return conductorEval(m, f.toLocal(wo), f.toLocal(wi));
   }
-  const Frame f(si.n);
+  const Frame f(si.shadingNormal());
   return dielectricEval(m, f.toLocal(wo), f.toLocal(wi));
 }
 
 double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const Vec3& wi) {
   if (m.type == MaterialType::RoughConductor) {
-    const Frame f(si.facingNormal());
+    const Frame f(si.facingShadingNormal());
     return conductorPdf(m, f.toLocal(wo), f.toLocal(wi));
   }
-  const Frame f(si.n);
+  const Frame f(si.shadingNormal());
   return dielectricPdf(m, f.toLocal(wo), f.toLocal(wi));
 }
 
 std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si, const Vec3& wo,
                                  Sampler& sampler) {
   const bool conductor = m.type == MaterialType::RoughConductor;
-  const Frame f(conductor ? si.facingNormal() : si.n);
+  const Frame f(conductor ? si.facingShadingNormal() : si.shadingNormal());
   const Vec3 woL = f.toLocal(wo);
   const double uPick = sampler.next1D();
   const Vec2 u = sampler.next2D();

@@ -8,7 +8,9 @@ SceneObject::SceneObject(const SceneObject& o)
       material(o.material),
       velocity(o.velocity),
       source(o.source),
-      worldFromSource(o.worldFromSource) {}
+      worldFromSource(o.worldFromSource),
+      meshNormals(o.meshNormals),
+      creaseAngle(o.creaseAngle) {}
 
 SceneObject& SceneObject::operator=(const SceneObject& o) {
   if (this != &o) *this = SceneObject(o);
@@ -23,6 +25,18 @@ void SceneObject::apply(const Mat4& m) {
 std::string SceneObject::toString() const {
   return "SceneObject[" + name + ", " + (shape ? shape->toString() : "no shape") +
          ", material=" + std::to_string(material) + "]";
+}
+
+const char* toString(MeshNormals normals) {
+  switch (normals) {
+    case MeshNormals::File:
+      return "file";
+    case MeshNormals::Flat:
+      return "flat";
+    case MeshNormals::Smooth:
+      return "smooth";
+  }
+  return "unknown";
 }
 
 const char* toString(MaterialType type) {

@@ -53,6 +53,6 @@ inline constexpr std::array kBoxKeys = {"type", "centre", "size", "axes", "matri
 inline constexpr std::array kPlaneKeys = {"type", "point", "normal"};
 inline constexpr std::array kQuadKeys = {"type", "corner", "u", "v"};
 inline constexpr std::array kTriangleKeys = {"type", "vertices"};
-inline constexpr std::array kMeshKeys = {"type", "file"};
+inline constexpr std::array kMeshKeys = {"type", "file", "normals", "crease_angle"};
 
 }  // namespace raylab

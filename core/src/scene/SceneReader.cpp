@@ -96,12 +96,33 @@ class Reader : private JsonChecks<Reader> {
     return m;
   }
 
-  /// A shape; for a mesh, `source` receives the mesh file's path (see SceneObject::source).
-  std::unique_ptr<Shape> shape(const json& j, const std::string& path, std::string& source) const {
+  /// A shape; for a mesh, `object` receives the mesh file's path (SceneObject::source) and
+  /// its normals' settings.
+  std::unique_ptr<Shape> shape(const json& j, const std::string& path, SceneObject& object) const {
     const std::string type = string(member(j, path, "type"), path + "/type");
+    std::string& source = object.source;
     try {
       if (type == "mesh") {
         onlyKeys(j, path, kMeshKeys);
+        // Where the shading normals come from, and the crease angle of computed ones.
+        if (j.contains("normals")) {
+          const std::string normals = string(j["normals"], path + "/normals");
+          if (normals == "file")
+            object.meshNormals = MeshNormals::File;
+          else if (normals == "flat")
+            object.meshNormals = MeshNormals::Flat;
+          else if (normals == "smooth")
+            object.meshNormals = MeshNormals::Smooth;
+          else
+            fail(path + "/normals",
+                 "unknown normals \"" + normals + "\" (expected file, flat or smooth)");
+        }
+        if (j.contains("crease_angle")) {
+          object.creaseAngle = number(j["crease_angle"], path + "/crease_angle");
+          if (!(object.creaseAngle >= 0.0 && object.creaseAngle <= 180.0))
+            fail(path + "/crease_angle",
+                 "crease angle " + excerpt(j["crease_angle"]) + " must be in [0, 180] degrees");
+        }
         const std::string file = string(member(j, path, "file"), path + "/file");
         if (file.empty()) fail(path + "/file", "mesh file name is empty");
         // Mesh paths are relative to the scene file's folder.
@@ -113,7 +134,11 @@ class Reader : private JsonChecks<Reader> {
         if (!std::filesystem::is_regular_file(source, ec))
           fail(path + "/file", "mesh file \"" + file + "\" not found (looked for " + source + ")");
         try {
-          return std::make_unique<TriangleMesh>(MeshIO::load(source));
+          auto mesh = std::make_unique<TriangleMesh>(MeshIO::load(source));
+          if (object.meshNormals == MeshNormals::Flat) mesh->clearNormals();
+          if (object.meshNormals == MeshNormals::Smooth)
+            mesh->computeCreaseNormals(radians(object.creaseAngle));
+          return mesh;
         } catch (const MeshIO::ReadError& e) {
           fail(path + "/file", "cannot load mesh \"" + file + "\": " + e.what());
         }
@@ -432,7 +457,7 @@ class Reader : private JsonChecks<Reader> {
     if (named == m_materialIndex.end())
       fail(p + "/material", "unknown material \"" + material + "\"");
     o.material = named->second;
-    o.shape = shape(member(j, p, "shape"), p + "/shape", o.source);
+    o.shape = shape(member(j, p, "shape"), p + "/shape", o);
     if (j.contains("transform")) {
       const Mat4 m = transform(j["transform"], p + "/transform");
       try {

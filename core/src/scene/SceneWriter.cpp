@@ -197,10 +197,12 @@ ojson objectToJson(const SceneObject& o, const Scene& scene, const std::string& 
     if (o.source.empty())
       throw SceneIO::SaveError("mesh object \"" + o.name +
                                "\" has no source file (meshes are saved as a path to their file)");
-    shape = ObjectWriter(kMeshKeys)
-                .add("type", "mesh")
-                .add("file", meshPathFrom(o.source, sceneDir))
-                .take();
+    ObjectWriter mesh(kMeshKeys);
+    mesh.add("type", "mesh").add("file", meshPathFrom(o.source, sceneDir));
+    // The normals' source when it is not the default; the crease angle of computed ones.
+    if (o.meshNormals != MeshNormals::File) mesh.add("normals", toString(o.meshNormals));
+    if (o.meshNormals == MeshNormals::Smooth) mesh.add("crease_angle", o.creaseAngle);
+    shape = mesh.take();
     if (o.worldFromSource != Mat4(1.0)) transform = matrixTransform(o.worldFromSource);
   } else {
     shape = shapeToJson(*o.shape, transform);

@@ -28,8 +28,9 @@ std::optional<SurfaceInteraction> Shape::closestHit(const Ray& ray) const {
 
 std::string SurfaceInteraction::toString() const {
   return "SurfaceInteraction[t=" + std::to_string(t) + ", p=" + raylab::toString(p) +
-         ", n=" + raylab::toString(n) + (frontFace ? ", front" : ", back") +
-         ", primitive=" + std::to_string(primitive) + "]";
+         ", n=" + raylab::toString(n) +
+         (isZero(ns) ? std::string() : ", ns=" + raylab::toString(ns)) +
+         (frontFace ? ", front" : ", back") + ", primitive=" + std::to_string(primitive) + "]";
 }
 
 }  // namespace raylab

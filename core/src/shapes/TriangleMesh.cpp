@@ -47,9 +47,133 @@ TriangleMesh::TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> tri
   rebuild();
 }
 
+TriangleMesh::TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> triangles,
+                           std::vector<Normal3> normals, std::vector<Index3> normalIndices)
+    : TriangleMesh(std::move(vertices), std::move(triangles)) {
+  setNormals(std::move(normals), std::move(normalIndices));
+}
+
+void TriangleMesh::setNormals(std::vector<Normal3> normals, std::vector<Index3> normalIndices) {
+  // Validate: one index triple per triangle, indices in range, normals finite and not zero.
+  if (normalIndices.size() != m_triangles.size())
+    throw InvalidGeometry("triangle mesh: " + std::to_string(normalIndices.size()) +
+                          " normal index triples for " + std::to_string(m_triangles.size()) +
+                          " triangles (one per triangle is needed)");
+  for (std::size_t i = 0; i < normals.size(); ++i) {
+    const Normal3& n = normals[i];
+    const double length = glm::length(n);
+    if (!isFinite(n) || !(length > 0.0) || !std::isfinite(length))
+      throw InvalidGeometry("triangle mesh: normal " + std::to_string(i) + " " +
+                            raylab::toString(n) +
+                            (isFinite(n) ? " has zero length" : " is not finite"));
+    normals[i] = n / length;
+  }
+  const long long count = static_cast<long long>(normals.size());
+  for (std::size_t i = 0; i < normalIndices.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const int index = normalIndices[i][k];
+      if (index < 0 || index >= count)
+        throw InvalidGeometry("triangle mesh: triangle " + std::to_string(i) +
+                              " has normal index " + std::to_string(index) + " out of range [0, " +
+                              std::to_string(count) + ") (" + std::to_string(count) + " normals)");
+    }
+  m_normals = std::move(normals);
+  m_normalIndices = std::move(normalIndices);
+}
+
+void TriangleMesh::clearNormals() {
+  m_normals.clear();
+  m_normalIndices.clear();
+}
+
+void TriangleMesh::computeCreaseNormals(double creaseAngle) {
+  if (!(creaseAngle >= 0.0 && creaseAngle <= kPi))
+    throw InvalidGeometry("triangle mesh: crease angle " + std::to_string(creaseAngle) +
+                          " rad is outside [0, pi]");
+  const std::size_t triangleCount = m_triangles.size();
+  // Each triangle's unit normal, and its angle at each corner (the averaging weight).
+  std::vector<Normal3> faceNormal(triangleCount, Normal3(0.0));
+  std::vector<std::array<double, 3>> cornerAngle(triangleCount, {0.0, 0.0, 0.0});
+  for (std::size_t t = 0; t < triangleCount; ++t) {
+    const Index3& tri = m_triangles[t];
+    const Vec3 cross = glm::cross(m_vertices[tri[1]] - m_vertices[tri[0]],
+                                  m_vertices[tri[2]] - m_vertices[tri[0]]);
+    const double length = glm::length(cross);
+    if (length > 0.0 && std::isfinite(length)) faceNormal[t] = cross / length;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = m_vertices[tri[(k + 1) % 3]] - m_vertices[tri[k]];
+      const Vec3 b = m_vertices[tri[(k + 2) % 3]] - m_vertices[tri[k]];
+      const double la = glm::length(a), lb = glm::length(b);
+      if (la > 0.0 && lb > 0.0)
+        cornerAngle[t][k] = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
+    }
+  }
+  // The corners around each vertex (compressed rows: vertex -> (triangle, corner)).
+  std::vector<std::size_t> start(m_vertices.size() + 1, 0);
+  for (const Index3& tri : m_triangles)
+    for (int k = 0; k < 3; ++k) ++start[std::size_t(tri[k]) + 1];
+  for (std::size_t v = 0; v < m_vertices.size(); ++v) start[v + 1] += start[v];
+  std::vector<std::pair<int, int>> corners(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < triangleCount; ++t)
+    for (int k = 0; k < 3; ++k) corners[fill[std::size_t(m_triangles[t][k])]++] = {int(t), k};
+
+  // Per corner: the angle-weighted sum of the neighbours within the crease angle (a small
+  // tolerance keeps coplanar neighbours together at 0); equal normals at a vertex are
+  // stored once.
+  const double cosCrease = std::cos(creaseAngle) - 1e-12;
+  std::vector<Normal3> normals;
+  std::vector<Index3> indices(triangleCount, Index3{0, 0, 0});
+  for (std::size_t v = 0; v < m_vertices.size(); ++v) {
+    const std::size_t firstNormal = normals.size();
+    for (std::size_t c = start[v]; c < start[v + 1]; ++c) {
+      const auto [t, k] = corners[c];
+      const Normal3& own = faceNormal[std::size_t(t)];
+      Vec3 sum(0.0);
+      for (std::size_t o = start[v]; o < start[v + 1]; ++o) {
+        const auto [t2, k2] = corners[o];
+        const Normal3& other = faceNormal[std::size_t(t2)];
+        if (glm::dot(own, other) >= cosCrease)
+          sum += cornerAngle[std::size_t(t2)][std::size_t(k2)] * other;
+      }
+      const double length = glm::length(sum);
+      // A degenerate corner (never hit: the watertight test skips zero-area triangles).
+      Normal3 n = length > 0.0 ? sum / length : (isZero(own) ? Normal3(0, 0, 1) : own);
+      int index = -1;
+      for (std::size_t i = firstNormal; i < normals.size() && index < 0; ++i)
+        if (normals[i] == n) index = int(i);
+      if (index < 0) {
+        index = int(normals.size());
+        normals.push_back(n);
+      }
+      indices[std::size_t(t)][std::size_t(k)] = index;
+    }
+  }
+  m_normals = std::move(normals);
+  m_normalIndices = std::move(indices);
+}
+
+Normal3 TriangleMesh::shadingNormal(int triangle, double b1, double b2) const {
+  const Index3& tri = m_triangles[static_cast<std::size_t>(triangle)];
+  const Point3& p0 = m_vertices[tri[0]];
+  const Normal3 ng = glm::normalize(glm::cross(m_vertices[tri[1]] - p0, m_vertices[tri[2]] - p0));
+  if (m_normalIndices.empty()) return ng;
+  // Interpolate the corner normals with the barycentrics, normalise, and turn the result
+  // to the geometric normal's side.
+  const Index3& ni = m_normalIndices[static_cast<std::size_t>(triangle)];
+  const Vec3 sum = (1.0 - b1 - b2) * m_normals[std::size_t(ni[0])] +
+                   b1 * m_normals[std::size_t(ni[1])] + b2 * m_normals[std::size_t(ni[2])];
+  const double length = glm::length(sum);
+  if (!(length > 0.0) || !std::isfinite(length)) return ng;
+  const Normal3 ns = sum / length;
+  return glm::dot(ns, ng) < 0.0 ? -ns : ns;
+}
+
 TriangleMesh::TriangleMesh(const TriangleMesh& other)
     : m_vertices(other.m_vertices),
       m_triangles(other.m_triangles),
+      m_normals(other.m_normals),
+      m_normalIndices(other.m_normalIndices),
       m_bvh(std::make_unique<Bvh>(*other.m_bvh)),
       m_areaCdf(other.m_areaCdf),
       m_area(other.m_area) {}
@@ -58,6 +182,8 @@ TriangleMesh& TriangleMesh::operator=(const TriangleMesh& other) {
   if (this != &other) {
     m_vertices = other.m_vertices;
     m_triangles = other.m_triangles;
+    m_normals = other.m_normals;
+    m_normalIndices = other.m_normalIndices;
     m_bvh = std::make_unique<Bvh>(*other.m_bvh);
     m_areaCdf = other.m_areaCdf;
     m_area = other.m_area;
@@ -127,6 +253,13 @@ SurfaceInteraction TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const
   si.pError = roundingGamma(7) * (glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2));
   si.n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
+  if (!m_normalIndices.empty()) {
+    // Smooth shading: the interpolated normal, unless the ray arrives between the two
+    // surfaces (on the back of the shading surface, in front of the geometric one, or the
+    // other way round): such a hit shades flat.
+    const Normal3 ns = shadingNormal(hit.primitive, b1, b2);
+    if ((glm::dot(ray.direction, ns) < 0.0) == si.frontFace) si.ns = ns;
+  }
   si.uv = hit.uv;
   si.primitive = hit.primitive;
   return si;
@@ -180,8 +313,12 @@ void TriangleMesh::apply(const Mat4& m) {
   // clockwise seen from outside, so swap two indices to keep normals outward.
   const Transform t(m);
   for (Point3& p : m_vertices) p = t.transformPoint(p);
-  if (det < 0.0)
+  // Normals go through the inverse transpose (they stay outward, mirrored or not).
+  for (Normal3& n : m_normals) n = glm::normalize(t.transformNormal(n));
+  if (det < 0.0) {
     for (Index3& tri : m_triangles) std::swap(tri[1], tri[2]);
+    for (Index3& tri : m_normalIndices) std::swap(tri[1], tri[2]);
+  }
   rebuild();
 }
 
@@ -192,6 +329,7 @@ std::unique_ptr<Shape> TriangleMesh::clone() const { return std::make_unique<Tri
 std::string TriangleMesh::toString() const {
   std::ostringstream out;
   out << "TriangleMesh[vertices=" << m_vertices.size() << ", triangles=" << m_triangles.size()
+      << (hasNormals() ? ", normals=" + std::to_string(m_normals.size()) : std::string())
       << ", bounds=" << bounds().toString() << "]";
   return out.str();
 }

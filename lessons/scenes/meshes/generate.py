@@ -8,6 +8,9 @@ script documents how they were made and regenerates them byte for byte.
                        (lesson 2: a closed, watertight mesh whose triangles share edges)
   icosphere-1280.obj   subdivided three times: 642 vertices, 1280 triangles
                        (lesson 8: enough triangles for a bounding volume hierarchy to matter)
+  icosphere-80-normals.obj  icosphere-80.obj with a vertex normal per vertex (vn, the exact
+                       sphere normal) and faces v//vn: smooth shading from the file
+                       (smooth-shading.json)
 
 Both are closed and counter-clockwise seen from outside (normals point outward); every
 edge is shared by exactly two triangles through the same two vertex indices.
@@ -52,12 +55,25 @@ def obj(vertices, faces, title):
     return "\n".join(lines) + "\n"
 
 
+def obj_with_normals(vertices, faces, title):
+    # On a unit sphere the normal at a vertex is the vertex itself.
+    lines = ["# RayLab lesson mesh: " + title]
+    lines += ["v %.9g %.9g %.9g" % p for p in vertices]
+    lines += ["vn %.9g %.9g %.9g" % p for p in vertices]
+    lines += ["f %d//%d %d//%d %d//%d" % tuple(i + 1 for i in face for _ in (0, 1))
+              for face in faces]
+    return "\n".join(lines) + "\n"
+
+
 def main():
     for subdivisions in (1, 3):
         v, f = icosphere(subdivisions)
         name = "icosphere-%d.obj" % len(f)
         with open(os.path.join(HERE, name), "w") as out:
             out.write(obj(v, f, "unit icosphere, %d triangles" % len(f)))
+    v, f = icosphere(1)
+    with open(os.path.join(HERE, "icosphere-80-normals.obj"), "w") as out:
+        out.write(obj_with_normals(v, f, "unit icosphere, 80 triangles, vertex normals"))
 
 
 if __name__ == "__main__":

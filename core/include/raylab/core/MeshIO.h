@@ -21,8 +21,13 @@ namespace raylab {
  *  4. polygons with more than three vertices are triangulated (CGAL's constrained
  *     triangulation of each face, so non-convex faces work too);
  *  5. a closed mesh (every edge in exactly two triangles) with a negative signed volume
- *     is flipped, so its normals point outward as TriangleMesh::inside expects.
- * Positions are taken as world space, unchanged.
+ *     is flipped, so its normals point outward as TriangleMesh::inside expects;
+ *  6. vertex normals, when the file gives them (OBJ: `vn` lines and faces `v//vn` or
+ *     `v/vt/vn`; PLY: the vertex properties `nx ny nz`), become the mesh's corner normals
+ *     (smooth shading, TriangleMesh::setNormals): each final triangle takes them from the
+ *     file's face it came from, matched by position, so repair, orientation and
+ *     triangulation keep them; an OBJ face without normal indices shades flat.
+ * Positions and normals are taken as world space, unchanged.
  *
  * Every failure throws ReadError; its message starts with the path (and ":line" where the
  * line is known) and says what is wrong:
@@ -31,6 +36,8 @@ namespace raylab {
  *  - the file has no faces (empty file, only vertices, or every face degenerate);
  *  - the file cannot be parsed (CGAL's own report is included; for OBJ and OFF the first
  *    offending line is located), or a face refers to a vertex that does not exist;
+ *  - a normal is malformed, zero or not finite, an OBJ face's normal index refers to no
+ *    `vn` (with the line), or a PLY file has only some of nx, ny, nz;
  *  - the surface is non-manifold beyond repair (unless Options::allowNonManifold): after
  *    repair, `orient_polygon_soup` could only orient the soup by duplicating vertices,
  *    i.e. some edge is shared by more than two faces, faces meet at a vertex without

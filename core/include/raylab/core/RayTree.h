@@ -62,23 +62,25 @@ struct RaySegment {
   int firstChild = -1;  ///< Id of the first child, -1 when none.
   int childCount = 0;   ///< Number of children (ids firstChild ...).
   RayKind kind = RayKind::Camera;
-  int depth = 0;         ///< Bounces from the camera ray (which has depth 0).
-  Point3 origin{0.0};    ///< World space.
-  Vec3 direction{0.0};   ///< Unit, world space.
-  double time = 0.0;     ///< Shutter time in [0, 1].
-  bool hit = false;      ///< True when the ray ended on a surface.
-  Point3 endPoint{0.0};  ///< Hit point, or the far end of a shadow ray; for escaped
-                         ///< rays origin + escapeLength * direction (for drawing).
-  int object = -1;       ///< Index of the object hit (Scene::objects), -1 if none.
-  Normal3 normal{0.0};   ///< Unit geometric normal at the hit, world space.
-  Vec3 weight{1.0};      ///< Factor of this ray's radiance in its parent's estimate
-                         ///< (f |cos| / pdf, a Fresnel or rate weight, 1 / N ...).
-  double pdf = 0.0;      ///< Solid-angle density the direction was sampled with
-                         ///< (0 for deterministic directions).
-  Vec3 throughput{1.0};  ///< Product of weights from the camera ray to this one.
-  Vec3 emitted{0.0};     ///< Radiance found at this ray's end itself: an emitter seen
-                         ///< (MIS-weighted) or a shadow ray's light contribution.
-  Vec3 radiance{0.0};    ///< After propagation: emitted + sum of weighted children.
+  int depth = 0;               ///< Bounces from the camera ray (which has depth 0).
+  Point3 origin{0.0};          ///< World space.
+  Vec3 direction{0.0};         ///< Unit, world space.
+  double time = 0.0;           ///< Shutter time in [0, 1].
+  bool hit = false;            ///< True when the ray ended on a surface.
+  Point3 endPoint{0.0};        ///< Hit point, or the far end of a shadow ray; for escaped
+                               ///< rays origin + escapeLength * direction (for drawing).
+  int object = -1;             ///< Index of the object hit (Scene::objects), -1 if none.
+  Normal3 normal{0.0};         ///< Unit geometric normal at the hit, world space.
+  Normal3 shadingNormal{0.0};  ///< Unit shading normal at the hit where the surface is
+                               ///< smooth (interpolated, SurfaceInteraction::ns), else zero.
+  Vec3 weight{1.0};            ///< Factor of this ray's radiance in its parent's estimate
+                               ///< (f |cos| / pdf, a Fresnel or rate weight, 1 / N ...).
+  double pdf = 0.0;            ///< Solid-angle density the direction was sampled with
+                               ///< (0 for deterministic directions).
+  Vec3 throughput{1.0};        ///< Product of weights from the camera ray to this one.
+  Vec3 emitted{0.0};           ///< Radiance found at this ray's end itself: an emitter seen
+                               ///< (MIS-weighted) or a shadow ray's light contribution.
+  Vec3 radiance{0.0};          ///< After propagation: emitted + sum of weighted children.
   EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
   Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (the far end);
                            ///< when Occluded, endPoint is where the blocker was hit.

@@ -11,6 +11,14 @@
 
 namespace raylab {
 
+/// Where a mesh object's shading normals come from (the scene file's mesh key "normals").
+enum class MeshNormals {
+  File,    ///< "file": the mesh file's vertex normals when it has them, else flat (default).
+  Flat,    ///< "flat": every triangle shades with its own normal, whatever the file has.
+  Smooth,  ///< "smooth": normals computed with SceneObject::creaseAngle (the file's ignored).
+};
+const char* toString(MeshNormals normals);
+
 /// A named shape with a material.
 struct SceneObject {
   std::string name;              ///< Unique name, shown in the object list.
@@ -26,6 +34,12 @@ struct SceneObject {
   /// file's vertices (SceneIO saves it as the object's "transform"). Keep it in step by
   /// moving objects with apply().
   Mat4 worldFromSource{1.0};
+  /// Mesh objects: where the shading normals come from (file, flat or smooth).
+  MeshNormals meshNormals = MeshNormals::File;
+  /// Mesh objects with MeshNormals::Smooth: edges between faces whose normals differ by
+  /// more than this stay sharp (TriangleMesh::computeCreaseNormals), degrees in [0, 180],
+  /// measured in the mesh file's space.
+  double creaseAngle = 60.0;
 
   /// How far the object has moved at shutter time `time` in [0, 1]: time * velocity, world
   /// units. The one rule of motion: a ray at time tau meets the object where it rests when

@@ -47,9 +47,12 @@ namespace raylab {
  * Shapes: sphere (centre, radius, m, n), box (centre, size, optional axes [x, y, z] or
  * a "matrix" mapping [-1, 1]^3), plane (point, normal), quad (corner, u, v), triangle
  * (vertices [p0, p1, p2]), mesh (file: OBJ, PLY, OFF or STL read with MeshIO, the path
- * relative to the scene file's folder). "transform" steps apply in the order listed
- * (first listed first); a step is translate, scale, rotate {axis, degrees} or matrix
- * (4 rows of 4). Materials: type diffuse (default), mirror (the original course program's
+ * relative to the scene file's folder; "normals": "file" (default: the file's vertex normals
+ * when it has them, else flat), "flat" or "smooth" (computed with "crease_angle", degrees in
+ * [0, 180], default 60, in the file's space; read, and checked, whatever "normals" says, but
+ * used and written only with "smooth"): see SceneObject::meshNormals). "transform" steps apply in
+ * the order listed (first listed first); a step is translate, scale, rotate {axis, degrees} or
+ * matrix (4 rows of 4). Materials: type diffuse (default), mirror (the original course program's
  * reflection_rate and refraction_rate, each in [0, 1], summing to at most 1, and ior > 0),
  * dielectric (Fresnel glass of index ior; "fresnel": "exact" or "schlick"), glossy (Phong
  * exponent > 0, specular fraction in [0, 1]), phong and blinn_phong (the classic model of

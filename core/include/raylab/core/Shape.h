@@ -25,6 +25,9 @@ struct SurfaceInteraction {
   double t = kInfinity;   ///< Ray parameter of the hit.
   Point3 p{0.0};          ///< Hit point, world space.
   Normal3 n{0.0};         ///< Unit geometric normal, world space, pointing outward.
+  Normal3 ns{0.0};        ///< Unit shading normal, world space, on n's side (dot(ns, n) > 0):
+                          ///< a smooth mesh's vertex normals interpolated at the hit. Zero
+                          ///< for flat surfaces, which shade with n (see shadingNormal()).
   Vec3 pError{0.0};       ///< Bound on the rounding error of p, per axis (world units): the
                           ///< exact surface point lies within p +- pError. Filled by every
                           ///< shape's surfaceAt; secondary rays leave from outside that box
@@ -33,8 +36,25 @@ struct SurfaceInteraction {
   Vec2 uv{0.0};           ///< Surface parameters; barycentrics (b1, b2) for triangles.
   int primitive = -1;     ///< Face / triangle index, -1 when not meaningful.
 
-  /// The normal turned against the ray (what shading uses).
+  /// The geometric normal turned against the ray: the side tests, the ray offsets
+  /// (RayOffset.h) and the side a new ray leaves from use it.
   Normal3 facingNormal() const { return frontFace ? n : -n; }
+  /// The shading normal, outward: ns on a smooth surface, else n.
+  Normal3 shadingNormal() const { return isZero(ns) ? n : ns; }
+  /// The shading normal turned to the side the ray arrived from (the geometric side,
+  /// frontFace): what BSDFs, local shading and their cosines use.
+  Normal3 facingShadingNormal() const { return frontFace ? shadingNormal() : -shadingNormal(); }
+  /**
+   * \brief Whether the direction w (world space, leaving the hit) lies on the same side of
+   * the geometric surface as of the shading surface: dot(w, n) > 0 exactly when
+   * dot(w, ns) > 0. Always true on flat surfaces. A direction where the two disagree lies
+   * in the wedge between them; the engine absorbs every ray a hit spawns there (Tracer.cpp,
+   * engineStep): a reflected or sampled direction below the geometric surface, and a light
+   * below it, carry nothing, so no light leaks through a shading normal.
+   */
+  bool sidesAgree(const Vec3& w) const {
+    return isZero(ns) || (glm::dot(w, n) > 0.0) == (glm::dot(w, ns) > 0.0);
+  }
   std::string toString() const;
 };
 

@@ -18,12 +18,25 @@ class Bvh;
  * Triangle.h, so rays through shared edges and vertices never leak. `apply` transforms
  * the vertices and rebuilds the BVH. Hit::primitive is the triangle index and Hit::uv
  * the barycentrics (b1, b2) of that triangle.
+ *
+ * Smooth shading (Phong 1975's normal interpolation): a mesh may carry normals at its
+ * triangles' corners, read from the file (OBJ `vn`, PLY `nx ny nz`) or computed with a
+ * crease angle (computeCreaseNormals). surfaceAt then fills SurfaceInteraction::ns with
+ * the corners' normals interpolated at the hit's barycentrics and normalised, turned to
+ * the geometric normal's side; n stays the triangle's own normal, so hits, inside/outside,
+ * ray offsets and the exact oracle do not change. Where the ray arrives between the two
+ * surfaces (its direction on different sides of n and ns), the hit shades flat (ns = 0).
  */
 class TriangleMesh final : public Shape {
  public:
   using Index3 = std::array<int, 3>;
 
   TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> triangles);
+  /// A smooth mesh: `normalIndices[i][k]` is the index in `normals` of the normal at corner
+  /// k of triangle i (world space, any positive length; they are normalised). Throws
+  /// InvalidGeometry as setNormals does.
+  TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> triangles,
+               std::vector<Normal3> normals, std::vector<Index3> normalIndices);
   TriangleMesh(const TriangleMesh& other);
   TriangleMesh& operator=(const TriangleMesh& other);
   TriangleMesh(TriangleMesh&&) noexcept;
@@ -51,11 +64,40 @@ class TriangleMesh final : public Shape {
   std::size_t triangleCount() const { return m_triangles.size(); }
   const Bvh& bvh() const { return *m_bvh; }
 
+  /// Sets the corner normals (see the constructor). Throws InvalidGeometry naming the
+  /// triangle or normal when there is not one index triple per triangle, an index is out
+  /// of range, or a normal is not finite or has zero length.
+  void setNormals(std::vector<Normal3> normals, std::vector<Index3> normalIndices);
+  /**
+   * \brief Computes corner normals with a crease angle, in radians in [0, pi]: the normal
+   * at a corner of triangle t is the sum of the normals of the triangles around that
+   * vertex whose normal is within `creaseAngle` of t's, each weighted by its angle at the
+   * vertex (Thuermer and Wuethrich 1998), normalised. Edges sharper than the crease angle
+   * stay sharp (a cube at 30 degrees keeps flat faces); 0 keeps every face flat but for
+   * coplanar neighbours. Only triangles that share the vertex index are averaged.
+   */
+  void computeCreaseNormals(double creaseAngle);
+  /// Drops the corner normals: every triangle shades flat.
+  void clearNormals();
+  /// True when the mesh has corner normals (smooth shading).
+  bool hasNormals() const { return !m_normalIndices.empty(); }
+  /// The unit corner normals, world space (empty for a flat mesh).
+  const std::vector<Normal3>& normals() const { return m_normals; }
+  /// Per triangle, the indices of its three corners' normals in normals().
+  const std::vector<Index3>& normalIndices() const { return m_normalIndices; }
+  /// The shading normal of triangle `triangle` at barycentrics (b1, b2) (point b0 p0 +
+  /// b1 p1 + b2 p2, b0 = 1 - b1 - b2): b0 n0 + b1 n1 + b2 n2 normalised, turned to the
+  /// triangle's geometric normal's side; the geometric normal for a flat mesh, or when
+  /// the interpolated normal vanishes.
+  Normal3 shadingNormal(int triangle, double b1, double b2) const;
+
  private:
   void rebuild();
 
   std::vector<Point3> m_vertices;
   std::vector<Index3> m_triangles;
+  std::vector<Normal3> m_normals;       ///< Unit corner normals (smooth shading), world.
+  std::vector<Index3> m_normalIndices;  ///< Per triangle, its corners' normals; empty: flat.
   std::unique_ptr<Bvh> m_bvh;
   std::vector<double> m_areaCdf;  ///< Running sum of triangle areas (unnormalised).
   double m_area = 0.0;            ///< Total area, world units^2.

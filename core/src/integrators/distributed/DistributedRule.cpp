@@ -15,7 +15,7 @@ namespace {
 /// Appends `count` rays drawn from the Phong lobe of a Glossy hit (weight / count each).
 void addGlossyRays(const HitContext& context, int count, std::vector<QueuedRay>& children) {
   const Material& m = context.material;
-  const Normal3 n = context.hit.si.facingNormal();
+  const Normal3 n = context.hit.si.facingShadingNormal();
   const Vec3 wo = -context.ray.ray.direction;
   const Frame lobeFrame(bsdf::reflect(wo, n));
   const double invN = 1.0 / double(count);
