@@ -20,6 +20,13 @@
 #include "raylab/vis/SceneView.h"
 #include "raylab/vis/ViewCamera.h"
 
+#if RAYLAB_WITH_GUI
+#include "InspectorWords.h"
+#include "Language.h"
+
+#include <QCoreApplication>
+#endif
+
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -196,6 +203,30 @@ std::optional<vis::RevealFrame> revealOf(const LessonStep& step, const RayTree& 
   return frame;
 }
 
+/// The inspector's lines of ray `id` of `tree` in `language`: Chinese through the window's
+/// translation of them (InspectorWords) when this build has the window, else English.
+std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Language language) {
+  const std::string english = RayInspector::inspect(scene, tree, id).rayText();
+#if RAYLAB_WITH_GUI
+  if (language == Language::Chinese) {
+    // Qt's translations need an application object; the command line has none of its own.
+    static int argc = 1;
+    static char name[] = "raylab";
+    static char* argv[] = {name, nullptr};
+    static QCoreApplication* const app =
+        QCoreApplication::instance() ? nullptr : new QCoreApplication(argc, argv);
+    static const bool chinese = installLanguage(kChinese);
+    (void)app;
+    if (chinese) {
+      std::vector<std::string> names;
+      for (const SceneObject& object : scene.objects) names.push_back(object.name);
+      return inspectorText(english, tree, id, names).toStdString();
+    }
+  }
+#endif
+  return english;
+}
+
 /// What one step's picture is, and what the handout says beside it.
 struct StepPicture {
   SrgbImage image;
@@ -227,7 +258,7 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
     const int id = inspector ? step.selectRay.value_or(0) : 0;
     if (inspector) {
       view.setSelectedSegment(id);
-      result.inspectorText = RayInspector::inspect(scene, tree, id).rayText();
+      result.inspectorText = inspectorLines(scene, tree, id, language);
     }
     if (step.allHits) {
       const RaySegment& ray = tree.segments.at(std::size_t(id));
