@@ -31,6 +31,8 @@
 #include "raylab/core/Triangle.h"
 #include "raylab/core/TriangleMesh.h"
 
+#include "BenchRays.h"
+
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 #include <tbb/global_control.h>
@@ -53,38 +55,8 @@ namespace {
 constexpr int kImageSide = 1024;
 constexpr int kRayCount = kImageSide * kImageSide;
 
-/// Pinhole camera at (0, 0, 3) looking down -z at the square [-1.1, 1.1]^2 on z = 0.
-std::vector<Ray> cameraRays() {
-  std::vector<Ray> rays;
-  rays.reserve(kRayCount);
-  const Point3 eye(0.0, 0.0, 3.0);
-  for (int y = 0; y < kImageSide; ++y)
-    for (int x = 0; x < kImageSide; ++x) {
-      const Point3 target(-1.1 + 2.2 * (x + 0.5) / kImageSide, -1.1 + 2.2 * (y + 0.5) / kImageSide,
-                          0.0);
-      rays.push_back(Ray::make(eye, target - eye));
-    }
-  return rays;
-}
-
-Vec3 uniformSphere(std::mt19937_64& rng) {
-  std::normal_distribution<double> n;
-  return glm::normalize(Vec3(n(rng), n(rng), n(rng)));
-}
-
-/// Origins uniform on the sphere of radius 2, aimed at uniform points in the unit ball.
-std::vector<Ray> randomRays() {
-  std::mt19937_64 rng(1234);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Ray> rays;
-  rays.reserve(kRayCount);
-  for (int i = 0; i < kRayCount; ++i) {
-    const Point3 origin = 2.0 * uniformSphere(rng);
-    const Point3 target = std::cbrt(u(rng)) * 0.95 * uniformSphere(rng);
-    rays.push_back(Ray::make(origin, target - origin));
-  }
-  return rays;
-}
+std::vector<Ray> cameraRays() { return bench::cameraRays(kImageSide); }
+std::vector<Ray> randomRays() { return bench::randomRays(kRayCount); }
 
 TriangleMesh noisySphere() {
   const TriangleMesh sphere = MeshFactory::makeUvSphere(Point3(0.0), 1.0, 501, 1000);
