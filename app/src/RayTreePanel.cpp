@@ -40,6 +40,19 @@ namespace raylab::app {
 
 namespace {
 
+/// The trees of a grid or a bundle as one trace: every tree's rays (grid.combined), and
+/// its narration and ray counts together.
+PixelTrace asOneTrace(const GridTrace& grid, Algorithm algorithm) {
+  PixelTrace one;
+  one.algorithm = algorithm;
+  one.tree = grid.combined;
+  for (const PixelTrace& t : grid.traces) {
+    one.stepTexts.insert(one.stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
+    one.counts += t.counts;
+  }
+  return one;
+}
+
 /// Frames a ray front takes to travel its segment (vis::AnimationSettings::framesPerStep).
 constexpr int kFramesPerStep = 12;
 /// Processing order: at most this many steps per animation when rays per step is chosen
@@ -454,14 +467,8 @@ void RayTreePanel::simulate() {
     return;
 
   // The grid as one trace: every tree's rays, narration and counts together.
-  auto combined = std::make_shared<PixelTrace>();
-  combined->algorithm = settings.algorithm;
+  auto combined = std::make_shared<PixelTrace>(asOneTrace(grid, settings.algorithm));
   combined->x = combined->y = -1;
-  combined->tree = grid.combined;
-  for (const PixelTrace& t : grid.traces) {
-    combined->stepTexts.insert(combined->stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
-    combined->counts += t.counts;
-  }
   m_trace = combined;
   m_grid = true;
 
@@ -492,17 +499,12 @@ void RayTreePanel::traceBundleOf(const std::shared_ptr<const Scene>& copy,
           bundle))
     return;
   // The bundle as one trace: every sample's rays, narration and counts together.
-  auto combined = std::make_shared<PixelTrace>();
-  combined->algorithm = settings.algorithm;
+  auto combined = std::make_shared<PixelTrace>(asOneTrace(bundle, settings.algorithm));
   combined->x = x;
   combined->y = y;
   combined->sample = first;
-  combined->tree = bundle.combined;
-  for (const PixelTrace& t : bundle.traces) {
-    combined->stepTexts.insert(combined->stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
-    combined->counts += t.counts;
+  for (const PixelTrace& t : bundle.traces)
     combined->estimate += t.estimate / double(bundle.traces.size());
-  }
   m_trace = combined;
   m_grid = false;
   QString info = tr("%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays")
