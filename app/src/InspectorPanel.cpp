@@ -136,4 +136,6 @@ QString InspectorPanel::inWords(const RayInspection& r) const {
 
 QString InspectorPanel::text() const { return m_text->toPlainText(); }
 
+void InspectorPanel::setExactness(bool shown) { m_exact->setChecked(shown); }
+
 }  // namespace raylab::app

@@ -49,6 +49,8 @@ class InspectorPanel : public QWidget {
   QPushButton* childButton() const { return m_child; }
   /// Shows the exact oracle's figures (off: the values only, the oracle one click away).
   QPushButton* exactButton() const { return m_exact; }
+  /// Shows the exact oracle's figures or not (a lesson step's "exactness"), as the button.
+  void setExactness(bool shown);
 
  signals:
   /// The user asked for ray `id` (number box, parent / child buttons).

@@ -105,6 +105,60 @@ QString translateValue(const QString& value) {
   return out + translate(value.mid(last));
 }
 
+/// One of the exact oracle's notes (core inspect/OracleCheck.cpp), in the window's
+/// language; a note it does not know stays as it is.
+QString oracleNote(const QString& note) {
+  struct Pattern {
+    const char* regex;
+    const char* text;  ///< %1, %2: the captures, in order.
+  };
+  static const Pattern patterns[] = {
+      {"^The exact oracle says the ray hits '(.*)' but double precision misses it\\.$",
+       QT_TRANSLATE_NOOP(
+           "InspectorWords",
+           "The exact oracle says the ray hits '%1' but double precision misses it.")},
+      {"^The exact oracle says the ray misses '(.*)' but double precision hits it\\.$",
+       QT_TRANSLATE_NOOP(
+           "InspectorWords",
+           "The exact oracle says the ray misses '%1' but double precision hits it.")},
+      {"^Exactly tangent: the ray touches '(.*)' without crossing it; doubles cannot decide "
+       "this reliably\\.$",
+       QT_TRANSLATE_NOOP("InspectorWords",
+                         "Exactly tangent: the ray touches '%1' without crossing it; doubles "
+                         "cannot decide this reliably.")},
+      {"^The exact hit lies on an edge: a neighbouring face could be hit instead in doubles\\.$",
+       QT_TRANSLATE_NOOP("InspectorWords",
+                         "The exact hit lies on an edge: a neighbouring face could be hit "
+                         "instead in doubles.")},
+      {"^The exact hit lies on a vertex: a neighbouring face could be hit instead in "
+       "doubles\\.$",
+       QT_TRANSLATE_NOOP("InspectorWords",
+                         "The exact hit lies on a vertex: a neighbouring face could be hit "
+                         "instead in doubles.")},
+      {"^The double t is off by (\\S+), more than the usual bound (\\S+) \\(a grazing ray or "
+       "an ill-conditioned transform\\)\\.$",
+       QT_TRANSLATE_NOOP("InspectorWords",
+                         "The double t is off by %1, more than the usual bound %2 (a grazing "
+                         "ray or an ill-conditioned transform).")},
+      {"^The exact oracle hits primitive (\\d+), double precision primitive (\\d+)\\.$",
+       QT_TRANSLATE_NOOP("InspectorWords",
+                         "The exact oracle hits primitive %1, double precision primitive %2.")},
+      {"^The recorded hit is (\\S+) along the ray, the object's nearest exact hit (\\S+)\\.$",
+       QT_TRANSLATE_NOOP("InspectorWords",
+                         "The recorded hit is %1 along the ray, the object's nearest exact hit "
+                         "%2.")},
+  };
+  for (const Pattern& p : patterns) {
+    const QRegularExpression regex(QString::fromUtf8(p.regex));
+    const QRegularExpressionMatch m = regex.match(note);
+    if (!m.hasMatch()) continue;
+    QString said = QCoreApplication::translate("InspectorWords", p.text);
+    for (int i = 1; i <= m.lastCapturedIndex(); ++i) said = said.arg(m.captured(i));
+    return said;
+  }
+  return note;
+}
+
 }  // namespace
 
 QString inspectorText(const std::string& coreText, const RayTree& tree, int id,
@@ -134,8 +188,9 @@ QString inspectorText(const std::string& coreText, const RayTree& tree, int id,
       out << QCoreApplication::translate("InspectorWords", "Exact oracle: not computed");
     } else if (line == QStringLiteral("Exact oracle: no hit to check")) {
       out << QCoreApplication::translate("InspectorWords", "Exact oracle: no hit to check");
-    } else if (line.startsWith(QStringLiteral("    "))) {
-      out << line;  // the oracle's notes: sentences of core, kept
+    } else if (line.startsWith(QStringLiteral("    ")) &&
+               !line.startsWith(QStringLiteral("    t "))) {
+      out << QStringLiteral("    ") + oracleNote(line.mid(4));  // the oracle's notes
     } else if (line.size() > 14 && line.startsWith(QStringLiteral("  ")) && line[2] != ' ') {
       // "  %-12s" then the value (core inspect::line).
       const QString label = line.mid(2, 12).trimmed();

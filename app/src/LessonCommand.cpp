@@ -205,8 +205,11 @@ std::optional<vis::RevealFrame> revealOf(const LessonStep& step, const RayTree& 
 
 /// The inspector's lines of ray `id` of `tree` in `language`: Chinese through the window's
 /// translation of them (InspectorWords) when this build has the window, else English.
-std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Language language) {
-  const std::string english = RayInspector::inspect(scene, tree, id).rayText();
+std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Language language,
+                           bool exactness) {
+  const RayInspection inspection = RayInspector::inspect(scene, tree, id, exactness);
+  const std::string english =
+      inspection.rayText() + (exactness ? "\n" + inspection.oracleText() : std::string());
 #if RAYLAB_WITH_GUI
   if (language == Language::Chinese) {
     // Qt's translations need an application object; the command line has none of its own.
@@ -243,14 +246,13 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
   const Scene& scene = *step.scene;
   vis::SceneView view(scene);
   StepPicture result;
-  if (step.pixelX && step.pixelY) {
-    // One sample's tree, or a bundle of the pixel's samples drawn together.
-    const RayTree tree =
-        step.bundle > 1
-            ? traceBundle(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample,
-                          step.bundle)
-                  .combined
-            : tracePixel(scene, step.settings(), *step.pixelX, *step.pixelY, step.sample).tree;
+  if (step.traces()) {
+    // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
+    // together.
+    const RayTree tree = step.bundle > 1 ? traceBundle(scene, step.settings(), *step.pixelX,
+                                                       *step.pixelY, step.sample, step.bundle)
+                                               .combined
+                                         : step.trace().tree;
     vis::RayTreeStyle style = styleOf(step);
     style.language = language;
     view.setRayTree(tree, style);
@@ -258,7 +260,7 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
     const int id = inspector ? step.selectRay.value_or(0) : 0;
     if (inspector) {
       view.setSelectedSegment(id);
-      result.inspectorText = inspectorLines(scene, tree, id, language);
+      result.inspectorText = inspectorLines(scene, tree, id, language, step.exactness);
     }
     if (step.allHits) {
       const RaySegment& ray = tree.segments.at(std::size_t(id));

@@ -13,6 +13,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QScrollArea>
@@ -44,6 +45,26 @@ QLabel* wrapping(double scale = 1.0, bool bold = false) {
   label->setProperty("raylabBold", bold);
   return label;
 }
+
+/// A choice's words beside their radio button, wrapping with the panel's width (a radio
+/// button's own text never wraps, and a long choice would widen the panel past its dock);
+/// a click on the words picks the choice, as a click on the button does.
+class ChoiceWords : public QLabel {
+ public:
+  ChoiceWords(const QString& text, QAbstractButton* button) : QLabel(text), m_button(button) {
+    setWordWrap(true);
+    setCursor(Qt::PointingHandCursor);
+  }
+
+ protected:
+  void mouseReleaseEvent(QMouseEvent* event) override {
+    if (event->button() == Qt::LeftButton) m_button->click();
+    QLabel::mouseReleaseEvent(event);
+  }
+
+ private:
+  QAbstractButton* m_button;
+};
 
 /// "0.25" for people: up to 6 significant digits.
 QString number(double value) { return QString::number(value, 'g', 6); }
@@ -256,9 +277,10 @@ QString LessonPanel::viewCaption() const {
 
 void LessonPanel::showQuestion(const LessonStep& step) {
   // The choices are made again for each step (and language).
-  for (QAbstractButton* b : m_choices->buttons()) {
-    m_choices->removeButton(b);
-    delete b;
+  for (QAbstractButton* b : m_choices->buttons()) m_choices->removeButton(b);
+  while (QLayoutItem* item = m_choicesLayout->takeAt(0)) {
+    delete item->widget();  // a choice's row: its button and its words
+    delete item;
   }
   m_verdict->clear();
   m_explanation->clear();
@@ -273,11 +295,18 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   const bool choice = q.type == LessonQuestion::Type::Choice;
   m_number->setVisible(!choice);
   for (std::size_t i = 0; choice && i < q.choices.size(); ++i) {
-    auto* b = new QRadioButton(text(q.choices[i], m_language));
-    b->setProperty(kFontScale, 1.15);
-    b->setFont(scaledFont(font(), 1.15));
+    auto* row = new QWidget;
+    auto* rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    auto* b = new QRadioButton;
+    b->setAccessibleName(text(q.choices[i], m_language));
+    auto* words = new ChoiceWords(text(q.choices[i], m_language), b);
+    words->setProperty(kFontScale, 1.15);
+    words->setFont(scaledFont(font(), 1.15));
+    rowLayout->addWidget(b, 0, Qt::AlignTop);
+    rowLayout->addWidget(words, 1);
     m_choices->addButton(b, int(i));
-    m_choicesLayout->addWidget(b);
+    m_choicesLayout->addWidget(row);
   }
 }
 

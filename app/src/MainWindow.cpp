@@ -538,8 +538,9 @@ void MainWindow::showLessonStep(int index) {
   rays.orderBox()->setCurrentIndex(rays.orderBox()->findData(int(vis::RevealOrder::Depth)));
   rays.setBundle(step.bundle);
   rays.allHitsBox()->setChecked(step.allHits);
-  if (step.pixelX && step.pixelY) {
-    rays.setPixel(*step.pixelX, *step.pixelY);
+  if (step.traces()) {
+    if (step.pixelX) rays.setPixel(*step.pixelX, *step.pixelY);
+    rays.setRootRay(step.ray);  // after the pixel, which goes back to its own camera ray
     rays.setSample(step.sample);
     rays.trace();
     const int perStep = rays.animation().framesPerStep;
@@ -547,8 +548,12 @@ void MainWindow::showLessonStep(int index) {
       rays.setFrame(step.reveal.value);
     else if (step.reveal.by == LessonReveal::By::Depth)
       rays.setFrame((step.reveal.value + 1) * perStep);
-    if (step.view == LessonView::Inspector) rays.selectSegment(step.selectRay.value_or(0));
+    if (step.view == LessonView::Inspector) {
+      m_inspector->setExactness(step.exactness);
+      rays.selectSegment(step.selectRay.value_or(0));
+    }
   } else {
+    rays.setRootRay(std::nullopt);
     rays.clearTrace();
   }
 
@@ -822,6 +827,7 @@ void MainWindow::fillObjectList() {
 }
 
 void MainWindow::adoptScene(const Scene& scene, const QString& path) {
+  m_rayPanel->setRootRay(std::nullopt);  // a lesson's chosen ray belongs to its scene
   m_document->adopt(scene, path);
   if (!path.isEmpty()) rememberFile(path);
   resetView();

@@ -129,6 +129,9 @@ QWidget* RayTreePanel::buildTraceGroup() {
   pixel->addWidget(new QLabel(tr("y")));
   pixel->addWidget(m_pixelY, 1);
   form->addRow(tr("Pixel"), pixel);
+  // A pixel chosen by hand traces its own camera ray, not a lesson's chosen ray.
+  for (QSpinBox* box : {m_pixelX, m_pixelY})
+    connect(box, qOverload<int>(&QSpinBox::valueChanged), this, [this] { m_root.reset(); });
 
   m_sample = new QSpinBox;
   m_sample->setRange(0, std::max(1, scene.render.samplesPerPixel) - 1);
@@ -397,9 +400,12 @@ Algorithm RayTreePanel::algorithm() const {
 void RayTreePanel::setPixel(int x, int y) {
   m_pixelX->setValue(x);
   m_pixelY->setValue(y);
+  m_root.reset();  // a pixel chosen: its own camera ray again
 }
 
 void RayTreePanel::setSample(int sample) { m_sample->setValue(sample); }
+
+void RayTreePanel::setRootRay(std::optional<Ray> ray) { m_root = std::move(ray); }
 
 const RayTree& RayTreePanel::tree() const {
   static const RayTree kNone;
@@ -419,16 +425,17 @@ void RayTreePanel::trace() {
   // A copy of the scene: an edit while the trace runs must not change it under the worker.
   auto copy = std::make_shared<const Scene>(scene);
   const int x = m_pixelX->value(), y = m_pixelY->value(), sample = m_sample->value();
-  if (m_bundle->value() > 1) {
+  if (m_bundle->value() > 1 && !m_root) {
     traceBundleOf(copy, settings, x, y, sample, m_bundle->value());
     return;
   }
   PixelTrace traced;
   if (!runCancellable(
-          [copy, settings, x, y, sample](const std::atomic<bool>* cancel) {
+          [copy, settings, x, y, sample, root = m_root](const std::atomic<bool>* cancel) {
             TraceLimits limits;
             limits.cancel = cancel;
-            return tracePixel(*copy, settings, x, y, sample, limits);
+            return root ? traceRay(*copy, settings, *root, x, y, sample, limits)
+                        : tracePixel(*copy, settings, x, y, sample, limits);
           },
           traced))
     return;
@@ -437,12 +444,23 @@ void RayTreePanel::trace() {
   const PixelTrace& trace = *m_trace;
 
   // Summarise: which sample, rays by kind, the estimate.
-  QString info = tr("%1: pixel (%2, %3), sample %4\n%5")
-                     .arg(algorithmLabel(trace.algorithm))
-                     .arg(trace.x)
-                     .arg(trace.y)
-                     .arg(trace.sample)
-                     .arg(traceSummary(trace));
+  const auto triple = [](const Vec3& v) {
+    return QStringLiteral("(%1, %2, %3)")
+        .arg(v.x, 0, 'g', 6)
+        .arg(v.y, 0, 'g', 6)
+        .arg(v.z, 0, 'g', 6);
+  };
+  QString info = trace.root ? tr("%1: a chosen ray from %2 along %3\n%4")
+                                  .arg(algorithmLabel(trace.algorithm))
+                                  .arg(triple(trace.root->origin))
+                                  .arg(triple(trace.root->direction))
+                                  .arg(traceSummary(trace))
+                            : tr("%1: pixel (%2, %3), sample %4\n%5")
+                                  .arg(algorithmLabel(trace.algorithm))
+                                  .arg(trace.x)
+                                  .arg(trace.y)
+                                  .arg(trace.sample)
+                                  .arg(traceSummary(trace));
   if (trace.tree.truncated)
     info += QStringLiteral("\n") + QString::fromStdString(trace.tree.message);
   m_traceInfo->setText(info);

@@ -11,6 +11,7 @@
 #include <array>
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,11 @@ class RayTreePanel : public QWidget {
   void setSample(int sample);
   Algorithm algorithm() const;
 
+  /// Traces `ray` (world space) in place of the pixel's camera ray from the next trace on
+  /// (a lesson step's chosen ray, e.g. a tangent one); nothing goes back to the pixel's
+  /// own camera ray. Choosing another pixel also goes back to it.
+  void setRootRay(std::optional<Ray> ray);
+  const std::optional<Ray>& rootRay() const { return m_root; }
   /// Records the tree of the chosen (pixel, sample) and shows it whole; with more than one
   /// sample drawn (setBundle), the trees of samples sample .. sample + n - 1 together.
   void trace();
@@ -192,6 +198,7 @@ class RayTreePanel : public QWidget {
   vis::SceneView& m_view;
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
+  std::optional<Ray> m_root;              ///< Traced in place of the pixel's camera ray, when set.
   bool m_grid = false;                    ///< m_trace is a Simulate grid.
   double m_phase = 0.0;                   ///< Fraction of a frame the animation has moved on.
   double m_lineScale = 1.0;               ///< Ray width factor (presentation mode).

@@ -6,6 +6,7 @@
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Lesson.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTreeJson.h"
@@ -13,6 +14,7 @@
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/SceneView.h"
 
+#include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
@@ -38,12 +40,30 @@ std::optional<std::pair<int, int>> gridSize(const std::string& text) {
 
 struct TraceOptions {
   RayTreeOptions tree;
-  std::string json;      ///< --json; default: --out with .json.
-  int frame = -1;        ///< --frame: draw this frame of the animation; -1 the whole tree.
-  std::string grid;      ///< --grid NxM: the Simulate grid instead of --pixel.
-  int bundle = 1;        ///< --bundle N: samples sample .. sample + N - 1 drawn together.
-  bool allHits = false;  ///< --all-hits: mark every surface the camera ray crosses.
+  std::string json;         ///< --json; default: --out with .json.
+  int frame = -1;           ///< --frame: draw this frame of the animation; -1 the whole tree.
+  std::string grid;         ///< --grid NxM: the Simulate grid instead of --pixel.
+  int bundle = 1;           ///< --bundle N: samples sample .. sample + N - 1 drawn together.
+  bool allHits = false;     ///< --all-hits: mark every surface the camera ray crosses.
+  std::vector<double> ray;  ///< --ray OX,OY,OZ,DX,DY,DZ: traced in place of the camera ray.
+  int inspect = -1;         ///< --inspect ID: print the inspector's text of that ray.
 };
+
+/// --ray's six numbers as a ray, or why they are not one.
+std::optional<Ray> chosenRay(const std::vector<double>& v, std::string& problem) {
+  const Point3 origin(v[0], v[1], v[2]);
+  const Vec3 direction(v[3], v[4], v[5]);
+  for (double x : v)
+    if (!std::isfinite(x) || std::abs(x) > limits::kMaxCoordinate) {
+      problem = "--ray: every number must be finite and at most 1e12 in size";
+      return std::nullopt;
+    }
+  if (!(glm::length(direction) >= limits::kMinLength)) {
+    problem = "--ray: the direction DX,DY,DZ must not be zero";
+    return std::nullopt;
+  }
+  return Ray::make(origin, direction);
+}
 
 /// The picture and one JSON document of many trees (a grid or a bundle): `key` and
 /// `value` name what they are in the dump ("grid": [4, 3]), `what` in the summary line.
@@ -91,8 +111,22 @@ int runGrid(const TraceOptions& options, const Scene& scene, const RenderSetting
 
 int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the pixel.
-  const RayTreeOptions& o = options.tree;
+  RayTreeOptions o = options.tree;  // a copy: --ray may give it a pixel
   const Scene scene = o.loadScene(topLevelScene);
+  std::optional<Ray> root;
+  if (!options.ray.empty()) {
+    std::string problem;
+    root = chosenRay(options.ray, problem);
+    if (!root) {
+      std::cerr << "raylab trace: " << problem << std::endl;
+      return kExitUsage;
+    }
+    if (!options.grid.empty() || options.bundle > 1) {
+      std::cerr << "raylab trace: --ray traces one ray; --grid and --bundle trace pixels"
+                << std::endl;
+      return kExitUsage;
+    }
+  }
   if (!options.grid.empty()) {
     if (o.pixel.first >= 0 || o.pixel.second >= 0) {
       std::cerr << "raylab trace: --grid and --pixel exclude each other" << std::endl;
@@ -105,8 +139,11 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     return runGrid(options, scene, o.common.settings(scene));
   }
   if (o.pixel.first < 0 && o.pixel.second < 0) {
-    std::cerr << "raylab trace: --pixel X Y (or --grid NxM) is required" << std::endl;
-    return kExitUsage;
+    if (!root) {
+      std::cerr << "raylab trace: --pixel X Y (or --grid NxM, or --ray) is required" << std::endl;
+      return kExitUsage;
+    }
+    o.pixel = {0, 0};  // a chosen ray takes pixel (0, 0)'s random numbers
   }
   if (const auto error = o.usageError(scene)) {
     std::cerr << "raylab trace: " << *error << std::endl;
@@ -134,8 +171,15 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   }
 
   // Step 2: trace the sample, recording its tree.
-  const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
+  const PixelTrace trace =
+      root ? traceRay(scene, settings, *root, o.pixel.first, o.pixel.second, o.sample)
+           : tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
   const RayTree& tree = trace.tree;
+  if (options.inspect >= int(tree.segments.size())) {
+    std::cerr << "raylab trace: --inspect " << options.inspect << " is not a ray of the tree (its "
+              << "rays are 0.." << tree.segments.size() - 1 << ")" << std::endl;
+    return kExitUsage;
+  }
 
   // Step 3: the 3D view with the tree, in memory first.
   const auto [width, height] = o.pictureSize();
@@ -162,10 +206,16 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     throw;
   }
   std::cout << o.common.out << "\n" << json << "\n";
-  std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample
-            << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
+  if (root)
+    std::cout << "chosen ray from " << toString(root->origin) << " along "
+              << toString(root->direction);
+  else
+    std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample;
+  std::cout << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
             << trace.summary() << std::endl;
   if (options.allHits) std::cout << "every surface the camera ray crosses:\n" << crossings;
+  if (options.inspect >= 0)
+    std::cout << RayInspector::inspect(scene, tree, options.inspect).toString();
   if (tree.truncated) std::cerr << "raylab: warning: " << tree.message << std::endl;
   return kExitOk;
 }
@@ -328,6 +378,18 @@ Subcommand addTraceCommand(CLI::App& cli) {
                                         std::to_string(kMaxGrid) + ", e.g. 4x3";
           },
           "NxM"));
+  command
+      ->add_option("--ray", options->ray,
+                   "Trace this ray OX,OY,OZ,DX,DY,DZ (world space) in place of the camera ray "
+                   "of the --pixel (default 0 0; it gives the random numbers): a ray chosen by "
+                   "hand, e.g. one exactly tangent to a sphere")
+      ->expected(6)
+      ->delimiter(',');
+  command
+      ->add_option("--inspect", options->inspect,
+                   "Print what the window's inspector shows of this ray of the tree (0 = the "
+                   "camera ray): its values and the exact oracle's check of its hit")
+      ->check(CLI::Range(0, 1 << 30));
   command->add_option("--json", options->json,
                       "JSON dump of the tree to write (default: --out with .json)");
   command

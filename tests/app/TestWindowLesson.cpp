@@ -6,6 +6,7 @@
 // under xvfb.
 #include "WindowTest.h"
 
+#include "Language.h"
 #include "LessonPanel.h"
 #include "RenderPanel.h"
 
@@ -208,6 +209,45 @@ TEST_F(WindowLessonTest, 07_ABrokenLessonIsRefusedAndTheSceneStays) {
       << m_window->lastError().toStdString();
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), before);
   EXPECT_EQ(m_window->lessonPanel()->lesson(), nullptr);
+}
+
+TEST_F(WindowLessonTest, 10_AChosenRayStepTracesItAndShowsTheOracle) {
+  // Lesson 2's tangent ray: the ray-tree panel traces the step's chosen ray in place of a
+  // pixel's camera ray, and the inspector shows the exact oracle's verdict, in English and
+  // in Chinese; the next step with a pixel traces that pixel's own camera ray again.
+  const QString two =
+      QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/02-intersections-and-exactness.json");
+  ASSERT_TRUE(m_window->openLesson(two));
+  LessonPanel& panel = *m_window->lessonPanel();
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  InspectorPanel& inspector = *m_window->inspectorPanel();
+  const Lesson lesson = LessonIO::load(two.toStdString());
+  const int tangent = firstStep(lesson, [](const LessonStep& st) { return bool(st.ray); });
+  const LessonStep& step = lesson.steps[std::size_t(tangent)];
+  panel.showStep(tangent);
+  settle();
+  ASSERT_FALSE(rays.tree().segments.empty());
+  EXPECT_EQ(rays.tree().segments[0].origin, step.ray->origin);
+  EXPECT_EQ(rays.tree().segments[0].direction, step.ray->direction);
+  EXPECT_TRUE(inspector.exactButton()->isChecked());
+  EXPECT_EQ(inspector.segment(), 0);
+  EXPECT_TRUE(inspector.text().contains(QStringLiteral("Tangent, t = 5")))
+      << inspector.text().toStdString();
+  EXPECT_TRUE(inspector.text().contains(QStringLiteral("Exactly tangent")));
+  ASSERT_TRUE(installLanguage(kChinese)) << "the translation (.qm) was not found";
+  inspector.showSegment(0);
+  EXPECT_TRUE(inspector.text().contains(QStringLiteral("精确相切")))
+      << inspector.text().toStdString();
+  installLanguage(kEnglish);
+
+  const int pixel = firstStep(lesson, [](const LessonStep& st) {
+    return st.pixelX && !st.ray && st.view == LessonView::Inspector;
+  });
+  panel.showStep(pixel);
+  settle();
+  EXPECT_FALSE(rays.rootRay());
+  const LessonStep& own = lesson.steps[std::size_t(pixel)];
+  EXPECT_EQ(rays.tree().segments.at(0).direction, own.cameraRay()->direction);
 }
 
 TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {

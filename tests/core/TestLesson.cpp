@@ -1,6 +1,8 @@
 // Lesson files: the format, error messages that name the file, the step and the place,
 // scene changes, and the shipped lessons (they load, both languages, answers computed).
 #include "raylab/core/Lesson.h"
+#include "raylab/core/PixelTrace.h"
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/SceneIntersector.h"
@@ -532,7 +534,7 @@ double compute(const LessonStep& step, const LessonCheck& c) {
     for (int s = 0; s < spp; ++s) sum += luminance(tracer.trace(c.pixelX, c.pixelY, s));
     return sum / spp;
   }
-  Stepper stepper(tracer, c.pixelX, c.pixelY, c.sample);
+  Stepper stepper(tracer, c.pixelX, c.pixelY, c.sample, kDefaultTreeBudget, c.root);
   stepper.runToEnd();
   const RayTree& tree = stepper.tree();
   EXPECT_FALSE(tree.truncated);
@@ -629,6 +631,106 @@ TEST(Lesson, 11_BundleAndAllHitsNeedAPixel) {
   l["steps"][1].erase("reveal");
   l["steps"][1]["bundle"] = 4;
   EXPECT_THAT(loadError(l), HasSubstr("at /steps/1/bundle: bundle needs a pixel"));
+}
+
+// A chosen "ray" is traced in place of the pixel's camera ray: the tree's root is that
+// ray, the rest of the tree is the real algorithm's, and the trace is deterministic. A step
+// with a ray needs no pixel; a bundle of a ray, or a ray in an image step, is refused.
+TEST(Lesson, 12_ChosenRayIsTracedInPlaceOfTheCameraRay) {
+  json l = baseLesson();
+  l["steps"][1]["ray"] = {{"origin", {0, 1, 5}}, {"direction", {0, 0, -2}}};
+  l["steps"][1]["view"] = "inspector";
+  l["steps"][1]["exactness"] = true;
+  l["steps"][1].erase("reveal");
+  l["steps"][1]["select_ray"] = 1;
+  const Lesson lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  const LessonStep& step = lesson.steps[1];
+  ASSERT_TRUE(step.ray);
+  EXPECT_TRUE(step.exactness);
+  const PixelTrace trace = step.trace();
+  ASSERT_TRUE(trace.root);
+  const RaySegment& root = trace.tree.segments.at(0);
+  EXPECT_EQ(root.origin, Point3(0, 1, 5));
+  EXPECT_EQ(root.direction, Vec3(0, 0, -1));  // normalised
+  // Straight at the glass ball's centre: it meets the front at t = 4 and Whitted splits it.
+  ASSERT_TRUE(root.hit);
+  EXPECT_NEAR(glm::length(root.endPoint - root.origin), 4.0, 1e-12);
+  std::vector<RayKind> kinds;
+  for (int c = 0; c < root.childCount; ++c)
+    kinds.push_back(trace.tree.segments.at(std::size_t(root.firstChild + c)).kind);
+  EXPECT_THAT(kinds, ::testing::IsSupersetOf({RayKind::Reflection, RayKind::Refraction}));
+  // Not the pixel's own camera ray, and the same tree every time.
+  const RayTree own = tracePixel(*step.scene, step.settings(), 160, 100, 0).tree;
+  EXPECT_NE(own.segments.at(0).direction, root.direction);
+  const PixelTrace again = step.trace();
+  ASSERT_EQ(again.tree.segments.size(), trace.tree.segments.size());
+  for (std::size_t i = 0; i < trace.tree.segments.size(); ++i) {
+    EXPECT_EQ(again.tree.segments[i].endPoint, trace.tree.segments[i].endPoint);
+    EXPECT_EQ(again.tree.segments[i].radiance, trace.tree.segments[i].radiance);
+  }
+  EXPECT_EQ(step.cameraRay()->direction, Vec3(0, 0, -1));
+
+  // Without any pixel the chosen ray still makes a tree for the inspector.
+  l["defaults"].erase("pixel");
+  l["steps"][0].erase("reveal");
+  EXPECT_NO_THROW(LessonIO::parse(l.dump(), fixtureOrigin()));
+
+  json bad = l;
+  bad["steps"][1]["ray"]["direction"] = {0, 0, 0};
+  EXPECT_THAT(loadError(bad),
+              HasSubstr("at /steps/1/ray/direction: the direction must not be zero"));
+  bad = l;
+  bad["steps"][1]["ray"]["origin"] = {0, 1e13, 0};
+  EXPECT_THAT(loadError(bad), HasSubstr("at /steps/1/ray/origin/1: coordinates are at most 1e12"));
+  bad = l;
+  bad["steps"][1]["ray"]["towards"] = {0, 0, 1};
+  EXPECT_THAT(loadError(bad), HasSubstr("at /steps/1/ray/towards: unknown key \"towards\""));
+  bad = l;
+  bad["steps"][1]["select_ray"] = 5000;
+  EXPECT_THAT(loadError(bad), HasSubstr("ray 5000 is not in the whitted tree of the chosen ray: "
+                                        "it has"));
+  bad = l;
+  bad["steps"][1]["view"] = "image";
+  bad["steps"][1].erase("select_ray");
+  bad["steps"][1].erase("exactness");
+  EXPECT_THAT(loadError(bad), HasSubstr("at /steps/1/ray: \"ray\" belongs to the scene and"));
+  bad = l;
+  bad["steps"][1]["view"] = "scene";
+  bad["steps"][1].erase("select_ray");
+  EXPECT_THAT(loadError(bad), HasSubstr("at /steps/1/exactness: \"exactness\" belongs to the "
+                                        "inspector view"));
+}
+
+// Lesson 2's tangent and knife-edge steps say what the oracle finds: the first chosen ray
+// is exactly tangent (double precision agrees on t = 5), the second misses in exact
+// arithmetic while double precision hits. Their words would be wrong otherwise.
+TEST(Lesson, 13_LessonTwoTangentRaysAreWhatTheTextSays) {
+  const Lesson lesson = LessonIO::load(std::string(RAYLAB_SOURCE_DIR) +
+                                       "/lessons/02-intersections-and-exactness.json");
+  const auto find = [&](const std::string& title) -> const LessonStep& {
+    for (const LessonStep& s : lesson.steps)
+      if (s.title.en == title) return s;
+    throw std::runtime_error("no step " + title);
+  };
+  const auto oracleOf = [](const LessonStep& step) {
+    EXPECT_TRUE(step.exactness);
+    const PixelTrace trace = step.trace();
+    return *RayInspector::inspect(*step.scene, trace.tree, 0).oracle;
+  };
+  const OracleCheck tangent = oracleOf(find("A tangent ray"));
+  EXPECT_EQ(tangent.comparison.exact.classification, ExactClass::Tangent);
+  EXPECT_EQ(tangent.comparison.exact.t, 5.0);
+  ASSERT_TRUE(tangent.comparison.floating);
+  EXPECT_EQ(tangent.comparison.floating->t, 5.0);
+  EXPECT_FALSE(tangent.agrees);  // flagged all the same
+
+  const OracleCheck knife = oracleOf(find("On the knife edge"));
+  EXPECT_EQ(knife.comparison.exact.classification, ExactClass::Miss);
+  ASSERT_TRUE(knife.comparison.floating);  // double precision hits
+  EXPECT_NEAR(knife.comparison.floating->t, 8.6, 0.05);
+  EXPECT_LT(knife.comparison.exact.margin, 0.0);
+  EXPECT_GT(knife.comparison.exact.margin, -1e-17);  // "about 6e-18 of the radius"
+  EXPECT_FALSE(knife.agrees);
 }
 
 TEST(Lesson, 09_ListFindsNumberedLessonFilesInOrder) {

@@ -30,16 +30,21 @@ std::string PixelTrace::summary() const {
   return out.str();
 }
 
-PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits) {
+namespace {
+
+/// tracePixel, or traceRay when `root` is set.
+PixelTrace traceFrom(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits,
+                     const std::optional<Ray>& root) {
   PixelTrace trace;
   trace.algorithm = tracer.settings().algorithm;
   trace.x = x;
   trace.y = y;
   trace.sample = sample;
+  trace.root = root;
 
   // Run the real algorithm ray by ray, keeping what each step did, until the queue is
   // empty or the front end cancels.
-  Stepper stepper(tracer, x, y, sample, limits.memoryBudget);
+  Stepper stepper(tracer, x, y, sample, limits.memoryBudget, root);
   const auto cancelled = [&] {
     return limits.cancel && limits.cancel->load(std::memory_order_relaxed);
   };
@@ -68,6 +73,23 @@ PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, const Trac
   trace.counts = stepper.counts();
   trace.estimate = stepper.estimate();
   return trace;
+}
+
+}  // namespace
+
+PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits) {
+  return traceFrom(tracer, x, y, sample, limits, std::nullopt);
+}
+
+PixelTrace traceRay(const Tracer& tracer, const Ray& root, int x, int y, int sample,
+                    const TraceLimits& limits) {
+  return traceFrom(tracer, x, y, sample, limits, root);
+}
+
+PixelTrace traceRay(const Scene& scene, const RenderSettings& settings, const Ray& root, int x,
+                    int y, int sample, const TraceLimits& limits) {
+  const Tracer tracer(scene, settings);
+  return traceRay(tracer, root, x, y, sample, limits);
 }
 
 PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y, int sample,

@@ -196,12 +196,16 @@ Vec3 Tracer::trace(int x, int y, int sample, RayCounts* counts, bool* capped,
   return estimate;
 }
 
-Stepper::Stepper(const Tracer& tracer, int x, int y, int sample, std::size_t memoryBudget)
+Stepper::Stepper(const Tracer& tracer, int x, int y, int sample, std::size_t memoryBudget,
+                 std::optional<Ray> root)
     : m_tracer(&tracer),
       m_x(x),
       m_y(y),
       m_sample(sample),
       m_budget(memoryBudget),
+      m_root(root ? std::optional<Ray>(Ray::make(root->origin, root->direction, root->tMin,
+                                                 root->tMax, root->time))
+                  : std::nullopt),
       m_sampler(tracer.settings().seed, x, y, sample) {
   reset();
 }
@@ -217,8 +221,11 @@ void Stepper::reset() {
   m_counts = RayCounts{};
 
   // The camera ray is the root of the tree (segment 0) and waits in the queue.
+  // A chosen root ray takes the camera ray's place after the camera's random numbers were
+  // drawn, so its children draw the same numbers as the pixel's own would.
   QueuedRay camera = cameraRay(*m_tracer, m_x, m_y, m_sampler);
-  TreeRecorder(*m_tracer, m_tree, m_event, m_budget).recordCamera(camera);
+  if (m_root) camera.ray = *m_root;
+  TreeRecorder(*m_tracer, m_tree, m_event, m_budget).recordCamera(camera, m_root.has_value());
   // A budget below one segment traces nothing: the work is bounded by the budget too.
   if (camera.id >= 0) m_queue.push_back(camera);
 }

@@ -49,13 +49,16 @@ void TreeRecorder::startSegment(const QueuedRay& ray) {
   seg.throughput = ray.throughput;
 }
 
-void TreeRecorder::recordCamera(QueuedRay& camera) {
+void TreeRecorder::recordCamera(QueuedRay& camera, bool chosen) {
   camera.id = reserve(1);
   if (camera.id >= 0) startSegment(camera);
   m_event = StepEvent{};
-  m_event.text = "camera ray through pixel (" + std::to_string(m_tree.pixelX) + ", " +
-                 std::to_string(m_tree.pixelY) + "), sample " + std::to_string(m_tree.sample) +
-                 ", " + words(EndReason::Pending).clause;
+  m_event.text =
+      chosen ? "chosen ray from " + raylab::toString(camera.ray.origin) + " along " +
+                   raylab::toString(camera.ray.direction) + ", " + words(EndReason::Pending).clause
+             : "camera ray through pixel (" + std::to_string(m_tree.pixelX) + ", " +
+                   std::to_string(m_tree.pixelY) + "), sample " + std::to_string(m_tree.sample) +
+                   ", " + words(EndReason::Pending).clause;
 }
 
 void TreeRecorder::setFarEnd(RaySegment& seg, const QueuedRay& ray, EndReason end) const {

@@ -25,7 +25,8 @@ class TreeRecorder {
   TreeRecorder(const Tracer& tracer, RayTree& tree, StepEvent& event, std::size_t budget);
 
   /// Records the camera ray as segment 0 when the budget allows one; sets camera.id.
-  void recordCamera(QueuedRay& camera);
+  /// `chosen`: the ray was given by hand in place of the pixel's camera ray.
+  void recordCamera(QueuedRay& camera, bool chosen = false);
   /// Records how `ray` ended (hit, end reason, what it found) and numbers its `children`
   /// (ids, parent links and their segments), before the engine queues them; tells the
   /// step in the event's sentence.

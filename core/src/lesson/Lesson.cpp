@@ -3,6 +3,8 @@
 #include "io/JsonChecks.h"
 #include "io/PrettyJson.h"
 
+#include "raylab/core/Check.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/Sampler.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/SceneIO.h"
@@ -215,6 +217,28 @@ class Reader : private JsonChecks<Reader> {
       fail(path, "pixel (" + std::to_string(p.first) + ", " + std::to_string(p.second) +
                      ") is outside the " + std::to_string(c.width) + "x" +
                      std::to_string(c.height) + " image");
+  }
+
+  /// A point or direction [x, y, z]: finite, each coordinate at most kMaxCoordinate.
+  Vec3 vector3(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, z], got " + excerpt(j));
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) {
+      const std::string at = path + "/" + std::to_string(i);
+      v[i] = number(j[std::size_t(i)], at);
+      if (std::abs(v[i]) > limits::kMaxCoordinate)
+        fail(at, "coordinates are at most 1e12 in size (RayLab's limit)");
+    }
+    return v;
+  }
+  /// A ray chosen by hand: {"origin": [x, y, z], "direction": [x, y, z]}.
+  Ray chosenRay(const json& j, const std::string& path) const {
+    onlyKeys(j, path, {"origin", "direction"});
+    const Point3 origin = vector3(member(j, path, "origin"), path + "/origin");
+    const Vec3 direction = vector3(member(j, path, "direction"), path + "/direction");
+    if (!(glm::length(direction) >= limits::kMinLength))
+      fail(path + "/direction", "the direction must not be zero (at least 1e-9 long)");
+    return Ray::make(origin, direction);
   }
 
   Display display(const json& j, const std::string& path) const;
@@ -479,8 +503,8 @@ LessonBvh Reader::bvh(const json& j, const std::string& path, const LessonStep& 
   if (j.contains("visits")) b.visits = boolean(j["visits"], path + "/visits");
   // A ray's visits without levels: all of them, root to leaves.
   if (b.visits && !j.contains("level") && !j.contains("levels")) b.lastLevel = depth;
-  if (b.visits && !step.pixelX)
-    fail(path + "/visits", "visits needs a pixel (whose camera ray visits the boxes)");
+  if (b.visits && !step.traces())
+    fail(path + "/visits", "visits needs a pixel or a ray (whose camera ray visits the boxes)");
   return b;
 }
 
@@ -536,8 +560,9 @@ LessonCheck Reader::check(const json& j, const std::string& path, const LessonSt
     if (j.contains("pixel")) {
       p = pixel(j["pixel"], path + "/pixel");
       pixelInside(p, *step.scene, path + "/pixel");
-    } else if (step.pixelX) {
-      p = {*step.pixelX, *step.pixelY};
+    } else if (step.traces()) {
+      p = {step.pixelX.value_or(0), step.pixelY.value_or(0)};
+      c.root = step.ray;
     } else {
       fail(path, "the check needs a pixel (give \"pixel\" here or in the step)");
     }
@@ -588,10 +613,11 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   LessonStep s;
   s.title = text(member(j, path, "title"), path + "/title");
   m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
-  onlyKeys(j, path, {"title",         "text",     "view",    "algorithm",     "pixel",
-                     "sample",        "reveal",   "colour",  "filters",       "camera_view",
-                     "select_ray",    "samples",  "measure", "scene_changes", "question",
-                     "teacher_notes", "requires", "bundle",  "all_hits",      "bvh"});
+  onlyKeys(j, path,
+           {"title",    "text",          "view",     "algorithm",     "pixel",      "sample",
+            "reveal",   "colour",        "filters",  "camera_view",   "select_ray", "samples",
+            "measure",  "scene_changes", "question", "teacher_notes", "requires",   "bundle",
+            "all_hits", "bvh",           "ray",      "exactness"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
@@ -659,26 +685,43 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
     s.measure = named(j["measure"], path + "/measure", kMeasures, "measure");
   }
 
-  // A ray to select, or a tree to reveal, needs the pixel whose tree it is.
+  // A ray chosen by hand, traced in place of the pixel's camera ray.
+  if (j.contains("ray")) {
+    if (s.view != LessonView::Scene && s.view != LessonView::Inspector)
+      fail(path + "/ray",
+           "\"ray\" belongs to the scene and inspector views (this step's view is \"" +
+               std::string(toString(s.view)) + "\")");
+    s.ray = chosenRay(j["ray"], path + "/ray");
+  }
+  if (j.contains("exactness")) {
+    s.exactness = boolean(j["exactness"], path + "/exactness");
+    if (s.exactness && s.view != LessonView::Inspector)
+      fail(path + "/exactness",
+           "\"exactness\" belongs to the inspector view (this step's view is \"" +
+               std::string(toString(s.view)) + "\")");
+  }
+
+  // A ray to select, or a tree to reveal, needs the pixel (or the chosen ray) whose tree
+  // it is.
   if (j.contains("select_ray"))
     s.selectRay = integerAtLeast(j["select_ray"], path + "/select_ray", 0);
   if (s.view == LessonView::Inspector && !s.selectRay) s.selectRay = 0;
-  if (!s.pixelX) {
-    if (s.view == LessonView::Inspector) fail(path, "the inspector view needs a pixel");
-    if (s.selectRay) fail(path + "/select_ray", "select_ray needs a pixel");
-    if (j.contains("reveal")) fail(path + "/reveal", "reveal needs a pixel");
+  if (!s.traces()) {
+    if (s.view == LessonView::Inspector) fail(path, "the inspector view needs a pixel or a ray");
+    if (s.selectRay) fail(path + "/select_ray", "select_ray needs a pixel or a ray");
+    if (j.contains("reveal")) fail(path + "/reveal", "reveal needs a pixel or a ray");
   }
   if (s.selectRay) {
-    const Tracer tracer(scene, s.settings());
-    Stepper stepper(tracer, *s.pixelX, *s.pixelY, s.sample);
-    stepper.runToEnd();
-    const int rays = static_cast<int>(stepper.tree().segments.size());
+    const int rays = static_cast<int>(s.trace().tree.segments.size());
+    const std::string whose = s.ray ? "tree of the chosen ray"
+                                    : "tree of pixel (" + std::to_string(*s.pixelX) + ", " +
+                                          std::to_string(*s.pixelY) + ") sample " +
+                                          std::to_string(s.sample);
     if (*s.selectRay >= rays)
       fail(j.contains("select_ray") ? path + "/select_ray" : path,
-           "ray " + std::to_string(*s.selectRay) + " is not in the " + toString(s.algorithm) +
-               " tree of pixel (" + std::to_string(*s.pixelX) + ", " + std::to_string(*s.pixelY) +
-               ") sample " + std::to_string(s.sample) + ": it has " + std::to_string(rays) +
-               " rays (0.." + std::to_string(rays - 1) + ")");
+           "ray " + std::to_string(*s.selectRay) + " is not in the " + toString(s.algorithm) + " " +
+               whose + ": it has " + std::to_string(rays) + " rays (0.." +
+               std::to_string(rays - 1) + ")");
   }
 
   // A bundle of samples and the hits along a ray are drawn for the step's pixel.
@@ -689,9 +732,10 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
                                  " samples of the pixel (" + std::to_string(s.bundle) + " asked)");
   }
   if (j.contains("all_hits")) s.allHits = boolean(j["all_hits"], path + "/all_hits");
-  if (!s.pixelX && (s.bundle > 1 || s.allHits))
-    fail(path + (j.contains("bundle") ? "/bundle" : "/all_hits"),
-         std::string(j.contains("bundle") ? "bundle" : "all_hits") + " needs a pixel");
+  if (!s.pixelX && s.bundle > 1) fail(path + "/bundle", "bundle needs a pixel");
+  if (s.ray && s.bundle > 1)
+    fail(path + "/bundle", "a bundle draws samples of the pixel, not of a chosen \"ray\"");
+  if (!s.traces() && s.allHits) fail(path + "/all_hits", "all_hits needs a pixel or a ray");
   if ((s.bundle > 1 || s.allHits) && s.view != LessonView::Scene && s.view != LessonView::Inspector)
     fail(path + (j.contains("bundle") ? "/bundle" : "/all_hits"),
          "bundle and all_hits belong to the scene and inspector views (this step's view is \"" +
@@ -820,12 +864,20 @@ RenderSettings LessonStep::settings() const {
 }
 
 std::optional<Ray> LessonStep::cameraRay() const {
+  if (ray) return ray;
   if (!pixelX || !pixelY) return std::nullopt;
   const Tracer tracer(*scene, settings());
   Stepper stepper(tracer, *pixelX, *pixelY, sample);
   stepper.step();
   const RaySegment& camera = stepper.tree().segments.at(0);
   return Ray::make(camera.origin, camera.direction, 0.0, kInfinity, camera.time);
+}
+
+PixelTrace LessonStep::trace(const TraceLimits& limits) const {
+  RAYLAB_CHECK(traces());
+  const Tracer tracer(*scene, settings());
+  return ray ? traceRay(tracer, *ray, pixelX.value_or(0), pixelY.value_or(0), sample, limits)
+             : tracePixel(tracer, *pixelX, *pixelY, sample, limits);
 }
 
 int Lesson::questionCount() const {

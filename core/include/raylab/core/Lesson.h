@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Exception.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/Ray.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
@@ -135,6 +136,9 @@ struct LessonCheck {
   int spp = 0;                                   ///< pixel_luminance: samples (0: scene's).
   int object = -1;  ///< bvh_*: the mesh object (default: the step's bvh object, else the
                     ///< scene's first mesh); an index into the step scene's objects.
+  /// The step's chosen ray, traced in place of the pixel's camera ray, when the check
+  /// names no pixel of its own and the step has one (LessonStep::ray).
+  std::optional<Ray> root;
 };
 /// "tree_rays", "tree_depth", ...
 const char* toString(LessonCheck::Quantity quantity);
@@ -189,6 +193,16 @@ struct LessonStep {
   /// "all_hits": every surface the pixel's camera ray (the selected ray in the inspector
   /// view) crosses is marked along it, entering and leaving (sceneCrossings).
   bool allHits = false;
+  /// "ray": {"origin": [x, y, z], "direction": [x, y, z]}, a ray chosen by hand traced in
+  /// place of the pixel's camera ray (traceRay; the pixel, (0, 0) when the step names
+  /// none, only chooses the random numbers of the rays it spawns): a ray exactly tangent
+  /// to a sphere, or one on the knife edge of a rim. World space; the direction is
+  /// normalised.
+  std::optional<Ray> ray;
+  /// "exactness": the inspector view shows the exact oracle's check of the selected ray's
+  /// hit (exact t, double t, their difference in ulps, the bound, the verdict) beside the
+  /// ray's values, as the window's "Exactness figures" button does.
+  bool exactness = false;
   std::optional<LessonBvh> bvh;                    ///< Scene view: a mesh's BVH boxes.
   LessonMeasure measure = LessonMeasure::Samples;  ///< Compare and plot views only.
   /// The step's scene changes as written (compact JSON, one per change), for captions.
@@ -204,8 +218,13 @@ struct LessonStep {
   /// the step's algorithm.
   RenderSettings settings() const;
   /// The camera ray of the step's pixel and sample (world space, the first ray of its
-  /// tree, unbounded); nothing when the step has no pixel.
+  /// tree, unbounded), or the step's chosen ray; nothing when the step has neither.
   std::optional<Ray> cameraRay() const;
+  /// True when the step traces a tree: it names a pixel or a chosen ray.
+  bool traces() const { return bool(pixelX) || bool(ray); }
+  /// The step's tree: its pixel's sample, or its chosen ray (traceRay); within `limits`.
+  /// Call only when traces().
+  PixelTrace trace(const TraceLimits& limits = {}) const;
 };
 
 /// A lesson: a scene and the steps a class goes through, in English and Chinese.
@@ -267,7 +286,11 @@ struct Lesson {
  * - Step keys: title and text (both {en, zh}, both languages required; "zh" must contain
  *   Chinese); view: scene | image | compare | plot | inspector | samples; algorithm:
  *   raycast | whitted | distributed | path; pixel [x, y] inside the step scene's image
- *   (required by inspector, and by select_ray and reveal); sample in [0, spp); reveal
+ *   (required by inspector, and by select_ray and reveal, unless the step has a "ray");
+ *   ray {"origin": [x, y, z], "direction": [x, y, z]} (world space, finite, at most 1e12,
+ *   direction not zero): a ray chosen by hand traced in place of the pixel's camera ray,
+ *   e.g. one exactly tangent to a sphere; exactness (inspector view only): true shows the
+ *   exact oracle's check of the selected ray beside its values; sample in [0, spp); reveal
  *   {"frame": n} or {"depth": d}; colour: energy | kind | depth; filters (kinds from
  *   camera, reflection, refraction, diffuse, glossy, shadow; max_depth; reaching_light;
  *   min_energy); camera_view: default | camera | close_up (close to the step's bvh mesh,

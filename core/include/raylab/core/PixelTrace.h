@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +34,9 @@ struct PixelTrace {
   Vec3 estimate{0.0};      ///< The sample's radiance, linear RGB: Tracer::trace's value unless
                            ///< tree.truncated, then that of the rays traced.
   bool cancelled = false;  ///< TraceLimits::cancel stopped it (tree.message says so).
+  /// A ray chosen by hand traced in place of the pixel's camera ray (traceRay), as given;
+  /// nothing for a pixel's own camera ray.
+  std::optional<Ray> root;
 
   /// Bounces of the deepest ray recorded (the camera ray has depth 0).
   int depth() const;
@@ -78,6 +82,17 @@ PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x,
 /// The same, with an engine already built for the scene and settings.
 PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample = 0,
                       std::size_t memoryBudget = kDefaultTreeBudget);
+
+/// Traces `root` (world space; any non-zero direction, normalised) in place of the camera
+/// ray of sample `sample` of pixel (x, y), which choose the random numbers of the rays it
+/// spawns: a ray chosen by hand, such as a ray exactly tangent to a sphere (lesson 2,
+/// `raylab trace --ray`). Otherwise as tracePixel. The root's own tMin, tMax and time are
+/// kept (Ray's defaults: [0, infinity), time 0).
+PixelTrace traceRay(const Tracer& tracer, const Ray& root, int x, int y, int sample,
+                    const TraceLimits& limits = {});
+/// The same, building the engine for the scene and settings.
+PixelTrace traceRay(const Scene& scene, const RenderSettings& settings, const Ray& root, int x,
+                    int y, int sample, const TraceLimits& limits = {});
 
 /// The pixels of a grid of `across` x `down` camera rays spread evenly over a width x
 /// height image (the original course program's "rays across and down"): pixel

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,8 +125,13 @@ class Stepper {
   /// Prepares sample `sample` of pixel (x, y) of `tracer` (which must outlive the stepper):
   /// the camera ray waits in the queue. `memoryBudget` bounds the recorded segments, bytes,
   /// and so the rays traced (a budget below one segment traces nothing).
+  ///
+  /// With `root`, that ray (world space; its direction is normalised, its tMin, tMax and
+  /// time are kept) is traced in place of the camera ray: a ray chosen by hand, as a
+  /// lesson's tangent ray. The pixel and sample still choose the random numbers of the
+  /// rays it spawns, so the trace is as deterministic as a pixel's.
   Stepper(const Tracer& tracer, int x, int y, int sample,
-          std::size_t memoryBudget = kDefaultTreeBudget);
+          std::size_t memoryBudget = kDefaultTreeBudget, std::optional<Ray> root = std::nullopt);
 
   /// Processes the first ray of the queue. Returns false when the queue was empty.
   /// The step that empties the queue also propagates the tree.
@@ -157,6 +163,7 @@ class Stepper {
   const Tracer* m_tracer;
   int m_x, m_y, m_sample;
   std::size_t m_budget;
+  std::optional<Ray> m_root;  ///< Traced in place of the camera ray, when set.
   Sampler m_sampler;
   std::deque<QueuedRay> m_queue;
   RayTree m_tree;
