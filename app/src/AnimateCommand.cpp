@@ -3,15 +3,22 @@
 #include "ExitCodes.h"
 #include "TraceCommand.h"
 
+#include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
 
 #include "raylab/core/Exception.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/ImageIO.h"
 
+#if RAYLAB_WITH_GUI
+#include "Language.h"
+#include "UiWords.h"
+#endif
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -37,6 +44,31 @@ struct AnimateOptions {
   int fps = 24;          ///< --fps of the video.
   bool captions = true;  ///< --captions: the narration of each frame along its bottom.
 };
+
+/// The caption of a frame in language `lang`: the narration of vis::stepCaption, or in
+/// Chinese the window's (UiWords::stepCaption) when this build has the window.
+std::function<std::string(int)> captionsIn(const std::string& lang, const Scene& scene,
+                                           const PixelTrace& trace,
+                                           const vis::AnimationSettings& animation) {
+#if RAYLAB_WITH_GUI
+  if (lang == "zh") {
+    if (!installLanguageHeadless(kChinese))
+      throw AnimateError("--lang zh: the Chinese translation (raylab_zh_CN.qm) was not found");
+    std::vector<std::string> names;
+    for (const SceneObject& object : scene.objects) names.push_back(object.name);
+    return [&trace, animation, names](int frame) {
+      return stepCaption(trace, animation, frame, names).toStdString();
+    };
+  }
+#else
+  if (lang == "zh")
+    throw AnimateError(
+        "--lang zh: Chinese captions need the window's translations, and this "
+        "build has no window");
+  (void)scene;
+#endif
+  return [&trace, animation](int frame) { return vis::stepCaption(trace, animation, frame); };
+}
 
 /// Parses "A:B" (A <= B, both >= 0); nothing when malformed.
 std::optional<std::pair<int, int>> parseRange(const std::string& text) {
@@ -131,10 +163,12 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   // Step 3: render frame after frame into the same view.
   const auto [width, height] = o.pictureSize();
   const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree);
+  const std::function<std::string(int)> caption = captionsIn(o.lang, scene, trace, animation);
   ProgressBar progress("animate");
   for (std::size_t i = 0; i < frames.size(); ++i) {
     view->setReveal(vis::revealFrame(tree, animation, frames[i]));
-    if (options.captions) view->setCaption(vis::stepCaption(trace, animation, frames[i]));
+    if (options.captions)
+      view->setCaption(caption(frames[i]), parseLanguage(o.lang).value_or(Language::English));
     view->renderToPng(frameFile(frames[i]), width, height);
     progress.update(double(i + 1) / double(frames.size()),
                     std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " frames");

@@ -41,6 +41,15 @@ QString chooseLanguage(const QString& requested) {
   return QLocale::system().language() == QLocale::Chinese ? kChinese : kEnglish;
 }
 
+bool installLanguageHeadless(const QString& language) {
+  // Qt's translations need an application object; the command line has none of its own.
+  static int argc = 1;
+  static char name[] = "raylab";
+  static char* argv[] = {name, nullptr};
+  if (!QCoreApplication::instance()) new QCoreApplication(argc, argv);
+  return installLanguage(language);
+}
+
 bool installLanguage(const QString& language) {
   Installed& state = installed();
   for (auto* t : {state.raylab.get(), state.qt.get()})

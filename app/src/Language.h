@@ -24,6 +24,13 @@ QString chooseLanguage(const QString& requested);
  */
 bool installLanguage(const QString& language);
 
+/**
+ * \brief installLanguage for the command line, which has no window: creates the
+ * QCoreApplication a translator needs when there is none yet (it lives until the program
+ * ends). Returns false (the words stay English) when the translation file is missing.
+ */
+bool installLanguageHeadless(const QString& language);
+
 /// The language installed last ("en" before any).
 QString currentLanguage();
 

@@ -24,7 +24,6 @@
 #include "InspectorWords.h"
 #include "Language.h"
 
-#include <QCoreApplication>
 #endif
 
 #include <algorithm>
@@ -212,14 +211,7 @@ std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Lang
       inspection.rayText() + (exactness ? "\n" + inspection.oracleText() : std::string());
 #if RAYLAB_WITH_GUI
   if (language == Language::Chinese) {
-    // Qt's translations need an application object; the command line has none of its own.
-    static int argc = 1;
-    static char name[] = "raylab";
-    static char* argv[] = {name, nullptr};
-    static QCoreApplication* const app =
-        QCoreApplication::instance() ? nullptr : new QCoreApplication(argc, argv);
-    static const bool chinese = installLanguage(kChinese);
-    (void)app;
+    static const bool chinese = installLanguageHeadless(kChinese);
     if (chinese) {
       std::vector<std::string> names;
       for (const SceneObject& object : scene.objects) names.push_back(object.name);

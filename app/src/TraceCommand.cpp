@@ -261,6 +261,13 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
   command->add_flag("--legend,!--no-legend", legend, "The colour legend (default on)")
       ->group("Drawing");
   command
+      ->add_option("--lang", lang,
+                   "Language of the words in the picture (the legend; animate's captions): en "
+                   "or zh")
+      ->check(CLI::IsMember({"en", "zh"}))
+      ->capture_default_str()
+      ->group("Drawing");
+  command
       ->add_option("--view", view,
                    "default: from outside the scene; camera: from just behind the scene camera")
       ->check(CLI::IsMember({"default", "camera"}))
@@ -329,6 +336,7 @@ vis::RayTreeStyle RayTreeOptions::style() const {
   style.showNormals = normals;
   style.showArrows = arrows;
   style.showLegend = legend;
+  style.language = parseLanguage(lang).value_or(Language::English);
   return style;
 }
 

@@ -35,7 +35,8 @@ struct RayTreeOptions {
   bool reachingLight = false;         ///< --reaching-light.
   double minEnergy = 0.0;             ///< --min-energy.
   bool hitPoints = true, normals = false, arrows = false, legend = true;
-  std::string view = "default";                                ///< --view default|camera.
+  std::string view = "default";  ///< --view default|camera.
+  std::string lang = "en";       ///< --lang en|zh: the legend's words (and animate's captions).
   std::optional<std::pair<int, int>> imageSize;                ///< --image-size (the traced image).
   std::string order = "depth";                                 ///< --order processing|depth.
   int framesPerStep = vis::AnimationSettings{}.framesPerStep;  ///< --frames-per-step.

@@ -142,12 +142,13 @@ void checkFrames(const std::string& dir, int count, int width, int height) {
 int main(int argc, char** argv) {
   const std::string usage =
       "usage: raylab_check_ray_tree TREE.json SCENE.json RAYS | --same A.png B.png |"
-      " --frames DIR COUNT WIDTH HEIGHT | --captioned CAPTIONED.png PLAIN.png\n";
+      " --frames DIR COUNT WIDTH HEIGHT | --captioned CAPTIONED.png PLAIN.png\n"
+      "       | --other-caption ZH.png EN.png (one frame, captions in two languages)\n";
   try {
     const std::string first = argc > 1 ? argv[1] : "";
     if (first == "--same" && argc == 4) {
       checkSame(argv[2], argv[3]);
-    } else if (first == "--captioned" && argc == 4) {
+    } else if ((first == "--captioned" || first == "--other-caption") && argc == 4) {
       checkCaptioned(argv[2], argv[3]);
     } else if (first == "--frames" && argc == 6) {
       checkFrames(argv[2], std::stoi(argv[3]), std::stoi(argv[4]), std::stoi(argv[5]));
