@@ -290,7 +290,7 @@ times, parents, depths, objects, hits (N); kinds and end_reasons (N strings).)")
       [](const SceneHandle& handle, const py::object& pixel, int sample,
          std::optional<std::string> algorithm, std::optional<int> spp,
          std::optional<std::uint64_t> seed, std::optional<int> maxDepth, std::optional<bool> nee,
-         std::optional<bool> mis) {
+         std::optional<bool> mis, std::optional<Ray> ray) {
         const auto [x, y] = pixelOf(pixel);
         checkPixel(*handle.scene, x, y, sample);
         auto data = std::make_shared<TraceData>();
@@ -298,19 +298,23 @@ times, parents, depths, objects, hits (N); kinds and end_reasons (N strings).)")
         data->settings = settingsFor(*handle.scene, {algorithm, spp, seed, maxDepth, nee, mis});
         {
           py::gil_scoped_release release;
-          data->trace = tracePixel(*data->scene, data->settings, x, y, sample);
+          data->trace = ray ? traceRay(*data->scene, data->settings, *ray, x, y, sample)
+                            : tracePixel(*data->scene, data->settings, x, y, sample);
         }
         return data;
       },
-      py::arg("scene"), py::arg("pixel"), py::arg("sample") = 0, py::kw_only(),
-      py::arg("algorithm") = py::none(), py::arg("spp") = py::none(), py::arg("seed") = py::none(),
-      py::arg("max_depth") = py::none(), py::arg("next_event_estimation") = py::none(),
-      py::arg("multiple_importance") = py::none(),
+      py::arg("scene"), py::arg("pixel") = py::make_tuple(0, 0), py::arg("sample") = 0,
+      py::kw_only(), py::arg("algorithm") = py::none(), py::arg("spp") = py::none(),
+      py::arg("seed") = py::none(), py::arg("max_depth") = py::none(),
+      py::arg("next_event_estimation") = py::none(), py::arg("multiple_importance") = py::none(),
+      py::arg("ray") = py::none(),
       R"(Traces sample `sample` of pixel (x, y) (y down) with the real algorithm, recording its
 ray tree (core's tracePixel, as raylab trace and the window do). Settings not given come
 from the scene's render block; `spp` matters too: film and lens samples are stratified over
-the pixel's spp, so sample s equals sample s of a render with the same spp and seed. The
-GIL is released.)");
+the pixel's spp, so sample s equals sample s of a render with the same spp and seed. With
+`ray` (a raylab.Ray), that ray is traced in place of the pixel's camera ray (core's
+traceRay, raylab trace --ray), e.g. one exactly tangent to a sphere; the pixel then only
+chooses the random numbers. The GIL is released.)");
 
   py::class_<StepperHandle>(m, "Stepper", R"(The engine of the four algorithms for one pixel
 sample, advanced one ray at a time: the real algorithm, not a replay (core's Stepper).)")

@@ -113,3 +113,21 @@ def test08_a_pixel_outside_the_image_is_refused():
         raylab.trace(raylab.default_scene(), (400, 10))
     with pytest.raises(ValueError, match="sample must be 0 or more"):
         raylab.Stepper(raylab.default_scene(), (1, 1), -1)
+
+
+def test09_a_chosen_ray_is_traced_in_place_of_the_camera_ray(tmp_path, raylab_exe):
+    """ray=: lesson 2's ray level with the top of its sphere, exactly tangent (the oracle
+    says so, double precision finds t = 5): the tree's root is that ray, and its dump is the
+    CLI's `raylab trace --ray` dump byte for byte."""
+    scene = raylab.load_scene(str(SCENES / "shapes.json"))
+    ray = raylab.Ray((-8, 2, 0), (2, 0, 0))  # normalised to (1, 0, 0)
+    trace = raylab.trace(scene, ray=ray, algorithm="raycast")
+    root = trace[0]
+    assert tuple(root.origin) == (-8, 2, 0) and tuple(root.direction) == (1, 0, 0)
+    assert tuple(root.end_point) == (-3, 2, 0)
+    sphere = scene.shape("sphere")
+    assert str(raylab.exact_classify(sphere, ray).classification).endswith("Tangent")
+    dump = tmp_path / "tangent.json"
+    run_cli(raylab_exe, "trace", "--scene", SCENES / "shapes.json", "--algorithm", "raycast",
+            "--ray", "-8,2,0,2,0,0", "--out", tmp_path / "tangent.png", "--json", dump)
+    assert trace.to_json() == dump.read_text()
