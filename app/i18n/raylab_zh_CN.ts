@@ -285,27 +285,27 @@
     </message>
     <message>
         <source>Exactly tangent: the ray touches &apos;%1&apos; without crossing it; doubles cannot decide this reliably.</source>
-        <translation>精确相切：光线与“%1”接触但没有穿过；双精度无法可靠地判定这种情形。</translation>
+        <translation>恰好相切：光线与“%1”相切，只接触而不穿过；双精度无法可靠地判定这种情形。</translation>
     </message>
     <message>
         <source>The exact hit lies on an edge: a neighbouring face could be hit instead in doubles.</source>
-        <translation>精确交点正好落在一条边上：双精度计算可能改为打中相邻的面。</translation>
+        <translation>精确交点正好落在一条边上：用双精度计算时，可能转而打中相邻的面。</translation>
     </message>
     <message>
         <source>The exact hit lies on a vertex: a neighbouring face could be hit instead in doubles.</source>
-        <translation>精确交点正好落在一个顶点上：双精度计算可能改为打中相邻的面。</translation>
+        <translation>精确交点正好落在一个顶点上：用双精度计算时，可能转而打中相邻的面。</translation>
     </message>
     <message>
         <source>The double t is off by %1, more than the usual bound %2 (a grazing ray or an ill-conditioned transform).</source>
-        <translation>双精度的 t 偏差为 %1，超过了通常的上界 %2（掠射光线，或变换矩阵病态）。</translation>
+        <translation>双精度 t 的误差为 %1，超过了通常的误差界 %2（可能是掠射光线，或变换矩阵病态）。</translation>
     </message>
     <message>
         <source>The exact oracle hits primitive %1, double precision primitive %2.</source>
-        <translation>精确判定器打中的是第 %1 个图元，双精度打中的是第 %2 个图元。</translation>
+        <translation>精确判定器打中的是 %1 号图元，双精度打中的是 %2 号图元。</translation>
     </message>
     <message>
         <source>The recorded hit is %1 along the ray, the object&apos;s nearest exact hit %2.</source>
-        <translation>记录的交点沿光线距离为 %1，而该物体最近的精确交点距离为 %2。</translation>
+        <translation>光线树中记录的交点沿光线的距离为 %1，而该物体最近的精确交点距离为 %2。</translation>
     </message>
 </context>
 <context>
@@ -2394,7 +2394,7 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
     <message>
         <source>%1: a chosen ray from %2 along %3
 %4</source>
-        <translation>%1：手工指定的光线，从 %2 出发，方向 %3
+        <translation>%1：手工指定的光线，从 %2 出发，方向为 %3
 %4</translation>
     </message>
 </context>

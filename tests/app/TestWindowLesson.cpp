@@ -236,7 +236,7 @@ TEST_F(WindowLessonTest, 10_AChosenRayStepTracesItAndShowsTheOracle) {
   EXPECT_TRUE(inspector.text().contains(QStringLiteral("Exactly tangent")));
   ASSERT_TRUE(installLanguage(kChinese)) << "the translation (.qm) was not found";
   inspector.showSegment(0);
-  EXPECT_TRUE(inspector.text().contains(QStringLiteral("精确相切")))
+  EXPECT_TRUE(inspector.text().contains(QStringLiteral("恰好相切")))
       << inspector.text().toStdString();
   installLanguage(kEnglish);
 
