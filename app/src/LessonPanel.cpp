@@ -9,6 +9,8 @@
 #include <QComboBox>
 #include <QDoubleValidator>
 #include <QEvent>
+#include <QFontDatabase>
+#include <QFrame>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -96,9 +98,17 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   m_needs->setStyleSheet(QStringLiteral("color: #a05a00"));
   m_caption = wrapping(1.0);
   m_caption->setStyleSheet(QStringLiteral("color: #2a5d8a"));
+  m_rayText = new QLabel;
+  m_rayText->setWordWrap(true);
+  m_rayText->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  m_rayText->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+  m_rayText->setFrameShape(QFrame::StyledPanel);
+  m_rayText->setMargin(6);
+  m_rayText->hide();
   layout->addWidget(m_title);
   layout->addWidget(m_text);
   layout->addWidget(m_caption);
+  layout->addWidget(m_rayText);
   layout->addWidget(m_needs);
 
   // Step 3: the question, with its answer box.
@@ -252,6 +262,13 @@ void LessonPanel::refresh() {
   m_notes->setText(text(step.teacherNotes, m_language));
   m_notes->setVisible(notes && m_notesButton->isChecked());
 }
+
+void LessonPanel::setRayText(const QString& text) {
+  m_rayText->setText(text);
+  m_rayText->setVisible(!text.isEmpty());
+}
+
+QString LessonPanel::rayText() const { return m_rayText->text(); }
 
 void LessonPanel::setBvhView(const vis::BvhStyle& style, const vis::BvhSummary& summary) {
   m_bvhStyle = style;

@@ -54,6 +54,12 @@ class LessonPanel : public QWidget {
   /// The words under the step's text: the BVH view's caption, or for an image step of a
   /// scene with meshes how they are searched (empty otherwise).
   QString viewCaption() const;
+  /// An inspector step's selected ray as the inspector shows it (its words, values and,
+  /// with "exactness", the oracle's figures), under the step's text, so that the text and
+  /// the figures it talks about are read together (also in presentation mode, which hides
+  /// the inspector); empty: none.
+  void setRayText(const QString& text);
+  QString rayText() const;
 
   /// \name The question
   /// @{
@@ -100,6 +106,7 @@ class LessonPanel : public QWidget {
   QLabel* m_text = nullptr;
   QLabel* m_needs = nullptr;
   QLabel* m_caption = nullptr;  ///< What the view shows beyond the text (lesson 8).
+  QLabel* m_rayText = nullptr;  ///< An inspector step's selected ray (setRayText).
   vis::BvhStyle m_bvhStyle;
   vis::BvhSummary m_bvhSummary;
   QGroupBox* m_question = nullptr;

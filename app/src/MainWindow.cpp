@@ -216,6 +216,11 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
           [this](const QString& text) { statusBar()->showMessage(text); });
   connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this, inspector](int id) {
     m_inspector->showSegment(id);
+    // An inspector step of a lesson shows the ray under its text, in the lesson panel.
+    if (lessonShowsInspector()) {
+      m_lessonPanel->setRayText(id >= 0 ? m_inspector->text() : QString());
+      return;
+    }
     // Only a ray actually picked brings the inspector forward; a new trace or a click on
     // empty space leaves the panel the teacher is using in front.
     if (id >= 0) inspector->raise();
@@ -550,7 +555,7 @@ void MainWindow::showLessonStep(int index) {
       rays.setFrame((step.reveal.value + 1) * perStep);
     if (step.view == LessonView::Inspector) {
       m_inspector->setExactness(step.exactness);
-      rays.selectSegment(step.selectRay.value_or(0));
+      rays.selectSegment(step.selectRay.value_or(0));  // the lesson panel shows it
     }
   } else {
     rays.setRootRay(std::nullopt);
@@ -586,9 +591,16 @@ void MainWindow::showLessonStep(int index) {
     showImageTab(m_renderPanel);
     m_renderPanel->render();
   }
+  if (step.view != LessonView::Inspector) m_lessonPanel->setRayText({});
   m_lessonDock->raise();
-  if (step.view == LessonView::Inspector) m_inspectorDock->raise();
   render();
+}
+
+bool MainWindow::lessonShowsInspector() const {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  const int step = m_lessonPanel->step();
+  return lesson && !m_lessonDock->isHidden() && step >= 0 &&
+         lesson->steps[std::size_t(step)].view == LessonView::Inspector;
 }
 
 void MainWindow::setPresentationMode(bool on) {

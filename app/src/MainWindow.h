@@ -135,6 +135,8 @@ class MainWindow : public QMainWindow {
   /// the open lesson: its scene, algorithm, pixel, reveal, colours, filters, camera view,
   /// selected ray, rendered image.
   void showLessonStep(int index);
+  /// True while the lesson panel shows an inspector step (it then shows the selected ray).
+  bool lessonShowsInspector() const;
   LessonPanel* lessonPanel() const { return m_lessonPanel; }
   /// The lesson files the Lessons menu lists (NN-topic.json in the lessons folder).
   QStringList lessonFiles() const;

@@ -234,6 +234,8 @@ TEST_F(WindowLessonTest, 10_AChosenRayStepTracesItAndShowsTheOracle) {
   EXPECT_TRUE(inspector.text().contains(QStringLiteral("Tangent, t = 5")))
       << inspector.text().toStdString();
   EXPECT_TRUE(inspector.text().contains(QStringLiteral("Exactly tangent")));
+  // The lesson panel shows the same text under the step's words.
+  EXPECT_EQ(panel.rayText(), inspector.text());
   ASSERT_TRUE(installLanguage(kChinese)) << "the translation (.qm) was not found";
   inspector.showSegment(0);
   EXPECT_TRUE(inspector.text().contains(QStringLiteral("恰好相切")))
@@ -248,6 +250,11 @@ TEST_F(WindowLessonTest, 10_AChosenRayStepTracesItAndShowsTheOracle) {
   EXPECT_FALSE(rays.rootRay());
   const LessonStep& own = lesson.steps[std::size_t(pixel)];
   EXPECT_EQ(rays.tree().segments.at(0).direction, own.cameraRay()->direction);
+  EXPECT_TRUE(panel.rayText().contains(QStringLiteral("Ray #0")));
+  // A step that is not an inspector step shows no ray under its text.
+  panel.showStep(0);
+  settle();
+  EXPECT_TRUE(panel.rayText().isEmpty());
 }
 
 TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
