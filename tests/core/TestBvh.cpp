@@ -168,8 +168,11 @@ TEST(Bvh, 04_StatisticsAreConsistent) {
   EXPECT_LE(st.depth, 40);
   EXPECT_GT(st.sahCost, 1.0);
   EXPECT_LT(st.sahCost, 100.0);
-  // Leaves cover every triangle slot exactly once; children lie inside their parent.
+  // Leaves cover every triangle exactly once, each leaf from a multiple of 4 (a new block
+  // of the wide traversal); children lie inside their parent.
   std::vector<int> covered(5120, 0);
+  EXPECT_EQ(bvh.triangleSlots() % 4, 0);
+  EXPECT_GE(bvh.triangleSlots(), 5120);
   int leaves = 0;
   std::vector<BvhNode> nodes;
   for (int i = 0; i < bvh.nodeSlots(); ++i) nodes.push_back(bvh.node(i));
@@ -178,7 +181,12 @@ TEST(Bvh, 04_StatisticsAreConsistent) {
     const BvhNode& n = nodes[i];
     if (n.count > 0) {
       ++leaves;
-      for (int k = n.offset; k < n.offset + n.count; ++k) covered[k]++;
+      EXPECT_EQ(n.offset % 4, 0);
+      for (int k = n.offset; k < n.offset + n.count; ++k) {
+        ASSERT_LT(k, bvh.triangleSlots());
+        ASSERT_GE(bvh.slotTriangle(k), 0);
+        covered[static_cast<std::size_t>(bvh.slotTriangle(k))]++;
+      }
       continue;
     }
     for (int c = n.offset; c < n.offset + 2; ++c)

@@ -110,6 +110,90 @@ std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat, bool paral
   return pairs;
 }
 
+/// The 4-wide tree (BvhWideNode) collapsed from the flattened binary tree `flat`, depth
+/// first from the root. A wide node's children: the binary node's two, then, while there
+/// are fewer than four and one of them is interior, the interior child with the largest
+/// box (the first on a tie) replaced by its two children.
+class WideCollapse {
+ public:
+  explicit WideCollapse(const std::vector<BvhNode>& flat) : m_flat(flat) {
+    m_wide.reserve(flat.size() / 4 + 1);
+  }
+
+  std::vector<BvhWideNode> run(bool empty) {
+    const BvhNode& root = m_flat[0];
+    if (root.count > 0 || empty) {
+      // A lone leaf (or nothing): a root with one leaf lane.
+      m_wide.emplace_back();
+      setLane(0, 0, root, empty ? -1 : root.offset);
+      return std::move(m_wide);
+    }
+    collapse(0);
+    return std::move(m_wide);
+  }
+
+ private:
+  bool interior(int i) const { return m_flat[static_cast<std::size_t>(i)].count == 0; }
+
+  void setLane(int wide, int lane, const BvhNode& n, int child) {
+    BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
+    for (int k = 0; k < 6; ++k) w.box[k][lane] = n.box[k];
+    w.child[lane] = child;
+    w.count[lane] = child < 0 ? 0 : n.count;
+    if (child >= 0) w.lanes = static_cast<std::uint8_t>(w.lanes | (1 << lane));
+  }
+
+  /// Makes the wide node of interior binary node `index`; returns its index.
+  int collapse(int index) {
+    const BvhNode& node = m_flat[static_cast<std::size_t>(index)];
+    int kids[4] = {node.offset, node.offset + 1, -1, -1};
+    int n = 2;
+    while (n < 4) {
+      int best = -1;
+      double bestArea = -1.0;
+      for (int i = 0; i < n; ++i)
+        if (interior(kids[i])) {
+          const double area = boxArea(m_flat[static_cast<std::size_t>(kids[i])]);
+          if (area > bestArea) {
+            bestArea = area;
+            best = i;
+          }
+        }
+      if (best < 0) break;
+      const int opened = kids[best];
+      for (int i = n; i > best + 1; --i) kids[i] = kids[i - 1];
+      kids[best] = m_flat[static_cast<std::size_t>(opened)].offset;
+      kids[best + 1] = kids[best] + 1;
+      ++n;
+    }
+    const int me = static_cast<int>(m_wide.size());
+    m_wide.emplace_back();
+    BvhWideNode& w = m_wide.back();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (int lane = 0; lane < 4; ++lane) {
+      for (int a = 0; a < 3; ++a) {
+        w.box[a][lane] = inf;
+        w.box[3 + a][lane] = -inf;
+      }
+      w.child[lane] = -1;
+      w.count[lane] = 0;
+    }
+    for (int lane = 0; lane < n; ++lane) {
+      const BvhNode& kid = m_flat[static_cast<std::size_t>(kids[lane])];
+      // Set the lane first (its box), then build the child: m_wide may grow meanwhile.
+      setLane(me, lane, kid, kid.count > 0 ? kid.offset : 0);
+      if (kid.count == 0) {
+        const int child = collapse(kids[lane]);
+        m_wide[static_cast<std::size_t>(me)].child[lane] = child;
+      }
+    }
+    return me;
+  }
+
+  const std::vector<BvhNode>& m_flat;
+  std::vector<BvhWideNode> m_wide;
+};
+
 }  // namespace
 
 /// The build state: primitive references sorted in place, nodes allocated in pairs.
@@ -181,33 +265,48 @@ struct Bvh::Builder {
     }
   }
 
-  /// Step 2: the triangles in leaf order (slot i is prims[i]): each slot's caller index and
-  /// vertices, so a leaf reads its triangles contiguously, and the exact bounds of all.
-  void copyTriangles(std::vector<int>& primIds, std::vector<std::array<double, 9>>& triVerts,
-                     Bounds3& bounds) const {
-    const int n = primCount;
-    primIds.resize(static_cast<std::size_t>(n));
-    triVerts.resize(static_cast<std::size_t>(n));
-    std::vector<Bounds3> chunkBounds(std::size_t(chunkCount(0, n, kParallelBinGrain)));
-    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int chunk) {
-      for (int i = begin; i < end; ++i) {
-        const PrimRef& r = prims[i];
-        primIds[i] = r.id;
-        for (int k = 0; k < 3; ++k) {
-          const Point3& p = vertices[triangles[r.id][k]];
-          for (int a = 0; a < 3; ++a) triVerts[i][3 * k + a] = p[a];
+  /// A leaf as flatten() met it: its triangles prims[begin, begin + count) and the slot
+  /// where they start in the stored order (a multiple of 4).
+  struct LeafRun {
+    int begin, count, slot;
+  };
+
+  /// Step 3: the triangles in leaf order, each leaf from its slot on (a new block of 4):
+  /// each slot's caller index (-1 for padding) and vertices, so a leaf reads its triangles
+  /// contiguously, four to a block; and the exact bounds of all triangles.
+  void copyTriangles(const std::vector<LeafRun>& leaves, int slots, std::vector<int>& primIds,
+                     std::vector<BvhTriangleBlock>& blocks, Bounds3& bounds) const {
+    primIds.assign(static_cast<std::size_t>(slots), -1);
+    blocks.resize(static_cast<std::size_t>(slots / 4));
+    const int leafCount = static_cast<int>(leaves.size());
+    constexpr int kLeafGrain = kParallelBinGrain / 4;
+    std::vector<Bounds3> chunkBounds(std::size_t(chunkCount(0, leafCount, kLeafGrain)));
+    forChunks(settings.parallel, 0, leafCount, kLeafGrain, [&](int first, int last, int chunk) {
+      for (int l = first; l < last; ++l) {
+        const LeafRun& leaf = leaves[static_cast<std::size_t>(l)];
+        for (int j = 0; j < leaf.count; ++j) {
+          const PrimRef& r = prims[leaf.begin + j];
+          const int slot = leaf.slot + j;
+          primIds[static_cast<std::size_t>(slot)] = r.id;
+          BvhTriangleBlock& block = blocks[static_cast<std::size_t>(slot / 4)];
+          for (int k = 0; k < 3; ++k) {
+            const Point3& p = vertices[triangles[r.id][k]];
+            for (int a = 0; a < 3; ++a) block.v[3 * k + a][slot % 4] = p[a];
+          }
+          chunkBounds[chunk].extend(primBounds(r));
         }
-        chunkBounds[chunk].extend(primBounds(r));
       }
     });
     // Minimum and maximum are exact, so the chunks' order does not change the bounds.
     for (const Bounds3& b : chunkBounds) bounds.extend(b);
   }
 
-  /// Step 3: the nodes laid out depth first, each pair of children right after the
+  /// Step 2: the nodes laid out depth first, each pair of children right after the
   /// subtree that precedes it (the left subtree first), slot 1 the padding. Counts nodes,
-  /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way.
-  std::vector<BvhNode> flatten(BvhStats& stats) const {
+  /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way. Leaves are met
+  /// in the order of their triangles (left before right), so each gets the next free
+  /// multiple of 4 as its first slot: `leaves` receives them, `slots` the slots used.
+  std::vector<BvhNode> flatten(BvhStats& stats, std::vector<LeafRun>& leaves, int& slots) const {
     const bool empty = primCount == 0;
     const int used = usedSlots.load();
     std::vector<BvhNode> flat(static_cast<std::size_t>(used));
@@ -232,6 +331,11 @@ struct Bvh::Builder {
         stats.leafCount++;
         stats.maxLeafSize = std::max<int>(stats.maxLeafSize, node.count);
         sah += settings.intersectionCost * node.count * rel;
+        if (!empty) {
+          leaves.push_back({node.offset, node.count, slots});
+          node.offset = slots;
+          slots += (node.count + 3) / 4 * 4;
+        }
         continue;
       }
       const int oldChild = node.offset;
@@ -519,14 +623,18 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   // Step 1: build the tree over primitive references.
   Builder builder(m_settings, vertices, triangles);
   builder.buildTree();
-  // Step 2: copy the triangles' vertices in leaf order.
-  builder.copyTriangles(m_primIds, m_triVerts, m_bounds);
-  // Step 3: lay the nodes out depth first, measuring the tree.
-  const std::vector<BvhNode> flat = builder.flatten(m_stats);
+  // Step 2: lay the nodes out depth first, measuring the tree and placing the leaves.
+  std::vector<Builder::LeafRun> leaves;
+  int slots = 0;
+  const std::vector<BvhNode> flat = builder.flatten(m_stats, leaves, slots);
   RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
   m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
+  // Step 3: copy the triangles' vertices in leaf order, four to a block.
+  builder.copyTriangles(leaves, slots, m_primIds, m_blocks, m_bounds);
   // Step 4: interleave sibling pairs into cache-line pairs.
   m_pairs = interleave(flat, m_settings.parallel);
+  // Step 5: the 4-wide tree of the queries.
+  m_wide = WideCollapse(flat).run(n == 0);
 }
 
 BvhNode Bvh::node(int index) const {

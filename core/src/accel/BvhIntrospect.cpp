@@ -40,7 +40,7 @@ std::vector<int> Bvh::nodeDepths() const {
     const int i = stack.back();
     stack.pop_back();
     const BvhNode n = node(i);
-    if (n.count > 0 || m_primIds.empty()) continue;
+    if (n.count > 0 || m_stats.triangleCount == 0) continue;
     for (int c = n.offset; c < n.offset + 2; ++c) {
       depth[static_cast<std::size_t>(c)] = depth[static_cast<std::size_t>(i)] + 1;
       stack.push_back(c);
@@ -51,7 +51,7 @@ std::vector<int> Bvh::nodeDepths() const {
 
 std::vector<std::vector<BvhBox>> Bvh::levels() const {
   std::vector<std::vector<BvhBox>> out;
-  if (m_primIds.empty()) return out;
+  if (m_stats.triangleCount == 0) return out;
   const std::vector<int> depth = nodeDepths();
   for (int i = 0; i < nodeSlots(); ++i) {
     const int d = depth[static_cast<std::size_t>(i)];

@@ -1,6 +1,23 @@
 #pragma once
 
+#include <limits>
+
 namespace raylab {
+
+/// pbrt's gamma(n) = n u / (1 - n u), u = half an ulp of 1.
+constexpr double bvhGamma(int n) {
+  constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
+  return (n * u) / (1.0 - n * u);
+}
+/// The slab tests (binary and wide) scale far slab distances by this so rounding never
+/// culls a box the ray touches (pbrt 4th ed., section 6.1.2): the distance (plane - o) / d
+/// is computed as (plane - o) * (1 / d), three roundings of at most half an ulp each, so the
+/// computed far distance is at least the true one divided by (1 + gamma(3)) and scaling by
+/// 1 + 2 gamma(3) lifts it above the true one; near distances are left as computed, and the
+/// near one may thus come out a little late, but never past the scaled far one. The box's
+/// float planes are rounded outwards from the double-precision triangles, so a ray that
+/// meets a triangle always passes its boxes' slab tests. Private to core.
+constexpr double kBvhSlabScale = 1.0 + 2.0 * bvhGamma(3);
 
 /// Deepest tree the traversal stack can hold (BvhTraverse.cpp); the builder stops using
 /// SAH splits well before this (kSahDepthLimit) and halves ranges by index instead, and

@@ -11,20 +11,17 @@
 #include <climits>
 #include <limits>
 
-// Bvh queries: closest hit, any hit, all hits and nearest triangle, each a small policy
-// run by one stack traversal (`traverse`). The build is in BvhBuild.cpp.
+// Bvh queries on the binary tree: all hits and nearest triangle, the recorded closest hit of
+// traceVisits and the brute-force references, each a small policy run by one stack
+// traversal (`traverse`). intersect() and occluded() run on the 4-wide tree
+// (BvhWideTraverse.cpp); the build is in BvhBuild.cpp.
 
 namespace raylab {
 
 namespace {
 
-/// pbrt's gamma(n) = n u / (1 - n u), u = half an ulp of 1.
-constexpr double gamma(int n) {
-  constexpr double u = std::numeric_limits<double>::epsilon() * 0.5;
-  return (n * u) / (1.0 - n * u);
-}
 /// Far slab distances are scaled by this so rounding never culls a box the ray touches.
-constexpr double kSlabScale = 1.0 + 2.0 * gamma(3);
+constexpr double kSlabScale = kBvhSlabScale;
 
 /**
  * A ray prepared once for traversal: inverse direction and near-plane choice for the
@@ -189,12 +186,19 @@ void traverse(const BvhNodePair* pairs, Query& query) {
   }
 }
 
+/// The 9 coordinates of the triangle in `slot` (its block's lane), as vertex 0, 1, 2.
+void slotVertices(const BvhTriangleBlock* blocks, int slot, double v[9]) {
+  const BvhTriangleBlock& block = blocks[slot >> 2];
+  for (int i = 0; i < 9; ++i) v[i] = block.v[i][slot & 3];
+}
+
 /// The boxes a ray query visits: those the ray enters within [tMin, tMax], the child the
 /// ray's direction reaches first (on the split axis) before the other. Keys are entry
-/// distances. The triangle slots' data: `verts` (9 doubles each) and `ids` (caller's index).
+/// distances. The triangle slots' data: `blocks` (vertices) and `ids` (caller's index,
+/// -1 for padding).
 struct RayQuery {
   const PreparedRay& ray;
-  const std::array<double, 9>* verts;
+  const BvhTriangleBlock* blocks;
   const int* ids;
   double tMax;
 
@@ -209,7 +213,8 @@ struct RayQuery {
   bool stillNeeded(double tEntry) const { return tEntry <= tMax; }
 
   std::optional<TriangleHit> hit(int slot) const {
-    const double* v = verts[slot].data();
+    double v[9];
+    slotVertices(blocks, slot, v);
     return hitTriangle(ray, v, v + 3, v + 6, tMax);
   }
 };
@@ -264,7 +269,7 @@ struct AllHits : RayQuery {
 /// visited first, and boxes farther than the best triangle so far are skipped.
 struct NearestTriangle {
   const Point3& p;
-  const std::array<double, 9>* verts;
+  const BvhTriangleBlock* blocks;
   const int* ids;
   double best2 = kInfinity;
   int bestId = -1;
@@ -280,7 +285,8 @@ struct NearestTriangle {
 
   bool visitLeaf(int begin, int end) {
     for (int slot = begin; slot < end; ++slot) {
-      const double* v = verts[slot].data();
+      double v[9];
+      slotVertices(blocks, slot, v);
       const double d2 = triangleDistance2(p, Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5]),
                                           Point3(v[6], v[7], v[8]));
       const int id = ids[slot];
@@ -365,27 +371,10 @@ struct RecordedClosestHit : ClosestHit {
 
 }  // namespace
 
-std::optional<Hit> Bvh::intersect(const Ray& ray) const {
-  if (m_primIds.empty()) return std::nullopt;
-  const PreparedRay r(ray);
-  ClosestHit query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
-  traverse(m_pairs.data(), query);
-  if (query.bestId == INT_MAX) return std::nullopt;
-  return Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
-}
-
-bool Bvh::occluded(const Ray& ray) const {
-  if (m_primIds.empty()) return false;
-  const PreparedRay r(ray);
-  AnyHit query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
-  traverse(m_pairs.data(), query);
-  return query.found;
-}
-
 std::vector<Hit> Bvh::intersectAll(const Ray& ray) const {
-  if (m_primIds.empty()) return {};
+  if (m_stats.triangleCount == 0) return {};
   const PreparedRay r(ray);
-  AllHits query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
+  AllHits query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
   traverse(m_pairs.data(), query);
   std::sort(query.hits.begin(), query.hits.end(), [](const Hit& a, const Hit& b) {
     return a.t < b.t || (a.t == b.t && a.primitive < b.primitive);
@@ -394,8 +383,8 @@ std::vector<Hit> Bvh::intersectAll(const Ray& ray) const {
 }
 
 int Bvh::closestTriangle(const Point3& p) const {
-  if (m_primIds.empty()) return -1;
-  NearestTriangle query{p, m_triVerts.data(), m_primIds.data()};
+  if (m_stats.triangleCount == 0) return -1;
+  NearestTriangle query{p, m_blocks.data(), m_primIds.data()};
   traverse(m_pairs.data(), query);
   return query.bestId;
 }
@@ -405,29 +394,34 @@ int Bvh::closestTriangle(const Point3& p) const {
 namespace raylab {
 
 std::optional<Hit> Bvh::intersectBruteForce(const Ray& ray) const {
-  if (m_primIds.empty()) return std::nullopt;
-  // One "leaf" holding every triangle slot: each is tested, whatever the boxes say.
+  if (m_stats.triangleCount == 0) return std::nullopt;
+  // Every leaf's triangles, whatever the boxes say (the padding slots hold none).
   const PreparedRay r(ray);
-  ClosestHit query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
-  query.visitLeaf(0, static_cast<int>(m_primIds.size()));
+  ClosestHit query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  const int slots = triangleSlots();
+  for (int slot = 0; slot < slots; ++slot)
+    if (m_primIds[static_cast<std::size_t>(slot)] >= 0) query.visitLeaf(slot, slot + 1);
   if (query.bestId == INT_MAX) return std::nullopt;
   return Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
 }
 
 bool Bvh::occludedBruteForce(const Ray& ray) const {
-  if (m_primIds.empty()) return false;
+  if (m_stats.triangleCount == 0) return false;
   const PreparedRay r(ray);
-  AnyHit query{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}};
-  query.visitLeaf(0, static_cast<int>(m_primIds.size()));
-  return query.found;
+  AnyHit query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  const int slots = triangleSlots();
+  for (int slot = 0; slot < slots; ++slot)
+    if (m_primIds[static_cast<std::size_t>(slot)] >= 0 && query.visitLeaf(slot, slot + 1))
+      return true;
+  return false;
 }
 
 BvhTrace Bvh::traceVisits(const Ray& ray) const {
   BvhTrace trace;
-  if (m_primIds.empty()) return trace;
+  if (m_stats.triangleCount == 0) return trace;
   const std::vector<int> depth = nodeDepths();
   const PreparedRay r(ray);
-  RecordedClosestHit query{{{r, m_triVerts.data(), m_primIds.data(), ray.tMax}},
+  RecordedClosestHit query{{{r, m_blocks.data(), m_primIds.data(), ray.tMax}},
                            m_pairs.data(),
                            depth.data(),
                            ray.tMax,

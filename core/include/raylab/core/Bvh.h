@@ -60,7 +60,8 @@ struct BvhStats {
 /// and either its two children (first, first + 1) or its run of triangle slots.
 struct BvhNode {
   float box[6];         ///< lower x, y, z then upper x, y, z (world space, rounded outwards).
-  std::int32_t offset;  ///< Interior: index of the first child. Leaf: first triangle slot.
+  std::int32_t offset;  ///< Interior: index of the first child. Leaf: first triangle slot
+                        ///< (a multiple of 4, see Bvh::triangleSlots).
   std::uint16_t count;  ///< Triangles in a leaf; 0 for an interior node.
   std::uint8_t axis;    ///< Split axis of an interior node (0 = x, 1 = y, 2 = z).
   std::uint8_t pad = 0;
@@ -79,6 +80,38 @@ struct alignas(64) BvhNodePair {
   std::uint8_t pad[2] = {0, 0};
 };
 static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
+
+/// A node of the 4-wide tree that answers intersect() and occluded(), made by collapsing the
+/// binary tree: its children are up to four nodes of the binary tree (the binary node's
+/// children, then the interior child with the largest box opened into its two children,
+/// until there are four or all are leaves). The boxes are the binary nodes' own float boxes,
+/// plane by plane for the four lanes, so one vector load gives a plane of all four.
+struct alignas(64) BvhWideNode {
+  float box[6][4];          ///< box[plane][lane], planes as in BvhNode::box; unused lanes
+                            ///< hold an empty box (lower +inf, upper -inf).
+  std::int32_t child[4];    ///< Interior: index of the wide child node. Leaf: first triangle
+                            ///< slot (a multiple of 4). Unused lane: -1.
+  std::uint16_t count[4];   ///< Triangles of a leaf lane; 0 for an interior or unused lane.
+  std::uint8_t lanes = 0;   ///< Bit i set when lane i is used.
+  std::uint8_t pad[7] = {};
+};
+static_assert(sizeof(BvhWideNode) == 128, "BvhWideNode must be two cache lines");
+
+/// Four triangles' vertices, coordinate by coordinate: v[3 k + a][lane] is coordinate a of
+/// vertex k of the triangle in slot 4 i + lane of block i. A leaf starts a new block, so the
+/// wide traversal tests its triangles four at a time.
+struct alignas(32) BvhTriangleBlock {
+  double v[9][4];
+};
+
+/// The instruction set the wide traversal (intersect, occluded) runs on. Both give the same
+/// answers, bit for bit: the same IEEE operations lane by lane, without fused multiply-add.
+enum class BvhKernel {
+  Portable,  ///< 4-lane vector code lowered to the baseline instruction set (SSE2 on x86-64).
+  Avx2       ///< The same code compiled for AVX2 (x86-64 CPUs that have it).
+};
+/// "portable", "avx2".
+const char* toString(BvhKernel kernel);
 
 /// One box of the hierarchy for drawing and teaching (Bvh::levels): where it is in the
 /// tree and what it holds.
@@ -132,8 +165,17 @@ struct BvhTrace {
  * BvhNodePair), and the triangles' vertices are copied in leaf order so a leaf reads them
  * contiguously.
  *
- * Traversal is iterative with a small stack: both children's boxes are tested with a
- * robust slab test (pbrt section 6.1.2: far distances scaled by 1 + 2 gamma(3), NaN-safe
+ * Queries. intersect() and occluded() run on a 4-wide tree collapsed from the binary one
+ * (BvhWideNode): the four children's boxes are tested at once (4 doubles per vector, AVX2
+ * when the CPU has it, see BvhKernel), the children hit are visited nearest entry first,
+ * and a leaf's triangles are tested four at a time (BvhTriangleBlock). The binary tree stays
+ * the teaching view (levels, traceVisits) and answers intersectAll and closestTriangle.
+ * Whichever tree runs, every box holds its triangles after rounding (see below) and every
+ * triangle test is the same arithmetic, so the answers are the same bits: the nearest t,
+ * then the lowest triangle index, over all triangles, which no traversal order changes.
+ *
+ * The binary traversal is iterative with a small stack: both children's boxes are tested
+ * with a robust slab test (pbrt section 6.1.2: far distances scaled by 1 + 2 gamma(3), NaN-safe
  * min/max so zero direction components are harmless), the near child (by the sign of the
  * direction on the split axis) is visited first, and boxes beyond the current best t are
  * skipped. Leaves use the watertight ray/triangle test of Triangle.h with the ray's shear
@@ -185,7 +227,23 @@ class Bvh {
   int nodeSlots() const { return 2 * static_cast<int>(m_pairs.size()); }
   /// Node `index` (0 = root), unpacked from its pair.
   BvhNode node(int index) const;
-  std::size_t triangleCount() const { return m_primIds.size(); }
+  std::size_t triangleCount() const { return static_cast<std::size_t>(m_stats.triangleCount); }
+  /// Triangle slots (4 per BvhTriangleBlock): each leaf starts at a multiple of 4, so the
+  /// slots after a leaf's last triangle up to the next multiple of 4 are padding.
+  int triangleSlots() const { return static_cast<int>(m_primIds.size()); }
+  /// The caller's index of the triangle in `slot`; -1 for a padding slot.
+  int slotTriangle(int slot) const { return m_primIds[static_cast<std::size_t>(slot)]; }
+  /// The 4-wide tree of intersect() and occluded() (node 0 is its root).
+  const std::vector<BvhWideNode>& wideNodes() const { return m_wide; }
+
+  /// The kernel intersect() and occluded() use in this process; at start-up AVX2 when the
+  /// CPU has it, else Portable.
+  static BvhKernel kernel();
+  /// Whether this CPU (and build) can run `kernel`.
+  static bool kernelSupported(BvhKernel kernel);
+  /// Chooses the kernel for the whole process (tests and benchmarks compare them); throws
+  /// when the CPU cannot run it. Not to be called while another thread queries a Bvh.
+  static void setKernel(BvhKernel kernel);
 
  private:
   struct Builder;
@@ -194,8 +252,9 @@ class Bvh {
 
   BvhSettings m_settings;
   std::vector<BvhNodePair> m_pairs;  ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
-  std::vector<std::array<double, 9>> m_triVerts;  ///< Vertices per triangle slot, leaf order.
-  std::vector<int> m_primIds;                     ///< Triangle slot -> caller's index.
+  std::vector<BvhWideNode> m_wide;          ///< The 4-wide tree, depth first (root 0).
+  std::vector<BvhTriangleBlock> m_blocks;  ///< Triangle slot s: m_blocks[s / 4], lane s % 4.
+  std::vector<int> m_primIds;              ///< Triangle slot -> caller's index (-1: padding).
   Bounds3 m_bounds;
   BvhStats m_stats;
 };
