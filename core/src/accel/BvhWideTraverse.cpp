@@ -89,16 +89,25 @@ RAYLAB_BVH_INLINE int slab4(const WideRay& r, const BvhWideNode& n, double tMax,
 RAYLAB_BVH_INLINE int hit4(const WideRay& r, const BvhTriangleBlock& block, double tMax,
                            double t[4], double b1[4], double b2[4], int& exact) {
   const int kx = r.kx, ky = r.ky, kz = r.kz;
-  V4d p[9];
-  std::memcpy(p, block.v, sizeof p);
+  // One 32-byte load per coordinate (a copy of the whole block became a rep movs).
+  V4d p0x, p0y, p0z, p1x, p1y, p1z, p2x, p2y, p2z;
+  std::memcpy(&p0x, block.v[kx], sizeof p0x);
+  std::memcpy(&p0y, block.v[ky], sizeof p0y);
+  std::memcpy(&p0z, block.v[kz], sizeof p0z);
+  std::memcpy(&p1x, block.v[3 + kx], sizeof p1x);
+  std::memcpy(&p1y, block.v[3 + ky], sizeof p1y);
+  std::memcpy(&p1z, block.v[3 + kz], sizeof p1z);
+  std::memcpy(&p2x, block.v[6 + kx], sizeof p2x);
+  std::memcpy(&p2y, block.v[6 + ky], sizeof p2y);
+  std::memcpy(&p2z, block.v[6 + kz], sizeof p2z);
   const V4d ox = {r.o[kx], r.o[kx], r.o[kx], r.o[kx]};
   const V4d oy = {r.o[ky], r.o[ky], r.o[ky], r.o[ky]};
   const V4d oz = {r.o[kz], r.o[kz], r.o[kz], r.o[kz]};
   const V4d sx = {r.sx, r.sx, r.sx, r.sx}, sy = {r.sy, r.sy, r.sy, r.sy};
   const V4d sz = {r.sz, r.sz, r.sz, r.sz};
-  const V4d akx = p[kx] - ox, aky = p[ky] - oy, akz = p[kz] - oz;
-  const V4d bkx = p[3 + kx] - ox, bky = p[3 + ky] - oy, bkz = p[3 + kz] - oz;
-  const V4d ckx = p[6 + kx] - ox, cky = p[6 + ky] - oy, ckz = p[6 + kz] - oz;
+  const V4d akx = p0x - ox, aky = p0y - oy, akz = p0z - oz;
+  const V4d bkx = p1x - ox, bky = p1y - oy, bkz = p1z - oz;
+  const V4d ckx = p2x - ox, cky = p2y - oy, ckz = p2z - oz;
   const V4d ax = akx - sx * akz, ay = aky - sy * akz;
   const V4d bx = bkx - sx * bkz, by = bky - sy * bkz;
   const V4d cx = ckx - sx * ckz, cy = cky - sy * ckz;
