@@ -87,12 +87,12 @@ static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
 /// until there are four or all are leaves). The boxes are the binary nodes' own float boxes,
 /// plane by plane for the four lanes, so one vector load gives a plane of all four.
 struct alignas(64) BvhWideNode {
-  float box[6][4];          ///< box[plane][lane], planes as in BvhNode::box; unused lanes
-                            ///< hold an empty box (lower +inf, upper -inf).
-  std::int32_t child[4];    ///< Interior: index of the wide child node. Leaf: first triangle
-                            ///< slot (a multiple of 4). Unused lane: -1.
-  std::uint16_t count[4];   ///< Triangles of a leaf lane; 0 for an interior or unused lane.
-  std::uint8_t lanes = 0;   ///< Bit i set when lane i is used.
+  float box[6][4];         ///< box[plane][lane], planes as in BvhNode::box; unused lanes
+                           ///< hold an empty box (lower +inf, upper -inf).
+  std::int32_t child[4];   ///< Interior: index of the wide child node. Leaf: first triangle
+                           ///< slot (a multiple of 4). Unused lane: -1.
+  std::uint16_t count[4];  ///< Triangles of a leaf lane; 0 for an interior or unused lane.
+  std::uint8_t lanes = 0;  ///< Bit i set when lane i is used.
   std::uint8_t pad[7] = {};
 };
 static_assert(sizeof(BvhWideNode) == 128, "BvhWideNode must be two cache lines");
@@ -251,8 +251,8 @@ class Bvh {
   std::vector<int> nodeDepths() const;
 
   BvhSettings m_settings;
-  std::vector<BvhNodePair> m_pairs;  ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
-  std::vector<BvhWideNode> m_wide;          ///< The 4-wide tree, depth first (root 0).
+  std::vector<BvhNodePair> m_pairs;        ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
+  std::vector<BvhWideNode> m_wide;         ///< The 4-wide tree, depth first (root 0).
   std::vector<BvhTriangleBlock> m_blocks;  ///< Triangle slot s: m_blocks[s / 4], lane s % 4.
   std::vector<int> m_primIds;              ///< Triangle slot -> caller's index (-1: padding).
   Bounds3 m_bounds;
