@@ -2,6 +2,7 @@
 // build statistics, the mesh's Shape interface, and watertightness on shared edges.
 
 #include "raylab/core/Bvh.h"
+#include "raylab/core/Exception.h"
 #include "raylab/core/MeshFactory.h"
 #include "raylab/core/Triangle.h"
 #include "raylab/core/TriangleMesh.h"
@@ -294,6 +295,145 @@ TEST(Bvh, 07_ClosestTriangleMatchesBruteForceDistance) {
     for (std::size_t k = 0; k < s.triangles.size(); ++k)
       best = std::min(best, dist(p, static_cast<int>(k)));
     ASSERT_NEAR(dist(p, id), best, 1e-12) << "point " << toString(p);
+  }
+}
+
+/// Sets the process's BVH kernel for a scope, then puts the previous one back.
+class KernelScope {
+ public:
+  explicit KernelScope(BvhKernel kernel) : m_previous(Bvh::kernel()) { Bvh::setKernel(kernel); }
+  ~KernelScope() { Bvh::setKernel(m_previous); }
+  KernelScope(const KernelScope&) = delete;
+  KernelScope& operator=(const KernelScope&) = delete;
+
+ private:
+  BvhKernel m_previous;
+};
+
+/// The kernels this CPU runs: Portable always, AVX2 where available.
+std::vector<BvhKernel> supportedKernels() {
+  std::vector<BvhKernel> out{BvhKernel::Portable};
+  if (Bvh::kernelSupported(BvhKernel::Avx2)) out.push_back(BvhKernel::Avx2);
+  return out;
+}
+
+TEST(Bvh, 08_EveryKernelAnswersTheSameBitsAsBruteForce) {
+  // The wide traversal under each kernel (the portable one forced even where AVX2 exists):
+  // random soups with random rays, and a grid of unit squares hit straight down through its
+  // vertices, edges and faces (edge functions exactly 0: the lanes that go to hitTriangle's
+  // extended-precision fallback). Closest hit (t, triangle, barycentrics) and any hit must
+  // be the brute-force bits.
+  Soup grid;
+  constexpr int kSide = 9;
+  for (int y = 0; y <= kSide; ++y)
+    for (int x = 0; x <= kSide; ++x) grid.vertices.emplace_back(x, y, 0.0);
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x) {
+      const int i = y * (kSide + 1) + x;
+      grid.triangles.push_back({i, i + 1, i + kSide + 2});
+      grid.triangles.push_back({i, i + kSide + 2, i + kSide + 1});
+    }
+  std::vector<Ray> gridRays;
+  for (int y = 0; y <= 2 * kSide; ++y)
+    for (int x = 0; x <= 2 * kSide; ++x)
+      gridRays.push_back(Ray::make(Point3(0.5 * x, 0.5 * y, 1.0), Vec3(0.0, 0.0, -1.0)));
+  for (const BvhKernel kernel : supportedKernels()) {
+    const KernelScope scope(kernel);
+    EXPECT_EQ(Bvh::kernel(), kernel);
+    std::mt19937_64 rng(1600 + static_cast<int>(kernel));
+    int rays = 0, hits = 0, mismatches = 0;
+    const auto check = [&](const Soup& s, const Bvh& bvh, const Ray& r) {
+      const Brute expect = bruteForce(s, r);
+      const auto got = bvh.intersect(r);
+      const bool same =
+          got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
+          (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id &&
+                           sameBits(got->uv.x, expect.uv.x) && sameBits(got->uv.y, expect.uv.y)));
+      ++rays;
+      hits += expect.hit;
+      if (!same && ++mismatches <= 5)
+        ADD_FAILURE() << toString(kernel) << " kernel, ray " << r.toString()
+                      << ": brute force t=" << expect.t << " id=" << expect.id << ", bvh "
+                      << (got ? std::to_string(got->t) + " id=" + std::to_string(got->primitive)
+                              : std::string("miss"));
+    };
+    const Bvh gridBvh(grid.vertices, grid.triangles);
+    for (const Ray& r : gridRays) check(grid, gridBvh, r);
+    EXPECT_EQ(hits, static_cast<int>(gridRays.size()));  // every ray lands on the grid
+    for (int m = 0; m < 3; ++m) {
+      const Soup s = randomSoup(rng, 300 + 500 * m);
+      const Bvh bvh(s.vertices, s.triangles);
+      for (int i = 0; i < 8000; ++i) check(s, bvh, randomRay(rng));
+    }
+    std::printf("%s kernel: %d rays, %d hits, %d mismatches\n", toString(kernel), rays, hits,
+                mismatches);
+    EXPECT_EQ(mismatches, 0) << toString(kernel);
+    EXPECT_GT(hits, rays / 10);
+  }
+}
+
+TEST(Bvh, 09_WideTreeHoldsEveryLeafOnceWithItsOwnBox) {
+  // The 4-wide tree is the binary one collapsed: its lanes are binary nodes (their float
+  // boxes unchanged), its leaf lanes exactly the binary leaves, each once; unused lanes have
+  // empty boxes and no bit in `lanes`; every wide node but the root is some lane's child.
+  const TriangleMesh sphere = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 4);
+  const Bvh& bvh = sphere.bvh();
+  std::map<std::pair<int, int>, std::vector<float>> binaryLeaves;  // (slot, count) -> box
+  for (int i = 0; i < bvh.nodeSlots(); ++i) {
+    if (i == 1) continue;
+    const BvhNode n = bvh.node(i);
+    if (n.count > 0) binaryLeaves[{n.offset, n.count}] = std::vector<float>(n.box, n.box + 6);
+  }
+  const std::vector<BvhWideNode>& wide = bvh.wideNodes();
+  ASSERT_FALSE(wide.empty());
+  std::vector<int> parents(wide.size(), 0);
+  std::map<std::pair<int, int>, int> seen;
+  int lanesUsed = 0;
+  for (const BvhWideNode& w : wide)
+    for (int lane = 0; lane < 4; ++lane) {
+      const bool used = (w.lanes >> lane) & 1;
+      if (!used) {
+        EXPECT_EQ(w.child[lane], -1);
+        EXPECT_GT(w.box[0][lane], w.box[3][lane]);  // empty
+        continue;
+      }
+      ++lanesUsed;
+      if (w.count[lane] == 0) {
+        ASSERT_GT(w.child[lane], 0);
+        ASSERT_LT(w.child[lane], static_cast<int>(wide.size()));
+        parents[static_cast<std::size_t>(w.child[lane])]++;
+        continue;
+      }
+      const auto key = std::make_pair(w.child[lane], int(w.count[lane]));
+      seen[key]++;
+      const auto it = binaryLeaves.find(key);
+      ASSERT_NE(it, binaryLeaves.end()) << "leaf lane at slot " << key.first;
+      for (int k = 0; k < 6; ++k) EXPECT_EQ(w.box[k][lane], it->second[k]);
+    }
+  EXPECT_EQ(seen.size(), binaryLeaves.size());
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](const auto& e) { return e.second == 1; }));
+  EXPECT_EQ(parents[0], 0);
+  EXPECT_TRUE(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
+  // Collapsing pays: far fewer wide nodes than binary interior nodes, most lanes used.
+  const int interior = bvh.stats().nodeCount - bvh.stats().leafCount;
+  EXPECT_LT(static_cast<int>(wide.size()), interior / 2);
+  EXPECT_GT(lanesUsed, 3 * static_cast<int>(wide.size()));
+}
+
+TEST(Bvh, 10_KernelsAreNamedAndCheckedAgainstTheCpu) {
+  EXPECT_STREQ(toString(BvhKernel::Portable), "portable");
+  EXPECT_STREQ(toString(BvhKernel::Avx2), "avx2");
+  EXPECT_TRUE(Bvh::kernelSupported(BvhKernel::Portable));
+  if (!Bvh::kernelSupported(BvhKernel::Avx2)) {
+    try {
+      Bvh::setKernel(BvhKernel::Avx2);
+      ADD_FAILURE() << "setKernel(Avx2) on a CPU without AVX2 did not throw";
+    } catch (const Exception& e) {
+      EXPECT_NE(std::string(e.what()).find("avx2"), std::string::npos) << e.what();
+    }
+  } else {
+    const KernelScope scope(BvhKernel::Avx2);
+    EXPECT_EQ(Bvh::kernel(), BvhKernel::Avx2);
   }
 }
 
