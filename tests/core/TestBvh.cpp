@@ -16,6 +16,7 @@
 #include <cstring>
 #include <map>
 #include <random>
+#include <set>
 #include <vector>
 
 namespace raylab {
@@ -169,8 +170,7 @@ TEST(Bvh, 04_StatisticsAreConsistent) {
   EXPECT_LE(st.depth, 40);
   EXPECT_GT(st.sahCost, 1.0);
   EXPECT_LT(st.sahCost, 100.0);
-  // Leaves cover every triangle exactly once, each leaf from a multiple of 4 (a new block
-  // of the wide traversal); children lie inside their parent.
+  // Leaves cover every triangle exactly once; children lie inside their parent.
   std::vector<int> covered(5120, 0);
   EXPECT_EQ(bvh.triangleSlots() % 4, 0);
   EXPECT_GE(bvh.triangleSlots(), 5120);
@@ -182,7 +182,6 @@ TEST(Bvh, 04_StatisticsAreConsistent) {
     const BvhNode& n = nodes[i];
     if (n.count > 0) {
       ++leaves;
-      EXPECT_EQ(n.offset % 4, 0);
       for (int k = n.offset; k < n.offset + n.count; ++k) {
         ASSERT_LT(k, bvh.triangleSlots());
         ASSERT_GE(bvh.slotTriangle(k), 0);
@@ -372,23 +371,28 @@ TEST(Bvh, 08_EveryKernelAnswersTheSameBitsAsBruteForce) {
   }
 }
 
-TEST(Bvh, 09_WideTreeHoldsEveryLeafOnceWithItsOwnBox) {
+TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
   // The 4-wide tree is the binary one collapsed: its lanes are binary nodes (their float
-  // boxes unchanged), its leaf lanes exactly the binary leaves, each once; unused lanes have
-  // empty boxes and no bit in `lanes`; every wide node but the root is some lane's child.
+  // boxes unchanged); its leaf lanes start at a multiple of 4, hold binary subtrees of at
+  // most 8 triangles and together every triangle once, each binary leaf inside one of them;
+  // unused lanes have empty boxes and no bit in `lanes`; every wide node but the root is
+  // some lane's child.
   const TriangleMesh sphere = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 4);
   const Bvh& bvh = sphere.bvh();
-  std::map<std::pair<int, int>, std::vector<float>> binaryLeaves;  // (slot, count) -> box
+  std::set<std::vector<float>> binaryBoxes;
+  std::vector<std::pair<int, int>> binaryLeaves;  // slot range
   for (int i = 0; i < bvh.nodeSlots(); ++i) {
     if (i == 1) continue;
     const BvhNode n = bvh.node(i);
-    if (n.count > 0) binaryLeaves[{n.offset, n.count}] = std::vector<float>(n.box, n.box + 6);
+    binaryBoxes.insert(std::vector<float>(n.box, n.box + 6));
+    if (n.count > 0) binaryLeaves.emplace_back(n.offset, n.offset + n.count);
   }
   const std::vector<BvhWideNode>& wide = bvh.wideNodes();
   ASSERT_FALSE(wide.empty());
   std::vector<int> parents(wide.size(), 0);
-  std::map<std::pair<int, int>, int> seen;
-  int lanesUsed = 0;
+  std::vector<int> covered(5120, 0);
+  std::vector<int> slotLeaf(static_cast<std::size_t>(bvh.triangleSlots()), -1);
+  int lanesUsed = 0, wideLeaves = 0;
   for (const BvhWideNode& w : wide)
     for (int lane = 0; lane < 4; ++lane) {
       const bool used = (w.lanes >> lane) & 1;
@@ -398,26 +402,36 @@ TEST(Bvh, 09_WideTreeHoldsEveryLeafOnceWithItsOwnBox) {
         continue;
       }
       ++lanesUsed;
+      std::vector<float> box;
+      for (int k = 0; k < 6; ++k) box.push_back(w.box[k][lane]);
+      EXPECT_EQ(binaryBoxes.count(box), 1u);
       if (w.count[lane] == 0) {
         ASSERT_GT(w.child[lane], 0);
         ASSERT_LT(w.child[lane], static_cast<int>(wide.size()));
         parents[static_cast<std::size_t>(w.child[lane])]++;
         continue;
       }
-      const auto key = std::make_pair(w.child[lane], int(w.count[lane]));
-      seen[key]++;
-      const auto it = binaryLeaves.find(key);
-      ASSERT_NE(it, binaryLeaves.end()) << "leaf lane at slot " << key.first;
-      for (int k = 0; k < 6; ++k) EXPECT_EQ(w.box[k][lane], it->second[k]);
+      EXPECT_EQ(w.child[lane] % 4, 0);
+      EXPECT_LE(w.count[lane], 8);
+      for (int k = w.child[lane]; k < w.child[lane] + w.count[lane]; ++k) {
+        ASSERT_LT(k, bvh.triangleSlots());
+        ASSERT_GE(bvh.slotTriangle(k), 0);
+        covered[static_cast<std::size_t>(bvh.slotTriangle(k))]++;
+        slotLeaf[static_cast<std::size_t>(k)] = wideLeaves;
+      }
+      ++wideLeaves;
     }
-  EXPECT_EQ(seen.size(), binaryLeaves.size());
-  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](const auto& e) { return e.second == 1; }));
+  EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int c) { return c == 1; }));
+  for (const auto& [begin, end] : binaryLeaves)
+    for (int k = begin; k < end; ++k)
+      EXPECT_EQ(slotLeaf[static_cast<std::size_t>(k)], slotLeaf[static_cast<std::size_t>(begin)]);
   EXPECT_EQ(parents[0], 0);
   EXPECT_TRUE(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
   // Collapsing pays: far fewer wide nodes than binary interior nodes, most lanes used.
   const int interior = bvh.stats().nodeCount - bvh.stats().leafCount;
   EXPECT_LT(static_cast<int>(wide.size()), interior / 2);
   EXPECT_GT(lanesUsed, 3 * static_cast<int>(wide.size()));
+  EXPECT_LT(wideLeaves, bvh.stats().leafCount);
 }
 
 TEST(Bvh, 10_KernelsAreNamedAndCheckedAgainstTheCpu) {

@@ -110,65 +110,72 @@ std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat, bool paral
   return pairs;
 }
 
+/// A leaf of the wide tree: its triangles prims[begin, begin + count) in build order, and
+/// the slot where they start in the stored order (a multiple of 4).
+struct LeafRun {
+  int begin, count, slot;
+};
+
+/// Subtrees of the binary tree with at most this many triangles become one leaf of the wide
+/// tree, tested block by block (4 triangles per block): a binary node whose children are
+/// two small leaves would otherwise make a wide node with two lanes, a slab test that costs
+/// about as much as a block of triangles and saves none.
+constexpr int kWideLeafMax = 8;
+
 /// The 4-wide tree (BvhWideNode) collapsed from the flattened binary tree `flat`, depth
 /// first from the root. A wide node's children: the binary node's two, then, while there
 /// are fewer than four and one of them is interior, the interior child with the largest
 /// box (the first on a tie) replaced by its two children.
 class WideCollapse {
  public:
-  explicit WideCollapse(const std::vector<BvhNode>& flat) : m_flat(flat) {
+  /// `flat`: the binary tree; its leaves' offsets (indices into the build's triangle order)
+  /// become slots as the wide leaves are placed.
+  explicit WideCollapse(std::vector<BvhNode>& flat) : m_flat(flat) {
     m_wide.reserve(flat.size() / 4 + 1);
+    // Triangles and first triangle of every subtree: children come after their parent.
+    m_count.resize(flat.size(), 0);
+    m_first.resize(flat.size(), 0);
+    for (std::size_t i = flat.size(); i-- > 2;) countSubtree(i);
+    countSubtree(0);
   }
 
-  std::vector<BvhWideNode> run(bool empty) {
-    const BvhNode& root = m_flat[0];
-    if (root.count > 0 || empty) {
-      // A lone leaf (or nothing): a root with one leaf lane.
+  /// The wide tree; `leaves` receives its leaves in triangle order, `slots` the slots used.
+  std::vector<BvhWideNode> run(bool empty, std::vector<LeafRun>& leaves, int& slots) {
+    m_leaves = &leaves;
+    if (empty) {
       m_wide.emplace_back();
-      setLane(0, 0, root, empty ? -1 : root.offset);
-      return std::move(m_wide);
+      clearLanes(0);
+    } else if (leafLike(0)) {
+      // A small tree: a root with one leaf lane.
+      m_wide.emplace_back();
+      clearLanes(0);
+      setLane(0, 0, 0);
+    } else {
+      collapse(0);
     }
-    collapse(0);
+    slots = 4 * m_blocks;
     return std::move(m_wide);
   }
 
  private:
-  bool interior(int i) const { return m_flat[static_cast<std::size_t>(i)].count == 0; }
-
-  void setLane(int wide, int lane, const BvhNode& n, int child) {
-    BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
-    for (int k = 0; k < 6; ++k) w.box[k][lane] = n.box[k];
-    w.child[lane] = child;
-    w.count[lane] = child < 0 ? 0 : n.count;
-    if (child >= 0) w.lanes = static_cast<std::uint8_t>(w.lanes | (1 << lane));
+  void countSubtree(std::size_t i) {
+    const BvhNode& n = m_flat[i];
+    if (n.count > 0) {
+      m_count[i] = n.count;
+      m_first[i] = n.offset;
+    } else {
+      m_count[i] = m_count[std::size_t(n.offset)] + m_count[std::size_t(n.offset) + 1];
+      m_first[i] = m_first[std::size_t(n.offset)];
+    }
   }
 
-  /// Makes the wide node of interior binary node `index`; returns its index.
-  int collapse(int index) {
-    const BvhNode& node = m_flat[static_cast<std::size_t>(index)];
-    int kids[4] = {node.offset, node.offset + 1, -1, -1};
-    int n = 2;
-    while (n < 4) {
-      int best = -1;
-      double bestArea = -1.0;
-      for (int i = 0; i < n; ++i)
-        if (interior(kids[i])) {
-          const double area = boxArea(m_flat[static_cast<std::size_t>(kids[i])]);
-          if (area > bestArea) {
-            bestArea = area;
-            best = i;
-          }
-        }
-      if (best < 0) break;
-      const int opened = kids[best];
-      for (int i = n; i > best + 1; --i) kids[i] = kids[i - 1];
-      kids[best] = m_flat[static_cast<std::size_t>(opened)].offset;
-      kids[best + 1] = kids[best] + 1;
-      ++n;
-    }
-    const int me = static_cast<int>(m_wide.size());
-    m_wide.emplace_back();
-    BvhWideNode& w = m_wide.back();
+  /// Whether binary node i becomes a leaf of the wide tree.
+  bool leafLike(int i) const {
+    return m_flat[std::size_t(i)].count > 0 || m_count[std::size_t(i)] <= kWideLeafMax;
+  }
+
+  void clearLanes(int wide) {
+    BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
     const float inf = std::numeric_limits<float>::infinity();
     for (int lane = 0; lane < 4; ++lane) {
       for (int a = 0; a < 3; ++a) {
@@ -178,20 +185,84 @@ class WideCollapse {
       w.child[lane] = -1;
       w.count[lane] = 0;
     }
-    for (int lane = 0; lane < n; ++lane) {
-      const BvhNode& kid = m_flat[static_cast<std::size_t>(kids[lane])];
-      // Set the lane first (its box), then build the child: m_wide may grow meanwhile.
-      setLane(me, lane, kid, kid.count > 0 ? kid.offset : 0);
-      if (kid.count == 0) {
-        const int child = collapse(kids[lane]);
-        m_wide[static_cast<std::size_t>(me)].child[lane] = child;
-      }
+    w.lanes = 0;
+  }
+
+  /// Lane `lane` of wide node `wide` becomes binary node `index`: a leaf (its triangles
+  /// placed from the next free block) or, for an interior node, a wide child built now.
+  void setLane(int wide, int lane, int index) {
+    const BvhNode& n = m_flat[std::size_t(index)];
+    {
+      BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
+      for (int k = 0; k < 6; ++k) w.box[k][lane] = n.box[k];
+      w.lanes = static_cast<std::uint8_t>(w.lanes | (1 << lane));
     }
+    if (leafLike(index)) {
+      const int count = m_count[std::size_t(index)];
+      const int slot = 4 * m_blocks;
+      m_blocks += (count + 3) / 4;
+      m_leaves->push_back({m_first[std::size_t(index)], count, slot});
+      placeLeaves(index, slot - m_first[std::size_t(index)]);
+      BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
+      w.child[lane] = slot;
+      w.count[lane] = static_cast<std::uint16_t>(count);
+      return;
+    }
+    // Build the child first: m_wide may grow meanwhile.
+    const int child = collapse(index);
+    BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
+    w.child[lane] = child;
+    w.count[lane] = 0;
+  }
+
+  /// Moves the binary leaves under `index` to their slots (build index + shift).
+  void placeLeaves(int index, int shift) {
+    BvhNode& n = m_flat[std::size_t(index)];
+    if (n.count > 0) {
+      n.offset += shift;
+      return;
+    }
+    placeLeaves(n.offset, shift);
+    placeLeaves(n.offset + 1, shift);
+  }
+
+  /// Makes the wide node of binary node `index` (not leaf-like); returns its index.
+  int collapse(int index) {
+    const BvhNode& node = m_flat[std::size_t(index)];
+    int kids[4] = {node.offset, node.offset + 1, -1, -1};
+    int n = 2;
+    while (n < 4) {
+      int best = -1;
+      double bestArea = -1.0;
+      for (int i = 0; i < n; ++i)
+        if (!leafLike(kids[i])) {
+          const double area = boxArea(m_flat[std::size_t(kids[i])]);
+          if (area > bestArea) {
+            bestArea = area;
+            best = i;
+          }
+        }
+      if (best < 0) break;
+      const int opened = kids[best];
+      for (int i = n; i > best + 1; --i) kids[i] = kids[i - 1];
+      kids[best] = m_flat[std::size_t(opened)].offset;
+      kids[best + 1] = kids[best] + 1;
+      ++n;
+    }
+    const int me = static_cast<int>(m_wide.size());
+    m_wide.emplace_back();
+    clearLanes(me);
+    // Lanes in triangle order, each subtree placed before the next: leaves come out in
+    // triangle order too.
+    for (int lane = 0; lane < n; ++lane) setLane(me, lane, kids[lane]);
     return me;
   }
 
-  const std::vector<BvhNode>& m_flat;
+  std::vector<BvhNode>& m_flat;
+  std::vector<int> m_count, m_first;
   std::vector<BvhWideNode> m_wide;
+  std::vector<LeafRun>* m_leaves = nullptr;
+  int m_blocks = 0;
 };
 
 }  // namespace
@@ -265,13 +336,7 @@ struct Bvh::Builder {
     }
   }
 
-  /// A leaf as flatten() met it: its triangles prims[begin, begin + count) and the slot
-  /// where they start in the stored order (a multiple of 4).
-  struct LeafRun {
-    int begin, count, slot;
-  };
-
-  /// Step 3: the triangles in leaf order, each leaf from its slot on (a new block of 4):
+  /// Step 5: the triangles in leaf order, each wide leaf from its slot on (a new block of 4):
   /// each slot's caller index (-1 for padding) and vertices, so a leaf reads its triangles
   /// contiguously, four to a block; and the exact bounds of all triangles.
   void copyTriangles(const std::vector<LeafRun>& leaves, int slots, std::vector<int>& primIds,
@@ -303,10 +368,9 @@ struct Bvh::Builder {
 
   /// Step 2: the nodes laid out depth first, each pair of children right after the
   /// subtree that precedes it (the left subtree first), slot 1 the padding. Counts nodes,
-  /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way. Leaves are met
-  /// in the order of their triangles (left before right), so each gets the next free
-  /// multiple of 4 as its first slot: `leaves` receives them, `slots` the slots used.
-  std::vector<BvhNode> flatten(BvhStats& stats, std::vector<LeafRun>& leaves, int& slots) const {
+  /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way. Leaves keep
+  /// their first triangle's index in `prims` (WideCollapse turns it into a slot).
+  std::vector<BvhNode> flatten(BvhStats& stats) const {
     const bool empty = primCount == 0;
     const int used = usedSlots.load();
     std::vector<BvhNode> flat(static_cast<std::size_t>(used));
@@ -331,11 +395,6 @@ struct Bvh::Builder {
         stats.leafCount++;
         stats.maxLeafSize = std::max<int>(stats.maxLeafSize, node.count);
         sah += settings.intersectionCost * node.count * rel;
-        if (!empty) {
-          leaves.push_back({node.offset, node.count, slots});
-          node.offset = slots;
-          slots += (node.count + 3) / 4 * 4;
-        }
         continue;
       }
       const int oldChild = node.offset;
@@ -623,18 +682,18 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   // Step 1: build the tree over primitive references.
   Builder builder(m_settings, vertices, triangles);
   builder.buildTree();
-  // Step 2: lay the nodes out depth first, measuring the tree and placing the leaves.
-  std::vector<Builder::LeafRun> leaves;
-  int slots = 0;
-  const std::vector<BvhNode> flat = builder.flatten(m_stats, leaves, slots);
+  // Step 2: lay the nodes out depth first, measuring the tree.
+  std::vector<BvhNode> flat = builder.flatten(m_stats);
   RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
   m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
-  // Step 3: copy the triangles' vertices in leaf order, four to a block.
-  builder.copyTriangles(leaves, slots, m_primIds, m_blocks, m_bounds);
+  // Step 3: the 4-wide tree of the queries, placing the leaves' triangles in blocks of 4.
+  std::vector<LeafRun> leaves;
+  int slots = 0;
+  m_wide = WideCollapse(flat).run(n == 0, leaves, slots);
   // Step 4: interleave sibling pairs into cache-line pairs.
   m_pairs = interleave(flat, m_settings.parallel);
-  // Step 5: the 4-wide tree of the queries.
-  m_wide = WideCollapse(flat).run(n == 0);
+  // Step 5: copy the triangles' vertices in leaf order, four to a block.
+  builder.copyTriangles(leaves, slots, m_primIds, m_blocks, m_bounds);
 }
 
 BvhNode Bvh::node(int index) const {

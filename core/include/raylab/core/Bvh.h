@@ -61,7 +61,7 @@ struct BvhStats {
 struct BvhNode {
   float box[6];         ///< lower x, y, z then upper x, y, z (world space, rounded outwards).
   std::int32_t offset;  ///< Interior: index of the first child. Leaf: first triangle slot
-                        ///< (a multiple of 4, see Bvh::triangleSlots).
+                        ///< (see Bvh::triangleSlots).
   std::uint16_t count;  ///< Triangles in a leaf; 0 for an interior node.
   std::uint8_t axis;    ///< Split axis of an interior node (0 = x, 1 = y, 2 = z).
   std::uint8_t pad = 0;
@@ -84,8 +84,9 @@ static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
 /// A node of the 4-wide tree that answers intersect() and occluded(), made by collapsing the
 /// binary tree: its children are up to four nodes of the binary tree (the binary node's
 /// children, then the interior child with the largest box opened into its two children,
-/// until there are four or all are leaves). The boxes are the binary nodes' own float boxes,
-/// plane by plane for the four lanes, so one vector load gives a plane of all four.
+/// until there are four or all are leaves). A binary subtree of at most 8 triangles is one
+/// leaf of the wide tree (up to two blocks of 4 triangles). The boxes are the binary nodes' own
+/// float boxes, plane by plane for the four lanes, so one vector load gives a plane of all four.
 struct alignas(64) BvhWideNode {
   float box[6][4];         ///< box[plane][lane], planes as in BvhNode::box; unused lanes
                            ///< hold an empty box (lower +inf, upper -inf).
@@ -98,8 +99,8 @@ struct alignas(64) BvhWideNode {
 static_assert(sizeof(BvhWideNode) == 128, "BvhWideNode must be two cache lines");
 
 /// Four triangles' vertices, coordinate by coordinate: v[3 k + a][lane] is coordinate a of
-/// vertex k of the triangle in slot 4 i + lane of block i. A leaf starts a new block, so the
-/// wide traversal tests its triangles four at a time.
+/// vertex k of the triangle in slot 4 i + lane of block i. A leaf of the wide tree starts a
+/// new block, so the wide traversal tests its triangles four at a time.
 struct alignas(32) BvhTriangleBlock {
   double v[9][4];
 };
@@ -228,8 +229,9 @@ class Bvh {
   /// Node `index` (0 = root), unpacked from its pair.
   BvhNode node(int index) const;
   std::size_t triangleCount() const { return static_cast<std::size_t>(m_stats.triangleCount); }
-  /// Triangle slots (4 per BvhTriangleBlock): each leaf starts at a multiple of 4, so the
-  /// slots after a leaf's last triangle up to the next multiple of 4 are padding.
+  /// Triangle slots (4 per BvhTriangleBlock): each leaf of the wide tree starts at a
+  /// multiple of 4, so the slots after its last triangle up to the next multiple of 4 are
+  /// padding; a binary leaf's triangles are contiguous slots.
   int triangleSlots() const { return static_cast<int>(m_primIds.size()); }
   /// The caller's index of the triangle in `slot`; -1 for a padding slot.
   int slotTriangle(int slot) const { return m_primIds[static_cast<std::size_t>(slot)]; }
