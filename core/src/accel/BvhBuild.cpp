@@ -120,7 +120,7 @@ struct LeafRun {
 /// tree, tested block by block (4 triangles per block): a binary node whose children are
 /// two small leaves would otherwise make a wide node with two lanes, a slab test that costs
 /// about as much as a block of triangles and saves none.
-constexpr int kWideLeafMax = 8;
+constexpr int kWideLeafMax = 12;
 
 /// The 4-wide tree (BvhWideNode) collapsed from the flattened binary tree `flat`, depth
 /// first from the root. A wide node's children: the binary node's two, then, while there

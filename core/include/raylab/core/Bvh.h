@@ -84,8 +84,8 @@ static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
 /// A node of the 4-wide tree that answers intersect() and occluded(), made by collapsing the
 /// binary tree: its children are up to four nodes of the binary tree (the binary node's
 /// children, then the interior child with the largest box opened into its two children,
-/// until there are four or all are leaves). A binary subtree of at most 8 triangles is one
-/// leaf of the wide tree (up to two blocks of 4 triangles). The boxes are the binary nodes' own
+/// until there are four or all are leaves). A binary subtree of at most 12 triangles is one
+/// leaf of the wide tree (up to three blocks of 4 triangles). The boxes are the binary nodes' own
 /// float boxes, plane by plane for the four lanes, so one vector load gives a plane of all four.
 struct alignas(64) BvhWideNode {
   float box[6][4];         ///< box[plane][lane], planes as in BvhNode::box; unused lanes
