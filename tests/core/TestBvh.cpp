@@ -372,7 +372,7 @@ TEST(Bvh, 08_EveryKernelAnswersTheSameBitsAsBruteForce) {
 }
 
 TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
-  // The 4-wide tree is the binary one collapsed: its lanes are binary nodes (their float
+  // The 8-wide tree is the binary one collapsed: its lanes are binary nodes (their float
   // boxes unchanged); its leaf lanes start at a multiple of 4, hold binary subtrees of at
   // most 12 triangles and together every triangle once, each binary leaf inside one of them;
   // unused lanes have empty boxes and no bit in `lanes`; every wide node but the root is
@@ -394,7 +394,7 @@ TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
   std::vector<int> slotLeaf(static_cast<std::size_t>(bvh.triangleSlots()), -1);
   int lanesUsed = 0, wideLeaves = 0;
   for (const BvhWideNode& w : wide)
-    for (int lane = 0; lane < 4; ++lane) {
+    for (int lane = 0; lane < kBvhWidth; ++lane) {
       const bool used = (w.lanes >> lane) & 1;
       if (!used) {
         EXPECT_EQ(w.child[lane], -1);
@@ -429,8 +429,8 @@ TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
   EXPECT_TRUE(std::all_of(parents.begin() + 1, parents.end(), [](int p) { return p == 1; }));
   // Collapsing pays: far fewer wide nodes than binary interior nodes, most lanes used.
   const int interior = bvh.stats().nodeCount - bvh.stats().leafCount;
-  EXPECT_LT(static_cast<int>(wide.size()), interior / 2);
-  EXPECT_GT(lanesUsed, 3 * static_cast<int>(wide.size()));
+  EXPECT_LT(static_cast<int>(wide.size()), interior / 4);
+  EXPECT_GT(lanesUsed, 4 * static_cast<int>(wide.size()));
   EXPECT_LT(wideLeaves, bvh.stats().leafCount);
 }
 

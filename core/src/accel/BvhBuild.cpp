@@ -122,9 +122,9 @@ struct LeafRun {
 /// about as much as a block of triangles and saves none.
 constexpr int kWideLeafMax = 12;
 
-/// The 4-wide tree (BvhWideNode) collapsed from the flattened binary tree `flat`, depth
+/// The 8-wide tree (BvhWideNode) collapsed from the flattened binary tree `flat`, depth
 /// first from the root. A wide node's children: the binary node's two, then, while there
-/// are fewer than four and one of them is interior, the interior child with the largest
+/// are fewer than eight and one of them is interior, the interior child with the largest
 /// box (the first on a tie) replaced by its two children.
 class WideCollapse {
  public:
@@ -177,7 +177,7 @@ class WideCollapse {
   void clearLanes(int wide) {
     BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
     const float inf = std::numeric_limits<float>::infinity();
-    for (int lane = 0; lane < 4; ++lane) {
+    for (int lane = 0; lane < kBvhWidth; ++lane) {
       for (int a = 0; a < 3; ++a) {
         w.box[a][lane] = inf;
         w.box[3 + a][lane] = -inf;
@@ -229,9 +229,9 @@ class WideCollapse {
   /// Makes the wide node of binary node `index` (not leaf-like); returns its index.
   int collapse(int index) {
     const BvhNode& node = m_flat[std::size_t(index)];
-    int kids[4] = {node.offset, node.offset + 1, -1, -1};
+    int kids[kBvhWidth] = {node.offset, node.offset + 1};
     int n = 2;
-    while (n < 4) {
+    while (n < kBvhWidth) {
       int best = -1;
       double bestArea = -1.0;
       for (int i = 0; i < n; ++i)
@@ -686,7 +686,7 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   std::vector<BvhNode> flat = builder.flatten(m_stats);
   RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
   m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
-  // Step 3: the 4-wide tree of the queries, placing the leaves' triangles in blocks of 4.
+  // Step 3: the 8-wide tree of the queries, placing the leaves' triangles in blocks of 4.
   std::vector<LeafRun> leaves;
   int slots = 0;
   m_wide = WideCollapse(flat).run(n == 0, leaves, slots);

@@ -13,7 +13,7 @@
 #include <climits>
 #include <cstring>
 
-// intersect() and occluded() on the 4-wide tree (BvhWideNode): four boxes per slab test,
+// intersect() and occluded() on the 8-wide tree (BvhWideNode): four boxes per slab test,
 // children visited nearest first, a leaf's triangles tested four at a time. The code is
 // written once with GCC's vector extensions (4 doubles per vector) and compiled twice: for
 // the baseline instruction set (two SSE2 halves on x86-64) and, in functions marked

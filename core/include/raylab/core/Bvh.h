@@ -81,22 +81,23 @@ struct alignas(64) BvhNodePair {
 };
 static_assert(sizeof(BvhNodePair) == 64, "BvhNodePair must be one cache line");
 
-/// A node of the 4-wide tree that answers intersect() and occluded(), made by collapsing the
-/// binary tree: its children are up to four nodes of the binary tree (the binary node's
+/// A node of the 8-wide tree that answers intersect() and occluded(), made by collapsing the
+/// binary tree: its children are up to eight nodes of the binary tree (the binary node's
 /// children, then the interior child with the largest box opened into its two children,
-/// until there are four or all are leaves). A binary subtree of at most 12 triangles is one
+/// until there are eight or all are leaves). A binary subtree of at most 12 triangles is one
 /// leaf of the wide tree (up to three blocks of 4 triangles). The boxes are the binary nodes' own
-/// float boxes, plane by plane for the four lanes, so one vector load gives a plane of all four.
+/// float boxes, plane by plane for the eight lanes, so one vector load gives a plane of four of
+/// them.
+constexpr int kBvhWidth = 8;  ///< Children of a BvhWideNode.
 struct alignas(64) BvhWideNode {
-  float box[6][4];         ///< box[plane][lane], planes as in BvhNode::box; unused lanes
-                           ///< hold an empty box (lower +inf, upper -inf).
-  std::int32_t child[4];   ///< Interior: index of the wide child node. Leaf: first triangle
-                           ///< slot (a multiple of 4). Unused lane: -1.
-  std::uint16_t count[4];  ///< Triangles of a leaf lane; 0 for an interior or unused lane.
-  std::uint8_t lanes = 0;  ///< Bit i set when lane i is used.
-  std::uint8_t pad[7] = {};
+  float box[6][kBvhWidth];         ///< box[plane][lane], planes as in BvhNode::box; unused lanes
+                                   ///< hold an empty box (lower +inf, upper -inf).
+  std::int32_t child[kBvhWidth];   ///< Interior: index of the wide child node. Leaf: first triangle
+                                   ///< slot (a multiple of 4). Unused lane: -1.
+  std::uint16_t count[kBvhWidth];  ///< Triangles of a leaf lane; 0 for an interior or unused lane.
+  std::uint8_t lanes = 0;          ///< Bit i set when lane i is used.
 };
-static_assert(sizeof(BvhWideNode) == 128, "BvhWideNode must be two cache lines");
+static_assert(sizeof(BvhWideNode) % 64 == 0, "BvhWideNode must fill whole cache lines");
 
 /// Four triangles' vertices, coordinate by coordinate: v[3 k + a][lane] is coordinate a of
 /// vertex k of the triangle in slot 4 i + lane of block i. A leaf of the wide tree starts a
@@ -108,7 +109,7 @@ struct alignas(32) BvhTriangleBlock {
 /// The instruction set the wide traversal (intersect, occluded) runs on. Both give the same
 /// answers, bit for bit: the same IEEE operations lane by lane, without fused multiply-add.
 enum class BvhKernel {
-  Portable,  ///< 4-lane vector code lowered to the baseline instruction set (SSE2 on x86-64).
+  Portable,  ///< 4-double vector code lowered to the baseline instruction set (SSE2 on x86-64).
   Avx2       ///< The same code compiled for AVX2 (x86-64 CPUs that have it).
 };
 /// "portable", "avx2".
@@ -166,8 +167,8 @@ struct BvhTrace {
  * BvhNodePair), and the triangles' vertices are copied in leaf order so a leaf reads them
  * contiguously.
  *
- * Queries. intersect() and occluded() run on a 4-wide tree collapsed from the binary one
- * (BvhWideNode): the four children's boxes are tested at once (4 doubles per vector, AVX2
+ * Queries. intersect() and occluded() run on an 8-wide tree collapsed from the binary one
+ * (BvhWideNode): the eight children's boxes are tested four at once (4 doubles per vector, AVX2
  * when the CPU has it, see BvhKernel), the children hit are visited nearest entry first,
  * and a leaf's triangles are tested four at a time (BvhTriangleBlock). The binary tree stays
  * the teaching view (levels, traceVisits) and answers intersectAll and closestTriangle.
@@ -235,7 +236,7 @@ class Bvh {
   int triangleSlots() const { return static_cast<int>(m_primIds.size()); }
   /// The caller's index of the triangle in `slot`; -1 for a padding slot.
   int slotTriangle(int slot) const { return m_primIds[static_cast<std::size_t>(slot)]; }
-  /// The 4-wide tree of intersect() and occluded() (node 0 is its root).
+  /// The 8-wide tree of intersect() and occluded() (node 0 is its root).
   const std::vector<BvhWideNode>& wideNodes() const { return m_wide; }
 
   /// The kernel intersect() and occluded() use in this process; at start-up AVX2 when the
@@ -254,7 +255,7 @@ class Bvh {
 
   BvhSettings m_settings;
   std::vector<BvhNodePair> m_pairs;        ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
-  std::vector<BvhWideNode> m_wide;         ///< The 4-wide tree, depth first (root 0).
+  std::vector<BvhWideNode> m_wide;         ///< The 8-wide tree, depth first (root 0).
   std::vector<BvhTriangleBlock> m_blocks;  ///< Triangle slot s: m_blocks[s / 4], lane s % 4.
   std::vector<int> m_primIds;              ///< Triangle slot -> caller's index (-1: padding).
   Bounds3 m_bounds;
