@@ -344,8 +344,13 @@ TEST(Bvh, 08_EveryKernelAnswersTheSameBitsAsBruteForce) {
     const auto check = [&](const Soup& s, const Bvh& bvh, const Ray& r) {
       const Brute expect = bruteForce(s, r);
       const auto got = bvh.intersect(r);
+      const auto binary = bvh.intersectBinary(r);
       const bool same =
           got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
+          binary.has_value() == expect.hit &&
+          (!expect.hit ||
+           (sameBits(binary->t, expect.t) && binary->primitive == expect.id &&
+            sameBits(binary->uv.x, expect.uv.x) && sameBits(binary->uv.y, expect.uv.y))) &&
           (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id &&
                            sameBits(got->uv.x, expect.uv.x) && sameBits(got->uv.y, expect.uv.y)));
       ++rays;

@@ -371,6 +371,15 @@ struct RecordedClosestHit : ClosestHit {
 
 }  // namespace
 
+std::optional<Hit> Bvh::intersectBinary(const Ray& ray) const {
+  if (m_stats.triangleCount == 0) return std::nullopt;
+  const PreparedRay r(ray);
+  ClosestHit query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  traverse(m_pairs.data(), query);
+  if (query.bestId == INT_MAX) return std::nullopt;
+  return Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
+}
+
 std::vector<Hit> Bvh::intersectAll(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return {};
   const PreparedRay r(ray);

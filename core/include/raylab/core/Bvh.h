@@ -197,6 +197,9 @@ class Bvh {
   /// Nearest hit with t in [ray.tMin, ray.tMax]; uv = barycentrics (b1, b2). On an exact tie
   /// in t the lowest triangle index wins, so the answer does not depend on the tree.
   std::optional<Hit> intersect(const Ray& ray) const;
+  /// intersect() answered by the binary tree (the search traceVisits records), the same bits;
+  /// an independent second route for checks (the benchmark compares every ray).
+  std::optional<Hit> intersectBinary(const Ray& ray) const;
   /// Any hit with t in [ray.tMin, ray.tMax] (shadow rays): stops at the first one found.
   bool occluded(const Ray& ray) const;
   /// Every hit with t in [ray.tMin, ray.tMax], sorted by t (then triangle index).
