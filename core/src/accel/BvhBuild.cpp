@@ -272,7 +272,9 @@ struct Bvh::Builder {
   struct PrimRef {
     double lower[3];
     double upper[3];
-    double centroid[3];
+    /// Centre of the box on axis a, computed when needed (the same bits as storing it; a
+    /// reference of 56 bytes instead of 80 is less to read at every level and to swap).
+    double centroid(int a) const { return 0.5 * (lower[a] + upper[a]); }
     int id;
   };
 
@@ -316,7 +318,6 @@ struct Bvh::Builder {
         for (int a = 0; a < 3; ++a) {
           r.lower[a] = b.lower[a];
           r.upper[a] = b.upper[a];
-          r.centroid[a] = 0.5 * (b.lower[a] + b.upper[a]);
         }
         r.id = i;
       }
@@ -423,7 +424,7 @@ struct Bvh::Builder {
     for (int i = begin; i < end; ++i) {
       const PrimRef& r = prims[i];
       box.extend(primBounds(r));
-      centroids.extend(Point3(r.centroid[0], r.centroid[1], r.centroid[2]));
+      centroids.extend(Point3(r.centroid(0), r.centroid(1), r.centroid(2)));
     }
   }
 
@@ -457,7 +458,7 @@ struct Bvh::Builder {
       const Bounds3 rb = primBounds(r);
       for (int a = 0; a < 3; ++a) {
         if (!(scale[a] > 0.0)) continue;
-        const int b = std::min(binCount - 1, static_cast<int>((r.centroid[a] - lo[a]) * scale[a]));
+        const int b = std::min(binCount - 1, static_cast<int>((r.centroid(a) - lo[a]) * scale[a]));
         out.bins[a][b].count++;
         out.bins[a][b].box.extend(rb);
       }
@@ -565,8 +566,8 @@ struct Bvh::Builder {
   void partitionMedian(int axis, int begin, int mid, int end) {
     std::nth_element(prims.get() + begin, prims.get() + mid, prims.get() + end,
                      [axis](const PrimRef& a, const PrimRef& b) {
-                       return a.centroid[axis] < b.centroid[axis] ||
-                              (a.centroid[axis] == b.centroid[axis] && a.id < b.id);
+                       const double ca = a.centroid(axis), cb = b.centroid(axis);
+                       return ca < cb || (ca == cb && a.id < b.id);
                      });
   }
 
@@ -645,7 +646,7 @@ struct Bvh::Builder {
     axis = bestAxis;
     const double axisLo = lo[axis], axisScale = scale[axis];
     auto it = std::partition(prims.get() + begin, prims.get() + end, [&](const PrimRef& r) {
-      return std::min(binCount - 1, static_cast<int>((r.centroid[axis] - axisLo) * axisScale)) <
+      return std::min(binCount - 1, static_cast<int>((r.centroid(axis) - axisLo) * axisScale)) <
              bestBin;
     });
     return static_cast<int>(it - prims.get());
