@@ -25,6 +25,7 @@
 // Every render uses the scene's settings (path tracing, max depth 12, roulette from depth 5)
 // with only spp, seed, NEE and the size changed.
 
+#include "SmallptYardstick.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/Renderer.h"
@@ -58,11 +59,13 @@ struct Options {
             << "\nusage: raylab_bench_render [Google Benchmark flags]\n"
                "       raylab_bench_render --convergence [--size WxH] [--reference-spp N]"
                " [--reference FILE.pfm] [--scene NAME]\n"
+               "       raylab_bench_render --versus-smallpt [--size WxH] [--reference-spp N]"
+               " [--reference FILE.pfm]\n"
                "       raylab_bench_render --smoke\n";
   std::exit(2);
 }
 
-/// The error study's options: argv[1] is --convergence or --smoke.
+/// The error studies' options: argv[1] is --convergence, --versus-smallpt or --smoke.
 Options parse(int argc, char** argv) {
   Options o;
   o.smoke = std::string(argv[1]) == "--smoke";
@@ -109,6 +112,13 @@ double cpuNow() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
+/// CPU time of the calling thread so far, seconds.
+double threadCpuNow() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 Result renderOnce(const Scene& scene, const RenderSettings& settings, int threads) {
   Renderer renderer(scene, settings);
   renderer.setThreads(threads);
@@ -149,27 +159,157 @@ BENCHMARK(SmallptPath)
     ->Unit(benchmark::kSecond)
     ->UseRealTime();
 
-/// RMSE at 16, 64, 256 spp with and without NEE against a converged reference.
-void convergence(const std::string& name, int width, int height, int referenceSpp,
-                 const std::string& referencePath, const std::vector<int>& spps, bool equalError) {
-  const Scene scene = shipped(name, width, height);
+/// The cost of one sample against the yardstick (SmallptYardstick.h): smallpt's algorithm,
+/// RayLab with NEE and RayLab without it, each rendering smallpt at 512x384, 1 spp, on the
+/// calling thread, in turn within each iteration (the order rotates, so load from other
+/// work falls on all three alike). Counters: CPU microseconds per sample of each (the
+/// thread's CPU time) and RayLab's cost over smallpt's; issue 16's goal is nee_ratio <= 1.5.
+void SmallptSampleCost(benchmark::State& state) {
+  constexpr int kWidth = 512, kHeight = 384;
+  const Scene scene = shipped("smallpt", kWidth, kHeight);
+  double cpu[3] = {0.0, 0.0, 0.0};  // yardstick, NEE, no NEE
+  std::uint64_t iteration = 0;
+  for (auto _ : state) {
+    for (int k = 0; k < 3; ++k) {
+      const int which = int((iteration + std::uint64_t(k)) % 3);
+      const double start = threadCpuNow();
+      if (which == 0) {
+        const FloatImage image = yardstick::render(kWidth, kHeight, 1, 1, unsigned(iteration));
+        benchmark::DoNotOptimize(image.pixels.data());
+      } else {
+        RenderSettings settings = scene.render;
+        settings.samplesPerPixel = 1;
+        settings.seed = iteration + 1;
+        settings.nextEventEstimation = which == 1;
+        settings.multipleImportance = which == 1;
+        Renderer renderer(scene, settings);
+        renderer.setThreads(1);  // renders on this thread
+        const FloatImage image = renderer.render();
+        benchmark::DoNotOptimize(image.pixels.data());
+      }
+      cpu[which] += threadCpuNow() - start;
+    }
+    ++iteration;
+  }
+  const double samples = double(kWidth) * kHeight * double(state.iterations());
+  state.counters["smallpt_us"] = 1e6 * cpu[0] / samples;
+  state.counters["nee_us"] = 1e6 * cpu[1] / samples;
+  state.counters["nonee_us"] = 1e6 * cpu[2] / samples;
+  state.counters["nee_ratio"] = cpu[1] / cpu[0];
+  state.counters["nonee_ratio"] = cpu[2] / cpu[0];
+}
+BENCHMARK(SmallptSampleCost)->Unit(benchmark::kSecond)->UseRealTime();
+
+/// The yardstick's throughput at 1024x768, 1 spp per iteration, on 1 and 2 threads (compare
+/// with SmallptPath's samples/s).
+void SmallptYardstick(benchmark::State& state) {
+  const int threads = int(state.range(0));
+  double cpu = 0.0;
+  unsigned seed = 1;
+  for (auto _ : state) {
+    const double cpu0 = cpuNow();
+    const FloatImage image = yardstick::render(1024, 768, 1, threads, seed++);
+    cpu += cpuNow() - cpu0;
+    benchmark::DoNotOptimize(image.pixels.data());
+  }
+  const double samples = 1024.0 * 768.0 * double(state.iterations());
+  state.counters["samples/s"] = benchmark::Counter(samples, benchmark::Counter::kIsRate);
+  state.counters["samples/CPU-s"] = samples / cpu;
+}
+BENCHMARK(SmallptYardstick)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
+
+/// The reference: `referenceSpp` with NEE and MIS (another seed), read from / written to
+/// `referencePath` when given; with the scene's maximum depth, or `maxDepth` when positive.
+FloatImage referenceImage(const Scene& scene, int referenceSpp, const std::string& referencePath,
+                          int maxDepth = 0) {
   FloatImage reference;
   if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
     reference = imageio::readPfm(referencePath);
     std::printf("reference: %s (read from file)\n", referencePath.c_str());
   }
-  if (reference.width != width || reference.height != height) {
+  if (reference.width != scene.camera.width || reference.height != scene.camera.height) {
     RenderSettings settings = scene.render;
     settings.samplesPerPixel = referenceSpp;
     settings.seed = 1000003;  // independent of the measured renders
     settings.nextEventEstimation = true;
     settings.multipleImportance = true;
+    if (maxDepth > 0) settings.maxDepth = maxDepth;
     const Result r = renderOnce(scene, settings, 2);
     reference = r.image;
-    std::printf("reference: %d spp with NEE + MIS, seed %llu, %.1f s\n", referenceSpp,
-                static_cast<unsigned long long>(settings.seed), r.stats.seconds);
+    std::printf("reference: %d spp with NEE + MIS, maximum depth %d, seed %llu, %.1f s\n",
+                referenceSpp, settings.maxDepth, static_cast<unsigned long long>(settings.seed),
+                r.stats.seconds);
     if (!referencePath.empty()) imageio::writePfm(reference, referencePath);
   }
+  return reference;
+}
+
+/// Mean squared error over all channels, of linear radiance and as displayed.
+struct SquaredError {
+  double linear, display;
+};
+SquaredError squaredError(const FloatImage& image, const FloatImage& reference) {
+  const double l = imageio::rmse(image, reference), d = displayRmse(image, reference);
+  return {l * l, d * d};
+}
+
+/// A maximum depth no path of smallpt's scene reaches before roulette ends it.
+constexpr int kUnboundedDepth = 1000;
+
+/// Issue 16's study: the yardstick (smallpt's estimator and cost) at 16, 64, 256 spp on 2
+/// threads against RayLab with NEE + MIS given the same CPU time, squared error of both
+/// against the converged reference. RayLab's spp at equal time is the yardstick's CPU time
+/// over RayLab's CPU time per sample, measured by a render at the yardstick's spp.
+void versusSmallpt(int width, int height, int referenceSpp, const std::string& referencePath,
+                   const std::vector<int>& spps) {
+  const Scene scene = shipped("smallpt", width, height);
+  // smallpt has no depth limit, only roulette: its estimator converges to the image without
+  // one, which the scene's maximum depth (12) darkens by about 0.4%. The reference is that
+  // image, so RayLab's renders carry the bias of its depth limit and the yardstick none.
+  const FloatImage reference = referenceImage(scene, referenceSpp, referencePath, kUnboundedDepth);
+  const double pixels = double(width) * height;
+  std::printf(
+      "smallpt's algorithm (SmallptYardstick.h) against RayLab path tracing with NEE + MIS at "
+      "equal CPU time, %dx%d, 2 threads; mean squared error over all channels against the "
+      "reference, of linear radiance and as displayed (sRGB, clamped)\n",
+      width, height);
+  std::printf("%5s | %8s %11s %11s | %8s %7s %11s %11s | %9s %9s\n", "spp", "CPU s", "smallpt lin",
+              "smallpt disp", "RayLab", "CPU s", "RayLab lin", "RayLab disp", "ratio lin",
+              "ratio disp");
+  for (int spp : spps) {
+    const double cpu0 = cpuNow();
+    const FloatImage y = yardstick::render(width, height, spp, 2, 7);
+    const double yardCpu = cpuNow() - cpu0;
+    const SquaredError ye = squaredError(y, reference);
+    RenderSettings settings = scene.render;
+    settings.seed = 1;
+    settings.nextEventEstimation = true;
+    settings.multipleImportance = true;
+    settings.samplesPerPixel = spp;
+    Result r = renderOnce(scene, settings, 2);
+    const double perSample = r.cpuSeconds / (spp * pixels);
+    const int equal = std::max(1, int(std::lround(yardCpu / (perSample * pixels))));
+    if (equal != spp) {
+      settings.samplesPerPixel = equal;
+      r = renderOnce(scene, settings, 2);
+    }
+    const SquaredError re = squaredError(r.image, reference);
+    std::printf("%5d | %8.2f %11.3e %11.3e | %5d spp %7.2f %11.3e %11.3e | %8.2fx %8.2fx\n", spp,
+                yardCpu, ye.linear, ye.display, equal, r.cpuSeconds, re.linear, re.display,
+                ye.linear / re.linear, ye.display / re.display);
+  }
+}
+
+/// RMSE at 16, 64, 256 spp with and without NEE against a converged reference.
+void convergence(const std::string& name, int width, int height, int referenceSpp,
+                 const std::string& referencePath, const std::vector<int>& spps, bool equalError) {
+  const Scene scene = shipped(name, width, height);
+  const FloatImage reference = referenceImage(scene, referenceSpp, referencePath);
   std::printf(
       "Path tracing %s.json at %dx%d, 2 threads; RMSE over all channels, of linear radiance "
       "and as displayed (sRGB, clamped to [0, 1], as in the PNG)\n",
@@ -253,7 +393,7 @@ void convergence(const std::string& name, int width, int height, int referenceSp
 int main(int argc, char** argv) {
   using namespace raylab;
   const std::string first = argc > 1 ? argv[1] : "";
-  if (first != "--convergence" && first != "--smoke") {
+  if (first != "--convergence" && first != "--smoke" && first != "--versus-smallpt") {
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
     benchmark::RunSpecifiedBenchmarks();
@@ -264,6 +404,9 @@ int main(int argc, char** argv) {
   try {
     if (o.smoke) {
       convergence(o.scene, 32, 24, 64, "", {4, 16}, false);
+      versusSmallpt(32, 24, 64, "", {4});
+    } else if (first == "--versus-smallpt") {
+      versusSmallpt(o.width, o.height, o.referenceSpp, o.reference, {16, 64, 256});
     } else {
       convergence(o.scene, o.width, o.height, o.referenceSpp, o.reference, {16, 64, 256}, true);
     }

@@ -92,7 +92,7 @@ FloatImage Renderer::render() {
       // side in one vector share cache lines, which every ray's count would then bounce
       // between the cores.
       RayCounts myCounts;
-      std::uint64_t myNonFinite = 0;
+      std::uint64_t myNonFinite = 0, myCapped = 0;
       for (;;) {
         if (m_cancel) break;
         const int t = nextTile.fetch_add(1);
@@ -105,7 +105,7 @@ FloatImage Renderer::render() {
             for (int s = first; s < last; ++s) {
               bool reachedCap = false;
               const Vec3 L = m_tracer.trace(x, y, s, &myCounts, &reachedCap);
-              capped[w] += reachedCap ? 1 : 0;
+              myCapped += reachedCap ? 1 : 0;
               // A non-finite estimate would poison the pixel for good: count it as black.
               if (std::isfinite(L.x) && std::isfinite(L.y) && std::isfinite(L.z)) {
                 sum += L;
@@ -119,6 +119,7 @@ FloatImage Renderer::render() {
       }
       counts[w] = myCounts;
       nonFinite[w] = myNonFinite;
+      capped[w] = myCapped;
     };
     if (threadCount == 1) {
       worker(0);
