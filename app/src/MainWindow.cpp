@@ -450,13 +450,14 @@ void MainWindow::fillLessonsMenu() {
   m_lessonsMenu->clear();
   const Language language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
   for (const QString& path : lessonFiles()) {
-    // The title from the file (cached: the menu is filled each time it opens).
+    // The title from the file (cached: the menu is filled each time it opens). Only the
+    // title is read: loading every lesson's scene and meshes took a tenth of the window's
+    // start-up (issue 16); a lesson that does not load says so when opened.
     static QHash<QString, QPair<QString, QString>> titles;
     if (!titles.contains(path)) {
       try {
-        const Lesson lesson = LessonIO::load(path.toStdString());
-        titles.insert(path, {QString::fromStdString(lesson.title.en),
-                             QString::fromStdString(lesson.title.zh)});
+        const LocalText title = LessonIO::readTitle(path.toStdString());
+        titles.insert(path, {QString::fromStdString(title.en), QString::fromStdString(title.zh)});
       } catch (const Exception&) {
         titles.insert(path,
                       {QFileInfo(path).completeBaseName(), QFileInfo(path).completeBaseName()});

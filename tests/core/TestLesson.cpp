@@ -463,6 +463,42 @@ TEST(Lesson, 06_EveryShippedLessonLoads) {
   }
 }
 
+TEST(Lesson, 06b_ReadTitleReadsTheTitleAloneAndNamesProblems) {
+  // The title of every shipped lesson, as load() reads it (the window's Lessons menu).
+  for (const std::string& file : shippedLessons()) {
+    SCOPED_TRACE(file);
+    const Lesson lesson = LessonIO::load(file);
+    const LocalText title = LessonIO::readTitle(file);
+    EXPECT_EQ(title.en, lesson.title.en);
+    EXPECT_EQ(title.zh, lesson.title.zh);
+  }
+  // Neither the steps nor the scene are read: a lesson whose scene is missing still has a
+  // title, while load() refuses it.
+  const fs::path dir = fixtureDir();
+  json lesson = baseLesson();
+  lesson["scene"] = "no-such-scene.json";
+  std::ofstream(dir / "05-no-scene.json") << lesson.dump();
+  EXPECT_EQ(LessonIO::readTitle((dir / "05-no-scene.json").string()).en, "Test lesson");
+  EXPECT_THROW(LessonIO::load((dir / "05-no-scene.json").string()), LessonIO::LoadError);
+  // The version and the title are checked, with the file and the place named.
+  const auto titleError = [&dir](const json& j) {
+    std::ofstream(dir / "06-bad.json") << j.dump();
+    try {
+      LessonIO::readTitle((dir / "06-bad.json").string());
+    } catch (const LessonIO::LoadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  json badVersion = baseLesson();
+  badVersion["raylab_lesson"] = 7;
+  EXPECT_THAT(titleError(badVersion), HasSubstr("06-bad.json: at /raylab_lesson: unsupported"));
+  json noChinese = baseLesson();
+  noChinese["title"].erase("zh");
+  EXPECT_THAT(titleError(noChinese), HasSubstr("06-bad.json: at /title: missing \"zh\""));
+  EXPECT_THROW(LessonIO::readTitle("/nonexistent/lessons/01-x.json"), LessonIO::LoadError);
+}
+
 /// Every text of a lesson, with where it is, for the language checks.
 std::vector<std::pair<std::string, const LocalText*>> textsOf(const Lesson& lesson) {
   std::vector<std::pair<std::string, const LocalText*>> texts = {{"title", &lesson.title},

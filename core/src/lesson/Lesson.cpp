@@ -166,6 +166,10 @@ class Reader : private JsonChecks<Reader> {
         m_baseDir(std::filesystem::path(m_origin).parent_path().string()) {}
 
   Lesson lesson(const json& root);
+  /// The lesson's title alone: the version and "title" checked, nothing else read.
+  LocalText title(const json& root);
+  /// Checks that root is a lesson of the version this build reads.
+  void version(const json& root);
 
  private:
   std::string m_origin;
@@ -755,7 +759,7 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   return s;
 }
 
-Lesson Reader::lesson(const json& root) {
+void Reader::version(const json& root) {
   if (!root.is_object()) fail("", "a lesson file is a JSON object");
   if (!root.contains("raylab_lesson"))
     fail("", "missing \"raylab_lesson\": <version> (is this a RayLab lesson file?)");
@@ -764,6 +768,15 @@ Lesson Reader::lesson(const json& root) {
     fail("/raylab_lesson", "unsupported version " + std::to_string(version) +
                                " (this RayLab reads version " + std::to_string(LessonIO::kVersion) +
                                ")");
+}
+
+LocalText Reader::title(const json& root) {
+  version(root);
+  return text(member(root, "", "title"), "/title");
+}
+
+Lesson Reader::lesson(const json& root) {
+  version(root);
   onlyKeys(root, "", {"raylab_lesson", "id", "title", "summary", "scene", "defaults", "steps"});
   Lesson lesson;
   lesson.file = m_origin;
@@ -903,6 +916,14 @@ Lesson LessonIO::load(const std::string& path) {
   std::string text;
   if (const auto problem = readTextFile(path, "lesson file", text)) throw LoadError(*problem);
   return parse(text, path);
+}
+
+LocalText LessonIO::readTitle(const std::string& path) {
+  std::string text;
+  if (const auto problem = readTextFile(path, "lesson file", text)) throw LoadError(*problem);
+  json root;
+  if (const auto problem = parseJson(text, path, root)) throw LoadError(*problem);
+  return Reader(path).title(root);
 }
 
 std::vector<std::string> LessonIO::list(const std::string& dir) {

@@ -353,6 +353,10 @@ class LessonIO {
 
   /// Reads and validates the lesson file at `path` and its scene.
   static Lesson load(const std::string& path);
+  /// The title of the lesson file at `path`, for lists of lessons (the window's Lessons
+  /// menu): only the JSON, the format version and the title are read and checked, not the
+  /// steps nor the scene (which load() builds, meshes included). Throws LoadError as load().
+  static LocalText readTitle(const std::string& path);
   /// Parses lesson text; `origin` names it in messages, and the scene path is relative to
   /// its folder (a bare name: the current directory).
   static Lesson parse(const std::string& text, const std::string& origin);
