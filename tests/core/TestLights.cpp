@@ -569,5 +569,60 @@ TEST(SceneIntersector, 11_MovingLightsAreSampledWhereTheyAreAtTheTime) {
   EXPECT_EQ(e.unsampledHits, 0);
 }
 
+TEST(SceneIntersector, 12_SpheresTwoAtATimeGiveTheBitsOfOneAtATime) {
+  // smallpt's nine spheres (rays inside six of them), a quad and an ellipsoid between
+  // them, small, huge and duplicate spheres, and an odd count (the pairs' padding): the
+  // intersector's nearest hit and occlusion must be those of Sphere::intersect object by
+  // object, bit for bit, whatever the ray (unit or not, tMin and tMax anywhere).
+  Scene scene = sceneWith();
+  const double walls[6][4] = {{1e5 + 1, 40.8, 81.6, 1e5}, {-1e5 + 99, 40.8, 81.6, 1e5},
+                              {50, 40.8, 1e5, 1e5},       {50, 40.8, -1e5 + 170, 1e5},
+                              {50, 1e5, 81.6, 1e5},       {50, -1e5 + 81.6, 81.6, 1e5}};
+  for (const auto& w : walls)
+    scene.objects.emplace_back("wall", std::make_unique<Sphere>(Point3(w[0], w[1], w[2]), w[3]), 0);
+  scene.objects.emplace_back(
+      "quad", std::make_unique<Quad>(Point3(20, 30, 60), Vec3(30, 0, 0), Vec3(0, 0, -30)), 0);
+  scene.objects.emplace_back("mirror", std::make_unique<Sphere>(Point3(27, 16.5, 47), 16.5), 0);
+  scene.objects.emplace_back("ellipsoid", ellipsoid(), 0);
+  scene.objects.emplace_back("glass", std::make_unique<Sphere>(Point3(73, 16.5, 78), 16.5), 0);
+  scene.objects.emplace_back("again", std::make_unique<Sphere>(Point3(73, 16.5, 78), 16.5), 0);
+  scene.objects.emplace_back("tiny", std::make_unique<Sphere>(Point3(50, 40, 80), 1e-3), 0);
+  scene.objects.emplace_back("light", std::make_unique<Sphere>(Point3(50, 681.33, 81.6), 600.0), 0);
+  const SceneIntersector si(scene);
+  const auto reference = [&scene](Ray r) {
+    std::pair<int, double> nearest{-1, 0.0};
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      if (const auto hit = scene.objects[i].shape->intersect(r)) {
+        nearest = {int(i), hit->t};
+        r.tMax = hit->t;
+      }
+    return nearest;
+  };
+  Sampler random(5, 0, 0, 0);
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec2 u = random.next2D(), v = random.next2D(), w = random.next2D();
+    // Origins in and around the room, some on a sphere's surface; directions of any length.
+    Point3 origin(-20 + 140 * u.x, -20 + 120 * u.y, -20 + 200 * v.x);
+    if (i % 7 == 0) origin = Point3(73, 16.5, 78) + 16.5 * sampleUniformSphere(w);
+    if (i % 11 == 0) origin = Point3(50, 40, 80) + Vec3(0, 0, 1e-3);
+    Vec3 direction = sampleUniformSphere(random.next2D());
+    if (i % 3 == 0) direction *= 0.25 + 4.0 * v.y;
+    Ray ray{origin, direction, 0.0, kInfinity, 0.0};
+    if (i % 5 == 1) ray.tMin = 10.0 * w.x;
+    if (i % 5 == 2) ray.tMax = 60.0 * w.y;
+    if (i % 13 == 0) ray.tMin = -5.0;
+    const auto expected = reference(ray);
+    const auto hit = si.intersect(ray);
+    ASSERT_EQ(hit ? hit->object : -1, expected.first) << "ray " << i;
+    if (hit) {
+      ++hits;
+      ASSERT_EQ(hit->si.t, expected.second) << "ray " << i;
+    }
+    ASSERT_EQ(si.occluded(ray), expected.first >= 0) << "ray " << i;
+  }
+  EXPECT_GT(hits, 15000);
+}
+
 }  // namespace
 }  // namespace raylab

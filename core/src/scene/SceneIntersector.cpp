@@ -8,6 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace raylab {
 
@@ -53,7 +58,18 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
         e.bvh = m_rebuilt.back().get();
       }
     }
+    m_roundSlot.push_back(e.round ? m_roundCount++ : -1);
+    if (e.round) {
+      m_roundX.push_back(e.round->centre().x);
+      m_roundY.push_back(e.round->centre().y);
+      m_roundZ.push_back(e.round->centre().z);
+      m_roundR.push_back(e.round->radius());
+    }
     m_entries.push_back(e);
+  }
+  if (m_roundCount % 2 == 1) {
+    for (std::vector<double>* column : {&m_roundX, &m_roundY, &m_roundZ, &m_roundR})
+      column->push_back(0.0);
   }
 
   // Every object with an emissive material is an area light; it is picked with
@@ -83,17 +99,92 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
   if (!m_lightCdf.empty()) m_lightCdf.back() = 1.0;
 }
 
+bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
+#if defined(__SSE2__)
+  // Sphere::roots, lane by lane: every step is one IEEE operation (no FMA in SSE2), as the
+  // scalar code compiles to. A miss is a mask; the steps after it run on whatever they
+  // get (a square root of a negative is NaN, a division by 0 infinite), and are dropped.
+  const __m128d signBit = _mm_set1_pd(-0.0);
+  const __m128d zero = _mm_setzero_pd();
+  const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
+  const Vec3& o = ray.origin;
+  const Vec3& d = ray.direction;
+  const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z);
+  const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
+  const __m128d a = _mm_set1_pd(glm::dot(d, d));
+  const __m128d tMin = _mm_set1_pd(ray.tMin), tMax = _mm_set1_pd(ray.tMax);
+  const __m128d slack = _mm_set1_pd(1.0 + 1e-9);
+  const auto dot = [](__m128d x0, __m128d y0, __m128d z0, __m128d x1, __m128d y1, __m128d z1) {
+    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, x1), _mm_mul_pd(y0, y1)), _mm_mul_pd(z0, z1));
+  };
+  const auto select = [](__m128d mask, __m128d yes, __m128d no) {
+    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
+  };
+  for (int k = 0; k < m_roundCount; k += 2) {
+    const __m128d radius = _mm_loadu_pd(&m_roundR[std::size_t(k)]);
+    const __m128d fx = _mm_sub_pd(ox, _mm_loadu_pd(&m_roundX[std::size_t(k)]));
+    const __m128d fy = _mm_sub_pd(oy, _mm_loadu_pd(&m_roundY[std::size_t(k)]));
+    const __m128d fz = _mm_sub_pd(oz, _mm_loadu_pd(&m_roundZ[std::size_t(k)]));
+    const __m128d halfB = dot(fx, fy, fz, dx, dy, dz);
+    const __m128d along = _mm_div_pd(halfB, a);
+    const __m128d lx = _mm_sub_pd(fx, _mm_mul_pd(along, dx));
+    const __m128d ly = _mm_sub_pd(fy, _mm_mul_pd(along, dy));
+    const __m128d lz = _mm_sub_pd(fz, _mm_mul_pd(along, dz));
+    const __m128d lineDistance2 = dot(lx, ly, lz, lx, ly, lz);
+    const __m128d radius2 = _mm_mul_pd(radius, radius);
+    const __m128d far = _mm_cmpgt_pd(lineDistance2, _mm_mul_pd(radius2, slack));
+    const __m128d lineDistance = _mm_sqrt_pd(lineDistance2);
+    const __m128d discriminant = _mm_mul_pd(_mm_mul_pd(a, _mm_sub_pd(radius, lineDistance)),
+                                            _mm_add_pd(radius, lineDistance));
+    const __m128d miss = _mm_or_pd(far, _mm_cmplt_pd(discriminant, zero));
+    const __m128d c = _mm_sub_pd(dot(fx, fy, fz, fx, fy, fz), radius2);
+    const __m128d root = _mm_sqrt_pd(discriminant);
+    const __m128d signedRoot = _mm_or_pd(_mm_andnot_pd(signBit, root), _mm_and_pd(signBit, halfB));
+    const __m128d q = _mm_xor_pd(_mm_add_pd(halfB, signedRoot), signBit);
+    const __m128d qZero = _mm_cmpeq_pd(q, zero);
+    const __m128d t0 = _mm_andnot_pd(qZero, _mm_div_pd(q, a));
+    const __m128d t1 = _mm_andnot_pd(qZero, _mm_div_pd(c, q));
+    const __m128d swap = _mm_cmpgt_pd(t0, t1);
+    const __m128d low = select(swap, t1, t0), high = select(swap, t0, t1);
+    const __m128d first = _mm_and_pd(_mm_cmpge_pd(low, tMin), _mm_cmple_pd(low, tMax));
+    const __m128d second = _mm_and_pd(_mm_cmpge_pd(high, tMin), _mm_cmple_pd(high, tMax));
+    const __m128d t = select(first, low, select(second, high, nan));
+    _mm_storeu_pd(out + k, select(miss, nan, t));
+  }
+  return true;
+#else
+  (void)ray;
+  (void)out;
+  return false;
+#endif
+}
+
 std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   // Nearest hit over all objects: each accepted hit shortens the ray, so later objects
   // only report closer hits.
   Ray r = ray;
   int nearest = -1;
   Hit nearestHit;
+  // The static round spheres' roots, all at once: sphere k's root, the first in [tMin,
+  // tMax] of the ray as given, is the one nearestRoot would pick with tMax shortened by
+  // the hits before it, if it is within that shorter tMax at all (roots are sorted).
+  // (Up to 63 spheres, on the stack; more are tested one by one.)
+  constexpr int kStackSpheres = 64;
+  double roots[kStackSpheres];
+  const bool precomputed =
+      m_roundCount > 0 && m_roundCount + 1 <= kStackSpheres && roundRoots(ray, roots);
   for (std::size_t i = 0; i < m_entries.size(); ++i) {
     const Entry& e = m_entries[i];
     if (e.round) {
       // Static round sphere: the same roots as Sphere::intersect, called directly.
-      if (const std::optional<double> t = e.round->nearestRoot(r)) {
+      if (precomputed) {
+        const double t = roots[m_roundSlot[i]];
+        if (t <= r.tMax) {  // false for NaN: no root
+          nearest = static_cast<int>(i);
+          nearestHit = Hit{t, 0, {}};
+          r.tMax = t;
+        }
+      } else if (const std::optional<double> t = e.round->nearestRoot(r)) {
         nearest = static_cast<int>(i);
         nearestHit = Hit{*t, 0, {}};
         r.tMax = *t;
@@ -127,10 +218,18 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
 }
 
 bool SceneIntersector::occluded(const Ray& ray) const {
-  // Any hit in range blocks: stop at the first one.
+  // Any hit in range blocks: the round spheres all at once, then the rest one by one.
+  constexpr int kStackSpheres = 64;
+  double roots[kStackSpheres];
+  const bool precomputed =
+      m_roundCount > 0 && m_roundCount + 1 <= kStackSpheres && roundRoots(ray, roots);
+  if (precomputed) {
+    for (int k = 0; k < m_roundCount; ++k)
+      if (roots[k] == roots[k]) return true;  // not NaN: a root in range
+  }
   for (const Entry& e : m_entries) {
     if (e.round) {
-      if (e.round->nearestRoot(ray)) return true;
+      if (!precomputed && e.round->nearestRoot(ray)) return true;
     } else if (occludedEntry(e, e.moving ? toObjectFrame(ray, e.velocity) : ray)) {
       return true;
     }
