@@ -569,11 +569,12 @@ TEST(SceneIntersector, 11_MovingLightsAreSampledWhereTheyAreAtTheTime) {
   EXPECT_EQ(e.unsampledHits, 0);
 }
 
-TEST(SceneIntersector, 12_SpheresTwoAtATimeGiveTheBitsOfOneAtATime) {
+TEST(SceneIntersector, 12_SpheresSeveralAtATimeGiveTheBitsOfOneAtATime) {
   // smallpt's nine spheres (rays inside six of them), a quad and an ellipsoid between
-  // them, small, huge and duplicate spheres, and an odd count (the pairs' padding): the
-  // intersector's nearest hit and occlusion must be those of Sphere::intersect object by
-  // object, bit for bit, whatever the ray (unit or not, tMin and tMax anywhere).
+  // them, small, huge and duplicate spheres, eleven in all (the AVX and SSE2 columns are
+  // padded): the intersector's nearest hit and occlusion must be those of Sphere::intersect
+  // object by object, bit for bit, whatever the ray (unit or not, tMin and tMax anywhere).
+  // CTest runs it twice: with AVX where the processor has it, and with RAYLAB_NO_AVX=1.
   Scene scene = sceneWith();
   const double walls[6][4] = {{1e5 + 1, 40.8, 81.6, 1e5}, {-1e5 + 99, 40.8, 81.6, 1e5},
                               {50, 40.8, 1e5, 1e5},       {50, 40.8, -1e5 + 170, 1e5},

@@ -10,8 +10,15 @@
 #include <cmath>
 #include <limits>
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
+// Spheres four or two at a time on x86-64 (SSE2 always there, AVX when the processor has
+// it); elsewhere one at a time.
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define RAYLAB_SPHERES_SIMD 1
+#include <immintrin.h>
+
+#include <cstdlib>
+#else
+#define RAYLAB_SPHERES_SIMD 0
 #endif
 
 namespace raylab {
@@ -67,7 +74,7 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
     }
     m_entries.push_back(e);
   }
-  if (m_roundCount % 2 == 1) {
+  while (m_roundX.size() % 4 != 0) {
     for (std::vector<double>* column : {&m_roundX, &m_roundY, &m_roundZ, &m_roundR})
       column->push_back(0.0);
   }
@@ -99,8 +106,16 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
   if (!m_lightCdf.empty()) m_lightCdf.back() = 1.0;
 }
 
-bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
-#if defined(__SSE2__)
+#if RAYLAB_SPHERES_SIMD
+namespace {
+
+// Sphere::roots for spheres (xs, ys, zs, rr)[0, count) (the columns padded to a multiple of
+// 4), k lanes at a time: every step is one IEEE operation, none fused, as the scalar code
+// compiles to without -mfma, so the bits are Sphere::nearestRoot's. A miss is a mask; the
+// steps after it run on whatever they get (a square root of a negative is NaN, a division
+// by 0 infinite) and are dropped. out[k]: the root nearestRoot gives, or NaN.
+void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const double* zs,
+                    const double* rr, int count, double* out) {
   // Sphere::roots, lane by lane: every step is one IEEE operation (no FMA in SSE2), as the
   // scalar code compiles to. A miss is a mask; the steps after it run on whatever they
   // get (a square root of a negative is NaN, a division by 0 infinite), and are dropped.
@@ -120,11 +135,11 @@ bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
   const auto select = [](__m128d mask, __m128d yes, __m128d no) {
     return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
   };
-  for (int k = 0; k < m_roundCount; k += 2) {
-    const __m128d radius = _mm_loadu_pd(&m_roundR[std::size_t(k)]);
-    const __m128d fx = _mm_sub_pd(ox, _mm_loadu_pd(&m_roundX[std::size_t(k)]));
-    const __m128d fy = _mm_sub_pd(oy, _mm_loadu_pd(&m_roundY[std::size_t(k)]));
-    const __m128d fz = _mm_sub_pd(oz, _mm_loadu_pd(&m_roundZ[std::size_t(k)]));
+  for (int k = 0; k < count; k += 2) {
+    const __m128d radius = _mm_loadu_pd(&rr[std::size_t(k)]);
+    const __m128d fx = _mm_sub_pd(ox, _mm_loadu_pd(&xs[std::size_t(k)]));
+    const __m128d fy = _mm_sub_pd(oy, _mm_loadu_pd(&ys[std::size_t(k)]));
+    const __m128d fz = _mm_sub_pd(oz, _mm_loadu_pd(&zs[std::size_t(k)]));
     const __m128d halfB = dot(fx, fy, fz, dx, dy, dz);
     const __m128d along = _mm_div_pd(halfB, a);
     const __m128d lx = _mm_sub_pd(fx, _mm_mul_pd(along, dx));
@@ -151,6 +166,84 @@ bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
     const __m128d t = select(first, low, select(second, high, nan));
     _mm_storeu_pd(out + k, select(miss, nan, t));
   }
+}
+
+// The same with four lanes (AVX; chosen at run time, the program being built for plain
+// x86-64): square roots and divisions of four doubles cost what two did with SSE2.
+__attribute__((target("avx"))) inline __m256d dot4(__m256d x0, __m256d y0, __m256d z0, __m256d x1,
+                                                   __m256d y1, __m256d z1) {
+  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(x0, x1), _mm256_mul_pd(y0, y1)),
+                       _mm256_mul_pd(z0, z1));
+}
+__attribute__((target("avx"))) inline __m256d select4(__m256d mask, __m256d yes, __m256d no) {
+  return _mm256_or_pd(_mm256_and_pd(mask, yes), _mm256_andnot_pd(mask, no));
+}
+
+__attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* xs,
+                                                  const double* ys, const double* zs,
+                                                  const double* rr, int count, double* out) {
+  // Sphere::roots, lane by lane: every step is one IEEE operation (no FMA in SSE2), as the
+  // scalar code compiles to. A miss is a mask; the steps after it run on whatever they
+  // get (a square root of a negative is NaN, a division by 0 infinite), and are dropped.
+  const __m256d signBit = _mm256_set1_pd(-0.0);
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d nan = _mm256_set1_pd(std::numeric_limits<double>::quiet_NaN());
+  const Vec3& o = ray.origin;
+  const Vec3& d = ray.direction;
+  const __m256d ox = _mm256_set1_pd(o.x), oy = _mm256_set1_pd(o.y), oz = _mm256_set1_pd(o.z);
+  const __m256d dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
+  const __m256d a = _mm256_set1_pd(glm::dot(d, d));
+  const __m256d tMin = _mm256_set1_pd(ray.tMin), tMax = _mm256_set1_pd(ray.tMax);
+  const __m256d slack = _mm256_set1_pd(1.0 + 1e-9);
+  for (int k = 0; k < count; k += 4) {
+    const __m256d radius = _mm256_loadu_pd(&rr[std::size_t(k)]);
+    const __m256d fx = _mm256_sub_pd(ox, _mm256_loadu_pd(&xs[std::size_t(k)]));
+    const __m256d fy = _mm256_sub_pd(oy, _mm256_loadu_pd(&ys[std::size_t(k)]));
+    const __m256d fz = _mm256_sub_pd(oz, _mm256_loadu_pd(&zs[std::size_t(k)]));
+    const __m256d halfB = dot4(fx, fy, fz, dx, dy, dz);
+    const __m256d along = _mm256_div_pd(halfB, a);
+    const __m256d lx = _mm256_sub_pd(fx, _mm256_mul_pd(along, dx));
+    const __m256d ly = _mm256_sub_pd(fy, _mm256_mul_pd(along, dy));
+    const __m256d lz = _mm256_sub_pd(fz, _mm256_mul_pd(along, dz));
+    const __m256d lineDistance2 = dot4(lx, ly, lz, lx, ly, lz);
+    const __m256d radius2 = _mm256_mul_pd(radius, radius);
+    const __m256d far = _mm256_cmp_pd(lineDistance2, _mm256_mul_pd(radius2, slack), _CMP_GT_OQ);
+    const __m256d lineDistance = _mm256_sqrt_pd(lineDistance2);
+    const __m256d discriminant = _mm256_mul_pd(
+        _mm256_mul_pd(a, _mm256_sub_pd(radius, lineDistance)), _mm256_add_pd(radius, lineDistance));
+    const __m256d miss = _mm256_or_pd(far, _mm256_cmp_pd(discriminant, zero, _CMP_LT_OQ));
+    const __m256d c = _mm256_sub_pd(dot4(fx, fy, fz, fx, fy, fz), radius2);
+    const __m256d root = _mm256_sqrt_pd(discriminant);
+    const __m256d signedRoot =
+        _mm256_or_pd(_mm256_andnot_pd(signBit, root), _mm256_and_pd(signBit, halfB));
+    const __m256d q = _mm256_xor_pd(_mm256_add_pd(halfB, signedRoot), signBit);
+    const __m256d qZero = _mm256_cmp_pd(q, zero, _CMP_EQ_OQ);
+    const __m256d t0 = _mm256_andnot_pd(qZero, _mm256_div_pd(q, a));
+    const __m256d t1 = _mm256_andnot_pd(qZero, _mm256_div_pd(c, q));
+    const __m256d swap = _mm256_cmp_pd(t0, t1, _CMP_GT_OQ);
+    const __m256d low = select4(swap, t1, t0), high = select4(swap, t0, t1);
+    const __m256d first =
+        _mm256_and_pd(_mm256_cmp_pd(low, tMin, _CMP_GE_OQ), _mm256_cmp_pd(low, tMax, _CMP_LE_OQ));
+    const __m256d second =
+        _mm256_and_pd(_mm256_cmp_pd(high, tMin, _CMP_GE_OQ), _mm256_cmp_pd(high, tMax, _CMP_LE_OQ));
+    const __m256d t = select4(first, low, select4(second, high, nan));
+    _mm256_storeu_pd(out + k, select4(miss, nan, t));
+  }
+}
+
+/// Whether this processor runs AVX (RAYLAB_NO_AVX=1 says no, to test the SSE2 path).
+bool useAvx() {
+  static const bool avx = __builtin_cpu_supports("avx") && !std::getenv("RAYLAB_NO_AVX");
+  return avx;
+}
+
+}  // namespace
+#endif
+
+bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
+#if RAYLAB_SPHERES_SIMD
+  const auto roots = useAvx() ? roundRootsAvx : roundRootsSse2;
+  roots(ray, m_roundX.data(), m_roundY.data(), m_roundZ.data(), m_roundR.data(), m_roundCount, out);
   return true;
 #else
   (void)ray;
@@ -168,11 +261,11 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   // The static round spheres' roots, all at once: sphere k's root, the first in [tMin,
   // tMax] of the ray as given, is the one nearestRoot would pick with tMax shortened by
   // the hits before it, if it is within that shorter tMax at all (roots are sorted).
-  // (Up to 63 spheres, on the stack; more are tested one by one.)
+  // (Up to 61 spheres, on the stack; more are tested one by one.)
   constexpr int kStackSpheres = 64;
   double roots[kStackSpheres];
   const bool precomputed =
-      m_roundCount > 0 && m_roundCount + 1 <= kStackSpheres && roundRoots(ray, roots);
+      m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, roots);
   for (std::size_t i = 0; i < m_entries.size(); ++i) {
     const Entry& e = m_entries[i];
     if (e.round) {
@@ -222,7 +315,7 @@ bool SceneIntersector::occluded(const Ray& ray) const {
   constexpr int kStackSpheres = 64;
   double roots[kStackSpheres];
   const bool precomputed =
-      m_roundCount > 0 && m_roundCount + 1 <= kStackSpheres && roundRoots(ray, roots);
+      m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, roots);
   if (precomputed) {
     for (int k = 0; k < m_roundCount; ++k)
       if (roots[k] == roots[k]) return true;  // not NaN: a root in range

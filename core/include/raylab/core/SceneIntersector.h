@@ -109,15 +109,15 @@ class SceneIntersector {
   bool m_bruteForce = false;     ///< RenderSettings::acceleration off: test every triangle.
   std::vector<Entry> m_entries;  ///< Parallel to Scene::objects.
   /// The static round spheres in entry order, their centres and radii as columns (padded
-  /// to an even count with a sphere of radius 0), for roots two at a time (roundRoots).
+  /// to a multiple of 4 with spheres of radius 0), for roots several at a time (roundRoots).
   std::vector<double> m_roundX, m_roundY, m_roundZ, m_roundR;
   std::vector<int> m_roundSlot;  ///< Per entry: its index in the columns, or -1.
   int m_roundCount = 0;
 
   /// For every static round sphere k, the t that Sphere::nearestRoot(ray) gives, or NaN
-  /// when it gives none, into out[k] (m_roundCount values; out has room for an even
-  /// count). Two spheres at a time with SSE2, the same operations in the same order as
-  /// Sphere::roots: the same bits. False when not built with SSE2 (the caller loops).
+  /// when it gives none, into out[k] (m_roundCount values; out has room for the padded
+  /// columns). Four spheres at a time with AVX, two with SSE2, the same operations in the
+  /// same order as Sphere::roots: the same bits. False when not on x86-64 (the caller loops).
   bool roundRoots(const Ray& ray, double* out) const;
   /// Meshes' hierarchies rebuilt with the settings' split (Entry::bvh points into them).
   std::vector<std::shared_ptr<const Bvh>> m_rebuilt;
