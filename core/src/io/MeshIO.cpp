@@ -177,72 +177,16 @@ SizeProblem checkBinaryOff(std::istream& in, std::uintmax_t size) {
   return std::nullopt;
 }
 
-/// One property of a PLY element: a scalar, or a list (count type, item type).
-struct PlyProperty {
-  int countBytes = 0;  ///< 0 for a scalar.
-  int bytes = 0;       ///< Of the scalar, or of each item of a list.
-};
-
-int plyTypeBytes(const std::string& type) {
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
-      type == "float32")
-    return 4;
-  if (type == "double" || type == "float64") return 8;
-  return 0;
-}
-
-/// PLY: the header's elements, then every record walked (ASCII tokens or binary bytes),
-/// each list's announced length checked against what is left of the file.
-SizeProblem checkPly(const std::string& path, std::uintmax_t size) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line, format;
-  int lineNo = 0;
-  struct Element {
-    std::string name;
-    long long count;
-    std::vector<PlyProperty> properties;
-  };
-  std::vector<Element> elements;
-  long long vertices = 0, faces = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    std::istringstream words(line);
-    std::string key;
-    words >> key;
-    if (key == "end_header") break;
-    if (key == "format") words >> format;
-    if (key == "element") {
-      Element e;
-      if (!(words >> e.name >> e.count) || e.count < 0)
-        return Located{lineNo, "element line needs a name and a count: '" + trimmed(line) + "'"};
-      if (e.name == "vertex") vertices = e.count;
-      if (e.name == "face") faces = e.count;
-      elements.push_back(e);
-    }
-    // CGAL's reader adds a property to the last element, even when there is none.
-    if (key == "property" && elements.empty())
-      return Located{lineNo, "property line before any element: '" + trimmed(line) + "'"};
-    if (key == "property") {
-      std::string type, countType, itemType;
-      words >> type;
-      PlyProperty p;
-      if (type == "list") {
-        words >> countType >> itemType;
-        p.countBytes = plyTypeBytes(countType);
-        p.bytes = plyTypeBytes(itemType);
-      } else {
-        p.bytes = plyTypeBytes(type);
-      }
-      if (p.bytes == 0 || (type == "list" && p.countBytes == 0))
-        return Located{lineNo, "unknown property type in '" + trimmed(line) + "'"};
-      elements.back().properties.push_back(p);
-    }
-  }
-  if (auto problem = checkCounts(vertices, faces, lineNo)) return problem;
-  const bool ascii = format == "ascii";
-  const bool bigEndian = format == "binary_big_endian";
+/// PLY: the header's elements (`header`, read from `in`, which is left at the first
+/// record), then every record walked (ASCII tokens or binary bytes), each list's announced
+/// length checked against what is left of the file.
+SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std::uintmax_t size) {
+  using meshnormals::plySize;
+  const std::string& format = header.format;
+  const long long vertices = header.count("vertex"), faces = header.count("face");
+  if (auto problem = checkCounts(vertices, faces, header.lines)) return problem;
+  const bool ascii = header.ascii();
+  const bool bigEndian = header.bigEndian();
   if (!ascii && !bigEndian && format != "binary_little_endian") return std::nullopt;
   const auto remaining = [&] { return std::int64_t(size) - std::int64_t(in.tellg()); };
   const auto readCount = [&](int bytes, std::int64_t& value) {
@@ -270,22 +214,22 @@ SizeProblem checkPly(const std::string& path, std::uintmax_t size) {
     return true;
   };
   const std::string kind = ascii ? "ASCII PLY" : "binary PLY";
-  for (const Element& e : elements) {
+  for (const meshnormals::PlyElement& e : header.elements) {
     for (long long r = 0; r < e.count; ++r) {
       const std::string where =
           "element " + e.name + " " + std::to_string(r) + " of " + std::to_string(e.count);
-      for (const PlyProperty& p : e.properties) {
+      for (const meshnormals::PlyProperty& p : e.properties) {
         std::int64_t items = 1;
-        if (p.countBytes > 0) {
-          if (!readCount(p.countBytes, items))
+        if (p.isList()) {
+          if (!readCount(plySize(p.countType), items))
             return Located{0, "truncated " + kind + ": " + where + " is cut off"};
           // An ASCII item takes at least two characters, a binary one its size.
-          if (items * (ascii ? 2 : p.bytes) > remaining())
+          if (items * (ascii ? 2 : plySize(p.type)) > remaining())
             return Located{0, "truncated or corrupt " + kind + ": " + where +
                                   " announces a list of " + std::to_string(items) +
                                   " values, more than the file holds"};
         }
-        if (!skip(items, p.bytes))
+        if (!skip(items, plySize(p.type)))
           return Located{0, "truncated " + kind + ": " + where + " is cut off (the header " +
                                 "announces " + std::to_string(vertices) + " vertices and " +
                                 std::to_string(faces) + " faces)"};
@@ -451,10 +395,22 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
 
   // Step 1b: what the file announces must fit in it and in the limits (CGAL trusts it).
-  const SizeProblem announced = ext == ".off"   ? locateOffError(path, size)
-                                : ext == ".ply" ? checkPly(path, size)
-                                : ext == ".stl" ? checkStl(path, size)
-                                                : checkObj(path);
+  // A PLY header is read once, here: for this check and for the normals (step 3b).
+  std::optional<meshnormals::PlyHeader> plyHeader;
+  SizeProblem announced;
+  if (ext == ".ply") {
+    std::ifstream in(path, std::ios::binary);
+    try {
+      plyHeader = meshnormals::readPlyHeader(in);
+      announced = checkPly(in, *plyHeader, size);
+    } catch (const meshnormals::Problem& problem) {
+      announced = Located{problem.line(), problem.what()};
+    }
+  } else {
+    announced = ext == ".off"   ? locateOffError(path, size)
+                : ext == ".stl" ? checkStl(path, size)
+                                : checkObj(path);
+  }
   if (announced)
     throw fail("cannot parse " + upperFormat + " file: " + announced->what, announced->line);
 
@@ -516,7 +472,7 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
   std::vector<Polygon> soupPolygons;
   try {
     if (ext == ".obj") fileNormals = meshnormals::readObj(path);
-    if (ext == ".ply") fileNormals = meshnormals::readPly(path);
+    if (ext == ".ply") fileNormals = meshnormals::readPly(path, *plyHeader);
   } catch (const meshnormals::Problem& problem) {
     throw fail("cannot read the normals of the " + upperFormat + " file: " + problem.what(),
                problem.line());
