@@ -92,6 +92,7 @@ void RenderJob::launch(Request request) {
     progress.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     progress.rays = r->stats().rays.total();
+    progress.cappedSamples = r->stats().cappedSamples;
     post(progress, std::nullopt);
   });
   Worker worker;
@@ -112,6 +113,7 @@ void RenderJob::launch(Request request) {
       last.samplesPerPixel = stats.samplesPerPixel;
       last.seconds = stats.seconds;
       last.rays = stats.rays.total();
+      last.cappedSamples = stats.cappedSamples;
       if (stats.samplesPerPixel > 0) {
         last.image = std::make_shared<const FloatImage>(image);
         last.picture = toPicture(image);
