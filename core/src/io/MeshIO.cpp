@@ -6,10 +6,12 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -185,6 +187,20 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
   const std::string& format = header.format;
   const long long vertices = header.count("vertex"), faces = header.count("face");
   if (auto problem = checkCounts(vertices, faces, header.lines)) return problem;
+  // CGAL reads a vertex's x, y and z as float or double only: another type (a `uint16 z`)
+  // made its reader call through a null pointer (found by Fuzzply, issue 14).
+  for (const meshnormals::PlyElement& e : header.elements) {
+    if (e.name != "vertex" && e.name != "vertices") continue;
+    for (const meshnormals::PlyProperty& p : e.properties) {
+      const bool coordinate = p.name == "x" || p.name == "y" || p.name == "z";
+      const bool real = !p.isList() && (p.type == meshnormals::PlyType::Float32 ||
+                                        p.type == meshnormals::PlyType::Float64);
+      if (coordinate && !real)
+        return Located{p.line, "the vertex coordinate " + p.name +
+                                   " must be a float or double property, not a list or "
+                                   "an integer"};
+    }
+  }
   const bool ascii = header.ascii();
   const bool bigEndian = header.bigEndian();
   if (!ascii && !bigEndian && format != "binary_little_endian") return std::nullopt;
@@ -518,6 +534,28 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
   } else {
     CGAL::Surface_mesh<CgalPoint> mesh;
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    // CGAL triangulates a face of more than four corners in its projection along the face's
+    // normal; two corners that coincide there made it join a vertex to itself (a null
+    // pointer, found by Fuzzobj, issue 14). Such a face is refused first, with the same
+    // normal and the same comparison the triangulation uses.
+    for (auto f : mesh.faces()) {
+      if (mesh.degree(f) <= 4) continue;
+      const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
+      if (normal == CGAL::NULL_VECTOR) continue;  // triangulate_faces refuses it
+      const CGAL::Projection_traits_3<Kernel> projection(normal);
+      const auto compareX = projection.compare_x_2_object();
+      const auto compareY = projection.compare_y_2_object();
+      std::vector<CgalPoint> corners;
+      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        corners.push_back(mesh.point(v));
+      for (std::size_t i = 0; i < corners.size(); ++i)
+        for (std::size_t j = i + 1; j < corners.size(); ++j)
+          if (compareX(corners[i], corners[j]) == CGAL::EQUAL &&
+              compareY(corners[i], corners[j]) == CGAL::EQUAL)
+            throw fail("cannot triangulate a face of " + std::to_string(corners.size()) +
+                       " corners: two of them coincide seen along the face's normal (a face "
+                       "folded onto itself)");
+    }
     if (!PMP::triangulate_faces(mesh)) throw fail("could not triangulate a polygonal face");
     vertices.reserve(mesh.number_of_vertices());
     for (auto v : mesh.vertices()) {

@@ -193,6 +193,7 @@ PlyHeader readPlyHeader(std::istream& in) {
       throw Problem(header.lines, "property line before any element: '" + trimmed(line) + "'");
     if (key == "property") {
       PlyProperty p;
+      p.line = header.lines;
       std::string type;
       words >> type;
       if (type == "list") {

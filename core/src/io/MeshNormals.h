@@ -54,6 +54,7 @@ struct PlyProperty {
   std::string name;
   PlyType type = PlyType::Unknown;       ///< Of the scalar, or of each list item.
   PlyType countType = PlyType::Unknown;  ///< Of a list's length; Unknown for a scalar.
+  int line = 0;                          ///< Its line in the header.
   bool isList() const { return countType != PlyType::Unknown; }
 };
 
