@@ -293,6 +293,13 @@ TEST(MeshIO, 16_CampaignFindingsAreRefused) {
                        "list-coordinate.ply:4: cannot parse PLY file: the "
                        "vertex coordinate x must be a float or double"))
       << readError(list);
+  // A vertex at 1e300 overflowed the BVH build's bin index (inf cast to int).
+  const std::string far =
+      writeMesh("far-vertex.obj", "v 0 0 0\nv 1 0 0\nv 0 1e300 0\nf 1 2 3\n");
+  EXPECT_TRUE(contains(readError(far),
+                       "far-vertex.obj: vertex 3 has the coordinate 1e+300, "
+                       "beyond RayLab's largest coordinate, 1e12"))
+      << readError(far);
   EXPECT_EQ(readError(data + "/bad/fuzz-folded-face.obj"),
             data +
                 "/bad/fuzz-folded-face.obj: cannot triangulate a face of 5 corners: two of "

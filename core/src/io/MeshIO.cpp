@@ -482,6 +482,18 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                  std::to_string(polygons[f].size()) + " vertices");
   }
 
+  // Every coordinate finite and within RayLab's largest coordinate, as in a scene file: a
+  // vertex at 1e300 overflowed the BVH build's bin index (found by Fuzzply, issue 14).
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (const double c : {points[i].x(), points[i].y(), points[i].z()}) {
+      if (std::abs(c) <= limits::kMaxCoordinate) continue;
+      std::ostringstream value;
+      value << c;
+      throw fail("vertex " + std::to_string(i + 1) + " has the coordinate " + value.str() +
+                 ", beyond RayLab's largest coordinate, 1e12 (or not a number)");
+    }
+  }
+
   // Step 3b: the file's vertex normals, if it has any, beside the soup as it was read.
   std::optional<meshnormals::FileNormals> fileNormals;
   std::vector<Point3> soupPoints;
