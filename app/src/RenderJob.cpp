@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <mutex>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -71,10 +72,17 @@ void RenderJob::launch(Request request) {
   const auto begin = std::chrono::steady_clock::now();
   // The worker posts to this object through a QPointer-free queued call: the destructor
   // joins the worker first, so `this` is alive whenever a call is posted.
+  //
+  // The hand-off also holds m_handOff: Qt's event queue synchronises the two threads with a
+  // lock ThreadSanitizer cannot see in a Qt not built with it, so without this it reports
+  // the posted pass (its copy and its image) as a race; with it the order is explicit:
+  // the worker posts under the lock, the UI thread takes the lock before it reads.
   auto post = [this, generation](const RenderProgress& progress, std::optional<bool> end) {
+    std::lock_guard<std::mutex> posting(m_handOff);
     QMetaObject::invokeMethod(
         this,
         [this, generation, progress, end] {
+          { std::lock_guard<std::mutex> posted(m_handOff); }
           if (end)
             workerDone(generation, progress, *end);
           else if (generation == m_generation && !m_pending)
