@@ -47,6 +47,7 @@ void RenderJob::cancel() {
 namespace {
 std::atomic<int> g_running{0};  ///< Render threads running now, in every job.
 std::atomic<int> g_most{0};     ///< The most that ever ran at once.
+std::mutex g_handOff;           ///< Held while a pass is posted and before it is read.
 
 /// The nice value render threads run at: below the UI thread, so that on a machine whose
 /// every core renders the UI still runs as soon as it has work (a pass to show, a click).
@@ -73,16 +74,17 @@ void RenderJob::launch(Request request) {
   // The worker posts to this object through a QPointer-free queued call: the destructor
   // joins the worker first, so `this` is alive whenever a call is posted.
   //
-  // The hand-off also holds m_handOff: Qt's event queue synchronises the two threads with a
+  // The hand-off also holds g_handOff: Qt's event queue synchronises the two threads with a
   // lock ThreadSanitizer cannot see in a Qt not built with it, so without this it reports
   // the posted pass (its copy and its image) as a race; with it the order is explicit:
-  // the worker posts under the lock, the UI thread takes the lock before it reads.
+  // the worker posts under the lock, the UI thread takes the lock before it reads anything
+  // of the call, even the captured `this` (so the lock is not a member).
   auto post = [this, generation](const RenderProgress& progress, std::optional<bool> end) {
-    std::lock_guard<std::mutex> posting(m_handOff);
+    std::lock_guard<std::mutex> posting(g_handOff);
     QMetaObject::invokeMethod(
         this,
         [this, generation, progress, end] {
-          { std::lock_guard<std::mutex> posted(m_handOff); }
+          { std::lock_guard<std::mutex> posted(g_handOff); }
           if (end)
             workerDone(generation, progress, *end);
           else if (generation == m_generation && !m_pending)

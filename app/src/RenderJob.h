@@ -9,7 +9,6 @@
 #include <QObject>
 
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <thread>
 
@@ -91,7 +90,6 @@ class RenderJob : public QObject {
   /// The worker's end, on the UI thread: joins it, then starts a waiting request.
   void workerDone(int generation, const RenderProgress& last, bool cancelled);
 
-  std::mutex m_handOff;  ///< Held while a pass is posted and before it is read (RenderJob.cpp).
   std::optional<Worker> m_worker;
   std::optional<Request> m_pending;
   int m_generation = 0;
