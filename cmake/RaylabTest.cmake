@@ -34,6 +34,16 @@ function(raylab_add_gtest)
   raylab_set_warnings(${ARG_NAME})
   gtest_discover_tests(${ARG_NAME}
     WORKING_DIRECTORY ${PROJECT_BINARY_DIR}/tests
-    PROPERTIES LABELS "${labels}" TIMEOUT ${ARG_TIMEOUT}
+    PROPERTIES TIMEOUT ${ARG_TIMEOUT}
     DISCOVERY_TIMEOUT 60)
+  # The labels are set by a script of our own that CTest reads after the discovered tests
+  # (gtest_discover_tests keeps their names in <name>_TESTS): its PROPERTIES split a list
+  # (CMake 3.25: LABELS "core;asan" became LABELS core and a property named asan), so every
+  # label after the first was lost and `ctest -L asan` found no test.
+  set(labels_script ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_labels.cmake)
+  file(WRITE ${labels_script}
+    "if(DEFINED ${ARG_NAME}_TESTS)\n"
+    "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n"
+    "endif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${labels_script})
 endfunction()

@@ -4,8 +4,9 @@
 #
 #   scripts/test.sh [ctest arguments...]     e.g. scripts/test.sh -L core
 #
-# With RAYLAB_TEST_ASAN=1 (and no arguments) it ends with the ASan + UBSan stage,
-# scripts/test-asan.sh; the exit status is non-zero when either part failed.
+# Without arguments it ends with the ASan + UBSan stage (scripts/test-asan.sh: the core
+# library and its loader tests under AddressSanitizer and UBSan, in build/asan-core); skip
+# it with RAYLAB_TEST_ASAN=0. The exit status is non-zero when either part failed.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -18,12 +19,10 @@ cd "$here"
 status=0
 xvfb-run -a -s "-screen 0 1280x1024x24" \
   ctest --preset ci --output-on-failure -j "$(nproc)" --repeat until-pass:2 "$@" || status=$?
-# Then, when asked for, the AddressSanitizer + UBSan stage (the core library and its loader
-# tests, built in build/asan-core; scripts/test-asan.sh) on a full run. Off by default for
-# now: its build takes ~9 minutes on 2 idle cores, which would bring the suite to ~30
-# (doc/dev/TESTING.md, "Sanitizers").
-if [[ $# -eq 0 && "${RAYLAB_TEST_ASAN:-0}" != 0 ]]; then
-  echo "raylab test: the ASan + UBSan stage (scripts/test-asan.sh)"
+# Then, on a full run, the AddressSanitizer + UBSan stage (doc/dev/TESTING.md,
+# "Sanitizers": its build and run take about 5 minutes on 2 idle cores).
+if [[ $# -eq 0 && "${RAYLAB_TEST_ASAN:-1}" != 0 ]]; then
+  echo "raylab test: the ASan + UBSan stage (scripts/test-asan.sh; RAYLAB_TEST_ASAN=0 skips it)"
   "$here/scripts/test-asan.sh" || status=$?
 fi
 exit "$status"

@@ -2510,5 +2510,13 @@ Then click a pixel to see its ray tree.</source>
         <source>BVH with median split</source>
         <translation>包围盒层次结构，中位数划分</translation>
     </message>
+    <message>
+        <source>%1. Warning: %2 of its samples reached the cap of %3 rays per sample, so some pixels miss light (fewer glossy or shadow samples, or a smaller max depth, avoid it)</source>
+        <translation>%1。警告：有 %2 个样本达到了每个样本 %3 条光线的上限，超出部分的光线没有追踪，因此部分像素缺少光照（减少光泽或阴影采样数，或降低最大深度，即可避免）</translation>
+    </message>
+    <message>
+        <source>capped samples: %1</source>
+        <translation>达到光线上限的样本：%1</translation>
+    </message>
 </context>
 </TS>

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <mutex>
 
 #ifdef __linux__
 #include <sys/resource.h>
@@ -46,6 +47,7 @@ void RenderJob::cancel() {
 namespace {
 std::atomic<int> g_running{0};  ///< Render threads running now, in every job.
 std::atomic<int> g_most{0};     ///< The most that ever ran at once.
+std::mutex g_handOff;           ///< Held while a pass is posted and before it is read.
 
 /// The nice value render threads run at: below the UI thread, so that on a machine whose
 /// every core renders the UI still runs as soon as it has work (a pass to show, a click).
@@ -71,10 +73,18 @@ void RenderJob::launch(Request request) {
   const auto begin = std::chrono::steady_clock::now();
   // The worker posts to this object through a QPointer-free queued call: the destructor
   // joins the worker first, so `this` is alive whenever a call is posted.
+  //
+  // The hand-off also holds g_handOff: Qt's event queue synchronises the two threads with a
+  // lock ThreadSanitizer cannot see in a Qt not built with it, so without this it reports
+  // the posted pass (its copy and its image) as a race; with it the order is explicit:
+  // the worker posts under the lock, the UI thread takes the lock before it reads anything
+  // of the call, even the captured `this` (so the lock is not a member).
   auto post = [this, generation](const RenderProgress& progress, std::optional<bool> end) {
+    std::lock_guard<std::mutex> posting(g_handOff);
     QMetaObject::invokeMethod(
         this,
         [this, generation, progress, end] {
+          { std::lock_guard<std::mutex> posted(g_handOff); }
           if (end)
             workerDone(generation, progress, *end);
           else if (generation == m_generation && !m_pending)
@@ -92,6 +102,7 @@ void RenderJob::launch(Request request) {
     progress.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     progress.rays = r->stats().rays.total();
+    progress.cappedSamples = r->stats().cappedSamples;
     post(progress, std::nullopt);
   });
   Worker worker;
@@ -112,6 +123,7 @@ void RenderJob::launch(Request request) {
       last.samplesPerPixel = stats.samplesPerPixel;
       last.seconds = stats.seconds;
       last.rays = stats.rays.total();
+      last.cappedSamples = stats.cappedSamples;
       if (stats.samplesPerPixel > 0) {
         last.image = std::make_shared<const FloatImage>(image);
         last.picture = toPicture(image);

@@ -26,6 +26,9 @@ struct RenderProgress {
   int samplesWanted = 0;                    ///< Samples the render stops at.
   double seconds = 0.0;                     ///< Wall-clock time since the render began.
   std::uint64_t rays = 0;                   ///< Rays traced so far, every kind.
+  /// Samples so far that reached limits::kMaxRaysPerSample (RenderStats::cappedSamples):
+  /// their rays past the cap were not traced.
+  std::uint64_t cappedSamples = 0;
   QImage picture;  ///< The image's 8-bit picture (toPicture), made on the render thread.
   /// Rays per second so far (0 before any time has passed).
   double raysPerSecond() const { return seconds > 0.0 ? double(rays) / seconds : 0.0; }

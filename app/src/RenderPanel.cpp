@@ -3,6 +3,7 @@
 #include "UiWords.h"
 
 #include "raylab/core/Exception.h"
+#include "raylab/core/Limits.h"
 #include "raylab/vis/ImageIO.h"
 
 #include <QComboBox>
@@ -205,8 +206,18 @@ void RenderPanel::ended(const RenderProgress& progress, bool cancelled) {
   }
   showFigures(m_progress, cancelled ? tr("Cancelled") : tr("Done"));
   if (!cancelled) setProgressValue(1000);
-  emit statusChanged(cancelled ? tr("Render cancelled at %1 spp").arg(m_progress.samplesPerPixel)
-                               : tr("Rendered in %1 s").arg(progress.seconds, 0, 'f', 2));
+  QString status = cancelled ? tr("Render cancelled at %1 spp").arg(m_progress.samplesPerPixel)
+                             : tr("Rendered in %1 s").arg(progress.seconds, 0, 'f', 2);
+  // As `raylab render` warns (issue 14): a sample that reached the cap on rays per sample
+  // lost the rest of its rays, so the picture is darker there than the scene asks.
+  if (m_progress.cappedSamples > 0)
+    status = tr("%1. Warning: %2 of its samples reached the cap of %3 rays per sample, so "
+                "some pixels miss light (fewer glossy or shadow samples, or a smaller max "
+                "depth, avoid it)")
+                 .arg(status)
+                 .arg(m_progress.cappedSamples)
+                 .arg(limits::kMaxRaysPerSample);
+  emit statusChanged(status);
   updateButtons();
   emit renderEnded(cancelled);
 }
@@ -219,6 +230,8 @@ void RenderPanel::showFigures(const RenderProgress& progress, const QString& sta
                         .arg(progress.seconds, 0, 'f', 2)
                         .arg(rate(progress.raysPerSecond()));
   if (!m_renderedSearch.isEmpty()) figures += QStringLiteral(" · ") + m_renderedSearch;
+  if (progress.cappedSamples > 0)
+    figures += QStringLiteral(" · ") + tr("capped samples: %1").arg(progress.cappedSamples);
   m_figures->setText(figures);
 }
 

@@ -60,10 +60,8 @@ std::optional<std::pair<int, int>> parseSize(const std::string& text);
 /// CLI11 check text for --size: empty when `text` parses, else what is expected.
 std::string checkSize(const std::string& text);
 
-/// `text` as valid UTF-8 without terminal controls, for a message on the terminal: control
-/// bytes and bytes that are not UTF-8 (a file name in another encoding, a scene file's
-/// stray byte) become \xNN, C1 controls \u00NN (issue 14). Newlines, tabs and UTF-8
-/// letters pass through.
+/// `text` as valid UTF-8 without terminal controls, for a message on the terminal
+/// (core's printableText, raylab/core/Text.h: non-UTF-8 bytes and controls become \xNN).
 std::string printable(const std::string& text);
 
 /// The warning of a render in which `count` samples reached the cap on rays per sample

@@ -8,6 +8,7 @@
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Shape.h"
+#include "raylab/core/Text.h"
 #include "raylab/vis/ImageIO.h"
 
 #include <pybind11/stl.h>
@@ -145,20 +146,93 @@ namespace py = pybind11;
 using namespace raylab;
 using namespace raylab::python;
 
+namespace {
+
+// The Python types of RayLab's errors (owned by the module, which lives as long as Python).
+PyObject* g_error = nullptr;
+PyObject* g_notImplemented = nullptr;
+PyObject* g_sceneError = nullptr;
+PyObject* g_saveError = nullptr;
+PyObject* g_geometryError = nullptr;
+PyObject* g_comparisonError = nullptr;
+PyObject* g_rayTreeError = nullptr;
+PyObject* g_imageError = nullptr;
+
+/// The Python type `name` deriving from `base`, for the C++ error E (pybind11 keeps it).
+template <typename E>
+PyObject* registerError(py::module_& m, const char* name, PyObject* base) {
+  return py::register_exception<E>(m, name, base).ptr();
+}
+
+/// Raises `type` with the C++ message `what` as the command line prints it (printableText):
+/// a message quoting raw bytes that are not UTF-8 (a file name in another encoding, a
+/// scene's stray byte) or terminal controls would otherwise become a UnicodeDecodeError
+/// instead of the error it reports (issue 14).
+void setError(PyObject* type, const char* what) {
+  PyErr_SetString(type, printableText(what).c_str());
+}
+
+/// pybind11's translation of C++ exceptions (the same Python types), with printable text.
+void translateError(std::exception_ptr error) {
+  try {
+    if (error) std::rethrow_exception(error);
+  } catch (const py::error_already_set&) {
+    throw;  // a Python error already: pybind11 restores it
+  } catch (const py::builtin_exception&) {
+    throw;  // py::value_error and its kin carry text RayLab wrote
+  } catch (const std::bad_alloc&) {
+    throw;  // MemoryError, no text
+  } catch (const NotImplemented& e) {
+    setError(g_notImplemented, e.what());
+  } catch (const SceneIO::LoadError& e) {
+    setError(g_sceneError, e.what());
+  } catch (const SceneIO::SaveError& e) {
+    setError(g_saveError, e.what());
+  } catch (const Shape::InvalidGeometry& e) {
+    setError(g_geometryError, e.what());
+  } catch (const Comparison::Error& e) {
+    setError(g_comparisonError, e.what());
+  } catch (const RayTreeJson::Error& e) {
+    setError(g_rayTreeError, e.what());
+  } catch (const vis::ImageError& e) {
+    setError(g_imageError, e.what());
+  } catch (const Exception& e) {
+    setError(g_error, e.what());
+  } catch (const std::out_of_range& e) {
+    setError(PyExc_IndexError, e.what());
+  } catch (const std::overflow_error& e) {
+    setError(PyExc_OverflowError, e.what());
+  } catch (const std::invalid_argument& e) {
+    setError(PyExc_ValueError, e.what());
+  } catch (const std::domain_error& e) {
+    setError(PyExc_ValueError, e.what());
+  } catch (const std::length_error& e) {
+    setError(PyExc_ValueError, e.what());
+  } catch (const std::range_error& e) {
+    setError(PyExc_ValueError, e.what());
+  } catch (const std::exception& e) {
+    setError(PyExc_RuntimeError, e.what());
+  }
+}
+
+}  // namespace
+
 PYBIND11_MODULE(_raylab, m) {
   m.doc() = "RayLab's core and vis libraries: scenes, geometry, renders, ray trees, VTK.";
 
   // Every input error derives from raylab.Error (raylab::Exception); its text is the C++
-  // message, which names the file, the place and the problem. Base first: pybind11 tries
-  // the translators of the most recently registered exception first.
-  auto& error = py::register_exception<Exception>(m, "Error", PyExc_RuntimeError);
-  py::register_exception<NotImplemented>(m, "NotImplementedInRayLab", error.ptr());
-  py::register_exception<SceneIO::LoadError>(m, "SceneError", error.ptr());
-  py::register_exception<SceneIO::SaveError>(m, "SaveError", error.ptr());
-  py::register_exception<Shape::InvalidGeometry>(m, "GeometryError", error.ptr());
-  py::register_exception<Comparison::Error>(m, "ComparisonError", error.ptr());
-  py::register_exception<RayTreeJson::Error>(m, "RayTreeError", error.ptr());
-  py::register_exception<vis::ImageError>(m, "ImageError", error.ptr());
+  // message, which names the file, the place and the problem.
+  g_error = registerError<Exception>(m, "Error", PyExc_RuntimeError);
+  g_notImplemented = registerError<NotImplemented>(m, "NotImplementedInRayLab", g_error);
+  g_sceneError = registerError<SceneIO::LoadError>(m, "SceneError", g_error);
+  g_saveError = registerError<SceneIO::SaveError>(m, "SaveError", g_error);
+  g_geometryError = registerError<Shape::InvalidGeometry>(m, "GeometryError", g_error);
+  g_comparisonError = registerError<Comparison::Error>(m, "ComparisonError", g_error);
+  g_rayTreeError = registerError<RayTreeJson::Error>(m, "RayTreeError", g_error);
+  g_imageError = registerError<vis::ImageError>(m, "ImageError", g_error);
+  // Registered last, so pybind11 tries it first: every C++ message, RayLab's and the
+  // standard library's, reaches Python as printable text.
+  py::register_exception_translator(&translateError);
 
   bindGeometry(m);
   bindScene(m);

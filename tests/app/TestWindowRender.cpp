@@ -352,5 +352,68 @@ TEST_F(WindowRenderTest, 09_TheChineseWindowHasNoEnglishSentenceLeft) {
   installLanguage(kEnglish);
 }
 
+/// Renders `path` in `window`'s Render tab with the scene's own settings, until it ends.
+void renderScene(MainWindow& window, const QString& path) {
+  ASSERT_TRUE(window.openFile(path, false));
+  RenderPanel& panel = *window.renderPanel();
+  const Scene& scene = window.document().scene();
+  panel.setAlgorithm(scene.render.algorithm);
+  panel.setSamplesPerPixel(scene.render.samplesPerPixel);
+  window.showImageTab(&panel);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+}
+
+TEST_F(WindowRenderTest, 10_ARenderWhoseSamplesWereCappedSaysSo) {
+  // Issue 14: `raylab render` warns when samples reached the cap on rays per sample
+  // (limits::kMaxRaysPerSample); the window's Render tab must say so too. Every sample of
+  // this 2x2 bushy room is capped (4 of them, as core's renderer counts).
+  const QString capped = QStringLiteral(RAYLAB_SOURCE_DIR "/tests/data/bad/capped-rays.json");
+  RenderStats stats;
+  {
+    const Scene scene = SceneIO::load(capped.toStdString());
+    Renderer renderer(scene, scene.render);
+    renderer.setThreads(1);
+    renderer.render();
+    stats = renderer.stats();
+  }
+  ASSERT_EQ(stats.cappedSamples, 4u);
+  renderScene(*m_window, capped);
+  RenderPanel& panel = *m_window->renderPanel();
+  EXPECT_EQ(panel.progress().cappedSamples, 4u);
+  const QString status = m_window->statusBar()->currentMessage();
+  EXPECT_TRUE(status.startsWith(QStringLiteral("Rendered in "))) << status.toStdString();
+  EXPECT_TRUE(status.contains(QStringLiteral(
+      "Warning: 4 of its samples reached the cap of 65536 rays per sample, so some pixels "
+      "miss light")))
+      << status.toStdString();
+  EXPECT_TRUE(panel.figuresLabel()->text().contains(QStringLiteral("capped samples: 4")))
+      << panel.figuresLabel()->text().toStdString();
+
+  // An ordinary render says nothing of the kind.
+  panel.setAlgorithm(Algorithm::RayCasting);
+  panel.setSamplesPerPixel(1);
+  panel.render();
+  ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+  EXPECT_FALSE(m_window->statusBar()->currentMessage().contains(QStringLiteral("cap")))
+      << m_window->statusBar()->currentMessage().toStdString();
+  EXPECT_FALSE(panel.figuresLabel()->text().contains(QStringLiteral("capped")));
+
+  // In Chinese, the same warning in Chinese, with the same figures.
+  ASSERT_TRUE(installLanguage(kChinese)) << "the translation (.qm) was not found";
+  {
+    MainWindow window(defaultScene());
+    window.show();
+    renderScene(window, capped);
+    const QString chinese = window.statusBar()->currentMessage();
+    EXPECT_TRUE(chinese.contains(QStringLiteral("65536"))) << chinese.toStdString();
+    EXPECT_TRUE(chinese.contains(QStringLiteral("4"))) << chinese.toStdString();
+    EXPECT_FALSE(chinese.contains(QStringLiteral("Warning"))) << chinese.toStdString();
+    EXPECT_TRUE(chinese.contains(QRegularExpression(QStringLiteral("[\\x{4e00}-\\x{9fff}]"))));
+    EXPECT_FALSE(window.renderPanel()->figuresLabel()->text().contains(QStringLiteral("capped")));
+  }
+  installLanguage(kEnglish);
+}
+
 }  // namespace
 }  // namespace raylab::app

@@ -275,5 +275,45 @@ TEST(MeshIO, 15_FuzzFindingsEndWithAnAnswer) {
                          "/bad/fuzz-broken-face-cycle.obj: could not triangulate a polygonal face");
 }
 
+// The campaign of issue 14 found two more, both in CGAL (UBSan): a vertex coordinate of an
+// integer type made CGAL's PLY reader call through a null pointer, and a face of more than
+// four corners, two of which coincide seen along its normal, made its triangulation join a
+// vertex to itself. Both are refused first, with a message.
+TEST(MeshIO, 16_CampaignFindingsAreRefused) {
+  const std::string data = RAYLAB_TEST_DATA_DIR;
+  EXPECT_EQ(readError(data + "/bad/integer-coordinate.ply"),
+            data +
+                "/bad/integer-coordinate.ply:7: cannot parse PLY file: the vertex coordinate z "
+                "must be a float or double property, not a list or an integer");
+  const std::string list =
+      writeMesh("list-coordinate.ply",
+                "ply\nformat ascii 1.0\nelement vertex 1\nproperty list uchar float x\n"
+                "property float y\nproperty float z\nend_header\n1 0 0 0\n");
+  EXPECT_TRUE(contains(readError(list),
+                       "list-coordinate.ply:4: cannot parse PLY file: the "
+                       "vertex coordinate x must be a float or double"))
+      << readError(list);
+  // A vertex at 1e300 overflowed the BVH build's bin index (inf cast to int).
+  const std::string far = writeMesh("far-vertex.obj", "v 0 0 0\nv 1 0 0\nv 0 1e300 0\nf 1 2 3\n");
+  EXPECT_TRUE(contains(readError(far),
+                       "far-vertex.obj: vertex 3 has the coordinate 1e+300, "
+                       "beyond RayLab's largest coordinate, 1e12"))
+      << readError(far);
+  // Separate triangles whose centroids differ by denormals along z (1e-322): binCount / extent was
+  // infinite there and the BVH build's bin index NaN (UBSan in the ASan stage).
+  std::string denormal;
+  for (int i = 0; i < 64; ++i)
+    denormal += "v " + std::to_string(2 * i) + " 0 0\nv " + std::to_string(2 * i + 1) + " 0 0\nv " +
+                std::to_string(2 * i) + " 1 " + std::to_string(i) + "e-322\n";
+  for (int i = 0; i < 64; ++i)
+    denormal += "f " + std::to_string(3 * i + 1) + " " + std::to_string(3 * i + 2) + " " +
+                std::to_string(3 * i + 3) + "\n";
+  EXPECT_EQ(MeshIO::load(writeMesh("denormal-z.obj", denormal)).triangleCount(), 64u);
+  EXPECT_EQ(readError(data + "/bad/fuzz-folded-face.obj"),
+            data +
+                "/bad/fuzz-folded-face.obj: cannot triangulate a face of 5 corners: two of "
+                "them coincide seen along the face's normal (a face folded onto itself)");
+}
+
 }  // namespace
 }  // namespace raylab

@@ -236,6 +236,26 @@ TEST(RayTreeJson, 05_BrokenTreesAndFilesAreRefused) {
     doc["segments"][std::size_t(c.segment)][c.key] = c.value;
     EXPECT_EQ(messageOf(doc.dump()).rfind(c.expected, 0), 0u) << messageOf(doc.dump());
   }
+  // Integers that are fractions or out of range (FuzzRayTree found an id of -6.67e33, which
+  // nlohmann's get<int> cast to int: undefined behaviour) are refused with their place.
+  const std::pair<std::string, std::string> numbers[] = {
+      {"/segments/2/id",
+       "t.json: /segments/2/id must be a whole number in range, got -6.66667e+33"},
+      {"/segments/1/depth", "t.json: /segments/1/depth must be a whole number in range, got 1.5"},
+      {"/segments/3/parent",
+       "t.json: /segments/3/parent must be a whole number in range, got 4294967298"},
+      {"/sample", "t.json: /sample must be a whole number in range, got 1e+40"},
+      {"/raylab_ray_tree", "t.json: /raylab_ray_tree must be a whole number in range, got 2.5"},
+      {"/seed", "t.json: /seed must be a whole number in range, got -1"},
+      {"/pixel/0", "t.json: /pixel must be two whole numbers, got an array of 2 values"},
+  };
+  const nlohmann::json values[] = {-6.66667e33, 1.5, 4294967298ll, 1e40, 2.5, -1, 3e30};
+  for (std::size_t k = 0; k < std::size(numbers); ++k) {
+    SCOPED_TRACE(numbers[k].first);
+    nlohmann::json doc = nlohmann::json::parse(good);
+    doc[nlohmann::json::json_pointer(numbers[k].first)] = values[k];
+    EXPECT_EQ(messageOf(doc.dump()), numbers[k].second);
+  }
   std::string huge = good;
   huge.replace(huge.find("\"time\": "), 8, "\"time\": 1e999, \"x\": ");
   EXPECT_EQ(messageOf(huge).rfind("t.json: not JSON (", 0), 0u) << messageOf(huge);

@@ -5,7 +5,7 @@ import json
 import pytest
 
 import raylab
-from conftest import SCENES
+from conftest import SCENES, SOURCE_DIR
 
 
 def test01_default_scene_has_the_original_programs_objects():
@@ -151,3 +151,27 @@ def test11_saving_into_a_missing_folder_raises_and_writes_nothing(tmp_path):
 def test12_parse_names_its_origin_in_messages():
     with pytest.raises(raylab.SceneError, match="^lesson-scene: "):
         raylab.Scene.parse('{"raylab_scene": 2, "materials": [], "objects": 5}', "lesson-scene")
+
+
+BAD = SOURCE_DIR / "tests" / "data" / "bad"
+
+
+def test13_raw_bytes_in_a_message_are_escaped_as_on_the_command_line():
+    # Issue 14: the JSON reader quotes the byte 0xff of a scene saved in another encoding;
+    # the message holds it raw, which Python would refuse as UTF-8 (UnicodeDecodeError
+    # instead of the SceneError). It reads \xff, as `raylab render` prints it.
+    with pytest.raises(raylab.SceneError) as error:
+        raylab.load_scene(str(BAD / "non-utf8-name.json"))
+    message = str(error.value)
+    assert "ill-formed UTF-8 byte" in message
+    assert "last read: '\"ball\\xff'" in message
+    message.encode("utf-8")  # valid text throughout
+
+
+def test14_terminal_escape_bytes_in_a_message_are_escaped():
+    # A name holding ESC [31m and BEL is quoted as \x1b[31m...\x07, never as controls.
+    with pytest.raises(raylab.SceneError) as error:
+        raylab.load_scene(str(BAD / "escape-name.json"))
+    message = str(error.value)
+    assert 'duplicate object "\\x1b[31mred\\x07"' in message
+    assert "\x1b" not in message and "\x07" not in message

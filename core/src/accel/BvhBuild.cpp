@@ -587,7 +587,10 @@ struct Bvh::Builder {
     for (int a = 0; a < 3; ++a) {
       const double extent = centroids.extent()[a];
       lo[a] = centroids.lower[a];
-      scale[a] = extent > 0.0 ? binCount / extent : 0.0;
+      // An extent of a few denormals makes binCount / extent infinite, and 0 * inf a NaN
+      // bin index (found by Fuzzply, issue 14): such an axis is not binned, like a flat one.
+      const double s = extent > 0.0 ? binCount / extent : 0.0;
+      scale[a] = std::isfinite(s) ? s : 0.0;
     }
     Binning binning(binCount);
     if (parallelRange(count)) {

@@ -6,10 +6,12 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Projection_traits_3.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -177,72 +179,30 @@ SizeProblem checkBinaryOff(std::istream& in, std::uintmax_t size) {
   return std::nullopt;
 }
 
-/// One property of a PLY element: a scalar, or a list (count type, item type).
-struct PlyProperty {
-  int countBytes = 0;  ///< 0 for a scalar.
-  int bytes = 0;       ///< Of the scalar, or of each item of a list.
-};
-
-int plyTypeBytes(const std::string& type) {
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
-      type == "float32")
-    return 4;
-  if (type == "double" || type == "float64") return 8;
-  return 0;
-}
-
-/// PLY: the header's elements, then every record walked (ASCII tokens or binary bytes),
-/// each list's announced length checked against what is left of the file.
-SizeProblem checkPly(const std::string& path, std::uintmax_t size) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line, format;
-  int lineNo = 0;
-  struct Element {
-    std::string name;
-    long long count;
-    std::vector<PlyProperty> properties;
-  };
-  std::vector<Element> elements;
-  long long vertices = 0, faces = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    std::istringstream words(line);
-    std::string key;
-    words >> key;
-    if (key == "end_header") break;
-    if (key == "format") words >> format;
-    if (key == "element") {
-      Element e;
-      if (!(words >> e.name >> e.count) || e.count < 0)
-        return Located{lineNo, "element line needs a name and a count: '" + trimmed(line) + "'"};
-      if (e.name == "vertex") vertices = e.count;
-      if (e.name == "face") faces = e.count;
-      elements.push_back(e);
-    }
-    // CGAL's reader adds a property to the last element, even when there is none.
-    if (key == "property" && elements.empty())
-      return Located{lineNo, "property line before any element: '" + trimmed(line) + "'"};
-    if (key == "property") {
-      std::string type, countType, itemType;
-      words >> type;
-      PlyProperty p;
-      if (type == "list") {
-        words >> countType >> itemType;
-        p.countBytes = plyTypeBytes(countType);
-        p.bytes = plyTypeBytes(itemType);
-      } else {
-        p.bytes = plyTypeBytes(type);
-      }
-      if (p.bytes == 0 || (type == "list" && p.countBytes == 0))
-        return Located{lineNo, "unknown property type in '" + trimmed(line) + "'"};
-      elements.back().properties.push_back(p);
+/// PLY: the header's elements (`header`, read from `in`, which is left at the first
+/// record), then every record walked (ASCII tokens or binary bytes), each list's announced
+/// length checked against what is left of the file.
+SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std::uintmax_t size) {
+  using meshnormals::plySize;
+  const std::string& format = header.format;
+  const long long vertices = header.count("vertex"), faces = header.count("face");
+  if (auto problem = checkCounts(vertices, faces, header.lines)) return problem;
+  // CGAL reads a vertex's x, y and z as float or double only: another type (a `uint16 z`)
+  // made its reader call through a null pointer (found by Fuzzply, issue 14).
+  for (const meshnormals::PlyElement& e : header.elements) {
+    if (e.name != "vertex" && e.name != "vertices") continue;
+    for (const meshnormals::PlyProperty& p : e.properties) {
+      const bool coordinate = p.name == "x" || p.name == "y" || p.name == "z";
+      const bool real = !p.isList() && (p.type == meshnormals::PlyType::Float32 ||
+                                        p.type == meshnormals::PlyType::Float64);
+      if (coordinate && !real)
+        return Located{p.line, "the vertex coordinate " + p.name +
+                                   " must be a float or double property, not a list or "
+                                   "an integer"};
     }
   }
-  if (auto problem = checkCounts(vertices, faces, lineNo)) return problem;
-  const bool ascii = format == "ascii";
-  const bool bigEndian = format == "binary_big_endian";
+  const bool ascii = header.ascii();
+  const bool bigEndian = header.bigEndian();
   if (!ascii && !bigEndian && format != "binary_little_endian") return std::nullopt;
   const auto remaining = [&] { return std::int64_t(size) - std::int64_t(in.tellg()); };
   const auto readCount = [&](int bytes, std::int64_t& value) {
@@ -270,22 +230,22 @@ SizeProblem checkPly(const std::string& path, std::uintmax_t size) {
     return true;
   };
   const std::string kind = ascii ? "ASCII PLY" : "binary PLY";
-  for (const Element& e : elements) {
+  for (const meshnormals::PlyElement& e : header.elements) {
     for (long long r = 0; r < e.count; ++r) {
       const std::string where =
           "element " + e.name + " " + std::to_string(r) + " of " + std::to_string(e.count);
-      for (const PlyProperty& p : e.properties) {
+      for (const meshnormals::PlyProperty& p : e.properties) {
         std::int64_t items = 1;
-        if (p.countBytes > 0) {
-          if (!readCount(p.countBytes, items))
+        if (p.isList()) {
+          if (!readCount(plySize(p.countType), items))
             return Located{0, "truncated " + kind + ": " + where + " is cut off"};
           // An ASCII item takes at least two characters, a binary one its size.
-          if (items * (ascii ? 2 : p.bytes) > remaining())
+          if (items * (ascii ? 2 : plySize(p.type)) > remaining())
             return Located{0, "truncated or corrupt " + kind + ": " + where +
                                   " announces a list of " + std::to_string(items) +
                                   " values, more than the file holds"};
         }
-        if (!skip(items, p.bytes))
+        if (!skip(items, plySize(p.type)))
           return Located{0, "truncated " + kind + ": " + where + " is cut off (the header " +
                                 "announces " + std::to_string(vertices) + " vertices and " +
                                 std::to_string(faces) + " faces)"};
@@ -451,10 +411,22 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
 
   // Step 1b: what the file announces must fit in it and in the limits (CGAL trusts it).
-  const SizeProblem announced = ext == ".off"   ? locateOffError(path, size)
-                                : ext == ".ply" ? checkPly(path, size)
-                                : ext == ".stl" ? checkStl(path, size)
-                                                : checkObj(path);
+  // A PLY header is read once, here: for this check and for the normals (step 3b).
+  std::optional<meshnormals::PlyHeader> plyHeader;
+  SizeProblem announced;
+  if (ext == ".ply") {
+    std::ifstream in(path, std::ios::binary);
+    try {
+      plyHeader = meshnormals::readPlyHeader(in);
+      announced = checkPly(in, *plyHeader, size);
+    } catch (const meshnormals::Problem& problem) {
+      announced = Located{problem.line(), problem.what()};
+    }
+  } else {
+    announced = ext == ".off"   ? locateOffError(path, size)
+                : ext == ".stl" ? checkStl(path, size)
+                                : checkObj(path);
+  }
   if (announced)
     throw fail("cannot parse " + upperFormat + " file: " + announced->what, announced->line);
 
@@ -510,13 +482,25 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                  std::to_string(polygons[f].size()) + " vertices");
   }
 
+  // Every coordinate finite and within RayLab's largest coordinate, as in a scene file: a
+  // vertex at 1e300 overflowed the BVH build's bin index (found by Fuzzply, issue 14).
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (const double c : {points[i].x(), points[i].y(), points[i].z()}) {
+      if (std::abs(c) <= limits::kMaxCoordinate) continue;
+      std::ostringstream value;
+      value << c;
+      throw fail("vertex " + std::to_string(i + 1) + " has the coordinate " + value.str() +
+                 ", beyond RayLab's largest coordinate, 1e12 (or not a number)");
+    }
+  }
+
   // Step 3b: the file's vertex normals, if it has any, beside the soup as it was read.
   std::optional<meshnormals::FileNormals> fileNormals;
   std::vector<Point3> soupPoints;
   std::vector<Polygon> soupPolygons;
   try {
     if (ext == ".obj") fileNormals = meshnormals::readObj(path);
-    if (ext == ".ply") fileNormals = meshnormals::readPly(path);
+    if (ext == ".ply") fileNormals = meshnormals::readPly(path, *plyHeader);
   } catch (const meshnormals::Problem& problem) {
     throw fail("cannot read the normals of the " + upperFormat + " file: " + problem.what(),
                problem.line());
@@ -562,6 +546,28 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
   } else {
     CGAL::Surface_mesh<CgalPoint> mesh;
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    // CGAL triangulates a face of more than four corners in its projection along the face's
+    // normal; two corners that coincide there made it join a vertex to itself (a null
+    // pointer, found by Fuzzobj, issue 14). Such a face is refused first, with the same
+    // normal and the same comparison the triangulation uses.
+    for (auto f : mesh.faces()) {
+      if (mesh.degree(f) <= 4) continue;
+      const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
+      if (normal == CGAL::NULL_VECTOR) continue;  // triangulate_faces refuses it
+      const CGAL::Projection_traits_3<Kernel> projection(normal);
+      const auto compareX = projection.compare_x_2_object();
+      const auto compareY = projection.compare_y_2_object();
+      std::vector<CgalPoint> corners;
+      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        corners.push_back(mesh.point(v));
+      for (std::size_t i = 0; i < corners.size(); ++i)
+        for (std::size_t j = i + 1; j < corners.size(); ++j)
+          if (compareX(corners[i], corners[j]) == CGAL::EQUAL &&
+              compareY(corners[i], corners[j]) == CGAL::EQUAL)
+            throw fail("cannot triangulate a face of " + std::to_string(corners.size()) +
+                       " corners: two of them coincide seen along the face's normal (a face "
+                       "folded onto itself)");
+    }
     if (!PMP::triangulate_faces(mesh)) throw fail("could not triangulate a polygonal face");
     vertices.reserve(mesh.number_of_vertices());
     for (auto v : mesh.vertices()) {

@@ -27,9 +27,6 @@ void checkNormal(const Normal3& n, int line, const std::string& where) {
     throw Problem(line, where + " has zero length: " + toString(n) + " gives no direction");
 }
 
-/// One scalar type of a PLY property.
-enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64, Unknown };
-
 PlyType plyType(const std::string& t) {
   if (t == "char" || t == "int8") return PlyType::Int8;
   if (t == "uchar" || t == "uint8") return PlyType::UInt8;
@@ -40,26 +37,6 @@ PlyType plyType(const std::string& t) {
   if (t == "float" || t == "float32") return PlyType::Float32;
   if (t == "double" || t == "float64") return PlyType::Float64;
   return PlyType::Unknown;
-}
-
-int plySize(PlyType t) {
-  switch (t) {
-    case PlyType::Int8:
-    case PlyType::UInt8:
-      return 1;
-    case PlyType::Int16:
-    case PlyType::UInt16:
-      return 2;
-    case PlyType::Int32:
-    case PlyType::UInt32:
-    case PlyType::Float32:
-      return 4;
-    case PlyType::Float64:
-      return 8;
-    case PlyType::Unknown:
-      return 0;
-  }
-  return 0;
 }
 
 /// One binary PLY scalar as a double.
@@ -103,18 +80,6 @@ bool readBinary(std::istream& in, PlyType type, bool bigEndian, double& value) {
   }
   return true;
 }
-
-struct PlyProperty {
-  std::string name;
-  PlyType type = PlyType::Unknown;       ///< Of the scalar, or of each list item.
-  PlyType countType = PlyType::Unknown;  ///< Of a list's length; Unknown for a scalar.
-};
-
-struct PlyElement {
-  std::string name;
-  long long count = 0;
-  std::vector<PlyProperty> properties;
-};
 
 using PositionKey = std::array<double, 3>;
 
@@ -180,27 +145,55 @@ std::optional<FileNormals> readObj(const std::string& path) {
   return out;
 }
 
-std::optional<FileNormals> readPly(const std::string& path) {
-  static const char* const kAxisNames[3] = {"nx", "ny", "nz"};
-  std::ifstream in(path, std::ios::binary);
-  std::string line, format;
-  int lineNo = 0;
-  std::vector<PlyElement> elements;
-  // The header: format, elements and their properties.
+int plySize(PlyType t) {
+  switch (t) {
+    case PlyType::Int8:
+    case PlyType::UInt8:
+      return 1;
+    case PlyType::Int16:
+    case PlyType::UInt16:
+      return 2;
+    case PlyType::Int32:
+    case PlyType::UInt32:
+    case PlyType::Float32:
+      return 4;
+    case PlyType::Float64:
+      return 8;
+    case PlyType::Unknown:
+      return 0;
+  }
+  return 0;
+}
+
+long long PlyHeader::count(const std::string& name) const {
+  for (const PlyElement& e : elements)
+    if (e.name == name) return e.count;
+  return 0;
+}
+
+PlyHeader readPlyHeader(std::istream& in) {
+  PlyHeader header;
+  std::string line;
   while (std::getline(in, line)) {
-    ++lineNo;
+    ++header.lines;
     std::istringstream words(line);
     std::string key;
     words >> key;
     if (key == "end_header") break;
-    if (key == "format") words >> format;
+    if (key == "format") words >> header.format;
     if (key == "element") {
       PlyElement e;
-      words >> e.name >> e.count;
-      elements.push_back(e);
+      if (!(words >> e.name >> e.count) || e.count < 0)
+        throw Problem(header.lines,
+                      "element line needs a name and a count: '" + trimmed(line) + "'");
+      header.elements.push_back(e);
     }
-    if (key == "property" && !elements.empty()) {
+    // CGAL's reader adds a property to the last element, even when there is none.
+    if (key == "property" && header.elements.empty())
+      throw Problem(header.lines, "property line before any element: '" + trimmed(line) + "'");
+    if (key == "property") {
       PlyProperty p;
+      p.line = header.lines;
       std::string type;
       words >> type;
       if (type == "list") {
@@ -208,13 +201,24 @@ std::optional<FileNormals> readPly(const std::string& path) {
         words >> countType >> itemType >> p.name;
         p.countType = plyType(countType);
         p.type = plyType(itemType);
+        if (p.countType == PlyType::Unknown)
+          throw Problem(header.lines, "unknown property type in '" + trimmed(line) + "'");
       } else {
         p.type = plyType(type);
         words >> p.name;
       }
-      elements.back().properties.push_back(p);
+      if (p.type == PlyType::Unknown)
+        throw Problem(header.lines, "unknown property type in '" + trimmed(line) + "'");
+      header.elements.back().properties.push_back(p);
     }
   }
+  header.records = in.tellg();
+  return header;
+}
+
+std::optional<FileNormals> readPly(const std::string& path, const PlyHeader& header) {
+  static const char* const kAxisNames[3] = {"nx", "ny", "nz"};
+  const std::vector<PlyElement>& elements = header.elements;
   // Which of the vertex's properties are nx, ny, nz.
   std::size_t vertexElement = elements.size();
   int axis[3] = {-1, -1, -1};
@@ -224,7 +228,7 @@ std::optional<FileNormals> readPly(const std::string& path) {
     for (std::size_t i = 0; i < elements[e].properties.size(); ++i) {
       const PlyProperty& p = elements[e].properties[i];
       for (int a = 0; a < 3; ++a)
-        if (p.name == kAxisNames[a] && p.countType == PlyType::Unknown) axis[a] = int(i);
+        if (p.name == kAxisNames[a] && !p.isList()) axis[a] = int(i);
     }
   }
   const int found = (axis[0] >= 0) + (axis[1] >= 0) + (axis[2] >= 0);
@@ -238,8 +242,11 @@ std::optional<FileNormals> readPly(const std::string& path) {
   }
 
   // The records up to the end of the vertex element, the vertices' normals kept.
-  const bool ascii = format == "ascii";
-  const bool bigEndian = format == "binary_big_endian";
+  const bool ascii = header.ascii();
+  const bool bigEndian = header.bigEndian();
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(header.records);
+  int lineNo = header.lines;
   FileNormals out;
   out.perVertex = true;
   out.normals.reserve(std::size_t(elements[vertexElement].count));
@@ -264,7 +271,7 @@ std::optional<FileNormals> readPly(const std::string& path) {
         for (std::size_t i = 0; i < element.properties.size(); ++i) {
           double v = 0.0;
           if (!(tokens >> v)) fail(r, recordLine);
-          if (element.properties[i].countType != PlyType::Unknown) {
+          if (element.properties[i].isList()) {
             for (long long k = 0; k < static_cast<long long>(v); ++k) {
               double item;
               if (!(tokens >> item)) fail(r, recordLine);
@@ -276,7 +283,7 @@ std::optional<FileNormals> readPly(const std::string& path) {
         for (std::size_t i = 0; i < element.properties.size(); ++i) {
           const PlyProperty& p = element.properties[i];
           double v = 0.0;
-          if (p.countType == PlyType::Unknown) {
+          if (!p.isList()) {
             if (!readBinary(in, p.type, bigEndian, v)) fail(r, 0);
           } else {
             if (!readBinary(in, p.countType, bigEndian, v) || v < 0) fail(r, 0);

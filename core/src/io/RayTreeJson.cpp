@@ -13,7 +13,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
+#include <type_traits>
 
 namespace raylab {
 
@@ -23,6 +26,36 @@ using nlohmann::json;
 
 json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
 
+/// `v` as the integer type T: a JSON integer within T's range, else nothing. Never a cast
+/// of a fraction or of a number out of range (nlohmann's get<int> of -6.7e33 is undefined
+/// behaviour; found by FuzzRayTree, issue 14).
+template <typename T>
+std::optional<T> integerOf(const json& v) {
+  using Limits = std::numeric_limits<T>;
+  if (v.is_number_unsigned()) {
+    const auto u = v.get<std::uint64_t>();
+    if (u > static_cast<std::uint64_t>(Limits::max())) return std::nullopt;
+    return static_cast<T>(u);
+  }
+  if (!v.is_number_integer()) return std::nullopt;
+  const auto i = v.get<std::int64_t>();
+  if constexpr (std::is_signed_v<T>) {
+    if (i >= static_cast<std::int64_t>(Limits::min()) &&
+        i <= static_cast<std::int64_t>(Limits::max()))
+      return static_cast<T>(i);
+  }
+  return std::nullopt;
+}
+
+/// The header's integer `key` of `doc`, read from `origin`.
+template <typename T>
+T headerInteger(const json& doc, const char* key, const std::string& origin) {
+  const json& v = doc.at(key);
+  if (auto value = integerOf<T>(v)) return *value;
+  throw RayTreeJson::Error(origin + ": /" + key + " must be a whole number in range, got " +
+                           excerpt(v));
+}
+
 /// Reads the field `key` of segment object `s` (of segment `index`) as T.
 template <typename T>
 T field(const json& s, const char* key, std::size_t index, const std::string& origin) {
@@ -30,6 +63,11 @@ T field(const json& s, const char* key, std::size_t index, const std::string& or
   if (it == s.end())
     throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(index) + " has no \"" + key +
                              "\"");
+  if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+    if (auto value = integerOf<T>(*it)) return *value;
+    throw RayTreeJson::Error(origin + ": /segments/" + std::to_string(index) + "/" + key +
+                             " must be a whole number in range, got " + excerpt(*it));
+  }
   try {
     return it->get<T>();
   } catch (const json::exception&) {
@@ -153,19 +191,22 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
   RayTree tree;
   Info read;
   try {
-    read.version = doc.at("raylab_ray_tree").get<int>();
+    read.version = headerInteger<int>(doc, "raylab_ray_tree", origin);
     if (read.version != kVersion)
       throw Error(origin + ": ray tree format " + std::to_string(read.version) +
                   " is not supported (this RayLab reads " + std::to_string(kVersion) + ")");
-    const auto pixel = doc.at("pixel").get<std::array<int, 2>>();
-    tree.pixelX = pixel[0];
-    tree.pixelY = pixel[1];
-    tree.sample = doc.at("sample").get<int>();
+    const json& pixel = doc.at("pixel");
+    const auto x = pixel.is_array() && pixel.size() == 2 ? integerOf<int>(pixel[0]) : std::nullopt;
+    const auto y = pixel.is_array() && pixel.size() == 2 ? integerOf<int>(pixel[1]) : std::nullopt;
+    if (!x || !y) throw Error(origin + ": /pixel must be two whole numbers, got " + excerpt(pixel));
+    tree.pixelX = *x;
+    tree.pixelY = *y;
+    tree.sample = headerInteger<int>(doc, "sample", origin);
     tree.truncated = doc.value("truncated", false);
     tree.message = doc.value("message", std::string());
     read.scene = doc.value("scene", std::string());
     read.algorithm = doc.value("algorithm", std::string());
-    read.seed = doc.value("seed", std::uint64_t(0));
+    if (doc.contains("seed")) read.seed = headerInteger<std::uint64_t>(doc, "seed", origin);
     const auto estimate = doc.value("estimate", std::array<double, 3>{0.0, 0.0, 0.0});
     read.estimate = Vec3(estimate[0], estimate[1], estimate[2]);
   } catch (const json::exception& e) {

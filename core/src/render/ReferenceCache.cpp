@@ -207,8 +207,9 @@ ReferenceCache::Lookup ReferenceCache::load(const Scene& scene,
     if (sidecar.at("key").get<std::string>() != k) return ignore(sidecarFile, "another key");
     if (sidecar.at("settings") != settingsJson(referenceSettings))
       return ignore(sidecarFile, "other settings");
-    if (sidecar.at("width").get<int>() != scene.camera.width ||
-        sidecar.at("height").get<int>() != scene.camera.height)
+    // Compared as JSON numbers: get<int> of a corrupt 1e30 would be undefined behaviour.
+    if (sidecar.at("width") != ojson(scene.camera.width) ||
+        sidecar.at("height") != ojson(scene.camera.height))
       return ignore(sidecarFile, "another size");
   } catch (const nlohmann::json::exception& e) {
     return ignore(sidecarFile, std::string("a field is missing or wrong: ") + e.what());
