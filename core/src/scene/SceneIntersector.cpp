@@ -116,9 +116,6 @@ namespace {
 // by 0 infinite) and are dropped. out[k]: the root nearestRoot gives, or NaN.
 void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const double* zs,
                     const double* rr, int count, double* out) {
-  // Sphere::roots, lane by lane: every step is one IEEE operation (no FMA in SSE2), as the
-  // scalar code compiles to. A miss is a mask; the steps after it run on whatever they
-  // get (a square root of a negative is NaN, a division by 0 infinite), and are dropped.
   const __m128d signBit = _mm_set1_pd(-0.0);
   const __m128d zero = _mm_setzero_pd();
   const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
@@ -182,9 +179,7 @@ __attribute__((target("avx"))) inline __m256d select4(__m256d mask, __m256d yes,
 __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* xs,
                                                   const double* ys, const double* zs,
                                                   const double* rr, int count, double* out) {
-  // Sphere::roots, lane by lane: every step is one IEEE operation (no FMA in SSE2), as the
-  // scalar code compiles to. A miss is a mask; the steps after it run on whatever they
-  // get (a square root of a negative is NaN, a division by 0 infinite), and are dropped.
+  // roundRootsSse2's steps, four lanes wide (target "avx" enables no FMA either).
   const __m256d signBit = _mm256_set1_pd(-0.0);
   const __m256d zero = _mm256_setzero_pd();
   const __m256d nan = _mm256_set1_pd(std::numeric_limits<double>::quiet_NaN());
