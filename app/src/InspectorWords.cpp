@@ -8,6 +8,7 @@
 #include <QStringList>
 
 #include <utility>
+#include <vector>
 
 namespace raylab::app {
 
@@ -148,12 +149,17 @@ QString oracleNote(const QString& note) {
                          "The recorded hit is %1 along the ray, the object's nearest exact hit "
                          "%2.")},
   };
-  for (const Pattern& p : patterns) {
-    const QRegularExpression regex(QString::fromUtf8(p.regex));
-    const QRegularExpressionMatch m = regex.match(note);
+  static const std::vector<QRegularExpression> compiled = [] {
+    std::vector<QRegularExpression> out;
+    for (const Pattern& p : patterns) out.emplace_back(QString::fromUtf8(p.regex));
+    return out;
+  }();
+  for (std::size_t i = 0; i < compiled.size(); ++i) {
+    const Pattern& p = patterns[i];
+    const QRegularExpressionMatch m = compiled[i].match(note);
     if (!m.hasMatch()) continue;
     QString said = QCoreApplication::translate("InspectorWords", p.text);
-    for (int i = 1; i <= m.lastCapturedIndex(); ++i) said = said.arg(m.captured(i));
+    for (int k = 1; k <= m.lastCapturedIndex(); ++k) said = said.arg(m.captured(k));
     return said;
   }
   return note;
