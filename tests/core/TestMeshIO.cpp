@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <sstream>
 #include <string>
 
 namespace raylab {
@@ -271,8 +272,11 @@ TEST(MeshIO, 15_FuzzFindingsEndWithAnAnswer) {
   } catch (const MeshIO::ReadError& e) {
     outcome = e.what();
   }
+  // Its face of six corners crosses itself: refused before CGAL triangulates it (test 17).
   EXPECT_EQ(outcome, std::string(RAYLAB_TEST_DATA_DIR) +
-                         "/bad/fuzz-broken-face-cycle.obj: could not triangulate a polygonal face");
+                         "/bad/fuzz-broken-face-cycle.obj: cannot triangulate a face of 6 "
+                         "corners: its edges cross or touch seen along the face's normal (a "
+                         "polygon that intersects itself)");
 }
 
 // The campaign of issue 14 found two more, both in CGAL (UBSan): a vertex coordinate of an
@@ -313,6 +317,63 @@ TEST(MeshIO, 16_CampaignFindingsAreRefused) {
             data +
                 "/bad/fuzz-folded-face.obj: cannot triangulate a face of 5 corners: two of "
                 "them coincide seen along the face's normal (a face folded onto itself)");
+}
+
+// The campaign's last two findings. A face whose edges cross seen along its normal made
+// CGAL's constrained triangulation insert constraints for ever (a 271-byte OBJ hung the
+// loader), and a PLY vertex element without coordinates, 425k of them announced in 2.7 KB,
+// took a second. Both are refused first; a concave face still loads.
+TEST(MeshIO, 17_CrossingFacesAndCoordinatelessVerticesAreRefused) {
+  const std::string data = RAYLAB_TEST_DATA_DIR;
+  const std::string crossing =
+      "its edges cross or touch seen along the face's normal (a "
+      "polygon that intersects itself)";
+  EXPECT_TRUE(contains(readError(data + "/bad/fuzz-crossing-face.obj"), crossing))
+      << readError(data + "/bad/fuzz-crossing-face.obj");
+  // A pentagon whose last edge crosses its second.
+  const std::string star =
+      writeMesh("star.obj", "v 0 0 0\nv 2 0 0\nv 0 1 0\nv 2 1 0\nv 1 2 0\nf 1 2 3 4 5\n");
+  EXPECT_EQ(readError(star), star + ": cannot triangulate a face of 5 corners: " + crossing);
+  // A pentagon whose third corner doubles back along its first edge.
+  const std::string spike =
+      writeMesh("spike.obj", "v 0 0 0\nv 2 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4 5\n");
+  EXPECT_EQ(readError(spike), spike + ": cannot triangulate a face of 5 corners: " + crossing);
+  // A concave hexagon (an L) is a simple polygon: four triangles.
+  const std::string ell =
+      writeMesh("ell.obj", "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nf 1 2 3 4 5 6\n");
+  EXPECT_EQ(MeshIO::load(ell).triangleCount(), 4u);
+  // A disc of 1000 corners loads; one of 4097 is refused before the quadratic check.
+  const auto disc = [](int corners) {
+    std::ostringstream text;
+    text.precision(17);
+    for (int i = 0; i < corners; ++i)
+      text << "v " << std::cos(2 * M_PI * i / corners) << " " << std::sin(2 * M_PI * i / corners)
+           << " 0\n";
+    text << "f";
+    for (int i = 1; i <= corners; ++i) text << " " << i;
+    text << "\n";
+    return text.str();
+  };
+  EXPECT_EQ(MeshIO::load(writeMesh("disc-1000.obj", disc(1000))).triangleCount(), 998u);
+  const std::string huge = writeMesh("disc-4097.obj", disc(4097));
+  EXPECT_EQ(readError(huge), huge +
+                                 ": cannot triangulate a face of 4097 corners: RayLab "
+                                 "triangulates faces of at most 4096 corners");
+  // Vertices without coordinates.
+  const std::string none = writeMesh("no-coordinates.ply",
+                                     "ply\nformat ascii 1.0\ncomment found by Fuzzply\nelement "
+                                     "vertex 425204 0.0\nend_header\n0 0 0\n");
+  EXPECT_EQ(readError(none), none +
+                                 ":4: cannot parse PLY file: the vertex element has no x "
+                                 "property (a vertex needs x, y and z)");
+  const std::string flat =
+      writeMesh("no-z.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                "0 0\n1 0\n0 1\n3 0 1 2\n");
+  EXPECT_EQ(readError(flat), flat +
+                                 ":3: cannot parse PLY file: the vertex element has no z "
+                                 "property (a vertex needs x, y and z)");
 }
 
 }  // namespace

@@ -71,14 +71,24 @@ namespace portable {
 #if defined(__x86_64__) || defined(__i386__)
 #define RAYLAB_BVH_HAVE_AVX2 1
 // The same kernel compiled for AVX2 (4 doubles per ymm register), without FMA (see the top).
+// GCC takes a target for the functions that follow; Clang (the fuzz build) ignores that
+// pragma and takes an attribute applied to each function instead.
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
 #define RAYLAB_BVH_KERNEL_AVX2 1
 namespace avx2 {
 #include "accel/BvhWideKernel.inc"
 }  // namespace avx2
 #undef RAYLAB_BVH_KERNEL_AVX2
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
 #pragma GCC pop_options
+#endif
 #endif
 
 void closestPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const int* ids,

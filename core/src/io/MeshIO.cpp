@@ -191,6 +191,13 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
   // made its reader call through a null pointer (found by Fuzzply, issue 14).
   for (const meshnormals::PlyElement& e : header.elements) {
     if (e.name != "vertex" && e.name != "vertices") continue;
+    // A vertex without coordinates: 425k of them, announced by a 2.7 KB file, took CGAL's
+    // reader a second each time (found by Fuzzply, issue 14).
+    for (const char* axis : {"x", "y", "z"})
+      if (std::none_of(e.properties.begin(), e.properties.end(),
+                       [&](const meshnormals::PlyProperty& p) { return p.name == axis; }))
+        return Located{e.line, "the " + e.name + " element has no " + axis +
+                                   " property (a vertex needs x, y and z)"};
     for (const meshnormals::PlyProperty& p : e.properties) {
       const bool coordinate = p.name == "x" || p.name == "y" || p.name == "z";
       const bool real = !p.isList() && (p.type == meshnormals::PlyType::Float32 ||
@@ -231,22 +238,26 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
   };
   const std::string kind = ascii ? "ASCII PLY" : "binary PLY";
   for (const meshnormals::PlyElement& e : header.elements) {
+    if (e.properties.empty()) continue;  // its records hold nothing to walk
     for (long long r = 0; r < e.count; ++r) {
-      const std::string where =
-          "element " + e.name + " " + std::to_string(r) + " of " + std::to_string(e.count);
+      // The record's name is built only for a message: per record it made a 2.7 KB file
+      // announcing 425k vertices take a second (found by Fuzzply, issue 14).
+      const auto where = [&] {
+        return "element " + e.name + " " + std::to_string(r) + " of " + std::to_string(e.count);
+      };
       for (const meshnormals::PlyProperty& p : e.properties) {
         std::int64_t items = 1;
         if (p.isList()) {
           if (!readCount(plySize(p.countType), items))
-            return Located{0, "truncated " + kind + ": " + where + " is cut off"};
+            return Located{0, "truncated " + kind + ": " + where() + " is cut off"};
           // An ASCII item takes at least two characters, a binary one its size.
           if (items * (ascii ? 2 : plySize(p.type)) > remaining())
-            return Located{0, "truncated or corrupt " + kind + ": " + where +
+            return Located{0, "truncated or corrupt " + kind + ": " + where() +
                                   " announces a list of " + std::to_string(items) +
                                   " values, more than the file holds"};
         }
         if (!skip(items, plySize(p.type)))
-          return Located{0, "truncated " + kind + ": " + where + " is cut off (the header " +
+          return Located{0, "truncated " + kind + ": " + where() + " is cut off (the header " +
                                 "announces " + std::to_string(vertices) + " vertices and " +
                                 std::to_string(faces) + " faces)"};
       }
@@ -380,6 +391,72 @@ void orientOutward(const std::vector<Point3>& vertices,
       std::all_of(edgeUse.begin(), edgeUse.end(), [](const auto& e) { return e.second == 2; });
   if (closed && volume6 < 0.0)
     for (auto& t : triangles) std::swap(t[1], t[2]);
+}
+
+/// Why the face `f` of `mesh` cannot be triangulated as a polygon seen along its normal, or
+/// nothing: too many corners, two corners that coincide, an edge that doubles back on the one
+/// before it, or two edges that cross or touch. Exact predicates of CGAL's projection.
+std::optional<std::string> checkSimplePolygon(const CGAL::Surface_mesh<CgalPoint>& mesh,
+                                              CGAL::Surface_mesh<CgalPoint>::Face_index f) {
+  std::vector<CgalPoint> c;
+  for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) c.push_back(mesh.point(v));
+  const std::size_t n = c.size();
+  const std::string face = "cannot triangulate a face of " + std::to_string(n) + " corners: ";
+  if (n > limits::kMaxFaceCorners)
+    return face + "RayLab triangulates faces of at most " +
+           std::to_string(limits::kMaxFaceCorners) + " corners";
+  const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
+  if (normal == CGAL::NULL_VECTOR) return std::nullopt;  // triangulate_faces refuses it
+  const CGAL::Projection_traits_3<Kernel> projection(normal);
+  const auto compareX = projection.compare_x_2_object();
+  const auto compareY = projection.compare_y_2_object();
+  const auto orientation = projection.orientation_2_object();
+  // Lexicographic order of two points in the projection.
+  const auto compare = [&](const CgalPoint& a, const CgalPoint& b) {
+    const CGAL::Comparison_result x = compareX(a, b);
+    return x != CGAL::EQUAL ? x : compareY(a, b);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (compare(c[i], c[j]) == CGAL::EQUAL)
+        return face +
+               "two of them coincide seen along the face's normal (a face folded onto "
+               "itself)";
+  const std::string crossing =
+      "its edges cross or touch seen along the face's normal (a "
+      "polygon that intersects itself)";
+  // Corner i's edges double back when the corners before and after it are on one line with it
+  // and on the same side of it.
+  for (std::size_t i = 0; i < n; ++i) {
+    const CgalPoint& before = c[(i + n - 1) % n];
+    const CgalPoint& after = c[(i + 1) % n];
+    if (orientation(before, c[i], after) == CGAL::COLLINEAR &&
+        compare(before, c[i]) == compare(after, c[i]))
+      return face + crossing;
+  }
+  // Edges (a, b) and (p, q) that share no corner must not meet, not even at an end.
+  const auto meet = [&](const CgalPoint& a, const CgalPoint& b, const CgalPoint& p,
+                        const CgalPoint& q) {
+    const CGAL::Orientation o1 = orientation(a, b, p), o2 = orientation(a, b, q);
+    const CGAL::Orientation o3 = orientation(p, q, a), o4 = orientation(p, q, b);
+    if (o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) {  // on one line: do they overlap?
+      const bool abForward = compare(a, b) == CGAL::SMALLER;
+      const CgalPoint& lo1 = abForward ? a : b;
+      const CgalPoint& hi1 = abForward ? b : a;
+      const bool pqForward = compare(p, q) == CGAL::SMALLER;
+      const CgalPoint& lo2 = pqForward ? p : q;
+      const CgalPoint& hi2 = pqForward ? q : p;
+      return compare(hi1, lo2) != CGAL::SMALLER && compare(hi2, lo1) != CGAL::SMALLER;
+    }
+    // Otherwise each must have the other's ends on both sides of its line (or one on it).
+    return o1 != o2 && o3 != o4;
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // the last edge and the first share corner 0
+      if (meet(c[i], c[(i + 1) % n], c[j], c[(j + 1) % n])) return face + crossing;
+    }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -547,26 +624,13 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
     CGAL::Surface_mesh<CgalPoint> mesh;
     PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
     // CGAL triangulates a face of more than four corners in its projection along the face's
-    // normal; two corners that coincide there made it join a vertex to itself (a null
-    // pointer, found by Fuzzobj, issue 14). Such a face is refused first, with the same
-    // normal and the same comparison the triangulation uses.
+    // normal, with a constrained Delaunay triangulation: two corners that coincide there
+    // made it join a vertex to itself (a null pointer), and edges that cross there made it
+    // insert constraints for ever (both found by Fuzzobj, issue 14). Such a face is
+    // refused first, with the same normal and the exact predicates of that projection.
     for (auto f : mesh.faces()) {
       if (mesh.degree(f) <= 4) continue;
-      const Kernel::Vector_3 normal = PMP::compute_face_normal(f, mesh);
-      if (normal == CGAL::NULL_VECTOR) continue;  // triangulate_faces refuses it
-      const CGAL::Projection_traits_3<Kernel> projection(normal);
-      const auto compareX = projection.compare_x_2_object();
-      const auto compareY = projection.compare_y_2_object();
-      std::vector<CgalPoint> corners;
-      for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-        corners.push_back(mesh.point(v));
-      for (std::size_t i = 0; i < corners.size(); ++i)
-        for (std::size_t j = i + 1; j < corners.size(); ++j)
-          if (compareX(corners[i], corners[j]) == CGAL::EQUAL &&
-              compareY(corners[i], corners[j]) == CGAL::EQUAL)
-            throw fail("cannot triangulate a face of " + std::to_string(corners.size()) +
-                       " corners: two of them coincide seen along the face's normal (a face "
-                       "folded onto itself)");
+      if (auto problem = checkSimplePolygon(mesh, f)) throw fail(*problem);
     }
     if (!PMP::triangulate_faces(mesh)) throw fail("could not triangulate a polygonal face");
     vertices.reserve(mesh.number_of_vertices());

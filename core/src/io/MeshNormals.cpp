@@ -183,6 +183,7 @@ PlyHeader readPlyHeader(std::istream& in) {
     if (key == "format") words >> header.format;
     if (key == "element") {
       PlyElement e;
+      e.line = header.lines;
       if (!(words >> e.name >> e.count) || e.count < 0)
         throw Problem(header.lines,
                       "element line needs a name and a count: '" + trimmed(line) + "'");

@@ -62,6 +62,7 @@ struct PlyProperty {
 struct PlyElement {
   std::string name;
   long long count = 0;
+  int line = 0;  ///< Header line of the element.
   std::vector<PlyProperty> properties;
 };
 

@@ -50,6 +50,9 @@ constexpr double kMinLength = 1e-9;
 constexpr int kMaxSphereSlices = 1024;
 /// Most triangles (and vertices) of one mesh file.
 constexpr std::size_t kMaxMeshTriangles = 4'000'000;
+/// Most corners of one polygonal face of a mesh file: a face is checked to be a simple polygon
+/// before it is triangulated, in time quadratic in its corners.
+constexpr std::size_t kMaxFaceCorners = 4096;
 /// Largest mesh file read, bytes.
 constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t(1) << 30;
 
