@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# The AddressSanitizer + UBSan stage of the test suite (issue 14): the core library and
-# the test programs of its loaders and file formats (scene, mesh, lesson and ray-tree
-# readers, limits, atomic saves, transforms, shapes, the tracer), built with the `asan`
-# preset's settings in build/asan-core, and their tests (CTest label `asan`) run there.
+# The AddressSanitizer + UBSan stage of the test suite (issue 14), built with Clang in
+# build/asan-fuzz:
+# - the core library and the test programs of its loaders and file formats (scene, mesh,
+#   lesson and ray-tree readers, limits, atomic saves, transforms, shapes, the tracer),
+#   with the `asan` preset's settings; their tests carry the CTest label `asan`;
+# - the libFuzzer targets of tests/fuzz (scene, lesson and ray-tree readers, the OBJ, OFF,
+#   PLY and STL readers) on the same instrumented library, each fuzzed for
+#   RAYLAB_FUZZ_SECONDS (30 by default) from its seeds (CTest label `fuzz`).
 # A subset, so the whole of scripts/test.sh stays well under 30 minutes on 2 cores: the
 # full `asan` preset (VTK views, the window, Python) takes about 10 minutes more to build.
 # scripts/test.sh runs it after the main tests; run alone: scripts/test-asan.sh [ctest args]
@@ -10,20 +14,24 @@ set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
-build=build/asan-core
+build=build/asan-fuzz
 targets=(TestSceneIO TestMeshIO TestRayTreeJson TestLesson TestAtomicFile TestImageIO
-         TestSceneEdit TestTransform TestShapes TestTracer)
+         TestSceneEdit TestTransform TestShapes TestTracer
+         FuzzScene FuzzLesson FuzzRayTree Fuzzobj Fuzzoff Fuzzply Fuzzstl)
 
 # The asan preset's cache variables, without what the subset does not build, and -O1 -g1
 # instead of RelWithDebInfo's -O2 -g: the sanitizers find the same, the build is cheaper
 # (doc/dev/TESTING.md, "Sanitizers", has the figures) and the reports still name the lines.
-cmake --preset asan -B "$build" -DRAYLAB_BUILD_GUI=OFF -DRAYLAB_BUILD_PYTHON=OFF \
-  -DRAYLAB_ENABLE_RENDERING_TESTS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  > /dev/null
+# RAYLAB_BUILD_FUZZERS adds libFuzzer's coverage to every library (Clang only).
+CC=clang CXX=clang++ cmake --preset asan -B "$build" -DRAYLAB_BUILD_GUI=OFF \
+  -DRAYLAB_BUILD_PYTHON=OFF -DRAYLAB_ENABLE_RENDERING_TESTS=OFF -DRAYLAB_BUILD_FUZZERS=ON \
+  -DRAYLAB_FUZZ_SECONDS="${RAYLAB_FUZZ_SECONDS:-30}" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" > /dev/null
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
 # Any report aborts the test (-fno-sanitize-recover); leaks count too.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
 # --no-tests=error: a stage that finds no test fails (its label was once lost, and the
 # stage passed without running anything).
-exec ctest --test-dir "$build" -L asan --no-tests=error --output-on-failure -j "$(nproc)" "$@"
+exec ctest --test-dir "$build" -L 'asan|fuzz' --no-tests=error --output-on-failure \
+  -j "$(nproc)" "$@"

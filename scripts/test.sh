@@ -5,8 +5,9 @@
 #   scripts/test.sh [ctest arguments...]     e.g. scripts/test.sh -L core
 #
 # Without arguments it ends with the ASan + UBSan stage (scripts/test-asan.sh: the core
-# library and its loader tests under AddressSanitizer and UBSan, in build/asan-core); skip
-# it with RAYLAB_TEST_ASAN=0. The exit status is non-zero when either part failed.
+# library and its loader tests under AddressSanitizer and UBSan, and a short run of each
+# fuzz target, built with Clang in build/asan-fuzz); skip it with RAYLAB_TEST_ASAN=0. The
+# exit status is non-zero when either part failed.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -19,10 +20,10 @@ cd "$here"
 status=0
 xvfb-run -a -s "-screen 0 1280x1024x24" \
   ctest --preset ci --output-on-failure -j "$(nproc)" --repeat until-pass:2 "$@" || status=$?
-# Then, on a full run, the AddressSanitizer + UBSan stage (doc/dev/TESTING.md,
-# "Sanitizers": its build and run take about 5 minutes on 2 idle cores).
+# Then, on a full run, the AddressSanitizer + UBSan and fuzz stage (doc/dev/TESTING.md,
+# "Sanitizers" and "Fuzzing").
 if [[ $# -eq 0 && "${RAYLAB_TEST_ASAN:-1}" != 0 ]]; then
-  echo "raylab test: the ASan + UBSan stage (scripts/test-asan.sh; RAYLAB_TEST_ASAN=0 skips it)"
+  echo "raylab test: the ASan + UBSan and fuzz stage (scripts/test-asan.sh; RAYLAB_TEST_ASAN=0 skips it)"
   "$here/scripts/test-asan.sh" || status=$?
 fi
 exit "$status"
