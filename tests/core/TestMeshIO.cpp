@@ -376,5 +376,45 @@ TEST(MeshIO, 17_CrossingFacesAndCoordinatelessVerticesAreRefused) {
                                  "property (a vertex needs x, y and z)");
 }
 
+// An OFF file's counts are read across lines, as CGAL reads them: a header "OFF 3" and a
+// next line "1 0" announce 3 vertices and 1 face. Read line by line, that file passed the
+// check as one vertex and no face while CGAL allocated a face of 3,000,000,000 corners
+// (found by Fuzzoff). The same walk accepts what CGAL reads well.
+TEST(MeshIO, 18_CountsAreReadAsCgalReadsThemAndBounded) {
+  const std::string split =
+      writeMesh("split-counts.off", "OFF 3\n1 0\n0 0 0\n1 0 0\n0 1 00\n3000000000* 0 \n");
+  EXPECT_EQ(readError(split), split +
+                                  ":6: cannot parse OFF file: face lists fewer than 3000000000 "
+                                  "indices: '3000000000* 0'");
+  for (const auto& [name, text] : std::map<std::string, std::string>{
+           {"one-count-a-line.off", "OFF\n3\n1\n0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+           {"vertex-after-counts.off", "OFF 3 1 0 0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+           {"comments.off",
+            "# a triangle\nOFF\n# counts next\n3 1 0\n\n0 0 0 # first\n# skip\n"
+            "1 0 0\n0 1 0\n\n3 0 1 2\n"}}) {
+    std::string outcome;
+    try {
+      outcome = std::to_string(MeshIO::load(writeMesh(name, text)).triangleCount());
+    } catch (const MeshIO::ReadError& e) {
+      outcome = e.what();
+    }
+    EXPECT_EQ(outcome, "1") << name;
+  }
+  // A PLY list of 1.3e128 values (cast to an integer: undefined behaviour, found by Fuzzply).
+  const std::string longList =
+      writeMesh("long-list.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                "end_header\n0 0 0\n1 0 0\n0 1 0\n1.33333e128 0 1 2\n");
+  EXPECT_EQ(readError(longList), longList +
+                                     ": cannot parse PLY file: truncated or corrupt ASCII PLY: "
+                                     "element face 0 of 1 announces a list of 2^53 or more "
+                                     "values, more than the file holds");
+  const std::string two = writeMesh("two-counts.off", "OFF\n3 1\n");
+  EXPECT_EQ(readError(two), two +
+                                ":2: cannot parse OFF file: expected the vertex, face and edge "
+                                "counts after OFF (three whole numbers)");
+}
+
 }  // namespace
 }  // namespace raylab

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -212,18 +213,22 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
   const bool bigEndian = header.bigEndian();
   if (!ascii && !bigEndian && format != "binary_little_endian") return std::nullopt;
   const auto remaining = [&] { return std::int64_t(size) - std::int64_t(in.tellg()); };
+  // A list's length, at most 2^53 (more than any file holds, and no product with an item's
+  // size overflows): 1.3e128 in an ASCII list was cast to an integer (undefined behaviour,
+  // found by Fuzzply, issue 14), and 8 bytes read as a length could be negative.
+  constexpr std::int64_t kLongest = std::int64_t(1) << 53;
   const auto readCount = [&](int bytes, std::int64_t& value) {
     if (ascii) {
       double v;
       if (!(in >> v) || v < 0 || v != std::floor(v)) return false;
-      value = std::int64_t(v);
+      value = v < double(kLongest) ? std::int64_t(v) : kLongest;
       return true;
     }
     unsigned char b[8] = {};
     if (!in.read(reinterpret_cast<char*>(b), bytes)) return false;
     std::uint64_t v = 0;
     for (int k = 0; k < bytes; ++k) v |= std::uint64_t(b[bigEndian ? bytes - 1 - k : k]) << 8 * k;
-    value = std::int64_t(v);
+    value = v < std::uint64_t(kLongest) ? std::int64_t(v) : kLongest;
     return true;
   };
   const auto skip = [&](std::int64_t items, int bytes) {
@@ -253,7 +258,8 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
           // An ASCII item takes at least two characters, a binary one its size.
           if (items * (ascii ? 2 : plySize(p.type)) > remaining())
             return Located{0, "truncated or corrupt " + kind + ": " + where() +
-                                  " announces a list of " + std::to_string(items) +
+                                  " announces a list of " +
+                                  (items == kLongest ? "2^53 or more" : std::to_string(items)) +
                                   " values, more than the file holds"};
         }
         if (!skip(items, plySize(p.type)))
@@ -311,63 +317,101 @@ SizeProblem checkObj(const std::string& path) {
 /// Finds the first malformed line of an ASCII OFF file (header, counts, vertex or face);
 /// for a binary OFF file, checks its counts against its `size`. Run before CGAL reads it.
 std::optional<Located> locateOffError(const std::string& path, std::uintmax_t size) {
+  // The text is walked as CGAL's reader walks it, so that both see the same counts and the
+  // same faces: the counts are numbers read across lines (a header "OFF 3" followed by "1 0"
+  // announces 3 vertices and 1 face: read line by line, that file once passed as one vertex
+  // and no face while CGAL allocated a face of 3,000,000,000 corners, found by Fuzzoff,
+  // issue 14); a vertex or a face is the rest of a line, from the next character that is
+  // not blank or in a `#` comment.
   std::ifstream in(path, std::ios::binary);
-  std::string line;
-  int lineNo = 0;
-  // The significant lines, with comments and blank lines skipped.
-  auto next = [&](std::string& out) {
-    while (std::getline(in, line)) {
-      ++lineNo;
-      const std::string t = trimmed(line.substr(0, line.find('#')));
-      if (!t.empty()) {
-        out = t;
+  int lineNo = 1;
+  // Blanks, newlines and `#` comments up to the next character (CGAL's skip_comment_OFF).
+  const auto skipBlanksAndComments = [&](bool comments) {
+    for (int c = in.peek(); c != EOF; c = in.peek()) {
+      if (c == '#' && comments) {
+        std::string rest;
+        std::getline(in, rest);
+        ++lineNo;
+      } else if (std::isspace(c)) {
+        in.get();
+        if (c == '\n') ++lineNo;
+      } else {
         return true;
       }
     }
     return false;
   };
+  // The next vertex or face: the rest of its line, without its comment.
   std::string s;
-  if (!next(s)) return Located{lineNo, "no OFF header"};
-  std::istringstream header(s);
+  const auto nextRecord = [&]() {
+    if (!skipBlanksAndComments(true)) return false;
+    std::getline(in, s);
+    s = trimmed(s.substr(0, s.find('#')));
+    ++lineNo;
+    return true;
+  };
+  if (!skipBlanksAndComments(true)) return Located{lineNo, "no OFF header"};
   std::string keyword;
-  header >> keyword;
+  in >> keyword;
   if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
     return Located{lineNo, "header must start with OFF, found '" + keyword + "'"};
-  std::string rest;
-  if (header >> rest && rest == "BINARY") return checkBinaryOff(in, size);
-  long long nv = -1, nf = -1;
-  std::istringstream counts(rest.empty() ? std::string() : s.substr(s.find(rest)));
-  if (!(counts >> nv >> nf)) {
-    if (!next(s)) return Located{lineNo, "missing vertex and face counts"};
-    std::istringstream c2(s);
-    if (!(c2 >> nv >> nf) || nv < 0 || nf < 0)
-      return Located{lineNo, "expected vertex and face counts, found '" + s + "'"};
+  // A count, as CGAL reads it: an int after blanks (and comments before the first).
+  const auto readCount = [&](long long& value, bool comments) {
+    if (!skipBlanksAndComments(comments)) return false;
+    int n = 0;
+    if (!(in >> n)) return false;
+    value = n;
+    return true;
+  };
+  {
+    skipBlanksAndComments(true);
+    const std::streampos before = in.tellg();
+    std::string word;
+    if (in >> word && word == "BINARY") {
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+      return checkBinaryOff(in, size);
+    }
+    in.clear();
+    in.seekg(before);
   }
+  const int countsLine = lineNo;
+  long long dimension = 0, nv = -1, nf = -1, ne = -1;
+  const bool dimensional = keyword.find('n') != std::string::npos;
+  if ((dimensional && !readCount(dimension, true)) || !readCount(nv, !dimensional) ||
+      !readCount(nf, false) || !readCount(ne, false) || nv < 0 || nf < 0)
+    return Located{countsLine, "expected the vertex, face and edge counts after " + keyword +
+                                   " (three whole numbers)"};
   if (auto problem = checkCounts(nv, nf, lineNo)) return problem;
+  // The rest of the counts' line, if anything but blanks, is CGAL's first vertex.
+  for (int c = in.peek(); c != EOF && c != '\n' && std::isspace(c); c = in.peek()) in.get();
+  if (in.peek() == '\n') {
+    in.get();
+    ++lineNo;
+  }
   for (long long i = 0; i < nv; ++i) {
-    if (!next(s))
+    if (!nextRecord())
       return Located{lineNo, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
                                  " vertices"};
     std::istringstream v(s);
     double x, y, z;
-    if (!(v >> x >> y >> z)) return Located{lineNo, "vertex needs three numbers: '" + s + "'"};
+    if (!(v >> x >> y >> z)) return Located{lineNo - 1, "vertex needs three numbers: '" + s + "'"};
   }
   for (long long i = 0; i < nf; ++i) {
-    if (!next(s))
+    if (!nextRecord())
       return Located{
           lineNo, "file ends after " + std::to_string(i) + " of " + std::to_string(nf) + " faces"};
     std::istringstream f(s);
     long long k;
     if (!(f >> k) || k < 1)
-      return Located{lineNo, "face must start with its vertex count: '" + s + "'"};
+      return Located{lineNo - 1, "face must start with its vertex count: '" + s + "'"};
     for (long long j = 0; j < k; ++j) {
       long long index;
       if (!(f >> index))
-        return Located{lineNo,
+        return Located{lineNo - 1,
                        "face lists fewer than " + std::to_string(k) + " indices: '" + s + "'"};
       if (index < 0 || index >= nv)
-        return Located{lineNo, "face index " + std::to_string(index) + " out of range [0, " +
-                                   std::to_string(nv) + ")"};
+        return Located{lineNo - 1, "face index " + std::to_string(index) + " out of range [0, " +
+                                       std::to_string(nv) + ")"};
     }
   }
   return std::nullopt;
