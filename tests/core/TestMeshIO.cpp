@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -410,10 +412,71 @@ TEST(MeshIO, 18_CountsAreReadAsCgalReadsThemAndBounded) {
                                      ": cannot parse PLY file: truncated or corrupt ASCII PLY: "
                                      "element face 0 of 1 announces a list of 2^53 or more "
                                      "values, more than the file holds");
+  // An element of 4.3e15 records of nothing: CGAL's reader walked them (a hang, Fuzzply).
+  const std::string empty =
+      writeMesh("empty-records.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                "property float y\nproperty float z\nelement veplye 4283520437494745\n"
+                "element nothing 0\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_EQ(readError(empty), empty +
+                                  ":7: cannot parse PLY file: the element veplye announces "
+                                  "4283520437494745 records; RayLab reads meshes of at most "
+                                  "4000000 of each");
+  const std::string none =
+      writeMesh("no-property.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                "property float y\nproperty float z\nelement extra 12\nend_header\n"
+                "0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_EQ(readError(none), none +
+                                 ":7: cannot parse PLY file: the element extra announces 12 "
+                                 "records but has no property");
   const std::string two = writeMesh("two-counts.off", "OFF\n3 1\n");
   EXPECT_EQ(readError(two), two +
                                 ":2: cannot parse OFF file: expected the vertex, face and edge "
                                 "counts after OFF (three whole numbers)");
+}
+
+// RayLab reads OFF files itself: CGAL's reader cast a colour-map index of -4 to a place
+// before its table (undefined behaviour, found by Fuzzoff), and RayLab reads no colours.
+// Colours, normals and texture coordinates after a vertex or a face are skipped.
+TEST(MeshIO, 19_OffIsReadWithoutItsColours) {
+  const std::string tetra = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const TriangleMesh plain = MeshIO::load(writeMesh("plain.off", "OFF\n4 4 0\n" + tetra + faces));
+  ASSERT_EQ(plain.triangleCount(), 4u);
+  // Per-vertex colours (one a colour-map index of -4, one beyond 1), per-face colours.
+  const TriangleMesh coloured =
+      MeshIO::load(writeMesh("coloured.off",
+                             "COFF\n4 4 0\n0 0 0 -4\n1 0 0 2.5 0 0\n0 1 0 0 1 0 1\n0 0 1 1e300\n"
+                             "3 0 2 1 -4\n3 0 1 3 255 0 0\n3 0 3 2 1.5 2.5 3.5\n3 1 2 3\n"));
+  ASSERT_EQ(coloured.triangleCount(), 4u);
+  EXPECT_TRUE(coloured.vertices() == plain.vertices());
+  // Homogeneous coordinates: (2, 0, 0, 2) is (1, 0, 0).
+  const TriangleMesh weighted = MeshIO::load(
+      writeMesh("weighted.off", "4OFF\n4 4 0\n0 0 0 1\n2 0 0 2\n0 3 0 3\n0 0 0.5 0.5\n" + faces));
+  EXPECT_TRUE(weighted.vertices() == plain.vertices());
+  // Binary: big-endian counts, float vertices, faces with a colour count.
+  std::string binary = "OFF BINARY\n";
+  const auto word = [&](std::uint32_t w) {
+    for (int k = 3; k >= 0; --k) binary += char((w >> (8 * k)) & 0xff);
+  };
+  word(4), word(4), word(0);
+  for (float c : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f}) {
+    std::uint32_t w;
+    std::memcpy(&w, &c, 4);
+    word(w);
+  }
+  for (const auto& f : {std::array<int, 3>{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+    word(3), word(f[0]), word(f[1]), word(f[2]), word(0);
+  }
+  const TriangleMesh fromBinary = MeshIO::load(writeMesh("binary-tetra.off", binary));
+  ASSERT_EQ(fromBinary.triangleCount(), 4u);
+  EXPECT_TRUE(fromBinary.vertices() == plain.vertices());
+  const std::string zeroWeight =
+      writeMesh("zero-weight.off", "4OFF\n4 4 0\n0 0 0 1\n2 0 0 0\n0 3 0 3\n0 0 1 1\n" + faces);
+  EXPECT_EQ(readError(zeroWeight), zeroWeight +
+                                       ":4: cannot parse OFF file: vertex has the weight w = 0 (a "
+                                       "point at infinity): '2 0 0 0'");
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -146,14 +147,28 @@ SizeProblem checkCounts(long long vertices, long long faces, int line) {
   return std::nullopt;
 }
 
+/// An OFF file's vertices and faces, read by RayLab (colours, normals and texture
+/// coordinates ignored): CGAL's OFF reader cast colours to integers unchecked (a colour-map
+/// index of -4 read outside its table, found by Fuzzoff, issue 14), and RayLab needs none.
+struct OffSoup {
+  std::vector<CgalPoint> points;
+  std::vector<Polygon> polygons;
+};
+
 /// Binary OFF (after the "OFF BINARY" line): big-endian int32 counts, 3 float32 per
 /// vertex, then per face its corner count, the corners and a colour count with its floats.
-SizeProblem checkBinaryOff(std::istream& in, std::uintmax_t size) {
-  const auto readInt = [&](std::int64_t& value) {
+SizeProblem readBinaryOff(std::istream& in, std::uintmax_t size, OffSoup& soup) {
+  const auto readWord = [&](std::uint32_t& value) {
     unsigned char b[4];
     if (!in.read(reinterpret_cast<char*>(b), 4)) return false;
-    value = std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
-                         std::uint32_t(b[2]) << 8 | std::uint32_t(b[3]));
+    value = std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 |
+            std::uint32_t(b[3]);
+    return true;
+  };
+  const auto readInt = [&](std::int64_t& value) {
+    std::uint32_t word = 0;
+    if (!readWord(word)) return false;
+    value = std::int32_t(word);
     return true;
   };
   std::int64_t nv = 0, nf = 0, ne = 0;
@@ -164,14 +179,38 @@ SizeProblem checkBinaryOff(std::istream& in, std::uintmax_t size) {
   if (12 * nv > remaining())
     return Located{0, "truncated binary OFF: " + std::to_string(nv) +
                           " vertices announced, the file ends before them"};
-  in.seekg(12 * nv, std::ios::cur);
+  soup.points.reserve(std::size_t(nv));
+  for (std::int64_t v = 0; v < nv; ++v) {
+    float xyz[3];
+    for (float& c : xyz) {
+      std::uint32_t word = 0;
+      readWord(word);
+      std::memcpy(&c, &word, sizeof c);
+    }
+    soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+  }
   for (std::int64_t f = 0; f < nf; ++f) {
     std::int64_t corners = 0, colours = 0;
     if (!readInt(corners) || corners < 1 || 4 * corners > remaining())
       return Located{0, "truncated or corrupt binary OFF: face " + std::to_string(f) + " of " +
                             std::to_string(nf) + " announces more corners than the " +
                             "file holds"};
-    in.seekg(4 * corners, std::ios::cur);
+    if (corners > std::int64_t(limits::kMaxFaceCorners))
+      return Located{0, "binary OFF: face " + std::to_string(f) + " has " +
+                            std::to_string(corners) +
+                            " corners; RayLab triangulates faces of "
+                            "at most " +
+                            std::to_string(limits::kMaxFaceCorners) + " corners"};
+    Polygon polygon(static_cast<std::size_t>(corners));
+    for (std::size_t& index : polygon) {
+      std::int64_t i = 0;
+      readInt(i);
+      if (i < 0 || i >= nv)
+        return Located{0, "corrupt binary OFF: face " + std::to_string(f) + " refers to vertex " +
+                              std::to_string(i) + ", out of range [0, " + std::to_string(nv) + ")"};
+      index = static_cast<std::size_t>(i);
+    }
+    soup.polygons.push_back(std::move(polygon));
     if (!readInt(colours) || colours < 0 || 4 * colours > remaining())
       return Located{0, "truncated or corrupt binary OFF: face " + std::to_string(f) + " of " +
                             std::to_string(nf) + " is cut off"};
@@ -243,7 +282,18 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
   };
   const std::string kind = ascii ? "ASCII PLY" : "binary PLY";
   for (const meshnormals::PlyElement& e : header.elements) {
-    if (e.properties.empty()) continue;  // its records hold nothing to walk
+    // CGAL's reader walks every element's records, even records of nothing: 4.3e15 of them
+    // (an element without properties, announced in a 2 KB file) ran for ever (found by
+    // Fuzzply, issue 14).
+    if (e.count > static_cast<long long>(limits::kMaxMeshTriangles))
+      return Located{e.line, "the element " + e.name + " announces " + std::to_string(e.count) +
+                                 " records; RayLab reads meshes of at most " +
+                                 std::to_string(limits::kMaxMeshTriangles) + " of each"};
+    if (e.properties.empty()) {
+      if (e.count == 0) continue;
+      return Located{e.line, "the element " + e.name + " announces " + std::to_string(e.count) +
+                                 " records but has no property"};
+    }
     for (long long r = 0; r < e.count; ++r) {
       // The record's name is built only for a message: per record it made a 2.7 KB file
       // announcing 425k vertices take a second (found by Fuzzply, issue 14).
@@ -314,15 +364,18 @@ SizeProblem checkObj(const std::string& path) {
   }
   return checkCounts(vertices, faces, 0);
 }
-/// Finds the first malformed line of an ASCII OFF file (header, counts, vertex or face);
-/// for a binary OFF file, checks its counts against its `size`. Run before CGAL reads it.
-std::optional<Located> locateOffError(const std::string& path, std::uintmax_t size) {
-  // The text is walked as CGAL's reader walks it, so that both see the same counts and the
-  // same faces: the counts are numbers read across lines (a header "OFF 3" followed by "1 0"
-  // announces 3 vertices and 1 face: read line by line, that file once passed as one vertex
+/// Reads an OFF file (ASCII or binary) into `soup`, or says where and why it cannot: the
+/// first malformed line (header, counts, vertex or face) of an ASCII file; for a binary file,
+/// its counts against its `size`.
+SizeProblem readOff(const std::string& path, std::uintmax_t size, OffSoup& soup) {
+  // The text is read as CGAL's reader read it (the files it read are read the same): the
+  // counts are numbers read across lines (a header "OFF 3" followed by "1 0" announces 3
+  // vertices and 1 face: read line by line, that file once passed RayLab's check as one vertex
   // and no face while CGAL allocated a face of 3,000,000,000 corners, found by Fuzzoff,
   // issue 14); a vertex or a face is the rest of a line, from the next character that is
-  // not blank or in a `#` comment.
+  // not blank or in a `#` comment. A vertex is its first three numbers (four with the `4`
+  // prefix: x, y, z, w), a face its count and corners; colours, normals and texture
+  // coordinates after them are not read.
   std::ifstream in(path, std::ios::binary);
   int lineNo = 1;
   // Blanks, newlines and `#` comments up to the next character (CGAL's skip_comment_OFF).
@@ -368,19 +421,28 @@ std::optional<Located> locateOffError(const std::string& path, std::uintmax_t si
     const std::streampos before = in.tellg();
     std::string word;
     if (in >> word && word == "BINARY") {
+      if (keyword != "OFF")
+        return Located{lineNo, "binary " + keyword +
+                                   " is not read: RayLab reads binary OFF files without "
+                                   "colours, normals or texture coordinates (OFF BINARY)"};
       in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-      return checkBinaryOff(in, size);
+      return readBinaryOff(in, size, soup);
     }
     in.clear();
     in.seekg(before);
   }
   const int countsLine = lineNo;
   long long dimension = 0, nv = -1, nf = -1, ne = -1;
-  const bool dimensional = keyword.find('n') != std::string::npos;
+  const std::string prefix = keyword.substr(0, keyword.size() - 3);
+  const bool dimensional = prefix.find('n') != std::string::npos;
+  const bool homogeneous = prefix.find('4') != std::string::npos;
   if ((dimensional && !readCount(dimension, true)) || !readCount(nv, !dimensional) ||
       !readCount(nf, false) || !readCount(ne, false) || nv < 0 || nf < 0)
     return Located{countsLine, "expected the vertex, face and edge counts after " + keyword +
                                    " (three whole numbers)"};
+  if (dimensional && dimension != 3)
+    return Located{countsLine, "the file's vertices have " + std::to_string(dimension) +
+                                   " coordinates; RayLab reads 3D meshes"};
   if (auto problem = checkCounts(nv, nf, lineNo)) return problem;
   // The rest of the counts' line, if anything but blanks, is CGAL's first vertex.
   for (int c = in.peek(); c != EOF && c != '\n' && std::isspace(c); c = in.peek()) in.get();
@@ -393,8 +455,13 @@ std::optional<Located> locateOffError(const std::string& path, std::uintmax_t si
       return Located{lineNo, "file ends after " + std::to_string(i) + " of " + std::to_string(nv) +
                                  " vertices"};
     std::istringstream v(s);
-    double x, y, z;
-    if (!(v >> x >> y >> z)) return Located{lineNo - 1, "vertex needs three numbers: '" + s + "'"};
+    double x, y, z, w = 1.0;
+    if (!(v >> x >> y >> z) || (homogeneous && !(v >> w)))
+      return Located{lineNo - 1, std::string("vertex needs ") + (homogeneous ? "four" : "three") +
+                                     " numbers: '" + s + "'"};
+    if (homogeneous && !(std::abs(w) > 0.0))
+      return Located{lineNo - 1, "vertex has the weight w = 0 (a point at infinity): '" + s + "'"};
+    soup.points.emplace_back(x / w, y / w, z / w);
   }
   for (long long i = 0; i < nf; ++i) {
     if (!nextRecord())
@@ -404,6 +471,7 @@ std::optional<Located> locateOffError(const std::string& path, std::uintmax_t si
     long long k;
     if (!(f >> k) || k < 1)
       return Located{lineNo - 1, "face must start with its vertex count: '" + s + "'"};
+    Polygon polygon;
     for (long long j = 0; j < k; ++j) {
       long long index;
       if (!(f >> index))
@@ -412,7 +480,9 @@ std::optional<Located> locateOffError(const std::string& path, std::uintmax_t si
       if (index < 0 || index >= nv)
         return Located{lineNo - 1, "face index " + std::to_string(index) + " out of range [0, " +
                                        std::to_string(nv) + ")"};
+      polygon.push_back(static_cast<std::size_t>(index));
     }
+    soup.polygons.push_back(std::move(polygon));
   }
   return std::nullopt;
 }
@@ -534,6 +604,7 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
   // Step 1b: what the file announces must fit in it and in the limits (CGAL trusts it).
   // A PLY header is read once, here: for this check and for the normals (step 3b).
   std::optional<meshnormals::PlyHeader> plyHeader;
+  OffSoup offSoup;  // An OFF file is read here, by RayLab, whole.
   SizeProblem announced;
   if (ext == ".ply") {
     std::ifstream in(path, std::ios::binary);
@@ -544,19 +615,23 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
       announced = Located{problem.line(), problem.what()};
     }
   } else {
-    announced = ext == ".off"   ? locateOffError(path, size)
+    announced = ext == ".off"   ? readOff(path, size, offSoup)
                 : ext == ".stl" ? checkStl(path, size)
                                 : checkObj(path);
   }
   if (announced)
     throw fail("cannot parse " + upperFormat + " file: " + announced->what, announced->line);
 
-  // Step 2: read the polygon soup with CGAL, collecting what it reports.
+  // Step 2: read the polygon soup with CGAL, collecting what it reports (OFF: read above).
   std::vector<CgalPoint> points;
   std::vector<Polygon> polygons;
   bool ok = false;
   std::string report;
-  {
+  if (ext == ".off") {
+    points = std::move(offSoup.points);
+    polygons = std::move(offSoup.polygons);
+    ok = true;
+  } else {
     CaptureStreams capture;
     try {
       ok = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(true));
@@ -571,7 +646,6 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
   // when nothing was wrong but faces are missing.
   auto locate = [&]() -> std::optional<Located> {
     if (ext == ".obj") return locateObjError(path);
-    if (ext == ".off") return locateOffError(path, size);
     return std::nullopt;
   };
   auto throwLocated = [&](const std::optional<Located>& located) {
