@@ -7,24 +7,43 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
+#if defined(__SSE__)
+#include <immintrin.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <climits>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <new>
 #include <sstream>
+#include <type_traits>
 #include <utility>
 
 // Bvh construction: the binned-SAH build over primitive references, the depth-first
 // layout with its statistics, and the interleaving of sibling pairs into cache lines.
 // The queries are in BvhTraverse.cpp.
 
+// The builder passes 4-double vectors by value between its own functions (internal linkage,
+// so no other code sees their calling convention): GCC's note that AVX would pass them
+// differently does not apply.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+
 namespace raylab {
 
 namespace {
 
+/// Meshes of up to this many triangles are built from double-precision references (Bvh::Bvh).
+constexpr int kExactBuildMax = 65536;
 /// Ranges larger than this are built on their own oneTBB task.
 constexpr int kParallelGrain = 8192;
 /// Ranges larger than this have their bounds and bins computed by several tasks, in chunks
@@ -48,17 +67,105 @@ void forChunks(bool parallel, int begin, int end, int grain, const Body& body) {
 
 int chunkCount(int begin, int end, int grain) { return (end - begin + grain - 1) / grain; }
 
-float roundDown(double d) {
-  float f = static_cast<float>(d);
-  if (static_cast<double>(f) > d) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+/// The next float below f, for f finite or +inf (std::nextafter towards -inf, inline).
+inline float nextDown(float f) {
+  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  std::uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  u = f > 0.0f ? u - 1 : u + 1;
+  std::memcpy(&f, &u, sizeof f);
   return f;
 }
 
-float roundUp(double d) {
-  float f = static_cast<float>(d);
-  if (static_cast<double>(f) < d) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-  return f;
+/// The largest float <= d.
+inline float roundDown(double d) {
+  const float f = static_cast<float>(d);
+  return static_cast<double>(f) > d ? nextDown(f) : f;
 }
+
+/// The smallest float >= d.
+inline float roundUp(double d) {
+  const float f = static_cast<float>(d);
+  return static_cast<double>(f) < d ? -nextDown(-f) : f;
+}
+
+/// d rounded to T, up or down (double: d itself).
+template <typename T>
+inline T roundTowards(double d, bool up);
+template <>
+inline float roundTowards<float>(double d, bool up) {
+  return up ? roundUp(d) : roundDown(d);
+}
+template <>
+inline double roundTowards<double>(double d, bool) {
+  return d;
+}
+
+/// Four lanes of T (float: one SSE register on x86-64; double: two), lane 3 unused: the
+/// builder's boxes and centroids. IntOf: the bin indices, lane by lane.
+using V4f = float __attribute__((vector_size(16)));
+using V4i = std::int32_t __attribute__((vector_size(16)));
+using V4d = double __attribute__((vector_size(32)));
+using V4l = std::int64_t __attribute__((vector_size(32)));
+
+template <typename T>
+struct Lanes;
+template <>
+struct Lanes<float> {
+  using V = V4f;
+  using I = V4i;
+};
+template <>
+struct Lanes<double> {
+  using V = V4d;
+  using I = V4l;
+};
+
+template <typename V>
+inline V splat(typename std::remove_reference<decltype(V{}[0])>::type x) {
+  return V{x, x, x, x};
+}
+
+/// a < b ? a : b and a > b ? a : b lane by lane (b when either is NaN, as minps / maxps).
+inline V4f vmin(V4f a, V4f b) {
+#if defined(__SSE__)
+  return _mm_min_ps(a, b);
+#else
+  return a < b ? a : b;
+#endif
+}
+inline V4f vmax(V4f a, V4f b) {
+#if defined(__SSE__)
+  return _mm_max_ps(a, b);
+#else
+  return a > b ? a : b;
+#endif
+}
+inline V4d vmin(V4d a, V4d b) { return a < b ? a : b; }
+inline V4d vmax(V4d a, V4d b) { return a > b ? a : b; }
+
+/// A box with planes of type T, lane 3 unused: empty when lower = +inf, upper = -inf.
+template <typename T>
+struct Box4 {
+  using V = typename Lanes<T>::V;
+  V lower = splat<V>(std::numeric_limits<T>::infinity());
+  V upper = splat<V>(-std::numeric_limits<T>::infinity());
+  void extend(V lo, V hi) {
+    lower = vmin(lower, lo);
+    upper = vmax(upper, hi);
+  }
+  void extend(const Box4& b) { extend(b.lower, b.upper); }
+  bool empty() const { return !(lower[0] <= upper[0]); }
+  /// Half the surface area, in double, summed in the order of Bounds3::surfaceArea (so in
+  /// double it is exactly half of it); 0 for an empty box.
+  double halfArea() const {
+    if (empty()) return 0.0;
+    const double dx = double(upper[0]) - double(lower[0]);
+    const double dy = double(upper[1]) - double(lower[1]);
+    const double dz = double(upper[2]) - double(lower[2]);
+    return dx * dy + dy * dz + dz * dx;
+  }
+};
 
 /// A node while the tree is built: BvhNode's fields without its initialiser, so the array
 /// of 2n + 2 of them is not written (and its pages not touched) before the build uses them.
@@ -265,22 +372,45 @@ class WideCollapse {
   int m_blocks = 0;
 };
 
-}  // namespace
+/// The build state: primitive references sorted in place, nodes allocated in pairs. T is
+/// the precision of the references' boxes (see Bvh::Bvh): float, each box rounded outwards
+/// from the double-precision vertices so every box made of them encloses the triangles
+/// exactly, or double, the exact boxes.
+template <typename T>
+struct Builder {
+  using V = typename Lanes<T>::V;
+  using Box = Box4<T>;
+  using Index3 = Bvh::Index3;
+  using Id = typename std::conditional<sizeof(T) == 4, std::int32_t, std::int64_t>::type;
 
-/// The build state: primitive references sorted in place, nodes allocated in pairs.
-struct Bvh::Builder {
-  struct PrimRef {
-    double lower[3];
-    double upper[3];
-    /// Centre of the box on axis a, computed when needed (the same bits as storing it; a
-    /// reference of 56 bytes instead of 80 is less to read at every level and to swap).
-    double centroid(int a) const { return 0.5 * (lower[a] + upper[a]); }
-    int id;
+  /// A triangle's box, two vector loads (float: 32 bytes, two SSE loads). `id` shares the
+  /// lower corner's vector (lane 3, never read as a number that matters).
+  struct alignas(8 * sizeof(T)) PrimRef {
+    T lower[3];
+    Id id;
+    T upper[3];
+    T pad;
+    V lo() const {
+      V v;
+      std::memcpy(&v, lower, sizeof v);
+      return v;
+    }
+    V hi() const {
+      V v;
+      std::memcpy(&v, upper, sizeof v);
+      return v;
+    }
+    /// Twice the centre of the box (lower + upper, rounded once): what the split compares.
+    /// In double it is exactly twice 0.5 * (lower + upper).
+    V centroid2() const { return lo() + hi(); }
   };
 
-  struct Bin {
-    Bounds3 box;
-    int count = 0;
+  /// The triangles prims[begin, end) of a node and what the build needs of them: their
+  /// box and the box of their centroid2 (both from the pass that made the range).
+  struct Range {
+    int begin, end;
+    Box box, centroids;
+    int count() const { return end - begin; }
   };
 
   const BvhSettings& settings;
@@ -293,6 +423,8 @@ struct Bvh::Builder {
   std::unique_ptr<BuildNode[]> nodes;
   std::atomic<int> nextNode{2};   // next free slot
   std::atomic<int> usedSlots{2};  // slots holding nodes (a block may leave some unused)
+  Range root{0, 0, {}, {}};
+  Bounds3 exactBounds;  // of all triangles, in double
 
   /// Node slots reserved for one serially built subtree, handed out without the shared
   /// counter: threads that allocated from it in turn wrote neighbouring nodes, whose cache
@@ -308,29 +440,55 @@ struct Bvh::Builder {
         primCount(static_cast<int>(triangles.size())),
         prims(new PrimRef[triangles.size()]),
         nodes(new BuildNode[slotCapacity(triangles.size())]) {
-    const int n = static_cast<int>(triangles.size());
-    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int) {
+    // The references, the root's boxes and the exact bounds, in chunks merged in order.
+    const int n = primCount;
+    struct Chunk {
+      Range range;
+      Bounds3 exact;
+    };
+    std::vector<Chunk> chunks(std::size_t(chunkCount(0, n, kParallelBinGrain)),
+                              Chunk{{0, 0, {}, {}}, {}});
+    forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int chunk) {
+      Range& range = chunks[std::size_t(chunk)].range;
+      double exactLo[3] = {kInfinity, kInfinity, kInfinity};
+      double exactHi[3] = {-kInfinity, -kInfinity, -kInfinity};
       for (int i = begin; i < end; ++i) {
-        const Index3& tri = triangles[i];
-        Bounds3 b(vertices[tri[0]], vertices[tri[1]]);
-        b.extend(vertices[tri[2]]);
+        const Index3& tri = triangles[std::size_t(i)];
+        const Point3& p0 = vertices[std::size_t(tri[0])];
+        const Point3& p1 = vertices[std::size_t(tri[1])];
+        const Point3& p2 = vertices[std::size_t(tri[2])];
         PrimRef& r = prims[i];
         for (int a = 0; a < 3; ++a) {
-          r.lower[a] = b.lower[a];
-          r.upper[a] = b.upper[a];
+          const double lo = std::min(p0[a], std::min(p1[a], p2[a]));
+          const double hi = std::max(p0[a], std::max(p1[a], p2[a]));
+          exactLo[a] = std::min(exactLo[a], lo);
+          exactHi[a] = std::max(exactHi[a], hi);
+          r.lower[a] = roundTowards<T>(lo, false);
+          r.upper[a] = roundTowards<T>(hi, true);
         }
         r.id = i;
+        r.pad = T(0);
+        range.box.extend(r.lo(), r.hi());
+        const V c = r.centroid2();
+        range.centroids.extend(c, c);
       }
+      chunks[std::size_t(chunk)].exact = Bounds3(Point3(exactLo[0], exactLo[1], exactLo[2]),
+                                                 Point3(exactHi[0], exactHi[1], exactHi[2]));
     });
+    root.end = n;
+    for (const Chunk& c : chunks) {
+      root.box.extend(c.range.box);
+      root.centroids.extend(c.range.centroids);
+      if (c.exact.lower.x <= c.exact.upper.x) exactBounds.extend(c.exact);
+    }
     nodes[1] = BuildNode{};
     setBox(nodes[1], Bounds3{});
   }
 
   /// Step 1: the tree over all triangles (for none, a lone empty leaf).
   void buildTree() {
-    const int n = primCount;
-    if (n > 0)
-      build(0, 0, n, 0);
+    if (primCount > 0)
+      build(0, root, 0);
     else {
       setBox(nodes[0], Bounds3{});
       makeLeaf(nodes[0], 0, 0);
@@ -339,32 +497,28 @@ struct Bvh::Builder {
 
   /// Step 5: the triangles in leaf order, each wide leaf from its slot on (a new block of 4):
   /// each slot's caller index (-1 for padding) and vertices, so a leaf reads its triangles
-  /// contiguously, four to a block; and the exact bounds of all triangles.
+  /// contiguously, four to a block.
   void copyTriangles(const std::vector<LeafRun>& leaves, int slots, std::vector<int>& primIds,
-                     std::vector<BvhTriangleBlock>& blocks, Bounds3& bounds) const {
+                     std::vector<BvhTriangleBlock>& blocks) const {
     primIds.assign(static_cast<std::size_t>(slots), -1);
     blocks.resize(static_cast<std::size_t>(slots / 4));
     const int leafCount = static_cast<int>(leaves.size());
     constexpr int kLeafGrain = kParallelBinGrain / 4;
-    std::vector<Bounds3> chunkBounds(std::size_t(chunkCount(0, leafCount, kLeafGrain)));
-    forChunks(settings.parallel, 0, leafCount, kLeafGrain, [&](int first, int last, int chunk) {
+    forChunks(settings.parallel, 0, leafCount, kLeafGrain, [&](int first, int last, int) {
       for (int l = first; l < last; ++l) {
         const LeafRun& leaf = leaves[static_cast<std::size_t>(l)];
         for (int j = 0; j < leaf.count; ++j) {
-          const PrimRef& r = prims[leaf.begin + j];
+          const int id = prims[leaf.begin + j].id;
           const int slot = leaf.slot + j;
-          primIds[static_cast<std::size_t>(slot)] = r.id;
+          primIds[static_cast<std::size_t>(slot)] = id;
           BvhTriangleBlock& block = blocks[static_cast<std::size_t>(slot / 4)];
           for (int k = 0; k < 3; ++k) {
-            const Point3& p = vertices[triangles[r.id][k]];
+            const Point3& p = vertices[std::size_t(triangles[std::size_t(id)][k])];
             for (int a = 0; a < 3; ++a) block.v[3 * k + a][slot % 4] = p[a];
           }
-          chunkBounds[chunk].extend(primBounds(r));
         }
       }
     });
-    // Minimum and maximum are exact, so the chunks' order does not change the bounds.
-    for (const Bounds3& b : chunkBounds) bounds.extend(b);
   }
 
   /// Step 2: the nodes laid out depth first, each pair of children right after the
@@ -411,56 +565,70 @@ struct Bvh::Builder {
     return flat;
   }
 
-  static Bounds3 primBounds(const PrimRef& r) {
-    return Bounds3(Point3(r.lower[0], r.lower[1], r.lower[2]),
-                   Point3(r.upper[0], r.upper[1], r.upper[2]));
-  }
-
-  /// Whether a range is large enough for its bounds and bins to be split over tasks.
+  /// Whether a range is large enough for its bins to be split over tasks.
   bool parallelRange(int count) const { return settings.parallel && count > kParallelBinGrain; }
 
-  /// Grows `box` and `centroids` by the triangles of prims[begin, end) and their centroids.
-  void rangeBounds(int begin, int end, Bounds3& box, Bounds3& centroids) const {
-    for (int i = begin; i < end; ++i) {
+  /// The boxes of prims[begin, end) and of their centroids.
+  void rangeBounds(Range& range) const {
+    Box box, centroids;
+    for (int i = range.begin; i < range.end; ++i) {
       const PrimRef& r = prims[i];
-      box.extend(primBounds(r));
-      centroids.extend(Point3(r.centroid(0), r.centroid(1), r.centroid(2)));
+      box.extend(r.lo(), r.hi());
+      const V c = r.centroid2();
+      centroids.extend(c, c);
     }
+    range.box = box;
+    range.centroids = centroids;
   }
 
   /// The SAH bins of all three axes, filled in one pass over the triangles. Only the first
-  /// binCount bins of each axis are constructed (set empty): a build makes one Binning per
-  /// interior node, and setting all 3 x 64 bins cost more than filling them.
+  /// binCount bins of each axis are set empty: a build makes one Binning per interior node,
+  /// and setting all 3 x 64 bins cost more than filling them.
   struct Binning {
     explicit Binning(int binCount) {
-      for (auto& axisBins : bins)
-        for (int b = 0; b < binCount; ++b) new (&axisBins[b]) Bin();
+      const V inf = splat<V>(std::numeric_limits<T>::infinity());
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < binCount; ++b) {
+          lower[a][b] = inf;
+          upper[a][b] = -inf;
+          count[a][b] = 0;
+        }
     }
-    union {
-      Bin bins[3][64];
-    };
+    V lower[3][64];
+    V upper[3][64];
+    int count[3][64];
     /// Adds another chunk's bins (counts add, boxes grow: exact, order-free).
     void merge(const Binning& other, int binCount) {
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < binCount; ++b) {
-          bins[a][b].count += other.bins[a][b].count;
-          bins[a][b].box.extend(other.bins[a][b].box);
+          count[a][b] += other.count[a][b];
+          lower[a][b] = vmin(lower[a][b], other.lower[a][b]);
+          upper[a][b] = vmax(upper[a][b], other.upper[a][b]);
         }
     }
   };
 
-  /// Bins prims[begin, end) on every axis with scale[a] > 0: bin of a centroid =
-  /// min(binCount - 1, (c - lo) * scale), the formula the partition uses too.
-  void binRange(int begin, int end, const double lo[3], const double scale[3], Binning& out) const {
-    const int binCount = settings.binCount;
+  /// Bin of a centroid on each axis: (c - lo) * scale clamped to [0, binCount - 1], then
+  /// truncated (a NaN goes to bin 0); the binning and the partition both use it.
+  struct BinMap {
+    V lo, scale, top;
+    typename Lanes<T>::I bins(V c2) const {
+      const V x = vmin(vmax((c2 - lo) * scale, splat<V>(T(0))), top);
+      return __builtin_convertvector(x, typename Lanes<T>::I);
+    }
+  };
+
+  /// Bins prims[begin, end) on every axis (axes with scale 0 all go to bin 0).
+  void binRange(int begin, int end, const BinMap& map, Binning& out) const {
     for (int i = begin; i < end; ++i) {
       const PrimRef& r = prims[i];
-      const Bounds3 rb = primBounds(r);
+      const V lo = r.lo(), hi = r.hi();
+      const auto b = map.bins(lo + hi);
       for (int a = 0; a < 3; ++a) {
-        if (!(scale[a] > 0.0)) continue;
-        const int b = std::min(binCount - 1, static_cast<int>((r.centroid(a) - lo[a]) * scale[a]));
-        out.bins[a][b].count++;
-        out.bins[a][b].box.extend(rb);
+        const int k = static_cast<int>(b[a]);
+        out.lower[a][k] = vmin(out.lower[a][k], lo);
+        out.upper[a][k] = vmax(out.upper[a][k], hi);
+        out.count[a][k]++;
       }
     }
   }
@@ -474,13 +642,18 @@ struct Bvh::Builder {
     return n;
   }
 
+  /// The longest axis of a box (the first of equals but z, as Bounds3::maxAxis).
+  static int maxAxis(const Box& b) {
+    const V d = b.upper - b.lower;
+    return d[0] > d[1] ? (d[0] > d[2] ? 0 : 2) : (d[1] > d[2] ? 1 : 2);
+  }
+
   void makeLeaf(BuildNode& node, int begin, int end) {
     node.offset = begin;
     node.count = static_cast<std::uint16_t>(end - begin);
     node.axis = 0;
   }
 
-  /// Builds the subtree of `nodeIndex` over prims[begin, end).
   /// Slots the node array needs: 0 and 1; two per node built in parallel (those with more
   /// than kParallelGrain triangles form a binary tree with fewer than n / kParallelGrain
   /// leaves, so fewer than 2 n / kParallelGrain nodes); a block of 2 count per serial subtree
@@ -489,45 +662,35 @@ struct Bvh::Builder {
     return 2 * n + 2 + 4 * (n / std::size_t(kParallelGrain) + 1);
   }
 
-  /// Builds the subtree of `nodeIndex` over prims[begin, end). `block`: the slots reserved
-  /// for the serial subtree this node belongs to, or null above them (nodes built in
-  /// parallel take their children's slots from the shared counter).
-  void build(int nodeIndex, int begin, int end, int depth, SlotBlock* block = nullptr) {
+  /// Builds the subtree of `nodeIndex` over `range`. `block`: the slots reserved for the
+  /// serial subtree this node belongs to, or null above them (nodes built in parallel take
+  /// their children's slots from the shared counter).
+  void build(int nodeIndex, const Range& range, int depth, SlotBlock* block = nullptr) {
     BuildNode& node = nodes[nodeIndex];
-    const int count = end - begin;
+    const int begin = range.begin, end = range.end, count = range.count();
     if (!block && !(settings.parallel && count > kParallelGrain)) {
       // The subtree is built serially from here: reserve its slots in one go.
       const int first = nextNode.fetch_add(2 * count);
       SlotBlock mine{first, first + 2 * count};
-      build(nodeIndex, begin, end, depth, &mine);
+      build(nodeIndex, range, depth, &mine);
       usedSlots.fetch_add(mine.next - first);
       return;
     }
 
-    // Bounds of the triangles and of their centroids (in chunks on several threads at the
-    // top levels; minimum and maximum are exact, so the result is the same).
-    Bounds3 box, centroids;
-    if (parallelRange(count)) {
-      std::vector<std::pair<Bounds3, Bounds3>> chunks(
-          std::size_t(chunkCount(begin, end, kParallelBinGrain)));
-      forChunks(true, begin, end, kParallelBinGrain, [&](int b, int e, int chunk) {
-        rangeBounds(b, e, chunks[chunk].first, chunks[chunk].second);
-      });
-      for (const auto& [chunkBox, chunkCentroids] : chunks) {
-        box.extend(chunkBox);
-        centroids.extend(chunkCentroids);
-      }
-    } else {
-      rangeBounds(begin, end, box, centroids);
+    // The node's float box: the box rounded outwards (float references are already
+    // rounded: rounding is monotonic, so it commutes with minimum and maximum).
+    for (int a = 0; a < 3; ++a) {
+      node.box[a] = roundTowards<float>(double(range.box.lower[a]), false);
+      node.box[3 + a] = roundTowards<float>(double(range.box.upper[a]), true);
     }
-    setBox(node, box);
     if (count <= settings.maxLeafSize) return makeLeaf(node, begin, end);
 
     // Choose the split: SAH over bins, the median, or (degenerate centroids, very deep
     // trees) the middle of the index range.
+    Range left{begin, -1, {}, {}}, right{-1, end, {}, {}};
+    int axis = maxAxis(range.centroids);
+    const bool flat = !(range.centroids.upper[axis] - range.centroids.lower[axis] > T(0));
     int mid = -1;
-    int axis = centroids.maxAxis();
-    const bool flat = centroids.extent()[axis] <= 0.0;
     if (flat || depth >= kBvhSahDepthLimit) {
       if (!flat && settings.split == BvhSettings::Split::Sah && count <= settings.maxSahLeafSize)
         return makeLeaf(node, begin, end);
@@ -537,8 +700,14 @@ struct Bvh::Builder {
       mid = begin + count / 2;
       partitionMedian(axis, begin, mid, end);
     } else {
-      mid = partitionSah(box, centroids, begin, end, axis);
+      mid = partitionSah(range, axis, left, right);
       if (mid < 0) return makeLeaf(node, begin, end);
+    }
+    left.end = right.begin = mid;
+    if (left.box.empty()) {
+      // Median or middle split: the children's boxes still to find.
+      rangeBounds(left);
+      rangeBounds(right);
     }
 
     // Allocate the two children side by side and build them (in parallel when large).
@@ -555,42 +724,48 @@ struct Bvh::Builder {
     node.count = 0;
     node.axis = static_cast<std::uint8_t>(axis);
     if (settings.parallel && count > kParallelGrain) {
-      tbb::parallel_invoke([&] { build(child, begin, mid, depth + 1); },
-                           [&] { build(child + 1, mid, end, depth + 1); });
+      tbb::parallel_invoke([&] { build(child, left, depth + 1); },
+                           [&] { build(child + 1, right, depth + 1); });
     } else {
-      build(child, begin, mid, depth + 1, block);
-      build(child + 1, mid, end, depth + 1, block);
+      build(child, left, depth + 1, block);
+      build(child + 1, right, depth + 1, block);
     }
   }
 
   void partitionMedian(int axis, int begin, int mid, int end) {
     std::nth_element(prims.get() + begin, prims.get() + mid, prims.get() + end,
                      [axis](const PrimRef& a, const PrimRef& b) {
-                       const double ca = a.centroid(axis), cb = b.centroid(axis);
+                       const T ca = a.lower[axis] + a.upper[axis];
+                       const T cb = b.lower[axis] + b.upper[axis];
                        return ca < cb || (ca == cb && a.id < b.id);
                      });
   }
 
   /// Binned SAH: returns the partition point, or -1 when a leaf is cheaper (and allowed).
-  /// `axis` receives the chosen split axis.
-  int partitionSah(const Bounds3& box, const Bounds3& centroids, int begin, int end, int& axis) {
+  /// `axis` receives the chosen split axis; `left` and `right` the boxes of the two sides
+  /// when the bins chose the split (else they stay empty).
+  int partitionSah(const Range& range, int& axis, Range& left, Range& right) {
     const int binCount = settings.binCount;
-    const int count = end - begin;
-    const double area = box.surfaceArea();
+    const int begin = range.begin, end = range.end, count = range.count();
+    const double area = range.box.halfArea();
     double bestCost = kInfinity;
     int bestAxis = -1, bestBin = -1;
     double rightArea[64];
     int rightCount[64];
     // Count the centroids per bin and grow the bins' boxes, every axis in one pass (in
     // chunks on several threads at the top levels, merged in chunk order).
-    double lo[3], scale[3];
+    BinMap map;
+    map.lo = range.centroids.lower;
+    map.top = splat<V>(T(binCount - 1));
+    map.scale = splat<V>(T(0));
+    bool binned[3];
     for (int a = 0; a < 3; ++a) {
-      const double extent = centroids.extent()[a];
-      lo[a] = centroids.lower[a];
-      // An extent of a few denormals makes binCount / extent infinite, and 0 * inf a NaN
-      // bin index (found by Fuzzply, issue 14): such an axis is not binned, like a flat one.
-      const double s = extent > 0.0 ? binCount / extent : 0.0;
-      scale[a] = std::isfinite(s) ? s : 0.0;
+      const T extent = range.centroids.upper[a] - range.centroids.lower[a];
+      // A tiny extent makes binCount / extent infinite (found by Fuzzply, issue 14, with
+      // denormals): such an axis is not binned, like a flat one.
+      const T s = extent > T(0) ? T(binCount) / extent : T(0);
+      binned[a] = std::isfinite(s) && s > T(0);
+      map.scale[a] = binned[a] ? s : T(0);
     }
     Binning binning(binCount);
     if (parallelRange(count)) {
@@ -599,33 +774,32 @@ struct Bvh::Builder {
       for (int c = 0; c < chunkCount(begin, end, kParallelBinGrain); ++c)
         chunks.emplace_back(binCount);
       forChunks(true, begin, end, kParallelBinGrain,
-                [&](int b, int e, int chunk) { binRange(b, e, lo, scale, chunks[chunk]); });
+                [&](int b, int e, int chunk) { binRange(b, e, map, chunks[chunk]); });
       for (const Binning& chunk : chunks) binning.merge(chunk, binCount);
     } else {
-      binRange(begin, end, lo, scale, binning);
+      binRange(begin, end, map, binning);
     }
     for (int a = 0; a < 3; ++a) {
-      if (!(scale[a] > 0.0)) continue;
-      const Bin* bins = binning.bins[a];
+      if (!binned[a]) continue;
       // Sweep from the right to get the area and count right of each plane ...
-      Bounds3 acc;
+      Box acc;
       int n = 0;
       for (int b = binCount - 1; b > 0; --b) {
-        acc.extend(bins[b].box);
-        n += bins[b].count;
-        rightArea[b] = acc.surfaceArea();
+        acc.extend(binning.lower[a][b], binning.upper[a][b]);
+        n += binning.count[a][b];
+        rightArea[b] = acc.halfArea();
         rightCount[b] = n;
       }
       // ... then from the left, evaluating the cost of the plane left of bin b.
-      acc = Bounds3{};
+      acc = Box{};
       n = 0;
       for (int b = 1; b < binCount; ++b) {
-        acc.extend(bins[b - 1].box);
-        n += bins[b - 1].count;
+        acc.extend(binning.lower[a][b - 1], binning.upper[a][b - 1]);
+        n += binning.count[a][b - 1];
         if (n == 0 || rightCount[b] == 0) continue;
-        const double cost = settings.traversalCost +
-                            settings.intersectionCost *
-                                (acc.surfaceArea() * n + rightArea[b] * rightCount[b]) / area;
+        const double cost =
+            settings.traversalCost +
+            settings.intersectionCost * (acc.halfArea() * n + rightArea[b] * rightCount[b]) / area;
         if (cost < bestCost) {
           bestCost = cost;
           bestAxis = a;
@@ -638,23 +812,46 @@ struct Bvh::Builder {
     const double leafCost = settings.intersectionCost * count;
     if (bestAxis < 0) {
       if (count <= settings.maxSahLeafSize) return -1;
-      axis = centroids.maxAxis();
+      axis = maxAxis(range.centroids);
       const int mid = begin + count / 2;
       partitionMedian(axis, begin, mid, end);
       return mid;
     }
     if (bestCost >= leafCost && count <= settings.maxSahLeafSize) return -1;
 
-    // Partition by the same bin computation, so the counts match the sweep.
+    // Partition in place by the same bin computation, so the counts match the sweep, and
+    // find the two sides' boxes on the way.
     axis = bestAxis;
-    const double axisLo = lo[axis], axisScale = scale[axis];
-    auto it = std::partition(prims.get() + begin, prims.get() + end, [&](const PrimRef& r) {
-      return std::min(binCount - 1, static_cast<int>((r.centroid(axis) - axisLo) * axisScale)) <
-             bestBin;
-    });
-    return static_cast<int>(it - prims.get());
+    const auto goesLeft = [&](const PrimRef& r) { return map.bins(r.centroid2())[axis] < bestBin; };
+    Box lBox, lCent, rBox, rCent;
+    int l = begin, r = end - 1;
+    for (;;) {
+      while (l <= r && goesLeft(prims[l])) {
+        const PrimRef& p = prims[l];
+        const V c = p.centroid2();
+        lBox.extend(p.lo(), p.hi());
+        lCent.extend(c, c);
+        ++l;
+      }
+      while (l <= r && !goesLeft(prims[r])) {
+        const PrimRef& p = prims[r];
+        const V c = p.centroid2();
+        rBox.extend(p.lo(), p.hi());
+        rCent.extend(c, c);
+        --r;
+      }
+      if (l > r) break;
+      std::swap(prims[l], prims[r]);
+    }
+    left.box = lBox;
+    left.centroids = lCent;
+    right.box = rBox;
+    right.centroids = rCent;
+    return l;
   }
 };
+
+}  // namespace
 
 std::string BvhSettings::toString() const {
   std::ostringstream out;
@@ -683,21 +880,51 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   const int n = static_cast<int>(triangles.size());
   m_stats.triangleCount = n;
 
-  // Step 1: build the tree over primitive references.
-  Builder builder(m_settings, vertices, triangles);
-  builder.buildTree();
-  // Step 2: lay the nodes out depth first, measuring the tree.
-  std::vector<BvhNode> flat = builder.flatten(m_stats);
-  RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
-  m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
-  // Step 3: the 8-wide tree of the queries, placing the leaves' triangles in blocks of 4.
-  std::vector<LeafRun> leaves;
-  int slots = 0;
-  m_wide = WideCollapse(flat).run(n == 0, leaves, slots);
-  // Step 4: interleave sibling pairs into cache-line pairs.
-  m_pairs = interleave(flat, m_settings.parallel);
-  // Step 5: copy the triangles' vertices in leaf order, four to a block.
-  builder.copyTriangles(leaves, slots, m_primIds, m_blocks, m_bounds);
+  using TClock = std::chrono::steady_clock;
+  static const bool timing = std::getenv("RAYLAB_BVH_TIMING") != nullptr;
+  auto t0 = TClock::now();
+  auto lap = [&](const char* what) {
+    if (!timing) return;
+    const auto t1 = TClock::now();
+    std::fprintf(stderr, "%s %.1f ms\n", what,
+                 std::chrono::duration<double, std::milli>(t1 - t0).count());
+    t0 = t1;
+  };
+  const auto run = [&](auto& builder) {
+    // Step 1: build the tree over primitive references.
+    builder.buildTree();
+    lap("tree");
+    // Step 2: lay the nodes out depth first, measuring the tree.
+    std::vector<BvhNode> flat = builder.flatten(m_stats);
+    RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
+    m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
+    lap("flatten");
+    // Step 3: the 8-wide tree of the queries, placing the leaves' triangles in blocks of 4.
+    std::vector<LeafRun> leaves;
+    int slots = 0;
+    m_wide = WideCollapse(flat).run(n == 0, leaves, slots);
+    lap("wide");
+    // Step 4: interleave sibling pairs into cache-line pairs.
+    m_pairs = interleave(flat, m_settings.parallel);
+    lap("interleave");
+    // Step 5: copy the triangles' vertices in leaf order, four to a block.
+    builder.copyTriangles(leaves, slots, m_primIds, m_blocks);
+    m_bounds = builder.exactBounds;
+  };
+  // Small meshes (those one looks at, lesson 8's ball) are built from exact double boxes;
+  // large ones from float boxes rounded outwards, 32 bytes a reference instead of 64: the
+  // trees differ only where rounding moves a centroid across a bin's edge or changes which
+  // of two equal costs comes first.
+  if (n <= kExactBuildMax) {
+    Builder<double> builder(m_settings, vertices, triangles);
+    lap("refs");
+    run(builder);
+  } else {
+    Builder<float> builder(m_settings, vertices, triangles);
+    lap("refs");
+    run(builder);
+  }
+  lap("copy");
 }
 
 BvhNode Bvh::node(int index) const {

@@ -252,7 +252,7 @@ class Bvh {
   static void setKernel(BvhKernel kernel);
 
  private:
-  struct Builder;
+
   /// Depth of every node slot (slot 1, the padding: -1), found by walking down from the root.
   std::vector<int> nodeDepths() const;
 
