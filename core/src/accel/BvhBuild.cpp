@@ -11,9 +11,9 @@
 #include <immintrin.h>
 #endif
 
+#include <time.h>
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -44,6 +44,8 @@ namespace {
 
 /// Meshes of up to this many triangles are built from double-precision references (Bvh::Bvh).
 constexpr int kExactBuildMax = 65536;
+/// Nodes of up to this many triangles set only the SAH bins they use.
+constexpr int kFewTriangles = 32;
 /// Ranges larger than this are built on their own oneTBB task.
 constexpr int kParallelGrain = 8192;
 /// Ranges larger than this have their bounds and bins computed by several tasks, in chunks
@@ -156,14 +158,12 @@ struct Box4 {
   }
   void extend(const Box4& b) { extend(b.lower, b.upper); }
   bool empty() const { return !(lower[0] <= upper[0]); }
-  /// Half the surface area, in double, summed in the order of Bounds3::surfaceArea (so in
-  /// double it is exactly half of it); 0 for an empty box.
-  double halfArea() const {
-    if (empty()) return 0.0;
-    const double dx = double(upper[0]) - double(lower[0]);
-    const double dy = double(upper[1]) - double(lower[1]);
-    const double dz = double(upper[2]) - double(lower[2]);
-    return dx * dy + dy * dz + dz * dx;
+  /// Half the surface area, summed in the order of Bounds3::surfaceArea (so in double it is
+  /// exactly half of it); 0 for an empty box.
+  T halfArea() const {
+    if (empty()) return T(0);
+    const V d = upper - lower;
+    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
   }
 };
 
@@ -585,14 +585,25 @@ struct Builder {
   /// binCount bins of each axis are set empty: a build makes one Binning per interior node,
   /// and setting all 3 x 64 bins cost more than filling them.
   struct Binning {
+    /// Bins 0 .. binCount - 1 of each axis set empty (the others left unset).
     explicit Binning(int binCount) {
-      const V inf = splat<V>(std::numeric_limits<T>::infinity());
       for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < binCount; ++b) {
-          lower[a][b] = inf;
-          upper[a][b] = -inf;
-          count[a][b] = 0;
-        }
+        for (int b = 0; b < binCount; ++b) clear(a, b);
+    }
+    void clear(int a, int b) {
+      lower[a][b] = splat<V>(std::numeric_limits<T>::infinity());
+      upper[a][b] = splat<V>(-std::numeric_limits<T>::infinity());
+      count[a][b] = 0;
+    }
+    /// Adds a triangle's box to its bin on each axis.
+    template <typename I>
+    void add(const I& bin, V lo, V hi) {
+      for (int a = 0; a < 3; ++a) {
+        const int k = static_cast<int>(bin[a]);
+        lower[a][k] = vmin(lower[a][k], lo);
+        upper[a][k] = vmax(upper[a][k], hi);
+        count[a][k]++;
+      }
     }
     V lower[3][64];
     V upper[3][64];
@@ -618,19 +629,30 @@ struct Builder {
     }
   };
 
-  /// Bins prims[begin, end) on every axis (axes with scale 0 all go to bin 0).
+  /// Adds prims[i] to `out` on every axis (axes with scale 0 all go to bin 0).
+  void binOne(int i, const BinMap& map, Binning& out) const {
+    const PrimRef& r = prims[i];
+    const V lo = r.lo(), hi = r.hi();
+    out.add(map.bins(lo + hi), lo, hi);
+  }
+
+  /// Bins prims[begin, end) into `out`. Neighbouring triangles mostly fall in the same bins,
+  /// and each update of a bin waits for the previous one: long ranges alternate between
+  /// two sets of bins, merged at the end (counts add, boxes grow: the same bins).
   void binRange(int begin, int end, const BinMap& map, Binning& out) const {
-    for (int i = begin; i < end; ++i) {
-      const PrimRef& r = prims[i];
-      const V lo = r.lo(), hi = r.hi();
-      const auto b = map.bins(lo + hi);
-      for (int a = 0; a < 3; ++a) {
-        const int k = static_cast<int>(b[a]);
-        out.lower[a][k] = vmin(out.lower[a][k], lo);
-        out.upper[a][k] = vmax(out.upper[a][k], hi);
-        out.count[a][k]++;
-      }
+    const int binCount = settings.binCount;
+    if (end - begin < 256) {
+      for (int i = begin; i < end; ++i) binOne(i, map, out);
+      return;
     }
+    Binning odd(binCount);
+    int i = begin;
+    for (; i + 1 < end; i += 2) {
+      binOne(i, map, out);
+      binOne(i + 1, map, odd);
+    }
+    if (i < end) binOne(i, map, out);
+    out.merge(odd, binCount);
   }
 
   static BvhNode toNode(const BuildNode& b) {
@@ -767,8 +789,24 @@ struct Builder {
       binned[a] = std::isfinite(s) && s > T(0);
       map.scale[a] = binned[a] ? s : T(0);
     }
-    Binning binning(binCount);
-    if (parallelRange(count)) {
+    // A small node sets only the bins its triangles fall in (found first): setting all of
+    // them, and sweeping over them, cost more than the triangles.
+    Binning binning(count <= kFewTriangles ? 0 : binCount);
+    std::uint64_t usedBins[3] = {0, 0, 0};
+    if (count <= kFewTriangles) {
+      typename Lanes<T>::I bins[kFewTriangles];
+      for (int i = 0; i < count; ++i) {
+        bins[i] = map.bins(prims[begin + i].centroid2());
+        for (int a = 0; a < 3; ++a) usedBins[a] |= std::uint64_t(1) << bins[i][a];
+      }
+      for (int a = 0; a < 3; ++a)
+        for (std::uint64_t bits = usedBins[a]; bits; bits &= bits - 1)
+          binning.clear(a, __builtin_ctzll(bits));
+      for (int i = 0; i < count; ++i) {
+        const PrimRef& r = prims[begin + i];
+        binning.add(bins[i], r.lo(), r.hi());
+      }
+    } else if (parallelRange(count)) {
       std::vector<Binning> chunks;
       chunks.reserve(std::size_t(chunkCount(begin, end, kParallelBinGrain)));
       for (int c = 0; c < chunkCount(begin, end, kParallelBinGrain); ++c)
@@ -779,31 +817,43 @@ struct Builder {
     } else {
       binRange(begin, end, map, binning);
     }
+    if (count > kFewTriangles)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < binCount; ++b)
+          if (binning.count[a][b] > 0) usedBins[a] |= std::uint64_t(1) << b;
+    // The planes worth evaluating: those right after a bin that holds centroids (a plane
+    // after an empty bin has the same two sides, and so the same cost, as an earlier one,
+    // and the first plane of equal cost wins).
+    double bestWeight = kInfinity;  // area-weighted count of the best plane so far
     for (int a = 0; a < 3; ++a) {
       if (!binned[a]) continue;
+      int used[64], m = 0;
+      for (std::uint64_t bits = usedBins[a]; bits; bits &= bits - 1)
+        used[m++] = __builtin_ctzll(bits);
       // Sweep from the right to get the area and count right of each plane ...
       Box acc;
       int n = 0;
-      for (int b = binCount - 1; b > 0; --b) {
-        acc.extend(binning.lower[a][b], binning.upper[a][b]);
-        n += binning.count[a][b];
-        rightArea[b] = acc.halfArea();
-        rightCount[b] = n;
+      for (int j = m - 1; j > 0; --j) {
+        acc.extend(binning.lower[a][used[j]], binning.upper[a][used[j]]);
+        n += binning.count[a][used[j]];
+        rightArea[j] = acc.halfArea();
+        rightCount[j] = n;
       }
-      // ... then from the left, evaluating the cost of the plane left of bin b.
+      // ... then from the left, evaluating the plane between used bins j - 1 and j. The
+      // cost grows with the weight, so a weight no lower than the best one's cannot win.
       acc = Box{};
       n = 0;
-      for (int b = 1; b < binCount; ++b) {
-        acc.extend(binning.lower[a][b - 1], binning.upper[a][b - 1]);
-        n += binning.count[a][b - 1];
-        if (n == 0 || rightCount[b] == 0) continue;
-        const double cost =
-            settings.traversalCost +
-            settings.intersectionCost * (acc.halfArea() * n + rightArea[b] * rightCount[b]) / area;
+      for (int j = 1; j < m; ++j) {
+        acc.extend(binning.lower[a][used[j - 1]], binning.upper[a][used[j - 1]]);
+        n += binning.count[a][used[j - 1]];
+        const double weight = double(acc.halfArea()) * n + rightArea[j] * rightCount[j];
+        if (!(weight < bestWeight)) continue;
+        const double cost = settings.traversalCost + settings.intersectionCost * weight / area;
         if (cost < bestCost) {
           bestCost = cost;
+          bestWeight = weight;
           bestAxis = a;
-          bestBin = b;
+          bestBin = used[j - 1] + 1;
         }
       }
     }
@@ -822,7 +872,13 @@ struct Builder {
     // Partition in place by the same bin computation, so the counts match the sweep, and
     // find the two sides' boxes on the way.
     axis = bestAxis;
-    const auto goesLeft = [&](const PrimRef& r) { return map.bins(r.centroid2())[axis] < bestBin; };
+    // For x = (c - lo) * scale, the bin min(max(x, 0), binCount - 1) truncated is below
+    // bestBin exactly when x >= bestBin fails (NaN too: bin 0), in scalar arithmetic that
+    // rounds as the vector lanes do.
+    const T axisLo = map.lo[axis], axisScale = map.scale[axis], split = T(bestBin);
+    const auto goesLeft = [&](const PrimRef& p) {
+      return !(((p.lower[axis] + p.upper[axis]) - axisLo) * axisScale >= split);
+    };
     Box lBox, lCent, rBox, rCent;
     int l = begin, r = end - 1;
     for (;;) {
@@ -880,16 +936,20 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   const int n = static_cast<int>(triangles.size());
   m_stats.triangleCount = n;
 
-  using TClock = std::chrono::steady_clock;
   static const bool timing = std::getenv("RAYLAB_BVH_TIMING") != nullptr;
-  auto t0 = TClock::now();
+  const auto cpu = [] {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
+  };
+  double t0 = cpu();
   auto lap = [&](const char* what) {
     if (!timing) return;
-    const auto t1 = TClock::now();
-    std::fprintf(stderr, "%s %.1f ms\n", what,
-                 std::chrono::duration<double, std::milli>(t1 - t0).count());
+    const double t1 = cpu();
+    std::fprintf(stderr, "%s %.1f ms\n", what, t1 - t0);
     t0 = t1;
   };
+
   const auto run = [&](auto& builder) {
     // Step 1: build the tree over primitive references.
     builder.buildTree();
