@@ -103,6 +103,9 @@ static_assert(sizeof(BvhWideNode) % 64 == 0, "BvhWideNode must fill whole cache 
 /// vertex k of the triangle in slot 4 i + lane of block i. A leaf of the wide tree starts a
 /// new block, so the wide traversal tests its triangles four at a time.
 struct alignas(32) BvhTriangleBlock {
+  /// Left unset (the build writes every lane, padding too): a million triangles' blocks are
+  /// 72 MB that zeroing first would write twice.
+  BvhTriangleBlock() {}
   double v[9][4];
 };
 
@@ -252,7 +255,6 @@ class Bvh {
   static void setKernel(BvhKernel kernel);
 
  private:
-
   /// Depth of every node slot (slot 1, the padding: -1), found by walking down from the root.
   std::vector<int> nodeDepths() const;
 
