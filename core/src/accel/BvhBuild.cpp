@@ -26,9 +26,11 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <sstream>
 #include <type_traits>
+#include <unordered_map>
 #include <utility>
 
 // Bvh construction: the binned-SAH build over primitive references, the depth-first
@@ -496,6 +498,13 @@ struct Builder {
   struct SlotBlock {
     int next, end;
   };
+  /// A serially built subtree: its root's slot and the slots its other nodes filled, in
+  /// the order flatten lays them out.
+  struct SerialBlock {
+    int root, first, used;
+  };
+  std::mutex blockMutex;
+  std::vector<SerialBlock> serialBlocks;
 
   Builder(const BvhSettings& s, const std::vector<Point3>& v, const std::vector<Index3>& t)
       : settings(s),
@@ -615,31 +624,60 @@ struct Builder {
     resizeHuge(flat, static_cast<std::size_t>(used));
     flat[1] = toNode(nodes[1]);
     int next = 2;
+    // A serially built subtree's nodes below its root are already in this order, from its
+    // block's first slot on: they are copied in one pass, their children moved along.
+    std::unordered_map<int, SerialBlock> blockOf;
+    for (const SerialBlock& b : serialBlocks) blockOf.emplace(b.root, b);
+    std::vector<int> depthOf;
     struct Item {
       int newIndex, oldIndex, depth;
     };
     std::vector<Item> stack{{0, 0, 0}};
     const double rootArea = boxArea(nodes[0]);
     double sah = 0.0;
+    // Counts a node in the statistics.
+    const auto count = [&](const BvhNode& node, int depth) {
+      // Each node's share of the SAH cost is weighted by its area relative to the root's.
+      const double rel = rootArea > 0.0 ? boxArea(node) / rootArea : 1.0;
+      stats.nodeCount++;
+      stats.depth = std::max(stats.depth, depth);
+      if (node.count > 0 || empty) {
+        stats.leafCount++;
+        stats.maxLeafSize = std::max<int>(stats.maxLeafSize, node.count);
+        sah += settings.intersectionCost * node.count * rel;
+      } else {
+        sah += settings.traversalCost * rel;
+      }
+    };
     while (!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();
       BvhNode& node = flat[item.newIndex];
       node = toNode(nodes[item.oldIndex]);
-      // Each node's share of the SAH cost is weighted by its area relative to the root's.
-      const double rel = rootArea > 0.0 ? boxArea(node) / rootArea : 1.0;
-      stats.nodeCount++;
-      stats.depth = std::max(stats.depth, item.depth);
-      if (node.count > 0 || empty) {
-        stats.leafCount++;
-        stats.maxLeafSize = std::max<int>(stats.maxLeafSize, node.count);
-        sah += settings.intersectionCost * node.count * rel;
-        continue;
-      }
+      count(node, item.depth);
+      if (node.count > 0 || empty) continue;
       const int oldChild = node.offset;
       node.offset = next;
+      const auto block = blockOf.find(item.oldIndex);
+      if (block != blockOf.end()) {
+        const SerialBlock& b = block->second;
+        RAYLAB_CHECK_EQ(oldChild, b.first);
+        const int shift = next - b.first;
+        depthOf.assign(std::size_t(b.used), 0);
+        depthOf[0] = depthOf[1] = item.depth + 1;
+        for (int k = 0; k < b.used; ++k) {
+          BvhNode& n = flat[std::size_t(next + k)];
+          n = toNode(nodes[b.first + k]);
+          count(n, depthOf[std::size_t(k)]);
+          if (n.count > 0) continue;
+          depthOf[std::size_t(n.offset - b.first)] = depthOf[std::size_t(n.offset - b.first) + 1] =
+              depthOf[std::size_t(k)] + 1;
+          n.offset += shift;
+        }
+        next += b.used;
+        continue;
+      }
       next += 2;
-      sah += settings.traversalCost * rel;
       // Push the right child first so the left subtree is laid out next.
       stack.push_back({node.offset + 1, oldChild + 1, item.depth + 1});
       stack.push_back({node.offset, oldChild, item.depth + 1});
@@ -780,6 +818,10 @@ struct Builder {
       SlotBlock mine{first, first + 2 * count};
       build(nodeIndex, range, depth, &mine);
       usedSlots.fetch_add(mine.next - first);
+      if (mine.next > first) {
+        const std::lock_guard<std::mutex> lock(blockMutex);
+        serialBlocks.push_back({nodeIndex, first, mine.next - first});
+      }
       return;
     }
 
