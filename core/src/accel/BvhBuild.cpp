@@ -50,6 +50,10 @@ namespace {
 
 /// Meshes of up to this many triangles are built from double-precision references (Bvh::Bvh).
 constexpr int kExactBuildMax = 65536;
+/// Nodes of over kSampleAbove triangles are binned on every kSampleStride-th one (large
+/// meshes only, see partitionSah).
+constexpr int kSampleAbove = 65536;
+constexpr int kSampleStride = 4;
 /// Nodes of up to this many triangles set only the SAH bins they use.
 constexpr int kFewTriangles = 32;
 /// Ranges larger than this are built on their own oneTBB task.
@@ -761,17 +765,17 @@ struct Builder {
   /// Bins prims[begin, end) into `out`. Neighbouring triangles mostly fall in the same bins,
   /// and each update of a bin waits for the previous one: long ranges alternate between
   /// two sets of bins, merged at the end (counts add, boxes grow: the same bins).
-  void binRange(int begin, int end, const BinMap& map, Binning& out) const {
+  void binRange(int begin, int end, const BinMap& map, Binning& out, int stride = 1) const {
     const int binCount = settings.binCount;
-    if (end - begin < 256) {
-      for (int i = begin; i < end; ++i) binOne(i, map, out);
+    if (end - begin < 256 * stride) {
+      for (int i = begin; i < end; i += stride) binOne(i, map, out);
       return;
     }
     Binning odd(binCount);
     int i = begin;
-    for (; i + 1 < end; i += 2) {
+    for (; i + stride < end; i += 2 * stride) {
       binOne(i, map, out);
-      binOne(i + 1, map, odd);
+      binOne(i + stride, map, odd);
     }
     if (i < end) binOne(i, map, out);
     out.merge(odd, binCount);
@@ -844,7 +848,11 @@ struct Builder {
         return makeLeaf(node, begin, end);
       mid = begin + count / 2;
       if (!flat) partitionMedian(axis, begin, mid, end);
-    } else if (settings.split == BvhSettings::Split::Median) {
+    } else if (settings.split == BvhSettings::Split::Median ||
+               (sizeof(T) == sizeof(float) && count <= kWideLeafMax)) {
+      // With float references (large meshes), a subtree of at most kWideLeafMax triangles
+      // is one leaf of the wide tree, which answers the queries and never looks inside it:
+      // it is split at the median, far cheaper than binning it, for the binary tree only.
       mid = begin + count / 2;
       partitionMedian(axis, begin, mid, end);
     } else {
@@ -917,6 +925,11 @@ struct Builder {
     }
     // A small node sets only the bins its triangles fall in (found first): setting all of
     // them, and sweeping over them, cost more than the triangles.
+    // With float references (large meshes), the top levels bin every kSampleStride-th
+    // triangle only: as good a split for so many, and a plane with triangles of the sample
+    // on both sides has triangles on both sides. Chunks start at multiples of the stride.
+    const int stride = sizeof(T) == sizeof(float) && count > kSampleAbove ? kSampleStride : 1;
+    static_assert(kParallelBinGrain % kSampleStride == 0, "chunks must keep the sample");
     Binning binning(count <= kFewTriangles ? 0 : binCount);
     std::uint64_t usedBins[3] = {0, 0, 0};
     if (count <= kFewTriangles) {
@@ -938,10 +951,10 @@ struct Builder {
       for (int c = 0; c < chunkCount(begin, end, kParallelBinGrain); ++c)
         chunks.emplace_back(binCount);
       forChunks(true, begin, end, kParallelBinGrain,
-                [&](int b, int e, int chunk) { binRange(b, e, map, chunks[chunk]); });
+                [&](int b, int e, int chunk) { binRange(b, e, map, chunks[chunk], stride); });
       for (const Binning& chunk : chunks) binning.merge(chunk, binCount);
     } else {
-      binRange(begin, end, map, binning);
+      binRange(begin, end, map, binning, stride);
     }
     if (count > kFewTriangles)
       for (int a = 0; a < 3; ++a)
