@@ -260,31 +260,38 @@ void resizeHuge(Vector& v, std::size_t n) {
   v.resize(n);
 }
 
-/// Stores the depth-first node array as cache-line pairs: node i becomes lane i % 2 of
-/// pair i / 2 (see BvhNodePair; Bvh::node undoes it).
-std::vector<BvhNodePair> interleave(const std::vector<BvhNode>& flat, bool parallel) {
-  std::vector<BvhNodePair> pairs;
-  resizeHuge(pairs, flat.size() / 2);
-  const auto fill = [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      BvhNodePair& pair = pairs[i / 2];
-      const int lane = static_cast<int>(i % 2);
-      for (int k = 0; k < 6; ++k) pair.box[k][lane] = flat[i].box[k];
-      pair.offset[lane] = flat[i].offset;
-      pair.count[lane] = flat[i].count;
-      pair.axis[lane] = flat[i].axis;
-    }
-  };
-  // Each pair is written by one chunk (chunks of an even number of nodes).
-  const std::size_t grain = 2 * std::size_t(kParallelBinGrain);
-  if (parallel && flat.size() > grain)
-    tbb::parallel_for(std::size_t(0), (flat.size() + grain - 1) / grain, [&](std::size_t c) {
-      fill(c * grain, std::min(flat.size(), (c + 1) * grain));
-    });
-  else
-    fill(0, flat.size());
-  return pairs;
-}
+/// The depth-first node array stored as cache-line pairs: node i is lane i % 2 of pair
+/// i / 2 (see BvhNodePair; Bvh::node undoes it). Written by flatten, read and its leaves
+/// moved to their slots by WideCollapse.
+class PairNodes {
+ public:
+  explicit PairNodes(std::vector<BvhNodePair>& pairs) : m_pairs(pairs) {}
+  std::size_t size() const { return 2 * m_pairs.size(); }
+  BvhNode get(std::size_t i) const {
+    const BvhNodePair& pair = m_pairs[i / 2];
+    const std::size_t lane = i % 2;
+    BvhNode n;
+    for (int k = 0; k < 6; ++k) n.box[k] = pair.box[k][lane];
+    n.offset = pair.offset[lane];
+    n.count = pair.count[lane];
+    n.axis = pair.axis[lane];
+    return n;
+  }
+  void set(std::size_t i, const BvhNode& n) {
+    BvhNodePair& pair = m_pairs[i / 2];
+    const std::size_t lane = i % 2;
+    for (int k = 0; k < 6; ++k) pair.box[k][lane] = n.box[k];
+    pair.offset[lane] = n.offset;
+    pair.count[lane] = n.count;
+    pair.axis[lane] = n.axis;
+  }
+  int offset(std::size_t i) const { return m_pairs[i / 2].offset[i % 2]; }
+  int count(std::size_t i) const { return m_pairs[i / 2].count[i % 2]; }
+  void setOffset(std::size_t i, int offset) { m_pairs[i / 2].offset[i % 2] = offset; }
+
+ private:
+  std::vector<BvhNodePair>& m_pairs;
+};
 
 /// A leaf of the wide tree: its triangles prims[begin, begin + count) in build order, and
 /// the slot where they start in the stored order (a multiple of 4).
@@ -306,7 +313,8 @@ class WideCollapse {
  public:
   /// `flat`: the binary tree; its leaves' offsets (indices into the build's triangle order)
   /// become slots as the wide leaves are placed.
-  explicit WideCollapse(std::vector<BvhNode>& flat) : m_flat(flat) {
+  explicit WideCollapse(std::vector<BvhNodePair>& pairs) : m_flat(pairs) {
+    const PairNodes& flat = m_flat;
     m_wide.reserve(flat.size() / 4 + 1);
     adviseHugePages(m_wide.data(), m_wide.capacity() * sizeof(BvhWideNode));
     // Triangles and first triangle of every subtree: children come after their parent.
@@ -336,19 +344,19 @@ class WideCollapse {
 
  private:
   void countSubtree(std::size_t i) {
-    const BvhNode& n = m_flat[i];
-    if (n.count > 0) {
-      m_count[i] = n.count;
-      m_first[i] = n.offset;
+    const int count = m_flat.count(i), offset = m_flat.offset(i);
+    if (count > 0) {
+      m_count[i] = count;
+      m_first[i] = offset;
     } else {
-      m_count[i] = m_count[std::size_t(n.offset)] + m_count[std::size_t(n.offset) + 1];
-      m_first[i] = m_first[std::size_t(n.offset)];
+      m_count[i] = m_count[std::size_t(offset)] + m_count[std::size_t(offset) + 1];
+      m_first[i] = m_first[std::size_t(offset)];
     }
   }
 
   /// Whether binary node i becomes a leaf of the wide tree.
   bool leafLike(int i) const {
-    return m_flat[std::size_t(i)].count > 0 || m_count[std::size_t(i)] <= kWideLeafMax;
+    return m_flat.count(std::size_t(i)) > 0 || m_count[std::size_t(i)] <= kWideLeafMax;
   }
 
   void clearLanes(int wide) {
@@ -368,7 +376,7 @@ class WideCollapse {
   /// Lane `lane` of wide node `wide` becomes binary node `index`: a leaf (its triangles
   /// placed from the next free block) or, for an interior node, a wide child built now.
   void setLane(int wide, int lane, int index) {
-    const BvhNode& n = m_flat[std::size_t(index)];
+    const BvhNode n = m_flat.get(std::size_t(index));
     {
       BvhWideNode& w = m_wide[static_cast<std::size_t>(wide)];
       for (int k = 0; k < 6; ++k) w.box[k][lane] = n.box[k];
@@ -394,18 +402,18 @@ class WideCollapse {
 
   /// Moves the binary leaves under `index` to their slots (build index + shift).
   void placeLeaves(int index, int shift) {
-    BvhNode& n = m_flat[std::size_t(index)];
-    if (n.count > 0) {
-      n.offset += shift;
+    const int offset = m_flat.offset(std::size_t(index));
+    if (m_flat.count(std::size_t(index)) > 0) {
+      m_flat.setOffset(std::size_t(index), offset + shift);
       return;
     }
-    placeLeaves(n.offset, shift);
-    placeLeaves(n.offset + 1, shift);
+    placeLeaves(offset, shift);
+    placeLeaves(offset + 1, shift);
   }
 
   /// Makes the wide node of binary node `index` (not leaf-like); returns its index.
   int collapse(int index) {
-    const BvhNode& node = m_flat[std::size_t(index)];
+    const BvhNode node = m_flat.get(std::size_t(index));
     int kids[kBvhWidth] = {node.offset, node.offset + 1};
     int n = 2;
     while (n < kBvhWidth) {
@@ -413,7 +421,7 @@ class WideCollapse {
       double bestArea = -1.0;
       for (int i = 0; i < n; ++i)
         if (!leafLike(kids[i])) {
-          const double area = boxArea(m_flat[std::size_t(kids[i])]);
+          const double area = boxArea(m_flat.get(std::size_t(kids[i])));
           if (area > bestArea) {
             bestArea = area;
             best = i;
@@ -422,7 +430,7 @@ class WideCollapse {
       if (best < 0) break;
       const int opened = kids[best];
       for (int i = n; i > best + 1; --i) kids[i] = kids[i - 1];
-      kids[best] = m_flat[std::size_t(opened)].offset;
+      kids[best] = m_flat.offset(std::size_t(opened));
       kids[best + 1] = kids[best] + 1;
       ++n;
     }
@@ -435,7 +443,7 @@ class WideCollapse {
     return me;
   }
 
-  std::vector<BvhNode>& m_flat;
+  PairNodes m_flat;
   std::vector<int> m_count, m_first;
   std::vector<BvhWideNode> m_wide;
   std::vector<LeafRun>* m_leaves = nullptr;
@@ -571,7 +579,7 @@ struct Builder {
     }
   }
 
-  /// Step 5: the triangles in leaf order, each wide leaf from its slot on (a new block of 4):
+  /// Step 4: the triangles in leaf order, each wide leaf from its slot on (a new block of 4):
   /// each slot's caller index (-1 for padding) and vertices, so a leaf reads its triangles
   /// contiguously, four to a block.
   void copyTriangles(const std::vector<LeafRun>& leaves, int slots, std::vector<int>& primIds,
@@ -618,15 +626,17 @@ struct Builder {
   }
 
   /// Step 2: the nodes laid out depth first, each pair of children right after the
-  /// subtree that precedes it (the left subtree first), slot 1 the padding. Counts nodes,
+  /// subtree that precedes it (the left subtree first), slot 1 the padding, stored straight
+  /// as cache-line pairs (BvhNodePair). Counts nodes,
   /// leaves, depth, the largest leaf and the SAH cost into `stats` on the way. Leaves keep
   /// their first triangle's index in `prims` (WideCollapse turns it into a slot).
-  std::vector<BvhNode> flatten(BvhStats& stats) const {
+  std::vector<BvhNodePair> flatten(BvhStats& stats) const {
     const bool empty = primCount == 0;
     const int used = usedSlots.load();
-    std::vector<BvhNode> flat;
-    resizeHuge(flat, static_cast<std::size_t>(used));
-    flat[1] = toNode(nodes[1]);
+    std::vector<BvhNodePair> pairs;
+    resizeHuge(pairs, static_cast<std::size_t>(used / 2));
+    PairNodes flat(pairs);
+    flat.set(1, toNode(nodes[1]));
     int next = 2;
     // A serially built subtree's nodes below its root are already in this order, from its
     // block's first slot on: they are copied in one pass, their children moved along.
@@ -656,12 +666,15 @@ struct Builder {
     while (!stack.empty()) {
       const Item item = stack.back();
       stack.pop_back();
-      BvhNode& node = flat[item.newIndex];
-      node = toNode(nodes[item.oldIndex]);
+      BvhNode node = toNode(nodes[item.oldIndex]);
       count(node, item.depth);
-      if (node.count > 0 || empty) continue;
+      if (node.count > 0 || empty) {
+        flat.set(std::size_t(item.newIndex), node);
+        continue;
+      }
       const int oldChild = node.offset;
       node.offset = next;
+      flat.set(std::size_t(item.newIndex), node);
       const auto block = blockOf.find(item.oldIndex);
       if (block != blockOf.end()) {
         const SerialBlock& b = block->second;
@@ -670,13 +683,16 @@ struct Builder {
         depthOf.assign(std::size_t(b.used), 0);
         depthOf[0] = depthOf[1] = item.depth + 1;
         for (int k = 0; k < b.used; ++k) {
-          BvhNode& n = flat[std::size_t(next + k)];
-          n = toNode(nodes[b.first + k]);
+          BvhNode n = toNode(nodes[b.first + k]);
           count(n, depthOf[std::size_t(k)]);
-          if (n.count > 0) continue;
+          if (n.count > 0) {
+            flat.set(std::size_t(next + k), n);
+            continue;
+          }
           depthOf[std::size_t(n.offset - b.first)] = depthOf[std::size_t(n.offset - b.first) + 1] =
               depthOf[std::size_t(k)] + 1;
           n.offset += shift;
+          flat.set(std::size_t(next + k), n);
         }
         next += b.used;
         continue;
@@ -688,7 +704,7 @@ struct Builder {
     }
     RAYLAB_CHECK_EQ(next, used);
     stats.sahCost = sah;
-    return flat;
+    return pairs;
   }
 
   /// Whether a range is large enough for its bins to be split over tasks.
@@ -1094,19 +1110,16 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
     builder.buildTree();
     lap("tree");
     // Step 2: lay the nodes out depth first, measuring the tree.
-    std::vector<BvhNode> flat = builder.flatten(m_stats);
+    m_pairs = builder.flatten(m_stats);
     RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
     m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
     lap("flatten");
     // Step 3: the 8-wide tree of the queries, placing the leaves' triangles in blocks of 4.
     std::vector<LeafRun> leaves;
     int slots = 0;
-    m_wide = WideCollapse(flat).run(n == 0, leaves, slots);
+    m_wide = WideCollapse(m_pairs).run(n == 0, leaves, slots);
     lap("wide");
-    // Step 4: interleave sibling pairs into cache-line pairs.
-    m_pairs = interleave(flat, m_settings.parallel);
-    lap("interleave");
-    // Step 5: copy the triangles' vertices in leaf order, four to a block.
+    // Step 4: copy the triangles' vertices in leaf order, four to a block.
     builder.copyTriangles(leaves, slots, m_primIds, m_blocks);
     m_bounds = builder.exactBounds;
   };
