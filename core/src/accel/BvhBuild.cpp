@@ -79,27 +79,32 @@ void forChunks(bool parallel, int begin, int end, int grain, const Body& body) {
 
 int chunkCount(int begin, int end, int grain) { return (end - begin + grain - 1) / grain; }
 
-/// The next float below f, for f finite or +inf (std::nextafter towards -inf, inline).
-inline float nextDown(float f) {
-  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+/// a < b ? a : b and a > b ? a : b, as the vector code's minps / maxps.
+template <typename T>
+inline T lesser(T a, T b) {
+  return a < b ? a : b;
+}
+template <typename T>
+inline T greater(T a, T b) {
+  return a > b ? a : b;
+}
+
+/// The largest float <= d, without branches (which way a coordinate rounds is a coin toss
+/// the branch predictor loses): the float nearest d, or the next one towards -inf (one
+/// step in the bits: down for a positive float, up for a negative one, the smallest
+/// negative denormal for a zero).
+inline float roundDown(double d) {
+  float f = static_cast<float>(d);
   std::uint32_t u;
   std::memcpy(&u, &f, sizeof u);
-  u = f > 0.0f ? u - 1 : u + 1;
+  const std::uint32_t below = f > 0.0f ? u - 1 : (f < 0.0f ? u + 1 : 0x80000001u);
+  u = static_cast<double>(f) > d ? below : u;
   std::memcpy(&f, &u, sizeof f);
   return f;
 }
 
-/// The largest float <= d.
-inline float roundDown(double d) {
-  const float f = static_cast<float>(d);
-  return static_cast<double>(f) > d ? nextDown(f) : f;
-}
-
 /// The smallest float >= d.
-inline float roundUp(double d) {
-  const float f = static_cast<float>(d);
-  return static_cast<double>(f) < d ? -nextDown(-f) : f;
-}
+inline float roundUp(double d) { return -roundDown(-d); }
 
 /// d rounded to T, up or down (double: d itself).
 template <typename T>
@@ -155,38 +160,6 @@ inline V4f vmax(V4f a, V4f b) {
 }
 inline V4d vmin(V4d a, V4d b) { return a < b ? a : b; }
 inline V4d vmax(V4d a, V4d b) { return a > b ? a : b; }
-
-/// A point as four doubles (lane 3: 0).
-inline V4d load4(const Point3& p) { return V4d{p.x, p.y, p.z, 0.0}; }
-
-/// Lane by lane the largest T <= d and the smallest T >= d (roundDown and roundUp without
-/// branches: which way a coordinate rounds is a coin toss the branch predictor loses).
-template <typename T>
-inline typename Lanes<T>::V roundDown4(V4d d);
-template <>
-inline V4d roundDown4<double>(V4d d) {
-  return d;
-}
-template <>
-inline V4f roundDown4<float>(V4d d) {
-  V4f f = __builtin_convertvector(d, V4f);
-  const V4i above = __builtin_convertvector(__builtin_convertvector(f, V4d) > d, V4i);
-  V4i bits;
-  std::memcpy(&bits, &f, sizeof bits);
-  // nextDown: one step towards -inf in the bits (down for positive, up for negative), and
-  // the smallest negative denormal for a zero.
-  const V4i positive = f > V4f{0.0f, 0.0f, 0.0f, 0.0f};
-  const V4i zero = f == V4f{0.0f, 0.0f, 0.0f, 0.0f};
-  const V4i minusTiny = V4i{0, 0, 0, 0} + std::int32_t(0x80000001u);
-  const V4i below = zero ? minusTiny : bits + 1 + (positive + positive);
-  bits = above ? below : bits;
-  std::memcpy(&f, &bits, sizeof f);
-  return f;
-}
-template <typename T>
-inline typename Lanes<T>::V roundUp4(V4d d) {
-  return -roundDown4<T>(-d);
-}
 
 /// A box with planes of type T, lane 3 unused: empty when lower = +inf, upper = -inf.
 template <typename T>
@@ -537,27 +510,41 @@ struct Builder {
                               Chunk{{0, 0, {}, {}}, {}});
     forChunks(settings.parallel, 0, n, kParallelBinGrain, [&](int begin, int end, int chunk) {
       Range& range = chunks[std::size_t(chunk)].range;
-      Box4<double> exact;
+      // Scalar code: building vectors of three coordinates went through the stack.
+      double exactLo[3] = {kInfinity, kInfinity, kInfinity};
+      double exactHi[3] = {-kInfinity, -kInfinity, -kInfinity};
+      const T inf = std::numeric_limits<T>::infinity();
+      T boxLo[3] = {inf, inf, inf}, boxHi[3] = {-inf, -inf, -inf};
+      T centLo[3] = {inf, inf, inf}, centHi[3] = {-inf, -inf, -inf};
       for (int i = begin; i < end; ++i) {
         const Index3& tri = triangles[std::size_t(i)];
-        const V4d p0 = load4(vertices[std::size_t(tri[0])]);
-        const V4d p1 = load4(vertices[std::size_t(tri[1])]);
-        const V4d p2 = load4(vertices[std::size_t(tri[2])]);
-        const V4d lo = vmin(p0, vmin(p1, p2)), hi = vmax(p0, vmax(p1, p2));
-        exact.extend(lo, hi);
+        const Point3& p0 = vertices[std::size_t(tri[0])];
+        const Point3& p1 = vertices[std::size_t(tri[1])];
+        const Point3& p2 = vertices[std::size_t(tri[2])];
         PrimRef& r = prims[i];
-        const V rlo = roundDown4<T>(lo), rhi = roundUp4<T>(hi);
-        std::memcpy(r.lower, &rlo, sizeof r.lower);
-        std::memcpy(r.upper, &rhi, sizeof r.upper);
+        for (int a = 0; a < 3; ++a) {
+          const double lo = lesser(p0[a], lesser(p1[a], p2[a]));
+          const double hi = greater(p0[a], greater(p1[a], p2[a]));
+          exactLo[a] = lesser(exactLo[a], lo);
+          exactHi[a] = greater(exactHi[a], hi);
+          const T rlo = roundTowards<T>(lo, false), rhi = roundTowards<T>(hi, true);
+          r.lower[a] = rlo;
+          r.upper[a] = rhi;
+          boxLo[a] = lesser(boxLo[a], rlo);
+          boxHi[a] = greater(boxHi[a], rhi);
+          const T c = rlo + rhi;
+          centLo[a] = lesser(centLo[a], c);
+          centHi[a] = greater(centHi[a], c);
+        }
         r.id = i;
         r.pad = T(0);
-        range.box.extend(r.lo(), r.hi());
-        const V c = r.centroid2();
-        range.centroids.extend(c, c);
       }
-      chunks[std::size_t(chunk)].exact =
-          Bounds3(Point3(exact.lower[0], exact.lower[1], exact.lower[2]),
-                  Point3(exact.upper[0], exact.upper[1], exact.upper[2]));
+      range.box.lower = V{boxLo[0], boxLo[1], boxLo[2], inf};
+      range.box.upper = V{boxHi[0], boxHi[1], boxHi[2], -inf};
+      range.centroids.lower = V{centLo[0], centLo[1], centLo[2], inf};
+      range.centroids.upper = V{centHi[0], centHi[1], centHi[2], -inf};
+      chunks[std::size_t(chunk)].exact = Bounds3(Point3(exactLo[0], exactLo[1], exactLo[2]),
+                                                 Point3(exactHi[0], exactHi[1], exactHi[2]));
     });
     root.end = n;
     for (const Chunk& c : chunks) {
