@@ -461,6 +461,8 @@ struct Builder {
   struct Range {
     int begin, end;
     Box box, centroids;
+    /// The axis the triangles are sorted on, or -1 (see build).
+    int sortedAxis = -1;
     int count() const { return end - begin; }
   };
 
@@ -851,11 +853,18 @@ struct Builder {
         return makeLeaf(node, begin, end);
       mid = begin + count / 2;
       if (!flat) partitionMedian(axis, begin, mid, end);
-    } else if (settings.split == BvhSettings::Split::Median ||
-               (sizeof(T) == sizeof(float) && count <= kWideLeafMax)) {
+    } else if (sizeof(T) == sizeof(float) && count <= kWideLeafMax) {
       // With float references (large meshes), a subtree of at most kWideLeafMax triangles
-      // is one leaf of the wide tree, which answers the queries and never looks inside it:
-      // it is split at the median, far cheaper than binning it, for the binary tree only.
+      // is one leaf of the wide tree, which answers the queries and never looks inside it.
+      // For the binary tree it is sorted once along its longest axis and halved down to the
+      // leaves, far cheaper than binning it.
+      if (range.sortedAxis < 0)
+        sortAlong(axis, begin, end);
+      else
+        axis = range.sortedAxis;
+      mid = begin + count / 2;
+      left.sortedAxis = right.sortedAxis = axis;
+    } else if (settings.split == BvhSettings::Split::Median) {
       mid = begin + count / 2;
       partitionMedian(axis, begin, mid, end);
     } else {
@@ -888,6 +897,21 @@ struct Builder {
     } else {
       build(child, left, depth + 1, block);
       build(child + 1, right, depth + 1, block);
+    }
+  }
+
+  /// Sorts prims[begin, end) (a few) by centroid along `axis`, then index: insertion sort.
+  void sortAlong(int axis, int begin, int end) {
+    PrimRef* p = prims.get();
+    const auto less = [axis](const PrimRef& a, const PrimRef& b) {
+      const T ca = a.lower[axis] + a.upper[axis], cb = b.lower[axis] + b.upper[axis];
+      return ca < cb || (ca == cb && a.id < b.id);
+    };
+    for (int i = begin + 1; i < end; ++i) {
+      const PrimRef x = p[i];
+      int j = i;
+      for (; j > begin && less(x, p[j - 1]); --j) p[j] = p[j - 1];
+      p[j] = x;
     }
   }
 
