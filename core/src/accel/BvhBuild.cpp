@@ -463,6 +463,8 @@ struct Builder {
     Box box, centroids;
     /// The axis the triangles are sorted on, or -1 (see build).
     int sortedAxis = -1;
+    /// Whether an ancestor is a leaf of the wide tree (see wideLeafAt).
+    bool inWideLeaf = false;
     int count() const { return end - begin; }
   };
 
@@ -477,6 +479,11 @@ struct Builder {
   std::atomic<int> nextNode{2};   // next free slot
   std::atomic<int> usedSlots{2};  // slots holding nodes (a block may leave some unused)
   Range root{0, 0, {}, {}};
+  /// The leaves of the wide tree as the build finds them: at the first triangle of each,
+  /// its triangle count (at most 255), elsewhere 0. A leaf of the wide tree is a binary leaf
+  /// or a subtree of at most kWideLeafMax triangles, whichever comes first from the root,
+  /// so the copy of the triangles into blocks need not wait for the wide tree.
+  std::vector<std::uint8_t> wideLeafAt;
   Bounds3 exactBounds;  // of all triangles, in double
 
   /// Node slots reserved for one serially built subtree, handed out without the shared
@@ -554,6 +561,7 @@ struct Builder {
       root.centroids.extend(c.range.centroids);
       if (c.exact.lower.x <= c.exact.upper.x) exactBounds.extend(c.exact);
     }
+    wideLeafAt.assign(triangles.size(), 0);
     nodes[1] = BuildNode{};
     setBox(nodes[1], Bounds3{});
   }
@@ -612,6 +620,19 @@ struct Builder {
         }
       }
     });
+  }
+
+  /// The leaves of the wide tree in triangle order, each from the next block of 4 on, and
+  /// the slots they take: what WideCollapse finds too, known here without the wide tree.
+  void wideLeaves(std::vector<LeafRun>& leaves, int& slots) const {
+    slots = 0;
+    for (int i = 0; i < primCount;) {
+      const int count = wideLeafAt[std::size_t(i)];
+      RAYLAB_CHECK_LT(0, count);
+      leaves.push_back({i, count, slots});
+      slots += 4 * ((count + 3) / 4);
+      i += count;
+    }
   }
 
   /// Step 2: the nodes laid out depth first, each pair of children right after the
@@ -840,7 +861,13 @@ struct Builder {
       node.box[a] = roundTowards<float>(double(range.box.lower[a]), false);
       node.box[3 + a] = roundTowards<float>(double(range.box.upper[a]), true);
     }
-    if (count <= settings.maxLeafSize) return makeLeaf(node, begin, end);
+    const bool wideLeaf = !range.inWideLeaf && count <= kWideLeafMax;
+    const auto leaf = [&] {
+      if (!range.inWideLeaf) wideLeafAt[std::size_t(begin)] = static_cast<std::uint8_t>(count);
+      makeLeaf(node, begin, end);
+    };
+    if (wideLeaf) wideLeafAt[std::size_t(begin)] = static_cast<std::uint8_t>(count);
+    if (count <= settings.maxLeafSize) return leaf();
 
     // Choose the split: SAH over bins, the median, or (degenerate centroids, very deep
     // trees) the middle of the index range.
@@ -850,7 +877,7 @@ struct Builder {
     int mid = -1;
     if (flat || depth >= kBvhSahDepthLimit) {
       if (!flat && settings.split == BvhSettings::Split::Sah && count <= settings.maxSahLeafSize)
-        return makeLeaf(node, begin, end);
+        return leaf();
       mid = begin + count / 2;
       if (!flat) partitionMedian(axis, begin, mid, end);
     } else if (sizeof(T) == sizeof(float) && count <= kWideLeafMax) {
@@ -869,9 +896,10 @@ struct Builder {
       partitionMedian(axis, begin, mid, end);
     } else {
       mid = partitionSah(range, axis, left, right);
-      if (mid < 0) return makeLeaf(node, begin, end);
+      if (mid < 0) return leaf();
     }
     left.end = right.begin = mid;
+    left.inWideLeaf = right.inWideLeaf = range.inWideLeaf || wideLeaf;
     if (left.box.empty()) {
       // Median or middle split: the children's boxes still to find.
       rangeBounds(left);
@@ -1120,18 +1148,35 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
     // Step 1: build the tree over primitive references.
     builder.buildTree();
     lap("tree");
-    // Step 2: lay the nodes out depth first, measuring the tree.
-    m_pairs = builder.flatten(m_stats);
-    RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
-    m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
-    lap("flatten");
-    // Step 3: the 8-wide tree of the queries, placing the leaves' triangles in blocks of 4.
+    // Steps 2 and 3 beside step 4 (on two tasks): the leaves of the wide tree are known.
     std::vector<LeafRun> leaves;
     int slots = 0;
-    m_wide = WideCollapse(m_pairs).run(n == 0, leaves, slots);
-    lap("wide");
+    builder.wideLeaves(leaves, slots);
+    std::vector<LeafRun> wideLeaves;
+    int wideSlots = 0;
+    const auto trees = [&] {
+      // Step 2: lay the nodes out depth first, measuring the tree.
+      m_pairs = builder.flatten(m_stats);
+      lap("flatten");
+      // Step 3: the 8-wide tree of the queries, its leaves in blocks of 4 from step 4.
+      m_wide = WideCollapse(m_pairs).run(n == 0, wideLeaves, wideSlots);
+      lap("wide");
+    };
     // Step 4: copy the triangles' vertices in leaf order, four to a block.
-    builder.copyTriangles(leaves, slots, m_primIds, m_blocks);
+    const auto copy = [&] { builder.copyTriangles(leaves, slots, m_primIds, m_blocks); };
+    if (m_settings.parallel) {
+      tbb::parallel_invoke(trees, copy);
+    } else {
+      trees();
+      copy();
+    }
+    RAYLAB_CHECK_LT(m_stats.depth, kBvhStackSize);
+    RAYLAB_CHECK_EQ(wideSlots, slots);
+    RAYLAB_CHECK_EQ(wideLeaves.size(), leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+      RAYLAB_CHECK(wideLeaves[i].begin == leaves[i].begin &&
+                   wideLeaves[i].count == leaves[i].count && wideLeaves[i].slot == leaves[i].slot);
+    m_stats.averageLeafSize = m_stats.leafCount > 0 ? double(n) / m_stats.leafCount : 0.0;
     m_bounds = builder.exactBounds;
   };
   // Small meshes (those one looks at, lesson 8's ball) are built from exact double boxes;
