@@ -50,8 +50,8 @@ namespace {
 
 /// Meshes of up to this many triangles are built from double-precision references (Bvh::Bvh).
 constexpr int kExactBuildMax = 65536;
-/// Nodes of over kSampleAbove triangles are binned on every kSampleStride-th one (large
-/// meshes only, see partitionSah).
+/// Nodes of over kSampleAbove triangles are binned on every kSampleStride-th one, those of
+/// over a quarter of that on every other one (large meshes only, see partitionSah).
 constexpr int kSampleAbove = 65536;
 constexpr int kSampleStride = 4;
 /// Nodes of up to this many triangles set only the SAH bins they use.
@@ -983,7 +983,10 @@ struct Builder {
     // With float references (large meshes), the top levels bin every kSampleStride-th
     // triangle only: as good a split for so many, and a plane with triangles of the sample
     // on both sides has triangles on both sides. Chunks start at multiples of the stride.
-    const int stride = sizeof(T) == sizeof(float) && count > kSampleAbove ? kSampleStride : 1;
+    const int stride = sizeof(T) != sizeof(float) ? 1
+                       : count > kSampleAbove     ? kSampleStride
+                       : count > kSampleAbove / 4 ? kSampleStride / 2
+                                                  : 1;
     static_assert(kParallelBinGrain % kSampleStride == 0, "chunks must keep the sample");
     Binning binning(count <= kFewTriangles ? 0 : binCount);
     std::uint64_t usedBins[3] = {0, 0, 0};
