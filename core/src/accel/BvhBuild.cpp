@@ -97,8 +97,13 @@ inline float roundDown(double d) {
   float f = static_cast<float>(d);
   std::uint32_t u;
   std::memcpy(&u, &f, sizeof u);
-  const std::uint32_t below = f > 0.0f ? u - 1 : (f < 0.0f ? u + 1 : 0x80000001u);
-  u = static_cast<double>(f) > d ? below : u;
+  // Masks, not conditionals: GCC turned the conditionals back into branches.
+  const std::uint32_t positive = 0u - std::uint32_t(f > 0.0f);
+  const std::uint32_t zero = 0u - std::uint32_t(f == 0.0f);
+  const std::uint32_t above = 0u - std::uint32_t(static_cast<double>(f) > d);
+  std::uint32_t below = u + 1 + (positive << 1);  // u - 1 when positive, else u + 1
+  below = (0x80000001u & zero) | (below & ~zero);
+  u = (below & above) | (u & ~above);
   std::memcpy(&f, &u, sizeof f);
   return f;
 }
