@@ -11,7 +11,6 @@
 #include <immintrin.h>
 #endif
 
-#include <time.h>
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
@@ -21,8 +20,6 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -33,9 +30,10 @@
 #include <unordered_map>
 #include <utility>
 
-// Bvh construction: the binned-SAH build over primitive references, the depth-first
-// layout with its statistics, and the interleaving of sibling pairs into cache lines.
-// The queries are in BvhTraverse.cpp.
+// Bvh construction: the binned-SAH build over primitive references (float boxes rounded
+// outwards for large meshes, exact double boxes for small ones), the depth-first layout in
+// cache-line pairs with its statistics, the collapse to the 8-wide tree and the copy of the
+// triangles into blocks of 4. The queries are in BvhTraverse.cpp and BvhWideTraverse.cpp.
 
 // The builder passes 4-double vectors by value between its own functions (internal linkage,
 // so no other code sees their calling convention): GCC's note that AVX would pass them
@@ -124,7 +122,7 @@ inline double roundTowards<double>(double d, bool) {
 }
 
 /// Four lanes of T (float: one SSE register on x86-64; double: two), lane 3 unused: the
-/// builder's boxes and centroids. IntOf: the bin indices, lane by lane.
+/// builder's boxes and centroids. Lanes<T>::I: the bin indices, lane by lane.
 using V4f = float __attribute__((vector_size(16)));
 using V4i = std::int32_t __attribute__((vector_size(16)));
 using V4d = double __attribute__((vector_size(32)));
@@ -283,14 +281,14 @@ struct LeafRun {
 /// about as much as a block of triangles and saves none.
 constexpr int kWideLeafMax = 12;
 
-/// The 8-wide tree (BvhWideNode) collapsed from the flattened binary tree `flat`, depth
+/// The 8-wide tree (BvhWideNode) collapsed from the flattened binary tree `pairs`, depth
 /// first from the root. A wide node's children: the binary node's two, then, while there
 /// are fewer than eight and one of them is interior, the interior child with the largest
 /// box (the first on a tie) replaced by its two children.
 class WideCollapse {
  public:
-  /// `flat`: the binary tree; its leaves' offsets (indices into the build's triangle order)
-  /// become slots as the wide leaves are placed.
+  /// `pairs`: the binary tree; its leaves' offsets (indices into the build's triangle
+  /// order) become slots as the wide leaves are placed.
   explicit WideCollapse(std::vector<BvhNodePair>& pairs) : m_flat(pairs) {
     const PairNodes& flat = m_flat;
     m_wide.reserve(flat.size() / 4 + 1);
@@ -1138,24 +1136,9 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   const int n = static_cast<int>(triangles.size());
   m_stats.triangleCount = n;
 
-  static const bool timing = std::getenv("RAYLAB_BVH_TIMING") != nullptr;
-  const auto cpu = [] {
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec * 1e-6;
-  };
-  double t0 = cpu();
-  auto lap = [&](const char* what) {
-    if (!timing) return;
-    const double t1 = cpu();
-    std::fprintf(stderr, "%s %.1f ms\n", what, t1 - t0);
-    t0 = t1;
-  };
-
   const auto run = [&](auto& builder) {
     // Step 1: build the tree over primitive references.
     builder.buildTree();
-    lap("tree");
     // Steps 2 and 3 beside step 4 (on two tasks): the leaves of the wide tree are known.
     std::vector<LeafRun> leaves;
     int slots = 0;
@@ -1165,10 +1148,8 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
     const auto trees = [&] {
       // Step 2: lay the nodes out depth first, measuring the tree.
       m_pairs = builder.flatten(m_stats);
-      lap("flatten");
       // Step 3: the 8-wide tree of the queries, its leaves in blocks of 4 from step 4.
       m_wide = WideCollapse(m_pairs).run(n == 0, wideLeaves, wideSlots);
-      lap("wide");
     };
     // Step 4: copy the triangles' vertices in leaf order, four to a block.
     const auto copy = [&] { builder.copyTriangles(leaves, slots, m_primIds, m_blocks); };
@@ -1193,14 +1174,11 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
   // of two equal costs comes first.
   if (n <= kExactBuildMax) {
     Builder<double> builder(m_settings, vertices, triangles);
-    lap("refs");
     run(builder);
   } else {
     Builder<float> builder(m_settings, vertices, triangles);
-    lap("refs");
     run(builder);
   }
-  lap("copy");
 }
 
 BvhNode Bvh::node(int index) const {
