@@ -1040,14 +1040,15 @@ struct Builder {
         rightCount[j] = n;
       }
       // ... then from the left, evaluating the plane between used bins j - 1 and j. The
-      // cost grows with the weight, so a weight no lower than the best one's cannot win.
+      // cost grows with the weight (for a cost per triangle of at least 0), so a weight no
+      // lower than the best one's cannot win.
       acc = Box{};
       n = 0;
       for (int j = 1; j < m; ++j) {
         acc.extend(binning.lower[a][used[j - 1]], binning.upper[a][used[j - 1]]);
         n += binning.count[a][used[j - 1]];
         const double weight = double(acc.halfArea()) * n + rightArea[j] * rightCount[j];
-        if (!(weight < bestWeight)) continue;
+        if (!(weight < bestWeight) && settings.intersectionCost >= 0.0) continue;
         const double cost = settings.traversalCost + settings.intersectionCost * weight / area;
         if (cost < bestCost) {
           bestCost = cost;
