@@ -173,11 +173,11 @@ struct BvhTrace {
  * References. Meshes of up to 65,536 triangles (those one draws and teaches with) are built
  * from each triangle's exact double-precision box. Larger ones are built from float boxes,
  * 32 bytes each, rounded outwards so every box encloses its triangles' double vertices (no
- * hit is ever lost; the node boxes are the same either way): the bins then see centroids
- * rounded to float, and the levels over 16,384 triangles are binned on every second or
- * fourth triangle. In those large meshes a subtree of at most 12 triangles is one leaf of
- * the 8-wide tree, which answers the queries and never looks inside it; it is sorted along
- * its longest axis and halved down to the leaves instead of binned.
+ * hit is ever lost; a node's box is the one its triangles' exact box rounds to): the bins
+ * then see centroids rounded to float, and the levels over 16,384 triangles are binned on
+ * every second or fourth triangle. In those large meshes a subtree of at most 12 triangles
+ * is one leaf of the 8-wide tree, which answers the queries and never looks inside it; it
+ * is sorted along its longest axis and halved down to the leaves instead of binned.
  *
  * Queries. intersect() and occluded() run on an 8-wide tree collapsed from the binary one
  * (BvhWideNode): the eight children's boxes are tested four at once (4 doubles per vector, AVX2
