@@ -499,6 +499,61 @@ TEST(BvhBuild, 01_SameTreeWhateverTheThreadCount) {
   }
 }
 
+TEST(BvhBuild, 02_FloatReferencesEncloseEveryTriangleExactly) {
+  // Meshes over 65,536 triangles are built from float boxes rounded outwards. A small
+  // sphere far from the origin (radius 0.01 at a distance of 2000: float spacing there is
+  // 1.2e-4, a tenth of a triangle) stresses that rounding: every leaf's box must hold its
+  // triangles' double vertices, every interior box its children's, and rays aimed at
+  // vertices and edges (where a box one ulp too tight would lose the hit) must get the
+  // bits of brute force.
+  const Point3 centre(1999.37, -1234.56, 777.7);
+  const TriangleMesh sphere = MeshFactory::makeUvSphere(centre, 0.01, 121, 300);
+  ASSERT_GT(sphere.triangles().size(), 65536u);
+  const Bvh& bvh = sphere.bvh();
+  const auto holds = [](const BvhNode& n, const Point3& p) {
+    for (int a = 0; a < 3; ++a)
+      if (!(double(n.box[a]) <= p[a] && p[a] <= double(n.box[3 + a]))) return false;
+    return true;
+  };
+  int outside = 0, leafTriangles = 0;
+  for (int i = 0; i < bvh.nodeSlots(); ++i) {
+    if (i == 1) continue;
+    const BvhNode n = bvh.node(i);
+    if (n.count == 0) {
+      for (int c = n.offset; c < n.offset + 2; ++c) {
+        const BvhNode child = bvh.node(c);
+        outside += !holds(n, Point3(child.box[0], child.box[1], child.box[2]));
+        outside += !holds(n, Point3(child.box[3], child.box[4], child.box[5]));
+      }
+      continue;
+    }
+    for (int slot = n.offset; slot < n.offset + n.count; ++slot, ++leafTriangles)
+      for (const int v : sphere.triangles()[std::size_t(bvh.slotTriangle(slot))])
+        outside += !holds(n, sphere.vertices()[std::size_t(v)]);
+  }
+  EXPECT_EQ(outside, 0);
+  EXPECT_EQ(leafTriangles, static_cast<int>(sphere.triangles().size()));
+  std::mt19937_64 rng(2);
+  std::uniform_int_distribution<std::size_t> pick(0, sphere.triangles().size() - 1);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int wrong = 0;
+  for (int i = 0; i < 400; ++i) {
+    const auto& tri = sphere.triangles()[pick(rng)];
+    const Point3& a = sphere.vertices()[std::size_t(tri[0])];
+    const Point3& b = sphere.vertices()[std::size_t(tri[1])];
+    const Point3 target = i % 2 ? a : 0.5 * (a + b);
+    const Point3 origin = centre + 0.05 * Vec3(u(rng), u(rng), u(rng));
+    const Ray r = Ray::make(origin, target - origin);
+    const auto fast = bvh.intersect(r), slow = bvh.intersectBruteForce(r),
+               binary = bvh.intersectBinary(r);
+    wrong += fast.has_value() != slow.has_value() || binary.has_value() != slow.has_value();
+    if (fast && slow && binary)
+      wrong += !sameBits(fast->t, slow->t) || fast->primitive != slow->primitive ||
+               !sameBits(binary->t, slow->t) || binary->primitive != slow->primitive;
+  }
+  EXPECT_EQ(wrong, 0);
+}
+
 TEST(TriangleMesh, 01_ValidatesIndicesAndVertices) {
   const std::vector<Point3> v = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   EXPECT_NO_THROW(TriangleMesh(v, {{0, 1, 2}}));

@@ -103,6 +103,9 @@ static_assert(sizeof(BvhWideNode) % 64 == 0, "BvhWideNode must fill whole cache 
 /// vertex k of the triangle in slot 4 i + lane of block i. A leaf of the wide tree starts a
 /// new block, so the wide traversal tests its triangles four at a time.
 struct alignas(32) BvhTriangleBlock {
+  /// Left unset (the build writes every lane, padding too): a million triangles' blocks are
+  /// 72 MB that zeroing first would write twice.
+  BvhTriangleBlock() {}
   double v[9][4];
 };
 
@@ -166,6 +169,15 @@ struct BvhTrace {
  * nodes laid out depth first (sibling pairs interleaved in one cache line, see
  * BvhNodePair), and the triangles' vertices are copied in leaf order so a leaf reads them
  * contiguously.
+ *
+ * References. Meshes of up to 65,536 triangles (those one draws and teaches with) are built
+ * from each triangle's exact double-precision box. Larger ones are built from float boxes,
+ * 32 bytes each, rounded outwards so every box encloses its triangles' double vertices (no
+ * hit is ever lost; a node's box is the one its triangles' exact box rounds to): the bins
+ * then see centroids rounded to float, and the levels over 16,384 triangles are binned on
+ * every second or fourth triangle. In those large meshes a subtree of at most 12 triangles
+ * is one leaf of the 8-wide tree, which answers the queries and never looks inside it; it
+ * is sorted along its longest axis and halved down to the leaves instead of binned.
  *
  * Queries. intersect() and occluded() run on an 8-wide tree collapsed from the binary one
  * (BvhWideNode): the eight children's boxes are tested four at once (4 doubles per vector, AVX2
@@ -252,7 +264,6 @@ class Bvh {
   static void setKernel(BvhKernel kernel);
 
  private:
-  struct Builder;
   /// Depth of every node slot (slot 1, the padding: -1), found by walking down from the root.
   std::vector<int> nodeDepths() const;
 
