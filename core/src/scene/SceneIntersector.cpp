@@ -74,6 +74,7 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
     }
     m_entries.push_back(e);
   }
+  m_allRound = m_roundCount == int(m_entries.size());
   while (m_roundX.size() % 4 != 0) {
     for (std::vector<double>* column : {&m_roundX, &m_roundY, &m_roundZ, &m_roundR})
       column->push_back(0.0);
@@ -261,6 +262,22 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   double roots[kStackSpheres];
   const bool precomputed =
       m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, roots);
+  if (precomputed && m_allRound) {
+    // Every object a static round sphere (smallpt): slot k is object k. The same choice as
+    // the loop below, without its branches: the last of the smallest roots within tMax.
+    double best = ray.tMax;
+    for (int k = 0; k < m_roundCount; ++k) {
+      const double t = roots[k];
+      const bool take = t <= best;  // false for NaN: no root
+      best = take ? t : best;
+      nearest = take ? k : nearest;
+    }
+    if (nearest < 0) return std::nullopt;
+    SceneHit out;
+    out.object = nearest;
+    out.si = m_entries[std::size_t(nearest)].round->geometryAt(ray, Hit{best, 0, {}});
+    return out;
+  }
   for (std::size_t i = 0; i < m_entries.size(); ++i) {
     const Entry& e = m_entries[i];
     if (e.round) {

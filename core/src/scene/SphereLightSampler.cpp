@@ -115,7 +115,9 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
   }
   best.mode = Plan::Mode::Cone;
   best.cosThetaMax = std::sqrt(std::max(0.0, 1.0 - bestSin2));
-  best.axis = bestToCentre / std::sqrt(bestDistance2);
+  best.axis = bestToCentre * (1.0 / std::sqrt(bestDistance2));
+  best.centreOffset = -toCentre;
+  best.c = centreDistance2 - m_radius * m_radius;
   return best;
 }
 
@@ -155,16 +157,25 @@ std::optional<LightSample> SphereLightSampler::sample(const Point3& ref, const V
     case Plan::Mode::Cone: {
       // A direction uniform in the cone, followed to its first hit on the light.
       const Vec3 w = Frame(p.axis).toWorld(sampleUniformCone(u, p.cosThetaMax));
-      const std::optional<double> t = m_sphere->nearestRoot(Ray{ref, w, 0.0, kInfinity, 0.0});
-      if (!t) return std::nullopt;  // a cap's cone is wider than the cap
-      const Vec3 radial = ref + *t * w - m_centre;
-      ls.n = radial / glm::length(radial);
+      // Its first hit on the light: w is a unit vector and ref is outside the light (c > 0),
+      // so t^2 + 2 b t + c = 0 has two roots of one sign, positive when w heads towards the
+      // centre (b < 0); the nearer one as c / (-b + sqrt(b^2 - c)), free of cancellation.
+      // (One square root and one division, where the general ray-sphere test takes two and
+      // three: this runs for every shadow ray to a sphere light.)
+      const double b = glm::dot(p.centreOffset, w);
+      const double discriminant = b * b - p.c;
+      if (!(b < 0.0) || !(discriminant >= 0.0))
+        return std::nullopt;  // a cap's cone is
+                              // wider than the cap
+      const double t = p.c / (std::sqrt(discriminant) - b);
+      const Vec3 radial = p.centreOffset + t * w;
+      ls.n = radial * (1.0 / glm::length(radial));
       // Drop points that a separating sphere hides from ref.
       if (!visibleSide(p, ref, ls.n)) return std::nullopt;
       ls.p = m_centre + m_radius * ls.n;
       const Vec3 d = ls.p - ref;
       ls.distance = glm::length(d);
-      ls.wi = d / ls.distance;
+      ls.wi = d * (1.0 / ls.distance);
       if (!(-glm::dot(ls.n, ls.wi) > 0.0)) return std::nullopt;
       ls.pdf = uniformConePdf(p.cosThetaMax);
       break;

@@ -76,6 +76,8 @@ class SphereLightSampler {
     enum class Mode { Invisible, Area, Cone } mode = Mode::Invisible;
     Vec3 axis{0.0};            ///< Cone: unit axis from ref.
     double cosThetaMax = 0.0;  ///< Cone: cosine of its half-angle.
+    Vec3 centreOffset{0.0};    ///< Cone: ref minus the light's centre.
+    double c = 0.0;            ///< Cone: |centreOffset|^2 - radius^2 (> 0: ref is outside).
     /// Bit i: ref is inside separator i (for the first 64 separators; visibleSide
     /// recomputes the rest).
     std::uint64_t inside = 0;

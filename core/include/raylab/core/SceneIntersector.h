@@ -113,6 +113,7 @@ class SceneIntersector {
   std::vector<double> m_roundX, m_roundY, m_roundZ, m_roundR;
   std::vector<int> m_roundSlot;  ///< Per entry: its index in the columns, or -1.
   int m_roundCount = 0;
+  bool m_allRound = false;  ///< Every object is a static round sphere (slot k = object k).
 
   /// For every static round sphere k, the t that Sphere::nearestRoot(ray) gives, or NaN
   /// when it gives none, into out[k] (m_roundCount values; out has room for the padded

@@ -81,7 +81,7 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
                              : 1.0;
         const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
         if (isUsable(weight) && isUsable(ls->Le))
-          children.push_back(shading::shadowRay(context, ls->p, weight, ls->Le, true));
+          children.push_back(shading::shadowRayToSample(context, ref, *ls, weight));
       }
     }
     for (const PointLight& light : context.intersector.scene().pointLights) {
