@@ -98,7 +98,8 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     const bool blocked = intersector.occluded(ray.ray);
     end = blocked ? EndReason::Occluded : EndReason::ReachedLight;
     if (!blocked) emitted = ray.shadowLe;
-  } else if (!(hit = intersector.intersect(ray.ray))) {
+  } else if (!intersector.intersect(ray.ray, hit.emplace())) {
+    hit.reset();
     // 2b. Nothing in the way: the ray leaves the scene.
     end = EndReason::Escaped;
     emitted = tracer.rule().onEscape(ray, tracer.settings());
