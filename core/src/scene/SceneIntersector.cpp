@@ -422,28 +422,36 @@ bool SceneIntersector::occludedEntry(const Entry& e, const Ray& ray) const {
 
 std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight,
                                                          double uPick, double time) const {
-  if (m_lights.empty()) return std::nullopt;
+  std::optional<LightSample> ls(std::in_place);
+  if (!sampleLight(ref, uLight, uPick, time, *ls)) ls.reset();
+  return ls;
+}
+
+bool SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight, double uPick, double time,
+                                   LightSample& ls) const {
+  if (m_lights.empty()) return false;
   // Pick a light by power: the first CDF entry above uPick.
   const auto it = std::upper_bound(m_lightCdf.begin(), m_lightCdf.end(), uPick);
   const std::size_t k =
       std::min<std::size_t>(static_cast<std::size_t>(it - m_lightCdf.begin()), m_lights.size() - 1);
   const double pick = m_lightCdf[k] - (k == 0 ? 0.0 : m_lightCdf[k - 1]);
-  std::optional<LightSample> ls = sampleLightAt(k, ref, uLight, time);
-  if (!ls) return std::nullopt;
-  ls->pdf *= pick;
-  if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
-  return ls;
+  if (!sampleLightAt(k, ref, uLight, time, ls)) return false;
+  ls.pdf *= pick;
+  return ls.pdf > 0.0 && std::isfinite(ls.pdf);
 }
 
 std::optional<LightSample> SceneIntersector::sampleLightObject(int object, const Point3& ref,
                                                                const Vec2& u, double time) const {
   const auto it = std::lower_bound(m_lights.begin(), m_lights.end(), object);
   if (it == m_lights.end() || *it != object) return std::nullopt;
-  return sampleLightAt(static_cast<std::size_t>(it - m_lights.begin()), ref, u, time);
+  std::optional<LightSample> ls(std::in_place);
+  if (!sampleLightAt(static_cast<std::size_t>(it - m_lights.begin()), ref, u, time, *ls))
+    ls.reset();
+  return ls;
 }
 
-std::optional<LightSample> SceneIntersector::sampleLightAt(std::size_t k, const Point3& ref,
-                                                           const Vec2& uLight, double time) const {
+bool SceneIntersector::sampleLightAt(std::size_t k, const Point3& ref, const Vec2& uLight,
+                                     double time, LightSample& ls) const {
   const int index = m_lights[k];
   const SceneObject& object = m_scene->objects[static_cast<std::size_t>(index)];
 
@@ -451,33 +459,29 @@ std::optional<LightSample> SceneIntersector::sampleLightAt(std::size_t k, const 
   // displaced the other way.
   const Vec3 shift = object.displacementAt(time);
   const Point3 localRef = ref - shift;
-  std::optional<LightSample> ls;
   if (m_sphereLights[k]) {
     // A round sphere: by solid angle, on the part of it ref can see.
-    ls = m_sphereLights[k]->sample(localRef, uLight);
-    if (!ls) return std::nullopt;
+    if (!m_sphereLights[k]->sample(localRef, uLight, ls)) return false;
   } else {
     // A point on its surface, uniform in area.
     const ShapeSample s = object.shape->sampleArea(uLight);
     const Vec3 toLight = s.p - localRef;
     const double distance2 = glm::dot(toLight, toLight);
-    if (!(distance2 > 0.0)) return std::nullopt;
-    ls.emplace();
-    ls->distance = std::sqrt(distance2);
-    ls->wi = toLight / ls->distance;
+    if (!(distance2 > 0.0)) return false;
+    ls.distance = std::sqrt(distance2);
+    ls.wi = toLight / ls.distance;
     // Only the front side emits: the outward normal must face the reference point.
-    const double cosLight = -glm::dot(s.n, ls->wi);
-    if (!(cosLight > 0.0)) return std::nullopt;
+    const double cosLight = -glm::dot(s.n, ls.wi);
+    if (!(cosLight > 0.0)) return false;
     // Convert the area density to solid angle at ref: d omega = cos_light dA / d^2.
-    ls->p = s.p;
-    ls->n = s.n;
-    ls->pdf = s.pdfArea * distance2 / cosLight;
+    ls.p = s.p;
+    ls.n = s.n;
+    ls.pdf = s.pdfArea * distance2 / cosLight;
   }
-  ls->object = index;
-  ls->p += shift;
-  ls->Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
-  if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
-  return ls;
+  ls.object = index;
+  ls.p += shift;
+  ls.Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
+  return ls.pdf > 0.0 && std::isfinite(ls.pdf);
 }
 
 double SceneIntersector::lightPdf(const Point3& ref, int object, const SurfaceInteraction& hit,

@@ -44,9 +44,10 @@ class SphereLightSampler {
   SphereLightSampler(const Scene& scene, int object);
 
   /// A light point seen from `ref` for u in [0,1)^2, with its solid-angle pdf (without
-  /// the light's pick probability); Le is left 0. Nothing when the sample falls outside
-  /// the visible part of the light or the light cannot be seen from ref at all.
-  std::optional<LightSample> sample(const Point3& ref, const Vec2& u) const;
+  /// the light's pick probability), into `ls` (p, n, wi, distance, pdf; the rest is left
+  /// as it was). False when the sample falls outside the visible part of the light or the
+  /// light cannot be seen from ref at all (`ls` is then partly written).
+  bool sample(const Point3& ref, const Vec2& u, LightSample& ls) const;
   /// Solid-angle density with which sample() returns the light point `p` with outward
   /// normal `n` from `ref` (0 where sample() never goes: back side, separated caps).
   double pdf(const Point3& ref, const Point3& p, const Normal3& n) const;

@@ -68,6 +68,9 @@ class SceneIntersector {
   /// part of the light that `ref` cannot see (see the class comment).
   std::optional<LightSample> sampleLight(const Point3& ref, const Vec2& uLight, double uPick,
                                          double time = 0.0) const;
+  /// The same into `ls` (partly written when there is none): false when there is none.
+  bool sampleLight(const Point3& ref, const Vec2& uLight, double uPick, double time,
+                   LightSample& ls) const;
   /// Samples a point on the area light `object` (one of areaLights()) the way sampleLight
   /// does once it has picked that light: the pdf is this light's alone, without the pick
   /// probability. For algorithms that sample every light in turn (distributed tracing).
@@ -90,8 +93,8 @@ class SceneIntersector {
 
  private:
   /// sampleLightObject for light k of m_lights.
-  std::optional<LightSample> sampleLightAt(std::size_t k, const Point3& ref, const Vec2& u,
-                                           double time) const;
+  bool sampleLightAt(std::size_t k, const Point3& ref, const Vec2& u, double time,
+                     LightSample& ls) const;
 
   /// What the inner loops need of an object, gathered once.
   struct Entry {
