@@ -69,6 +69,22 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
     }
     m_separators.push_back(sep);
   }
+  // The first 64 separators as columns and bit masks, for plan()'s loop without branches.
+  for (std::size_t i = 0; i < std::min<std::size_t>(m_separators.size(), 64); ++i) {
+    const Separator& sep = m_separators[i];
+    m_sepX.push_back(sep.centre.x);
+    m_sepY.push_back(sep.centre.y);
+    m_sepZ.push_back(sep.centre.z);
+    m_sepRadius2.push_back(sep.radius2);
+    const std::uint64_t bit = std::uint64_t(1) << i;
+    if (sep.relation == Separator::Relation::Disjoint) m_disjoint |= bit;
+    if (sep.relation == Separator::Relation::Encloses) m_encloses |= bit;
+    if (sep.relation == Separator::Relation::Cuts) {
+      m_cuts.push_back(int(i));
+      if (sep.capRadius2[0] >= 0.0) m_capOutside |= bit;
+      if (sep.capRadius2[1] >= 0.0) m_capInside |= bit;
+    }
+  }
 }
 
 SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
@@ -96,7 +112,26 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
       bestDistance2 = distance2;
     }
   };
-  for (std::size_t i = 0; i < m_separators.size(); ++i) {
+  if (m_separators.size() <= 64) {
+    // Which separators ref is inside (isInside's operations), then the verdicts as masks,
+    // and the caps' balls on ref's side considered in the same order as the loop below.
+    std::uint64_t inside = 0;
+    for (std::size_t i = 0; i < m_sepX.size(); ++i) {
+      const double fx = ref.x - m_sepX[i], fy = ref.y - m_sepY[i], fz = ref.z - m_sepZ[i];
+      inside |= std::uint64_t(fx * fx + fy * fy + fz * fz < m_sepRadius2[i]) << i;
+    }
+    if ((inside & m_disjoint) != 0 || (~inside & m_encloses) != 0) return Plan{};
+    best.inside = inside;
+    for (std::uint64_t caps = (inside & m_capInside) | (~inside & m_capOutside); caps != 0;
+         caps &= caps - 1) {
+      const int i = __builtin_ctzll(caps);
+      const Separator& s = m_separators[std::size_t(i)];
+      const int side = int((inside >> i) & 1);
+      consider(s.capCentre[side], s.capRadius2[side]);
+    }
+  }
+  for (std::size_t i = m_separators.size() <= 64 ? m_separators.size() : 0; i < m_separators.size();
+       ++i) {
     const Separator& s = m_separators[i];
     const bool inside = isInside(s, ref);
     if (inside && i < 64) best.inside |= std::uint64_t(1) << i;
@@ -124,6 +159,15 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
 }
 
 bool SphereLightSampler::visibleSide(const Plan& plan, const Point3& ref, const Normal3& n) const {
+  if (m_separators.size() <= 64) {
+    for (const int i : m_cuts) {
+      const Separator& s = m_separators[std::size_t(i)];
+      const bool inside = (plan.inside >> i) & 1;
+      const double side = glm::dot(n, s.axis) - s.cosAlpha;
+      if (inside ? side < 0.0 : side > 0.0) return false;
+    }
+    return true;
+  }
   for (std::size_t i = 0; i < m_separators.size(); ++i) {
     const Separator& s = m_separators[i];
     if (s.relation != Separator::Relation::Cuts) continue;
