@@ -84,9 +84,9 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
                 RayCounts* counts, TreeRecorder* recorder, RayCap* cap) {
   const SceneIntersector& intersector = tracer.intersector();
 
-  // 1. Take the first ray of the queue.
-  const QueuedRay ray = queue.front();
-  queue.pop_front();
+  // 1. Take the first ray of the queue (by reference: it leaves the queue at the end of
+  // the step, before its children join it).
+  const QueuedRay& ray = queue.front();
   if (counts) ++counts->byKind[std::size_t(ray.kind)];
 
   Vec3 emitted(0.0);
@@ -149,6 +149,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     }
   }
   if (recorder) recorder->recordStep(ray, hit, end, emitted, children);
+  queue.pop_front();  // `ray` is gone from here on
   for (const QueuedRay& child : children) queue.push_back(child);
 }
 
