@@ -96,6 +96,25 @@ QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3&
   return child;
 }
 
+QueuedRay shadowRayToSample(const HitContext& context, const Point3& ref, const LightSample& ls,
+                            const Vec3& weight) {
+  const SurfaceInteraction& si = context.hit.si;
+  // offsetRayOrigin(si, w) depends on w only through the side of the surface w points to.
+  const bool sameOrigin = context.settings.rayOffset &&
+                          (glm::dot(si.n, ls.p - si.p) < 0.0) == !si.frontFace && ls.distance > 0.0;
+  const Vec3& velocity = context.intersector.scene().objects[std::size_t(ls.object)].velocity;
+  if (!sameOrigin || velocity != Vec3(0.0)) return shadowRay(context, ls.p, weight, ls.Le, true);
+  QueuedRay child;
+  const double tMax =
+      std::max(0.0, ls.distance * (1.0 - kShadowShortening) - rayOffsetDistance(ls.p));
+  child.ray = Ray{ref, ls.wi, 0.0, tMax, context.ray.ray.time};
+  child.kind = RayKind::Shadow;
+  child.depth = context.ray.depth + 1;
+  child.weight = weight;
+  child.shadowLe = ls.Le;
+  return child;
+}
+
 void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
   const SurfaceInteraction& si = context.hit.si;
   for (const PointLight& light : context.intersector.scene().pointLights) {

@@ -56,6 +56,13 @@ Vec3 emitterSeen(const HitContext& context);
 QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
                     const Vec3& Le, bool targetIsSurface);
 
+/// shadowRay(context, ls.p, weight, ls.Le, true) for a light point sampled from `ref`, the
+/// hit's offset origin on its facing side (offsetRayOrigin(si, si.facingNormal())): when
+/// the shadow ray leaves from that same origin and the light does not move, the sample's
+/// direction and distance are the ray's, and are not computed again.
+QueuedRay shadowRayToSample(const HitContext& context, const Point3& ref, const LightSample& ls,
+                            const Vec3& weight);
+
 /// Appends one shadow ray per point light that lies above the surface: weight
 /// f cos (classicShading; bsdf::eval for rough materials), delivering intensity / d^2 (for
 /// Phong and BlinnPhong intensity times classic::distanceAttenuation of their attenuation).

@@ -80,25 +80,27 @@ struct RayCap {
  */
 template <typename Queue>
 void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
-                std::vector<QueuedRay>& children, Vec3& estimate, RayCounts* counts,
-                TreeRecorder* recorder, RayCap* cap) {
+                std::vector<QueuedRay>& children, SceneHit& found, Vec3& estimate,
+                RayCounts* counts, TreeRecorder* recorder, RayCap* cap) {
   const SceneIntersector& intersector = tracer.intersector();
 
-  // 1. Take the first ray of the queue.
-  const QueuedRay ray = queue.front();
-  queue.pop_front();
+  // 1. Take the first ray of the queue (by reference: it leaves the queue at the end of
+  // the step, before its children join it).
+  const QueuedRay& ray = queue.front();
   if (counts) ++counts->byKind[std::size_t(ray.kind)];
 
   Vec3 emitted(0.0);
   EndReason end = EndReason::Pending;
-  std::optional<SceneHit> hit;
+  // The hit, written in place into the caller's `found` (SceneHit is large: an optional of
+  // it was zero-filled on every step); `hit` points to it when the ray hit something.
+  const SceneHit* hit = nullptr;
   children.clear();
   if (ray.kind == RayKind::Shadow) {
     // 2a. A shadow ray only asks whether anything blocks its way to the light.
     const bool blocked = intersector.occluded(ray.ray);
     end = blocked ? EndReason::Occluded : EndReason::ReachedLight;
     if (!blocked) emitted = ray.shadowLe;
-  } else if (!(hit = intersector.intersect(ray.ray))) {
+  } else if (!(hit = intersector.intersect(ray.ray, found) ? &found : nullptr)) {
     // 2b. Nothing in the way: the ray leaves the scene.
     end = EndReason::Escaped;
     emitted = tracer.rule().onEscape(ray, tracer.settings());
@@ -147,6 +149,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     }
   }
   if (recorder) recorder->recordStep(ray, hit, end, emitted, children);
+  queue.pop_front();  // `ray` is gone from here on
   for (const QueuedRay& child : children) queue.push_back(child);
 }
 
@@ -190,8 +193,9 @@ Vec3 Tracer::trace(int x, int y, int sample, RayCounts* counts, bool* capped,
   cap.limit = rayCap;
   if (rayCap >= 1) queue.push_back(cameraRay(*this, x, y, sampler));
   Vec3 estimate(0.0);
+  SceneHit found;
   while (!queue.empty())
-    engineStep(*this, queue, sampler, children, estimate, counts, nullptr, &cap);
+    engineStep(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
   if (capped) *capped = cap.reached;
   return estimate;
 }
@@ -233,7 +237,9 @@ void Stepper::reset() {
 bool Stepper::step() {
   if (m_queue.empty()) return false;
   TreeRecorder recorder(*m_tracer, m_tree, m_event, m_budget);
-  engineStep(*m_tracer, m_queue, m_sampler, m_children, m_estimate, &m_counts, &recorder, nullptr);
+  SceneHit found;
+  engineStep(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts, &recorder,
+             nullptr);
   // Once the queue is empty every ray has ended: propagate energy up the tree.
   if (m_queue.empty()) m_tree.propagate();
   return true;

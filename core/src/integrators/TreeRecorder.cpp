@@ -79,9 +79,8 @@ void TreeRecorder::setFarEnd(RaySegment& seg, const QueuedRay& ray, EndReason en
   }
 }
 
-void TreeRecorder::recordStep(const QueuedRay& ray, const std::optional<SceneHit>& hit,
-                              EndReason end, const Vec3& emitted,
-                              std::vector<QueuedRay>& children) {
+void TreeRecorder::recordStep(const QueuedRay& ray, const SceneHit* hit, EndReason end,
+                              const Vec3& emitted, std::vector<QueuedRay>& children) {
   // Number the children: consecutive ids after everything recorded so far. Children that
   // do not fit in the budget are not traced at all: the ray ends Stopped.
   const std::size_t wanted = children.size();

@@ -30,8 +30,8 @@ class TreeRecorder {
   /// Records how `ray` ended (hit, end reason, what it found) and numbers its `children`
   /// (ids, parent links and their segments), before the engine queues them; tells the
   /// step in the event's sentence.
-  void recordStep(const QueuedRay& ray, const std::optional<SceneHit>& hit, EndReason end,
-                  const Vec3& emitted, std::vector<QueuedRay>& children);
+  void recordStep(const QueuedRay& ray, const SceneHit* hit, EndReason end, const Vec3& emitted,
+                  std::vector<QueuedRay>& children);
 
  private:
   /// Ids for `count` new segments, or -1 when they would exceed the budget (recording

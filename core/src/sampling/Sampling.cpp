@@ -5,16 +5,6 @@
 
 namespace raylab {
 
-Frame::Frame(const Normal3& normal) : n(normal) {
-  // Duff et al., "Building an Orthonormal Basis, Revisited" (JCGT 2017): branch-free
-  // except for the sign of n.z, and continuous everywhere else.
-  const double sign = std::copysign(1.0, n.z);
-  const double a = -1.0 / (sign + n.z);
-  const double b = n.x * n.y * a;
-  s = Vec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-  t = Vec3(b, sign + n.y * n.y * a, -n.y);
-}
-
 Vec2 sampleUniformDisk(const Vec2& u) {
   // Map u to [-1, 1]^2, then squares to circles (concentric mapping): the larger
   // coordinate becomes the radius, the ratio of the two the angle within an octant.

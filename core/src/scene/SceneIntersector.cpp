@@ -8,7 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <new>
+#include <type_traits>
 
 // Spheres four or two at a time on x86-64 (SSE2 always there, AVX when the processor has
 // it); elsewhere one at a time.
@@ -66,17 +70,36 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
       }
     }
     m_roundSlot.push_back(e.round ? m_roundCount++ : -1);
-    if (e.round) {
-      m_roundX.push_back(e.round->centre().x);
-      m_roundY.push_back(e.round->centre().y);
-      m_roundZ.push_back(e.round->centre().z);
-      m_roundR.push_back(e.round->radius());
-    }
     m_entries.push_back(e);
+  }
+  m_allRound = m_roundCount == int(m_entries.size());
+  // The columns: the round spheres by decreasing radius (stable), so that small spheres,
+  // which most rays miss, share the last groups of lanes, which roundRoots skips when a
+  // cheap test proves every lane of the group a miss. Padded to a multiple of 4 with
+  // spheres of radius 0 that the test counts as missed.
+  std::vector<int> byRadius;
+  for (std::size_t i = 0; i < m_entries.size(); ++i)
+    if (m_entries[i].round) byRadius.push_back(int(i));
+  std::stable_sort(byRadius.begin(), byRadius.end(), [this](int a, int b) {
+    return m_entries[std::size_t(a)].round->radius() > m_entries[std::size_t(b)].round->radius();
+  });
+  for (const int i : byRadius) {
+    const Sphere& sphere = *m_entries[std::size_t(i)].round;
+    m_roundSlot[std::size_t(i)] = int(m_roundObject.size());
+    m_roundObject.push_back(i);
+    m_roundX.push_back(sphere.centre().x);
+    m_roundY.push_back(sphere.centre().y);
+    m_roundZ.push_back(sphere.centre().z);
+    m_roundR.push_back(sphere.radius());
+    m_roundPad.push_back(0.0);
   }
   while (m_roundX.size() % 4 != 0) {
     for (std::vector<double>* column : {&m_roundX, &m_roundY, &m_roundZ, &m_roundR})
       column->push_back(0.0);
+    double allBits;
+    const std::uint64_t ones = ~std::uint64_t(0);
+    std::memcpy(&allBits, &ones, sizeof allBits);
+    m_roundPad.push_back(allBits);
   }
 
   // Every object with an emissive material is an area light; it is picked with
@@ -109,13 +132,23 @@ SceneIntersector::SceneIntersector(const Scene& scene, const RenderSettings& set
 #if RAYLAB_SPHERES_SIMD
 namespace {
 
+// The cheap miss test before the roots. With f = origin - centre, a = |d|^2, b = f . d:
+// the line misses the sphere when a |f|^2 - b^2 - a r^2 = a (l^2 - r^2) > 0 (l: its distance
+// from the centre). Computed naively this has an error of a few ulps of S = a |f|^2 + b^2 +
+// a r^2, and Sphere::roots' l^2 one of some ulps of |f|^2 <= S; a lane counts as missed only
+// when the naive value exceeds kMissFilter * S, a thousand times both errors: then the
+// exact test finds l > r, a negative discriminant, no root. Multiplications only, where
+// the roots take two divisions and two square roots per lane, and a group of lanes all
+// missed (the small spheres, columns sorted by radius) is not computed at all.
+constexpr double kMissFilter = 1e-12;
+
 // Sphere::roots for spheres (xs, ys, zs, rr)[0, count) (the columns padded to a multiple of
 // 4), k lanes at a time: every step is one IEEE operation, none fused, as the scalar code
 // compiles to without -mfma, so the bits are Sphere::nearestRoot's. A miss is a mask; the
 // steps after it run on whatever they get (a square root of a negative is NaN, a division
 // by 0 infinite) and are dropped. out[k]: the root nearestRoot gives, or NaN.
 void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const double* zs,
-                    const double* rr, int count, double* out) {
+                    const double* rr, const double* pad, int count, double* out) {
   const __m128d signBit = _mm_set1_pd(-0.0);
   const __m128d zero = _mm_setzero_pd();
   const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
@@ -126,6 +159,7 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
   const __m128d a = _mm_set1_pd(glm::dot(d, d));
   const __m128d tMin = _mm_set1_pd(ray.tMin), tMax = _mm_set1_pd(ray.tMax);
   const __m128d slack = _mm_set1_pd(1.0 + 1e-9);
+  const __m128d filter = _mm_set1_pd(kMissFilter);
   const auto dot = [](__m128d x0, __m128d y0, __m128d z0, __m128d x1, __m128d y1, __m128d z1) {
     return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, x1), _mm_mul_pd(y0, y1)), _mm_mul_pd(z0, z1));
   };
@@ -138,18 +172,29 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
     const __m128d fy = _mm_sub_pd(oy, _mm_loadu_pd(&ys[std::size_t(k)]));
     const __m128d fz = _mm_sub_pd(oz, _mm_loadu_pd(&zs[std::size_t(k)]));
     const __m128d halfB = dot(fx, fy, fz, dx, dy, dz);
+    const __m128d ff = dot(fx, fy, fz, fx, fy, fz);
+    const __m128d radius2 = _mm_mul_pd(radius, radius);
+    // The cheap test (kMissFilter): both lanes missed or padding, then no root to compute.
+    const __m128d ffa = _mm_mul_pd(ff, a), hb2 = _mm_mul_pd(halfB, halfB);
+    const __m128d r2a = _mm_mul_pd(radius2, a);
+    const __m128d gap = _mm_sub_pd(_mm_sub_pd(ffa, hb2), r2a);
+    const __m128d bound = _mm_mul_pd(filter, _mm_add_pd(_mm_add_pd(ffa, hb2), r2a));
+    const __m128d sure = _mm_or_pd(_mm_cmpgt_pd(gap, bound), _mm_loadu_pd(&pad[std::size_t(k)]));
+    if (_mm_movemask_pd(sure) == 0x3) {
+      _mm_storeu_pd(out + k, nan);
+      continue;
+    }
     const __m128d along = _mm_div_pd(halfB, a);
     const __m128d lx = _mm_sub_pd(fx, _mm_mul_pd(along, dx));
     const __m128d ly = _mm_sub_pd(fy, _mm_mul_pd(along, dy));
     const __m128d lz = _mm_sub_pd(fz, _mm_mul_pd(along, dz));
     const __m128d lineDistance2 = dot(lx, ly, lz, lx, ly, lz);
-    const __m128d radius2 = _mm_mul_pd(radius, radius);
     const __m128d far = _mm_cmpgt_pd(lineDistance2, _mm_mul_pd(radius2, slack));
     const __m128d lineDistance = _mm_sqrt_pd(lineDistance2);
     const __m128d discriminant = _mm_mul_pd(_mm_mul_pd(a, _mm_sub_pd(radius, lineDistance)),
                                             _mm_add_pd(radius, lineDistance));
     const __m128d miss = _mm_or_pd(far, _mm_cmplt_pd(discriminant, zero));
-    const __m128d c = _mm_sub_pd(dot(fx, fy, fz, fx, fy, fz), radius2);
+    const __m128d c = _mm_sub_pd(ff, radius2);
     const __m128d root = _mm_sqrt_pd(discriminant);
     const __m128d signedRoot = _mm_or_pd(_mm_andnot_pd(signBit, root), _mm_and_pd(signBit, halfB));
     const __m128d q = _mm_xor_pd(_mm_add_pd(halfB, signedRoot), signBit);
@@ -178,7 +223,8 @@ __attribute__((target("avx"))) inline __m256d select4(__m256d mask, __m256d yes,
 
 __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* xs,
                                                   const double* ys, const double* zs,
-                                                  const double* rr, int count, double* out) {
+                                                  const double* rr, const double* pad, int count,
+                                                  double* out) {
   // roundRootsSse2's steps, four lanes wide (target "avx" enables no FMA either).
   const __m256d signBit = _mm256_set1_pd(-0.0);
   const __m256d zero = _mm256_setzero_pd();
@@ -190,24 +236,36 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
   const __m256d a = _mm256_set1_pd(glm::dot(d, d));
   const __m256d tMin = _mm256_set1_pd(ray.tMin), tMax = _mm256_set1_pd(ray.tMax);
   const __m256d slack = _mm256_set1_pd(1.0 + 1e-9);
+  const __m256d filter = _mm256_set1_pd(kMissFilter);
   for (int k = 0; k < count; k += 4) {
     const __m256d radius = _mm256_loadu_pd(&rr[std::size_t(k)]);
     const __m256d fx = _mm256_sub_pd(ox, _mm256_loadu_pd(&xs[std::size_t(k)]));
     const __m256d fy = _mm256_sub_pd(oy, _mm256_loadu_pd(&ys[std::size_t(k)]));
     const __m256d fz = _mm256_sub_pd(oz, _mm256_loadu_pd(&zs[std::size_t(k)]));
     const __m256d halfB = dot4(fx, fy, fz, dx, dy, dz);
+    const __m256d ff = dot4(fx, fy, fz, fx, fy, fz);
+    const __m256d radius2 = _mm256_mul_pd(radius, radius);
+    const __m256d ffa = _mm256_mul_pd(ff, a), hb2 = _mm256_mul_pd(halfB, halfB);
+    const __m256d r2a = _mm256_mul_pd(radius2, a);
+    const __m256d gap = _mm256_sub_pd(_mm256_sub_pd(ffa, hb2), r2a);
+    const __m256d bound = _mm256_mul_pd(filter, _mm256_add_pd(_mm256_add_pd(ffa, hb2), r2a));
+    const __m256d sure =
+        _mm256_or_pd(_mm256_cmp_pd(gap, bound, _CMP_GT_OQ), _mm256_loadu_pd(&pad[std::size_t(k)]));
+    if (_mm256_movemask_pd(sure) == 0xf) {
+      _mm256_storeu_pd(out + k, nan);
+      continue;
+    }
     const __m256d along = _mm256_div_pd(halfB, a);
     const __m256d lx = _mm256_sub_pd(fx, _mm256_mul_pd(along, dx));
     const __m256d ly = _mm256_sub_pd(fy, _mm256_mul_pd(along, dy));
     const __m256d lz = _mm256_sub_pd(fz, _mm256_mul_pd(along, dz));
     const __m256d lineDistance2 = dot4(lx, ly, lz, lx, ly, lz);
-    const __m256d radius2 = _mm256_mul_pd(radius, radius);
     const __m256d far = _mm256_cmp_pd(lineDistance2, _mm256_mul_pd(radius2, slack), _CMP_GT_OQ);
     const __m256d lineDistance = _mm256_sqrt_pd(lineDistance2);
     const __m256d discriminant = _mm256_mul_pd(
         _mm256_mul_pd(a, _mm256_sub_pd(radius, lineDistance)), _mm256_add_pd(radius, lineDistance));
     const __m256d miss = _mm256_or_pd(far, _mm256_cmp_pd(discriminant, zero, _CMP_LT_OQ));
-    const __m256d c = _mm256_sub_pd(dot4(fx, fy, fz, fx, fy, fz), radius2);
+    const __m256d c = _mm256_sub_pd(ff, radius2);
     const __m256d root = _mm256_sqrt_pd(discriminant);
     const __m256d signedRoot =
         _mm256_or_pd(_mm256_andnot_pd(signBit, root), _mm256_and_pd(signBit, halfB));
@@ -238,7 +296,8 @@ bool useAvx() {
 bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
 #if RAYLAB_SPHERES_SIMD
   const auto roots = useAvx() ? roundRootsAvx : roundRootsSse2;
-  roots(ray, m_roundX.data(), m_roundY.data(), m_roundZ.data(), m_roundR.data(), m_roundCount, out);
+  roots(ray, m_roundX.data(), m_roundY.data(), m_roundZ.data(), m_roundR.data(), m_roundPad.data(),
+        m_roundCount, out);
   return true;
 #else
   (void)ray;
@@ -248,6 +307,12 @@ bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
 }
 
 std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
+  std::optional<SceneHit> out(std::in_place);
+  if (!intersect(ray, *out)) out.reset();
+  return out;
+}
+
+bool SceneIntersector::intersect(const Ray& ray, SceneHit& out) const {
   // Nearest hit over all objects: each accepted hit shortens the ray, so later objects
   // only report closer hits.
   Ray r = ray;
@@ -261,6 +326,23 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
   double roots[kStackSpheres];
   const bool precomputed =
       m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, roots);
+  if (precomputed && m_allRound) {
+    // Every object a static round sphere (smallpt). The same choice as the loop below,
+    // without its branches: the last (in object order) of the smallest roots within tMax.
+    double best = ray.tMax;
+    for (int k = 0; k < m_roundCount; ++k) best = roots[k] < best ? roots[k] : best;  // NaN: no
+    // Among the spheres at that distance (ties are rare: duplicates), the last object.
+    for (int k = 0; k < m_roundCount; ++k)
+      nearest = std::max(nearest, roots[k] == best ? m_roundObject[std::size_t(k)] : -1);
+    if (nearest < 0) return false;
+    out.object = nearest;
+    // Constructed in place from the returned value (C++17 elides the copy): SurfaceInteraction
+    // is trivially destructible, and copying 150 bytes through the stack cost 2% of a sample.
+    static_assert(std::is_trivially_destructible_v<SurfaceInteraction>);
+    new (&out.si) SurfaceInteraction(
+        m_entries[std::size_t(nearest)].round->geometryAt(ray, Hit{best, 0, {}}));
+    return true;
+  }
   for (std::size_t i = 0; i < m_entries.size(); ++i) {
     const Entry& e = m_entries[i];
     if (e.round) {
@@ -286,12 +368,11 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
       r.tMax = hit->t;
     }
   }
-  if (nearest < 0) return std::nullopt;
+  if (nearest < 0) return false;
 
   // Surface geometry of the nearest hit only, moved back to where the object is at the
   // ray's time. A sphere's uv is left out: nothing in the engine reads it (Sphere::uvAt).
   const Entry& e = m_entries[static_cast<std::size_t>(nearest)];
-  SceneHit out;
   out.object = nearest;
   const Ray objectRay = e.moving ? toObjectFrame(ray, e.velocity) : ray;
   out.si = e.sphere ? e.sphere->geometryAt(objectRay, nearestHit)
@@ -302,7 +383,7 @@ std::optional<SceneHit> SceneIntersector::intersect(const Ray& ray) const {
     out.si.pError += roundingGamma(2) * (glm::abs(out.si.p) + glm::abs(shift));
     out.si.p += shift;
   }
-  return out;
+  return true;
 }
 
 bool SceneIntersector::occluded(const Ray& ray) const {
@@ -343,28 +424,36 @@ bool SceneIntersector::occludedEntry(const Entry& e, const Ray& ray) const {
 
 std::optional<LightSample> SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight,
                                                          double uPick, double time) const {
-  if (m_lights.empty()) return std::nullopt;
+  std::optional<LightSample> ls(std::in_place);
+  if (!sampleLight(ref, uLight, uPick, time, *ls)) ls.reset();
+  return ls;
+}
+
+bool SceneIntersector::sampleLight(const Point3& ref, const Vec2& uLight, double uPick, double time,
+                                   LightSample& ls) const {
+  if (m_lights.empty()) return false;
   // Pick a light by power: the first CDF entry above uPick.
   const auto it = std::upper_bound(m_lightCdf.begin(), m_lightCdf.end(), uPick);
   const std::size_t k =
       std::min<std::size_t>(static_cast<std::size_t>(it - m_lightCdf.begin()), m_lights.size() - 1);
   const double pick = m_lightCdf[k] - (k == 0 ? 0.0 : m_lightCdf[k - 1]);
-  std::optional<LightSample> ls = sampleLightAt(k, ref, uLight, time);
-  if (!ls) return std::nullopt;
-  ls->pdf *= pick;
-  if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
-  return ls;
+  if (!sampleLightAt(k, ref, uLight, time, ls)) return false;
+  ls.pdf *= pick;
+  return ls.pdf > 0.0 && std::isfinite(ls.pdf);
 }
 
 std::optional<LightSample> SceneIntersector::sampleLightObject(int object, const Point3& ref,
                                                                const Vec2& u, double time) const {
   const auto it = std::lower_bound(m_lights.begin(), m_lights.end(), object);
   if (it == m_lights.end() || *it != object) return std::nullopt;
-  return sampleLightAt(static_cast<std::size_t>(it - m_lights.begin()), ref, u, time);
+  std::optional<LightSample> ls(std::in_place);
+  if (!sampleLightAt(static_cast<std::size_t>(it - m_lights.begin()), ref, u, time, *ls))
+    ls.reset();
+  return ls;
 }
 
-std::optional<LightSample> SceneIntersector::sampleLightAt(std::size_t k, const Point3& ref,
-                                                           const Vec2& uLight, double time) const {
+bool SceneIntersector::sampleLightAt(std::size_t k, const Point3& ref, const Vec2& uLight,
+                                     double time, LightSample& ls) const {
   const int index = m_lights[k];
   const SceneObject& object = m_scene->objects[static_cast<std::size_t>(index)];
 
@@ -372,33 +461,29 @@ std::optional<LightSample> SceneIntersector::sampleLightAt(std::size_t k, const 
   // displaced the other way.
   const Vec3 shift = object.displacementAt(time);
   const Point3 localRef = ref - shift;
-  std::optional<LightSample> ls;
   if (m_sphereLights[k]) {
     // A round sphere: by solid angle, on the part of it ref can see.
-    ls = m_sphereLights[k]->sample(localRef, uLight);
-    if (!ls) return std::nullopt;
+    if (!m_sphereLights[k]->sample(localRef, uLight, ls)) return false;
   } else {
     // A point on its surface, uniform in area.
     const ShapeSample s = object.shape->sampleArea(uLight);
     const Vec3 toLight = s.p - localRef;
     const double distance2 = glm::dot(toLight, toLight);
-    if (!(distance2 > 0.0)) return std::nullopt;
-    ls.emplace();
-    ls->distance = std::sqrt(distance2);
-    ls->wi = toLight / ls->distance;
+    if (!(distance2 > 0.0)) return false;
+    ls.distance = std::sqrt(distance2);
+    ls.wi = toLight / ls.distance;
     // Only the front side emits: the outward normal must face the reference point.
-    const double cosLight = -glm::dot(s.n, ls->wi);
-    if (!(cosLight > 0.0)) return std::nullopt;
+    const double cosLight = -glm::dot(s.n, ls.wi);
+    if (!(cosLight > 0.0)) return false;
     // Convert the area density to solid angle at ref: d omega = cos_light dA / d^2.
-    ls->p = s.p;
-    ls->n = s.n;
-    ls->pdf = s.pdfArea * distance2 / cosLight;
+    ls.p = s.p;
+    ls.n = s.n;
+    ls.pdf = s.pdfArea * distance2 / cosLight;
   }
-  ls->object = index;
-  ls->p += shift;
-  ls->Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
-  if (!(ls->pdf > 0.0) || !std::isfinite(ls->pdf)) return std::nullopt;
-  return ls;
+  ls.object = index;
+  ls.p += shift;
+  ls.Le = m_scene->materials[static_cast<std::size_t>(object.material)].emission;
+  return ls.pdf > 0.0 && std::isfinite(ls.pdf);
 }
 
 double SceneIntersector::lightPdf(const Point3& ref, int object, const SurfaceInteraction& hit,

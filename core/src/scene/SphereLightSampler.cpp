@@ -69,6 +69,22 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
     }
     m_separators.push_back(sep);
   }
+  // The first 64 separators as columns and bit masks, for plan()'s loop without branches.
+  for (std::size_t i = 0; i < std::min<std::size_t>(m_separators.size(), 64); ++i) {
+    const Separator& sep = m_separators[i];
+    m_sepX.push_back(sep.centre.x);
+    m_sepY.push_back(sep.centre.y);
+    m_sepZ.push_back(sep.centre.z);
+    m_sepRadius2.push_back(sep.radius2);
+    const std::uint64_t bit = std::uint64_t(1) << i;
+    if (sep.relation == Separator::Relation::Disjoint) m_disjoint |= bit;
+    if (sep.relation == Separator::Relation::Encloses) m_encloses |= bit;
+    if (sep.relation == Separator::Relation::Cuts) {
+      m_cuts.push_back(int(i));
+      if (sep.capRadius2[0] >= 0.0) m_capOutside |= bit;
+      if (sep.capRadius2[1] >= 0.0) m_capInside |= bit;
+    }
+  }
 }
 
 SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
@@ -82,22 +98,40 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
   }
   // The cone of directions towards a ball (centre, radius) seen from outside it has
   // sin^2 theta_max = radius^2 / distance^2: keep the ball with the smallest ratio (the
-  // narrowest cone), and take square roots once, for it alone.
+  // narrowest cone), compared without dividing, and take square roots once, for it alone.
   Vec3 bestToCentre = toCentre;
   double bestDistance2 = centreDistance2;
-  double bestSin2 = m_radius * m_radius / centreDistance2;
+  double bestRadius2 = m_radius * m_radius;
   const auto consider = [&](const Point3& centre, double radius2) {
     const Vec3 v = centre - ref;
     const double distance2 = glm::dot(v, v);
     if (!(distance2 > radius2)) return;
-    const double sin2 = radius2 / distance2;
-    if (sin2 < bestSin2) {
-      bestSin2 = sin2;
+    if (radius2 * bestDistance2 < bestRadius2 * distance2) {
+      bestRadius2 = radius2;
       bestToCentre = v;
       bestDistance2 = distance2;
     }
   };
-  for (std::size_t i = 0; i < m_separators.size(); ++i) {
+  if (m_separators.size() <= 64) {
+    // Which separators ref is inside (isInside's operations), then the verdicts as masks,
+    // and the caps' balls on ref's side considered in the same order as the loop below.
+    std::uint64_t inside = 0;
+    for (std::size_t i = 0; i < m_sepX.size(); ++i) {
+      const double fx = ref.x - m_sepX[i], fy = ref.y - m_sepY[i], fz = ref.z - m_sepZ[i];
+      inside |= std::uint64_t(fx * fx + fy * fy + fz * fz < m_sepRadius2[i]) << i;
+    }
+    if ((inside & m_disjoint) != 0 || (~inside & m_encloses) != 0) return Plan{};
+    best.inside = inside;
+    for (std::uint64_t caps = (inside & m_capInside) | (~inside & m_capOutside); caps != 0;
+         caps &= caps - 1) {
+      const int i = __builtin_ctzll(caps);
+      const Separator& s = m_separators[std::size_t(i)];
+      const int side = int((inside >> i) & 1);
+      consider(s.capCentre[side], s.capRadius2[side]);
+    }
+  }
+  for (std::size_t i = m_separators.size() <= 64 ? m_separators.size() : 0; i < m_separators.size();
+       ++i) {
     const Separator& s = m_separators[i];
     const bool inside = isInside(s, ref);
     if (inside && i < 64) best.inside |= std::uint64_t(1) << i;
@@ -114,12 +148,26 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
     }
   }
   best.mode = Plan::Mode::Cone;
-  best.cosThetaMax = std::sqrt(std::max(0.0, 1.0 - bestSin2));
-  best.axis = bestToCentre / std::sqrt(bestDistance2);
+  // cos theta_max = sqrt(distance^2 - radius^2) / distance; one division for it and the axis.
+  const double inverseDistance = 1.0 / std::sqrt(bestDistance2);
+  best.cosThetaMax =
+      std::min(1.0, std::sqrt(std::max(0.0, bestDistance2 - bestRadius2)) * inverseDistance);
+  best.axis = bestToCentre * inverseDistance;
+  best.centreOffset = -toCentre;
+  best.c = centreDistance2 - m_radius * m_radius;
   return best;
 }
 
 bool SphereLightSampler::visibleSide(const Plan& plan, const Point3& ref, const Normal3& n) const {
+  if (m_separators.size() <= 64) {
+    for (const int i : m_cuts) {
+      const Separator& s = m_separators[std::size_t(i)];
+      const bool inside = (plan.inside >> i) & 1;
+      const double side = glm::dot(n, s.axis) - s.cosAlpha;
+      if (inside ? side < 0.0 : side > 0.0) return false;
+    }
+    return true;
+  }
   for (std::size_t i = 0; i < m_separators.size(); ++i) {
     const Separator& s = m_separators[i];
     if (s.relation != Separator::Relation::Cuts) continue;
@@ -130,23 +178,22 @@ bool SphereLightSampler::visibleSide(const Plan& plan, const Point3& ref, const 
   return true;
 }
 
-std::optional<LightSample> SphereLightSampler::sample(const Point3& ref, const Vec2& u) const {
+bool SphereLightSampler::sample(const Point3& ref, const Vec2& u, LightSample& ls) const {
   const Plan p = plan(ref);
-  LightSample ls;
   switch (p.mode) {
     case Plan::Mode::Invisible:
-      return std::nullopt;
+      return false;
     case Plan::Mode::Area: {
       // Uniform on the surface, converted to solid angle (only the outside emits, so from
       // inside this finds nothing; it keeps the density well defined).
       const ShapeSample s = m_sphere->sampleArea(u);
       const Vec3 d = s.p - ref;
       const double distance2 = glm::dot(d, d);
-      if (!(distance2 > 0.0)) return std::nullopt;
+      if (!(distance2 > 0.0)) return false;
       ls.distance = std::sqrt(distance2);
       ls.wi = d / ls.distance;
       const double cosLight = -glm::dot(s.n, ls.wi);
-      if (!(cosLight > 0.0)) return std::nullopt;
+      if (!(cosLight > 0.0)) return false;
       ls.p = s.p;
       ls.n = s.n;
       ls.pdf = s.pdfArea * distance2 / cosLight;
@@ -155,23 +202,31 @@ std::optional<LightSample> SphereLightSampler::sample(const Point3& ref, const V
     case Plan::Mode::Cone: {
       // A direction uniform in the cone, followed to its first hit on the light.
       const Vec3 w = Frame(p.axis).toWorld(sampleUniformCone(u, p.cosThetaMax));
-      const std::optional<double> t = m_sphere->nearestRoot(Ray{ref, w, 0.0, kInfinity, 0.0});
-      if (!t) return std::nullopt;  // a cap's cone is wider than the cap
-      const Vec3 radial = ref + *t * w - m_centre;
-      ls.n = radial / glm::length(radial);
+      // w is a unit vector and ref is outside the light (c > 0), so t^2 + 2 b t + c = 0 has
+      // two roots of one sign, positive when w heads towards the centre (b < 0); the nearer
+      // one as c / (-b + sqrt(b^2 - c)), free of cancellation. (One square root and one
+      // division, where the general ray-sphere test takes two and three.)
+      const double b = glm::dot(p.centreOffset, w);
+      const double discriminant = b * b - p.c;
+      if (!(b < 0.0) || !(discriminant >= 0.0))
+        return false;  // a cap's cone is wider
+                       // than the cap
+      const double t = p.c / (std::sqrt(discriminant) - b);
+      const Vec3 radial = p.centreOffset + t * w;
+      ls.n = radial * (1.0 / glm::length(radial));
       // Drop points that a separating sphere hides from ref.
-      if (!visibleSide(p, ref, ls.n)) return std::nullopt;
+      if (!visibleSide(p, ref, ls.n)) return false;
+      // The point on the surface; the direction and distance to it are w and t (to
+      // rounding: the point is projected onto the sphere).
       ls.p = m_centre + m_radius * ls.n;
-      const Vec3 d = ls.p - ref;
-      ls.distance = glm::length(d);
-      ls.wi = d / ls.distance;
-      if (!(-glm::dot(ls.n, ls.wi) > 0.0)) return std::nullopt;
+      ls.wi = w;
+      ls.distance = t;
+      if (!(-glm::dot(ls.n, w) > 0.0)) return false;
       ls.pdf = uniformConePdf(p.cosThetaMax);
       break;
     }
   }
-  if (!(ls.pdf > 0.0) || !std::isfinite(ls.pdf)) return std::nullopt;
-  return ls;
+  return ls.pdf > 0.0 && std::isfinite(ls.pdf);
 }
 
 double SphereLightSampler::pdf(const Point3& ref, const Point3& point, const Normal3& n) const {

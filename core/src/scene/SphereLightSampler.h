@@ -44,9 +44,10 @@ class SphereLightSampler {
   SphereLightSampler(const Scene& scene, int object);
 
   /// A light point seen from `ref` for u in [0,1)^2, with its solid-angle pdf (without
-  /// the light's pick probability); Le is left 0. Nothing when the sample falls outside
-  /// the visible part of the light or the light cannot be seen from ref at all.
-  std::optional<LightSample> sample(const Point3& ref, const Vec2& u) const;
+  /// the light's pick probability), into `ls` (p, n, wi, distance, pdf; the rest is left
+  /// as it was). False when the sample falls outside the visible part of the light or the
+  /// light cannot be seen from ref at all (`ls` is then partly written).
+  bool sample(const Point3& ref, const Vec2& u, LightSample& ls) const;
   /// Solid-angle density with which sample() returns the light point `p` with outward
   /// normal `n` from `ref` (0 where sample() never goes: back side, separated caps).
   double pdf(const Point3& ref, const Point3& p, const Normal3& n) const;
@@ -76,6 +77,8 @@ class SphereLightSampler {
     enum class Mode { Invisible, Area, Cone } mode = Mode::Invisible;
     Vec3 axis{0.0};            ///< Cone: unit axis from ref.
     double cosThetaMax = 0.0;  ///< Cone: cosine of its half-angle.
+    Vec3 centreOffset{0.0};    ///< Cone: ref minus the light's centre.
+    double c = 0.0;            ///< Cone: |centreOffset|^2 - radius^2 (> 0: ref is outside).
     /// Bit i: ref is inside separator i (for the first 64 separators; visibleSide
     /// recomputes the rest).
     std::uint64_t inside = 0;
@@ -94,6 +97,12 @@ class SphereLightSampler {
   Point3 m_centre;
   double m_radius;
   std::vector<Separator> m_separators;
+  /// The first 64 separators: centres and squared radii as columns, and bit i set in
+  /// m_disjoint / m_encloses by relation, in m_capInside / m_capOutside when the cap on
+  /// that side has a ball (capRadius2 >= 0); m_cuts lists the Cuts separators.
+  std::vector<double> m_sepX, m_sepY, m_sepZ, m_sepRadius2;
+  std::uint64_t m_disjoint = 0, m_encloses = 0, m_capInside = 0, m_capOutside = 0;
+  std::vector<int> m_cuts;
 };
 
 }  // namespace raylab

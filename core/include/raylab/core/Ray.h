@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/Check.h"
 #include "raylab/core/Types.h"
 
 #include <string>
@@ -23,7 +24,11 @@ struct Ray {
 
   /// A ray with its direction normalised. `direction` must not be zero.
   static Ray make(const Point3& origin, const Vec3& direction, double tMin = 0.0,
-                  double tMax = kInfinity, double time = 0.0);
+                  double tMax = kInfinity, double time = 0.0) {
+    const double length = glm::length(direction);
+    RAYLAB_CHECK(length > 0.0);
+    return Ray{origin, direction / length, tMin, tMax, time};
+  }
 
   /// Point at parameter t.
   Point3 at(double t) const { return origin + t * direction; }

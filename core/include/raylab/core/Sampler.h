@@ -6,6 +6,23 @@
 
 namespace raylab {
 
+namespace detail {
+/// The splitmix64 finaliser (Steele, Lea and Flood, "Fast Splittable Pseudorandom Number
+/// Generators", OOPSLA 2014): a bijection of 64-bit words whose output bits each depend
+/// on every input bit. Used as a hash, it turns counters into independent-looking words.
+constexpr std::uint64_t mix64(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+/// Folds one more value into a running hash; the constant separates the fields, so
+/// (x, y) = (1, 2) and (2, 1) give different keys.
+constexpr std::uint64_t combine(std::uint64_t key, std::uint64_t value, std::uint64_t field) {
+  return mix64(key ^ mix64(value + field));
+}
+}  // namespace detail
+
 /**
  * \brief Deterministic random numbers for one (pixel, sample): a counter-based generator.
  *
@@ -28,7 +45,14 @@ class Sampler {
   Sampler(std::uint64_t seed, int x, int y, int sampleIndex);
 
   /// Uniform double in [0, 1).
-  double next1D();
+  /// The next uniform in [0, 1): a hash of (key, dimension), its top 53 bits, so every
+  /// double k / 2^53 in [0, 1) is equally likely and 1.0 is never returned. (Inline: a
+  /// path sample draws some thirty.)
+  double next1D() {
+    const std::uint64_t bits = detail::combine(m_key, m_dimension, 0x082efa98ec4e6c89ull);
+    ++m_dimension;
+    return static_cast<double>(bits >> 11) * 0x1.0p-53;
+  }
   /// Two uniform doubles in [0, 1)^2.
   Vec2 next2D() { return {next1D(), next1D()}; }
   /**

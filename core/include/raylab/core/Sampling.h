@@ -2,6 +2,8 @@
 
 #include "raylab/core/Types.h"
 
+#include <cmath>
+
 namespace raylab {
 
 /// \file Sampling.h
@@ -12,8 +14,16 @@ namespace raylab {
 /// An orthonormal frame (s, t, n) around a unit normal n; local +z is n.
 struct Frame {
   Vec3 s, t, n;
-  /// Builds a frame around the unit vector n (Duff et al., JCGT 2017).
-  explicit Frame(const Normal3& n);
+  /// Builds a frame around the unit vector n (Duff et al., "Building an Orthonormal Basis,
+  /// Revisited", JCGT 2017): branch-free except for the sign of n.z, and continuous
+  /// everywhere else. Inline: every bounce and light sample builds one.
+  explicit Frame(const Normal3& normal) : n(normal) {
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double b = n.x * n.y * a;
+    s = Vec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    t = Vec3(b, sign + n.y * n.y * a, -n.y);
+  }
   Vec3 toLocal(const Vec3& world) const {
     return {glm::dot(world, s), glm::dot(world, t), glm::dot(world, n)};
   }

@@ -56,6 +56,8 @@ class SceneIntersector {
 
   /// Nearest hit with t in [ray.tMin, ray.tMax], over every object.
   std::optional<SceneHit> intersect(const Ray& ray) const;
+  /// The same into `hit` (left as it was when nothing is hit): false when nothing is.
+  bool intersect(const Ray& ray, SceneHit& hit) const;
   /// True when anything blocks the ray within [ray.tMin, ray.tMax].
   bool occluded(const Ray& ray) const;
 
@@ -66,6 +68,9 @@ class SceneIntersector {
   /// part of the light that `ref` cannot see (see the class comment).
   std::optional<LightSample> sampleLight(const Point3& ref, const Vec2& uLight, double uPick,
                                          double time = 0.0) const;
+  /// The same into `ls` (partly written when there is none): false when there is none.
+  bool sampleLight(const Point3& ref, const Vec2& uLight, double uPick, double time,
+                   LightSample& ls) const;
   /// Samples a point on the area light `object` (one of areaLights()) the way sampleLight
   /// does once it has picked that light: the pdf is this light's alone, without the pick
   /// probability. For algorithms that sample every light in turn (distributed tracing).
@@ -88,8 +93,8 @@ class SceneIntersector {
 
  private:
   /// sampleLightObject for light k of m_lights.
-  std::optional<LightSample> sampleLightAt(std::size_t k, const Point3& ref, const Vec2& u,
-                                           double time) const;
+  bool sampleLightAt(std::size_t k, const Point3& ref, const Vec2& u, double time,
+                     LightSample& ls) const;
 
   /// What the inner loops need of an object, gathered once.
   struct Entry {
@@ -108,16 +113,21 @@ class SceneIntersector {
   const Scene* m_scene;
   bool m_bruteForce = false;     ///< RenderSettings::acceleration off: test every triangle.
   std::vector<Entry> m_entries;  ///< Parallel to Scene::objects.
-  /// The static round spheres in entry order, their centres and radii as columns (padded
-  /// to a multiple of 4 with spheres of radius 0), for roots several at a time (roundRoots).
+  /// The static round spheres by decreasing radius, their centres and radii as columns
+  /// (padded to a multiple of 4 with spheres of radius 0), for roots several at a time
+  /// (roundRoots).
   std::vector<double> m_roundX, m_roundY, m_roundZ, m_roundR;
-  std::vector<int> m_roundSlot;  ///< Per entry: its index in the columns, or -1.
+  std::vector<int> m_roundSlot;    ///< Per entry: its index in the columns, or -1.
+  std::vector<int> m_roundObject;  ///< Per column slot (not padding): its entry.
+  std::vector<double> m_roundPad;  ///< Per column slot: all bits set for padding, else 0.
   int m_roundCount = 0;
+  bool m_allRound = false;  ///< Every object is a static round sphere.
 
-  /// For every static round sphere k, the t that Sphere::nearestRoot(ray) gives, or NaN
-  /// when it gives none, into out[k] (m_roundCount values; out has room for the padded
+  /// For every column slot k, the t that Sphere::nearestRoot(ray) gives for its sphere, or
+  /// NaN when it gives none, into out[k] (m_roundCount values; out has room for the padded
   /// columns). Four spheres at a time with AVX, two with SSE2, the same operations in the
-  /// same order as Sphere::roots: the same bits. False when not on x86-64 (the caller loops).
+  /// same order as Sphere::roots: the same bits; a group of lanes that a cheap test proves
+  /// all missed is skipped (NaN). False when not on x86-64 (the caller loops).
   bool roundRoots(const Ray& ray, double* out) const;
   /// Meshes' hierarchies rebuilt with the settings' split (Entry::bvh points into them).
   std::vector<std::shared_ptr<const Bvh>> m_rebuilt;

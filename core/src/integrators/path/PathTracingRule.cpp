@@ -72,16 +72,18 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
       // of the surface will have, so that step 1's MIS weight asks lightPdf about the same
       // point; and sample it where it is at this ray's time.
       const Point3 ref = offsetRayOrigin(si, si.facingNormal());
-      const std::optional<LightSample> ls =
-          context.intersector.sampleLight(ref, uLight, uPick, ray.ray.time);
-      if (ls && ls->pdf > 0.0 && std::isfinite(ls->pdf)) {
+      LightSample sampled;
+      const LightSample* ls =
+          context.intersector.sampleLight(ref, uLight, uPick, ray.ray.time, sampled) ? &sampled
+                                                                                     : nullptr;
+      if (ls) {
         const Vec3 fCos = bsdf::eval(m, si, wo, ls->wi);
         const double w = settings.multipleImportance
                              ? powerHeuristic(ls->pdf, bsdf::pdf(m, si, wo, ls->wi))
                              : 1.0;
         const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
         if (isUsable(weight) && isUsable(ls->Le))
-          children.push_back(shading::shadowRay(context, ls->p, weight, ls->Le, true));
+          children.push_back(shading::shadowRayToSample(context, ref, *ls, weight));
       }
     }
     for (const PointLight& light : context.intersector.scene().pointLights) {
