@@ -430,6 +430,26 @@ TEST(MeshIO, 18_CountsAreReadAsCgalReadsThemAndBounded) {
   EXPECT_EQ(readError(none), none +
                                  ":7: cannot parse PLY file: the element extra announces 12 "
                                  "records but has no property");
+  // CGAL takes a PLY's format from line 2 whatever its first word, and from no other line.
+  const std::string late =
+      writeMesh("late-format.ply",
+                "ply\ncomment first\nformat binary_little_endian 1.0\nelement vertex 0\n"
+                "end_header\n");
+  EXPECT_EQ(readError(late),
+            late +
+                ":2: cannot parse PLY file: the second line must give the format "
+                "(format ascii 1.0, or binary_little_endian or binary_big_endian), "
+                "found 'comment first'");
+  std::string misspelt =
+      "ply\nform&at binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list int int vertex_indices\nend_header\n";
+  misspelt += std::string(36, '\0') + std::string("\xff\xff\xff\x7f", 4);
+  const std::string walked = writeMesh("misspelt-format.ply", misspelt);
+  EXPECT_TRUE(contains(readError(walked),
+                       "element face 0 of 1 announces a list of 2147483647 "
+                       "values, more than the file holds"))
+      << readError(walked);
   const std::string two = writeMesh("two-counts.off", "OFF\n3 1\n");
   EXPECT_EQ(readError(two), two +
                                 ":2: cannot parse OFF file: expected the vertex, face and edge "

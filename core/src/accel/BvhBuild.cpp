@@ -60,6 +60,40 @@ constexpr int kParallelGrain = 8192;
 /// of this size (the top levels, which would otherwise run on one thread).
 constexpr int kParallelBinGrain = 32768;
 
+/// oneTBB's scheduler runs what comes before a parallel call before its tasks, and the tasks
+/// before the call returns; Debian's oneTBB is not built with ThreadSanitizer, which cannot
+/// see that order and reports the build's own data as raced (issue 14). A Fence makes it
+/// visible: the caller releases it before the call, each task acquires it first and releases
+/// it last, and the caller acquires it after the call. Two atomic operations a task.
+class Fence {
+ public:
+  Fence() { m_count.store(0, std::memory_order_release); }
+  void enter() const { (void)m_count.load(std::memory_order_acquire); }
+  void leave() { m_count.fetch_add(1, std::memory_order_acq_rel); }
+  void join() const { (void)m_count.load(std::memory_order_acquire); }
+
+ private:
+  std::atomic<int> m_count{0};
+};
+
+/// tbb::parallel_invoke of `a` and `b` behind a Fence.
+template <typename A, typename B>
+void invokeBoth(const A& a, const B& b) {
+  Fence fence;
+  tbb::parallel_invoke(
+      [&] {
+        fence.enter();
+        a();
+        fence.leave();
+      },
+      [&] {
+        fence.enter();
+        b();
+        fence.leave();
+      });
+  fence.join();
+}
+
 /// Runs body(chunkBegin, chunkEnd, chunk) over [begin, end) cut into chunks of `grain`
 /// (the last one shorter), on oneTBB tasks when `parallel`. The chunks depend on the range
 /// only, never on the thread count, so a result merged in chunk order is always the same.
@@ -69,9 +103,15 @@ void forChunks(bool parallel, int begin, int end, int grain, const Body& body) {
   const auto run = [&](int c) {
     body(begin + c * grain, std::min(end, begin + (c + 1) * grain), c);
   };
-  if (parallel && chunks > 1)
-    tbb::parallel_for(0, chunks, run);
-  else
+  if (parallel && chunks > 1) {
+    Fence fence;
+    tbb::parallel_for(0, chunks, [&](int c) {
+      fence.enter();
+      run(c);
+      fence.leave();
+    });
+    fence.join();
+  } else
     for (int c = 0; c < chunks; ++c) run(c);
 }
 
@@ -923,8 +963,8 @@ struct Builder {
     node.count = 0;
     node.axis = static_cast<std::uint8_t>(axis);
     if (settings.parallel && count > kParallelGrain) {
-      tbb::parallel_invoke([&] { build(child, left, depth + 1); },
-                           [&] { build(child + 1, right, depth + 1); });
+      invokeBoth([&] { build(child, left, depth + 1); },
+                 [&] { build(child + 1, right, depth + 1); });
     } else {
       build(child, left, depth + 1, block);
       build(child + 1, right, depth + 1, block);
@@ -1155,7 +1195,7 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
     // Step 4: copy the triangles' vertices in leaf order, four to a block.
     const auto copy = [&] { builder.copyTriangles(leaves, slots, m_primIds, m_blocks); };
     if (m_settings.parallel) {
-      tbb::parallel_invoke(trees, copy);
+      invokeBoth(trees, copy);
     } else {
       trees();
       copy();

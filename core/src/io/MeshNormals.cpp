@@ -180,7 +180,21 @@ PlyHeader readPlyHeader(std::istream& in) {
     std::string key;
     words >> key;
     if (key == "end_header") break;
-    if (key == "format") words >> header.format;
+    // CGAL's reader takes the format from the second word of line 2, whatever the first
+    // ("form&at binary_little_endian" too), and no other line: a file whose format this
+    // reader had missed was walked by nobody before CGAL read a list of 3.6e9 indices
+    // (found by Fuzzply, issue 14).
+    if (header.lines == 2) {
+      std::string format, version;
+      words >> format >> version;
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+        throw Problem(2,
+                      "the second line must give the format (format ascii 1.0, or "
+                      "binary_little_endian or binary_big_endian), found '" +
+                          trimmed(line) + "'");
+      header.format = format;
+      continue;
+    }
     if (key == "element") {
       PlyElement e;
       e.line = header.lines;
