@@ -4,7 +4,6 @@
 
 #include "accel/BvhLimits.h"
 
-#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #if defined(__SSE__)
@@ -62,36 +61,44 @@ constexpr int kParallelBinGrain = 32768;
 
 /// oneTBB's scheduler runs what comes before a parallel call before its tasks, and the tasks
 /// before the call returns; Debian's oneTBB is not built with ThreadSanitizer, which cannot
-/// see that order and reports the build's own data as raced (issue 14). A Fence makes it
-/// visible: the caller releases it before the call, each task acquires it first and releases
-/// it last, and the caller acquires it after the call. Two atomic operations a task.
-class Fence {
- public:
-  Fence() { m_count.store(0, std::memory_order_release); }
-  void enter() const { (void)m_count.load(std::memory_order_acquire); }
-  void leave() { m_count.fetch_add(1, std::memory_order_acq_rel); }
-  void join() const { (void)m_count.load(std::memory_order_acquire); }
+/// see that order and reported the build's own data as raced (issue 14). One atomic makes
+/// it visible: the caller releases it before the call, each task acquires it first (before
+/// it reads even its own captures, hence a variable of the file, not of the call) and
+/// releases it last, and the caller acquires it after the call. Every write to it is a
+/// read-modify-write, so an acquire that reads any later value synchronises with them all.
+std::atomic<unsigned> gTaskOrder{0};
+void releaseTaskOrder() { gTaskOrder.fetch_add(1, std::memory_order_release); }
+void acquireTaskOrder() { (void)gTaskOrder.load(std::memory_order_acquire); }
 
- private:
-  std::atomic<int> m_count{0};
-};
-
-/// tbb::parallel_invoke of `a` and `b` behind a Fence.
+/// tbb::parallel_invoke of `a` and `b`, its order visible to ThreadSanitizer: the tasks (and
+/// what they capture) are made before the release.
 template <typename A, typename B>
 void invokeBoth(const A& a, const B& b) {
-  Fence fence;
-  tbb::parallel_invoke(
-      [&] {
-        fence.enter();
-        a();
-        fence.leave();
-      },
-      [&] {
-        fence.enter();
-        b();
-        fence.leave();
-      });
-  fence.join();
+  const auto first = [&] {
+    acquireTaskOrder();
+    a();
+    releaseTaskOrder();
+  };
+  const auto second = [&] {
+    acquireTaskOrder();
+    b();
+    releaseTaskOrder();
+  };
+  releaseTaskOrder();
+  tbb::parallel_invoke(first, second);
+  acquireTaskOrder();
+}
+
+/// run(c) for the chunks c in [first, last), halved onto pairs of tasks (tbb::parallel_for
+/// copies its body inside oneTBB, where the order above cannot reach).
+template <typename Run>
+void invokeChunks(int first, int last, const Run& run) {
+  if (last - first == 1) {
+    run(first);
+    return;
+  }
+  const int mid = first + (last - first) / 2;
+  invokeBoth([&] { invokeChunks(first, mid, run); }, [&] { invokeChunks(mid, last, run); });
 }
 
 /// Runs body(chunkBegin, chunkEnd, chunk) over [begin, end) cut into chunks of `grain`
@@ -103,15 +110,9 @@ void forChunks(bool parallel, int begin, int end, int grain, const Body& body) {
   const auto run = [&](int c) {
     body(begin + c * grain, std::min(end, begin + (c + 1) * grain), c);
   };
-  if (parallel && chunks > 1) {
-    Fence fence;
-    tbb::parallel_for(0, chunks, [&](int c) {
-      fence.enter();
-      run(c);
-      fence.leave();
-    });
-    fence.join();
-  } else
+  if (parallel && chunks > 1)
+    invokeChunks(0, chunks, run);
+  else
     for (int c = 0; c < chunks; ++c) run(c);
 }
 
