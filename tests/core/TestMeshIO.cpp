@@ -234,7 +234,7 @@ TEST(MeshIO, 14_AnnouncedCountsMustFitTheFileAndTheLimits) {
        "of 1 announces a list of 4026531840 values, more than the file holds"},
       {"huge-list-ascii.ply",
        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-       "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+       "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n"
        "0 0 0\n1 0 0\n0 1 0\n300000000 0 1 2\n",
        "cannot parse PLY file: truncated or corrupt ASCII PLY: element face 0 of 1 announces a "
        "list of 300000000 values"},
@@ -402,16 +402,27 @@ TEST(MeshIO, 18_CountsAreReadAsCgalReadsThemAndBounded) {
     }
     EXPECT_EQ(outcome, "1") << name;
   }
-  // A PLY list of 1.3e128 values (cast to an integer: undefined behaviour, found by Fuzzply).
+  // A PLY list of 1.3e128 values: its length was cast to an integer (undefined behaviour,
+  // Fuzzply). Read as CGAL reads a uchar, it is a list of 1 whose value ".33333e128" is no int.
   const std::string longList =
       writeMesh("long-list.ply",
                 "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
                 "property double z\nelement face 1\nproperty list uchar int vertex_indices\n"
                 "end_header\n0 0 0\n1 0 0\n0 1 0\n1.33333e128 0 1 2\n");
   EXPECT_EQ(readError(longList), longList +
-                                     ": cannot parse PLY file: truncated or corrupt ASCII PLY: "
-                                     "element face 0 of 1 announces a list of 2^53 or more "
-                                     "values, more than the file holds");
+                                     ": cannot parse PLY file: unreadable or truncated ASCII PLY: "
+                                     "element face 0 of 1: a value of vertex_indices is not a "
+                                     "number its type holds, or is missing (the header announces "
+                                     "3 vertices and 1 faces)");
+  const std::string longFloat =
+      writeMesh("long-float-list.ply",
+                "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                "property double z\nelement face 1\nproperty list double int vertex_indices\n"
+                "end_header\n0 0 0\n1 0 0\n0 1 0\n1.33333e128 0 1 2\n");
+  EXPECT_EQ(readError(longFloat), longFloat +
+                                      ": cannot parse PLY file: truncated or corrupt ASCII PLY: "
+                                      "element face 0 of 1 announces a list of 2^53 or more "
+                                      "values, more than the file holds");
   // An element of 4.3e15 records of nothing: CGAL's reader walked them (a hang, Fuzzply).
   const std::string empty =
       writeMesh("empty-records.ply",
@@ -430,6 +441,30 @@ TEST(MeshIO, 18_CountsAreReadAsCgalReadsThemAndBounded) {
   EXPECT_EQ(readError(none), none +
                                  ":7: cannot parse PLY file: the element extra announces 12 "
                                  "records but has no property");
+  // ASCII values are read as CGAL reads them, in their own type: a list length of 3e9 in an
+  // int32 read as INT_MAX there (a 7.6 GB allocation, Fuzzply), and once a read failed, the
+  // lengths after it were uninitialised.
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list int int vertex_indices\nend_header\n";
+  const std::string overflow =
+      writeMesh("overflowing-length.ply", header + "0 0 0\n1 0 0\n0 1 0\n3000000000 0 1 2\n");
+  EXPECT_EQ(readError(overflow), overflow +
+                                     ": cannot parse PLY file: unreadable or truncated ASCII PLY: "
+                                     "element face 0 of 1: the length of the list vertex_indices "
+                                     "is not a whole number its type holds, or is missing");
+  const std::string big =
+      writeMesh("float-overflow.ply", header + "0 0 0\n1 0 1e39\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(readError(big), big +
+                                ": cannot parse PLY file: unreadable or truncated ASCII PLY: "
+                                "element vertex 1 of 3: a value of z is not a number its type "
+                                "holds, or is missing (the header announces 3 vertices and 1 "
+                                "faces)");
+  // Two numbers run together ("1.5-2") are two values to CGAL, one token to a split on blanks.
+  const std::string joined =
+      writeMesh("joined-values.ply", header + "0 0 0\n1 0 0-1\n0 1\n3 0 1 2\n");
+  EXPECT_EQ(MeshIO::load(joined).triangleCount(), 1u);
   // CGAL takes a PLY's format from line 2 whatever its first word, and from no other line.
   const std::string late =
       writeMesh("late-format.ply",

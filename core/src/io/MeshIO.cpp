@@ -252,17 +252,53 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
   const bool bigEndian = header.bigEndian();
   if (!ascii && !bigEndian && format != "binary_little_endian") return std::nullopt;
   const auto remaining = [&] { return std::int64_t(size) - std::int64_t(in.tellg()); };
+  // One ASCII value read as CGAL's reader reads it: `>>` into the property's own C++ type
+  // (short for int8, unsigned short for uint8), so that both consume the same characters and
+  // fail on the same token. Once one of CGAL's reads fails, the lengths it reads after it are
+  // uninitialised, and a length that overflows its type reads as the type's largest value:
+  // a file both walks read differently once had CGAL allocate 7.6 GB (found by Fuzzply,
+  // issue 14). Any value that does not read is refused here.
+  const auto readAscii = [&](meshnormals::PlyType type, double& value) {
+    using meshnormals::PlyType;
+    const auto take = [&](auto t) {
+      if (!(in >> t)) return false;
+      value = double(t);
+      return true;
+    };
+    switch (type) {
+      case PlyType::Int8:
+        return take(short()) && value >= -128 && value <= 127;
+      case PlyType::UInt8:
+        return take((unsigned short)0) && value <= 255;
+      case PlyType::Int16:
+        return take(std::int16_t());
+      case PlyType::UInt16:
+        return take(std::uint16_t());
+      case PlyType::Int32:
+        return take(std::int32_t());
+      case PlyType::UInt32:
+        return take(std::uint32_t());
+      case PlyType::Float32:
+        return take(float());
+      case PlyType::Float64:
+        return take(double());
+      case PlyType::Unknown:
+        break;
+    }
+    return false;
+  };
   // A list's length, at most 2^53 (more than any file holds, and no product with an item's
   // size overflows): 1.3e128 in an ASCII list was cast to an integer (undefined behaviour,
   // found by Fuzzply, issue 14), and 8 bytes read as a length could be negative.
   constexpr std::int64_t kLongest = std::int64_t(1) << 53;
-  const auto readCount = [&](int bytes, std::int64_t& value) {
+  const auto readCount = [&](meshnormals::PlyType type, std::int64_t& value) {
     if (ascii) {
       double v;
-      if (!(in >> v) || v < 0 || v != std::floor(v)) return false;
+      if (!readAscii(type, v) || v < 0 || v != std::floor(v)) return false;
       value = v < double(kLongest) ? std::int64_t(v) : kLongest;
       return true;
     }
+    const int bytes = meshnormals::plySize(type);
     unsigned char b[8] = {};
     if (!in.read(reinterpret_cast<char*>(b), bytes)) return false;
     std::uint64_t v = 0;
@@ -270,14 +306,14 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
     value = v < std::uint64_t(kLongest) ? std::int64_t(v) : kLongest;
     return true;
   };
-  const auto skip = [&](std::int64_t items, int bytes) {
+  const auto skip = [&](std::int64_t items, meshnormals::PlyType type) {
     if (!ascii) {
-      in.seekg(items * bytes, std::ios::cur);
+      in.seekg(items * meshnormals::plySize(type), std::ios::cur);
       return bool(in) && remaining() >= 0;
     }
-    std::string token;
+    double value;
     for (std::int64_t k = 0; k < items; ++k)
-      if (!(in >> token)) return false;
+      if (!readAscii(type, value)) return false;
     return true;
   };
   const std::string kind = ascii ? "ASCII PLY" : "binary PLY";
@@ -303,8 +339,13 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
       for (const meshnormals::PlyProperty& p : e.properties) {
         std::int64_t items = 1;
         if (p.isList()) {
-          if (!readCount(plySize(p.countType), items))
-            return Located{0, "truncated " + kind + ": " + where() + " is cut off"};
+          if (!readCount(p.countType, items))
+            return Located{0, (ascii ? "unreadable or truncated " : "truncated ") + kind + ": " +
+                                  where() +
+                                  (ascii ? ": the length of the list " + p.name +
+                                               " is not a whole number its "
+                                               "type holds, or is missing"
+                                         : " is cut off")};
           // An ASCII item takes at least two characters, a binary one its size.
           if (items * (ascii ? 2 : plySize(p.type)) > remaining())
             return Located{0, "truncated or corrupt " + kind + ": " + where() +
@@ -312,10 +353,14 @@ SizeProblem checkPly(std::istream& in, const meshnormals::PlyHeader& header, std
                                   (items == kLongest ? "2^53 or more" : std::to_string(items)) +
                                   " values, more than the file holds"};
         }
-        if (!skip(items, plySize(p.type)))
-          return Located{0, "truncated " + kind + ": " + where() + " is cut off (the header " +
-                                "announces " + std::to_string(vertices) + " vertices and " +
-                                std::to_string(faces) + " faces)"};
+        if (!skip(items, p.type))
+          return Located{0, (ascii ? "unreadable or truncated " : "truncated ") + kind + ": " +
+                                where() +
+                                (ascii ? ": a value of " + p.name +
+                                             " is not a number its type holds, or is missing"
+                                       : std::string(" is cut off")) +
+                                " (the header announces " + std::to_string(vertices) +
+                                " vertices and " + std::to_string(faces) + " faces)"};
       }
     }
   }
