@@ -26,9 +26,12 @@ using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
 /// A folder with a small scene (glass sphere, floor, quad light, point light; 320x240,
-/// 4 spp) for the lessons the tests write.
+/// 4 spp) for the lessons the tests write; one folder per test, as CTest runs tests side by
+/// side (a test rewriting a shared scene.json made another read it empty).
 std::string fixtureDir() {
-  const fs::path dir = fs::path(RAYLAB_TEMP_DIR) / "lesson";
+  const fs::path dir =
+      fs::path(RAYLAB_TEMP_DIR) /
+      ("lesson-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   fs::create_directories(dir);
   std::ofstream(dir / "scene.json") << R"({
     "raylab_scene": 2,
