@@ -4,6 +4,8 @@
 # - the core library and the test programs of its loaders and file formats (scene, mesh,
 #   lesson and ray-tree readers, limits, atomic saves, transforms, shapes, the tracer),
 #   with the `asan` preset's settings; their tests carry the CTest label `asan`;
+# - the raylab executable (its command line, without the window) and its CLI tests that
+#   need no display (`app.*` but the labels render, python and lessons);
 # - the libFuzzer targets of tests/fuzz (scene, lesson and ray-tree readers, the OBJ, OFF,
 #   PLY and STL readers) on the same instrumented library, each fuzzed for
 #   RAYLAB_FUZZ_SECONDS (30 by default) from its seeds (CTest label `fuzz`).
@@ -16,7 +18,8 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 build=build/asan-fuzz
 targets=(TestSceneIO TestMeshIO TestRayTreeJson TestLesson TestAtomicFile TestImageIO
-         TestSceneEdit TestTransform TestShapes TestTracer
+         TestSceneEdit TestTransform TestShapes TestTracer raylab raylab_check_render
+         raylab_check_picture
          FuzzScene FuzzLesson FuzzRayTree Fuzzobj Fuzzoff Fuzzply Fuzzstl)
 
 # The asan preset's cache variables, without what the subset does not build, and -O1 -g1
@@ -33,5 +36,11 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
 # --no-tests=error: a stage that finds no test fails (its label was once lost, and the
 # stage passed without running anything).
-exec ctest --test-dir "$build" -L 'asan|fuzz' --no-tests=error --output-on-failure \
-  -j "$(nproc)" "$@"
+status=0
+ctest --test-dir "$build" -L 'asan|fuzz' --no-tests=error --output-on-failure \
+  -j "$(nproc)" "$@" || status=$?
+# The command line's tests that need no display (bad input, limits, options, renders to
+# files), run on the sanitized raylab.
+ctest --test-dir "$build" -R '^app\.' -LE 'render|python|lessons' --no-tests=error \
+  --output-on-failure -j "$(nproc)" "$@" || status=$?
+exit "$status"
