@@ -277,6 +277,16 @@ void resizeHuge(Vector& v, std::size_t n) {
   v.resize(n);
 }
 
+/// Lane `lane` (0 or 1) of `pair` as one node.
+BvhNode nodeInPair(const BvhNodePair& pair, std::size_t lane) {
+  BvhNode n;
+  for (int k = 0; k < 6; ++k) n.box[k] = pair.box[k][lane];
+  n.offset = pair.offset[lane];
+  n.count = pair.count[lane];
+  n.axis = pair.axis[lane];
+  return n;
+}
+
 /// The depth-first node array stored as cache-line pairs: node i is lane i % 2 of pair
 /// i / 2 (see BvhNodePair; Bvh::node undoes it). Written by flatten, read and its leaves
 /// moved to their slots by WideCollapse.
@@ -284,16 +294,7 @@ class PairNodes {
  public:
   explicit PairNodes(std::vector<BvhNodePair>& pairs) : m_pairs(pairs) {}
   std::size_t size() const { return 2 * m_pairs.size(); }
-  BvhNode get(std::size_t i) const {
-    const BvhNodePair& pair = m_pairs[i / 2];
-    const std::size_t lane = i % 2;
-    BvhNode n;
-    for (int k = 0; k < 6; ++k) n.box[k] = pair.box[k][lane];
-    n.offset = pair.offset[lane];
-    n.count = pair.count[lane];
-    n.axis = pair.axis[lane];
-    return n;
-  }
+  BvhNode get(std::size_t i) const { return nodeInPair(m_pairs[i / 2], i % 2); }
   void set(std::size_t i, const BvhNode& n) {
     BvhNodePair& pair = m_pairs[i / 2];
     const std::size_t lane = i % 2;
@@ -1224,14 +1225,8 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
 }
 
 BvhNode Bvh::node(int index) const {
-  const BvhNodePair& pair = m_pairs[static_cast<std::size_t>(index / 2)];
-  const int lane = index % 2;
-  BvhNode n;
-  for (int k = 0; k < 6; ++k) n.box[k] = pair.box[k][lane];
-  n.offset = pair.offset[lane];
-  n.count = pair.count[lane];
-  n.axis = pair.axis[lane];
-  return n;
+  return nodeInPair(m_pairs[static_cast<std::size_t>(index / 2)],
+                    static_cast<std::size_t>(index % 2));
 }
 
 }  // namespace raylab

@@ -465,20 +465,8 @@ bool SceneIntersector::sampleLightAt(std::size_t k, const Point3& ref, const Vec
     // A round sphere: by solid angle, on the part of it ref can see.
     if (!m_sphereLights[k]->sample(localRef, uLight, ls)) return false;
   } else {
-    // A point on its surface, uniform in area.
-    const ShapeSample s = object.shape->sampleArea(uLight);
-    const Vec3 toLight = s.p - localRef;
-    const double distance2 = glm::dot(toLight, toLight);
-    if (!(distance2 > 0.0)) return false;
-    ls.distance = std::sqrt(distance2);
-    ls.wi = toLight / ls.distance;
-    // Only the front side emits: the outward normal must face the reference point.
-    const double cosLight = -glm::dot(s.n, ls.wi);
-    if (!(cosLight > 0.0)) return false;
-    // Convert the area density to solid angle at ref: d omega = cos_light dA / d^2.
-    ls.p = s.p;
-    ls.n = s.n;
-    ls.pdf = s.pdfArea * distance2 / cosLight;
+    // A point on its surface, uniform in area; only the front side emits.
+    if (!lightSampleFromArea(object.shape->sampleArea(uLight), localRef, ls)) return false;
   }
   ls.object = index;
   ls.p += shift;

@@ -186,17 +186,7 @@ bool SphereLightSampler::sample(const Point3& ref, const Vec2& u, LightSample& l
     case Plan::Mode::Area: {
       // Uniform on the surface, converted to solid angle (only the outside emits, so from
       // inside this finds nothing; it keeps the density well defined).
-      const ShapeSample s = m_sphere->sampleArea(u);
-      const Vec3 d = s.p - ref;
-      const double distance2 = glm::dot(d, d);
-      if (!(distance2 > 0.0)) return false;
-      ls.distance = std::sqrt(distance2);
-      ls.wi = d / ls.distance;
-      const double cosLight = -glm::dot(s.n, ls.wi);
-      if (!(cosLight > 0.0)) return false;
-      ls.p = s.p;
-      ls.n = s.n;
-      ls.pdf = s.pdfArea * distance2 / cosLight;
+      if (!lightSampleFromArea(m_sphere->sampleArea(u), ref, ls)) return false;
       break;
     }
     case Plan::Mode::Cone: {

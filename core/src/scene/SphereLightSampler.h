@@ -3,11 +3,29 @@
 #include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Sphere.h"
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace raylab {
+
+/// `ls` from a point `s` sampled uniformly in area on a light's surface, seen from `ref`: its
+/// direction, distance and density converted to solid angle (d omega = cos_light dA / d^2).
+/// False when the point is at ref or faces away from it (only the outside emits).
+inline bool lightSampleFromArea(const ShapeSample& s, const Vec3& ref, LightSample& ls) {
+  const Vec3 toLight = s.p - ref;
+  const double distance2 = glm::dot(toLight, toLight);
+  if (!(distance2 > 0.0)) return false;
+  ls.distance = std::sqrt(distance2);
+  ls.wi = toLight / ls.distance;
+  const double cosLight = -glm::dot(s.n, ls.wi);
+  if (!(cosLight > 0.0)) return false;
+  ls.p = s.p;
+  ls.n = s.n;
+  ls.pdf = s.pdfArea * distance2 / cosLight;
+  return true;
+}
 
 /**
  * \brief Next-event estimation for a round sphere light: points on the light sampled by
