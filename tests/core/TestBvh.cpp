@@ -376,6 +376,63 @@ TEST(Bvh, 08_EveryKernelAnswersTheSameBitsAsBruteForce) {
   }
 }
 
+TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
+  // The wide traversal tests boxes in float with directed rounding (BvhWideTraverse.cpp,
+  // WideRay): it must never cull a box holding the nearest hit, whatever the scale. Grids
+  // of triangles from float's subnormal range (1e-42) to far beyond it (1e30), hit by rays
+  // whose origins sit on box planes and at 0, whose direction components are 0, tiny
+  // (1 / d beyond FLT_MAX) or ordinary, with tMin 0, tiny or ordinary and tMax tiny, near
+  // FLT_MAX or infinite; each kernel's answer must be the brute-force bits.
+  for (const BvhKernel kernel : supportedKernels()) {
+    const KernelScope scope(kernel);
+    int rays = 0, hits = 0, mismatches = 0;
+    for (const double scale : {1e-42, 1e-38, 1e-20, 1.0, 3.0, 1e20, 1e30}) {
+      Soup grid;
+      constexpr int kSide = 6;
+      for (int y = 0; y <= kSide; ++y)
+        for (int x = 0; x <= kSide; ++x)
+          grid.vertices.emplace_back(scale * (x - 3), scale * (y - 3),
+                                     scale * 0.25 * ((x + y) % 3));
+      for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x) {
+          const int i = y * (kSide + 1) + x;
+          grid.triangles.push_back({i, i + 1, i + kSide + 2});
+          grid.triangles.push_back({i, i + kSide + 2, i + kSide + 1});
+        }
+      const Bvh bvh(grid.vertices, grid.triangles);
+      for (int y = 0; y <= 12; ++y)
+        for (int x = 0; x <= 12; ++x)
+          for (const double tiny : {0.0, 1e-30, 1e-300, 0.3})
+            for (const double height : {0.0, 0.5, 2.0}) {
+              const Point3 o(scale * (0.5 * x - 3.0), scale * (0.5 * y - 3.0), scale * height);
+              Ray r = Ray::make(o, Vec3(tiny, -tiny, -1.0));
+              for (const double tMin : {0.0, 1e-45, scale * 0.1})
+                for (const double tMax : {kInfinity, 3.4e38, scale * 0.4}) {
+                  r.tMin = tMin;
+                  r.tMax = tMax;
+                  if (!(r.tMin <= r.tMax)) continue;
+                  const Brute expect = bruteForce(grid, r);
+                  const auto got = bvh.intersect(r);
+                  const bool same =
+                      got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
+                      (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id));
+                  ++rays;
+                  hits += expect.hit;
+                  if (!same && ++mismatches <= 5)
+                    ADD_FAILURE() << toString(kernel) << " kernel, scale " << scale << ", ray "
+                                  << r.toString() << ": brute force "
+                                  << (expect.hit ? std::to_string(expect.t) : "miss") << ", bvh "
+                                  << (got ? std::to_string(got->t) : std::string("miss"));
+                }
+            }
+    }
+    std::printf("%s kernel: %d rays, %d hits, %d mismatches\n", toString(kernel), rays, hits,
+                mismatches);
+    EXPECT_EQ(mismatches, 0) << toString(kernel);
+    EXPECT_GT(hits, rays / 4);
+  }
+}
+
 TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
   // The 8-wide tree is the binary one collapsed: its lanes are binary nodes (their float
   // boxes unchanged); its leaf lanes start at a multiple of 4, hold binary subtrees of at

@@ -180,8 +180,10 @@ struct BvhTrace {
  * is sorted along its longest axis and halved down to the leaves instead of binned.
  *
  * Queries. intersect() and occluded() run on an 8-wide tree collapsed from the binary one
- * (BvhWideNode): the eight children's boxes are tested four at once (4 doubles per vector, AVX2
- * when the CPU has it, see BvhKernel), the children hit are visited nearest entry first,
+ * (BvhWideNode): the eight children's boxes are tested at once in float with outward
+ * rounding of the ray's origin and inverse direction, so that no box the double test
+ * accepts is ever rejected (unusual rays, tMin < 0, take the double test, four boxes at once;
+ * AVX2 when the CPU has it, see BvhKernel), the children hit are visited nearest entry first,
  * and a leaf's triangles are tested four at a time (BvhTriangleBlock). The binary tree stays
  * the teaching view (levels, traceVisits) and answers intersectAll and closestTriangle.
  * Whichever tree runs, every box holds its triangles after rounding (see below) and every
