@@ -52,12 +52,29 @@ typedef int V8i __attribute__((vector_size(32)));
 /// path (a microcode assist) on every node.
 constexpr float kFloatSlack = 0x1p-125f;
 
+/// `x` rounded to the nearest float, and beyond float's range to infinity: a plain conversion
+/// of a double outside that range is undefined behaviour in C++ (UBSan reports it).
+inline float toFloat(double x) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (x > kMax) return std::numeric_limits<float>::infinity();
+  if (x < -kMax) return -std::numeric_limits<float>::infinity();
+  return static_cast<float>(x);  // NaN stays NaN
+}
+
 /// `x` moved away from zero by more than float's rounding can take back (a relative 2^-22
 /// and an absolute 2^-125, for float's subnormal range), so that float(x) rounded to nearest is
 /// on the far side of x: above it (up) or below it. Branch-free: this runs for every ray.
 inline float floatPast(double x, bool up) {
   const double margin = std::fabs(x) * 0x1p-22 + 0x1p-125;  // a zero becomes a normal float
-  return static_cast<float>(up ? x + margin : x - margin);
+  constexpr float kMax = std::numeric_limits<float>::max();
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  // Beyond float's range: the largest float on x's near side, or infinity on its far side.
+  if (up) {
+    const double y = x + margin;
+    return y > double(kMax) ? kInf : y < -double(kMax) ? -kMax : static_cast<float>(y);
+  }
+  const double y = x - margin;
+  return y < -double(kMax) ? -kInf : y > double(kMax) ? kMax : static_cast<float>(y);
 }
 
 /// A ray prepared for the wide traversal: the watertight test's shear (ShearedRay) and the
@@ -108,7 +125,7 @@ struct WideRay : ShearedRay {
       constexpr double kFloatMax = std::numeric_limits<float>::max();
       invNear[a] =
           static_cast<float>(std::min(std::max(inv[a] * (1.0 - 0x1p-20), -kFloatMax), kFloatMax));
-      invFar[a] = static_cast<float>(inv[a] * (1.0 + 0x1p-20));
+      invFar[a] = toFloat(inv[a] * (1.0 + 0x1p-20));
     }
     tMinF = floatPast(tMin, false);
     floatSlabs = ok;
