@@ -24,6 +24,12 @@
 // or miss differs or its t is off by more than 1e-4 relative. (Brute force on every ray would
 // take hours: 10^12 triangle tests per 1M-triangle case.)
 //
+// The table also divides by two peers that RayLab's users may know: CGAL's AABB tree
+// (`first_intersection` of a Ray_3 on triangles, Epick kernel) and VTK's static cell locator
+// (`IntersectWithLine` along the ray's first 10 units, which hold every hit here). They are
+// far slower, so they trace every 16th ray of each case (65,536); rays/s is comparable all
+// the same. Their answers are not checked (they are the peers, not the yardstick).
+//
 // Queries run on one thread and are timed in CPU time, builds in wall time. Run by hand
 // (interleaved repetitions, so load from other work falls on both engines alike):
 //   build/ci/tests/bench/raylab_bench_embree --benchmark_repetitions=3
@@ -37,9 +43,19 @@
 
 #include "BenchRays.h"
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 #include <tbb/global_control.h>
+#include <vtkCellArray.h>
+#include <vtkGenericCell.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
 
 #include <unistd.h>
 
@@ -167,6 +183,83 @@ const EmbreeScene& embree(bool big) {
   return big ? noisy1M : sphere80k;
 }
 
+/// The mesh in CGAL's AABB tree (double triangles, Epick kernel), built and its distance
+/// structures left alone (only ray queries).
+class CgalScene {
+ public:
+  using K = CGAL::Epick;
+  using Triangles = std::vector<K::Triangle_3>;
+  using Primitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+  explicit CgalScene(const TriangleMesh& mesh) {
+    const auto p = [&](int i) {
+      const Point3& v = mesh.vertices()[std::size_t(i)];
+      return K::Point_3(v.x, v.y, v.z);
+    };
+    m_triangles.reserve(mesh.triangles().size());
+    for (const auto& t : mesh.triangles()) m_triangles.emplace_back(p(t[0]), p(t[1]), p(t[2]));
+    m_tree.insert(m_triangles.cbegin(), m_triangles.cend());
+    m_tree.build();
+  }
+
+  /// Whether the ray hits (the nearest hit's distance is computed too, as a user would).
+  bool intersect(const Ray& ray) const {
+    const K::Ray_3 query(K::Point_3(ray.origin.x, ray.origin.y, ray.origin.z),
+                         K::Vector_3(ray.direction.x, ray.direction.y, ray.direction.z));
+    const auto hit = m_tree.first_intersection(query);
+    if (!hit) return false;
+    if (const K::Point_3* q = boost::get<K::Point_3>(&hit->first))
+      benchmark::DoNotOptimize(CGAL::squared_distance(query.source(), *q));
+    return true;
+  }
+
+ private:
+  Triangles m_triangles;
+  Tree m_tree;
+};
+
+/// The mesh in VTK: a vtkPolyData of triangles and a vtkStaticCellLocator over it.
+class VtkScene {
+ public:
+  explicit VtkScene(const TriangleMesh& mesh) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(vtkIdType(mesh.vertices().size()));
+    for (std::size_t i = 0; i < mesh.vertices().size(); ++i) {
+      const Point3& v = mesh.vertices()[i];
+      points->SetPoint(vtkIdType(i), v.x, v.y, v.z);
+    }
+    vtkNew<vtkCellArray> cells;
+    for (const auto& t : mesh.triangles()) {
+      const vtkIdType ids[3] = {t[0], t[1], t[2]};
+      cells->InsertNextCell(3, ids);
+    }
+    m_polyData->SetPoints(points);
+    m_polyData->SetPolys(cells);
+    m_locator->SetDataSet(m_polyData);
+    m_locator->BuildLocator();
+  }
+
+  /// Whether the ray hits within its first kLength units.
+  bool intersect(const Ray& ray) {
+    constexpr double kLength = 10.0;
+    double p1[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    double p2[3] = {ray.origin.x + kLength * ray.direction.x,
+                    ray.origin.y + kLength * ray.direction.y,
+                    ray.origin.z + kLength * ray.direction.z};
+    double t = 0.0, x[3], pcoords[3];
+    int subId = 0;
+    vtkIdType cellId = -1;
+    return m_locator->IntersectWithLine(p1, p2, 0.0, t, x, pcoords, subId, cellId, m_cell) != 0;
+  }
+
+ private:
+  vtkNew<vtkPolyData> m_polyData;
+  vtkNew<vtkStaticCellLocator> m_locator;
+  vtkNew<vtkGenericCell> m_cell;
+};
+
 Answer raylabAnswer(const Bvh& bvh, const Ray& ray) {
   const auto hit = bvh.intersect(ray);
   return hit ? Answer{hit->t, hit->primitive} : Answer{};
@@ -251,6 +344,39 @@ void query(benchmark::State& state, bool big, bool camera, bool useEmbree) {
   state.counters["brute_forced"] = wrong.bruteForced;
 }
 
+/// Every 16th ray of a case: the peers' share.
+constexpr std::size_t kPeerStride = 16;
+
+/// CGAL's AABB tree or VTK's static cell locator on every 16th ray of a case, one thread.
+void queryPeer(benchmark::State& state, bool big, bool camera, bool useCgal) {
+  const std::vector<Ray>& all = rays(camera);
+  // Built once per mesh and kept (builds are not what this measures).
+  static std::map<int, std::unique_ptr<CgalScene>> cgal;
+  static std::map<int, std::unique_ptr<VtkScene>> vtk;
+  int hits = 0;
+  std::int64_t traced = 0;
+  if (useCgal) {
+    auto& scene = cgal[big];
+    if (!scene) scene = std::make_unique<CgalScene>(mesh(big));
+    for (auto _ : state) {
+      hits = 0;
+      for (std::size_t i = 0; i < all.size(); i += kPeerStride) hits += scene->intersect(all[i]);
+      benchmark::DoNotOptimize(hits);
+    }
+  } else {
+    auto& scene = vtk[big];
+    if (!scene) scene = std::make_unique<VtkScene>(mesh(big));
+    for (auto _ : state) {
+      hits = 0;
+      for (std::size_t i = 0; i < all.size(); i += kPeerStride) hits += scene->intersect(all[i]);
+      benchmark::DoNotOptimize(hits);
+    }
+  }
+  traced = std::int64_t((all.size() + kPeerStride - 1) / kPeerStride);
+  state.SetItemsProcessed(state.iterations() * traced);
+  state.counters["hit_fraction"] = double(hits) / double(traced);
+}
+
 void buildRaylab(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
@@ -293,9 +419,11 @@ class RatioReporter : public benchmark::ConsoleReporter {
 
   void Finalize() override {
     ConsoleReporter::Finalize();
-    std::printf("\nRayLab / Embree (median rate of each; builds: Embree time / RayLab time)\n");
-    std::printf("%-28s %14s %14s %8s %12s %12s\n", "case", "RayLab /s", "Embree /s", "ratio",
-                "RayLab wrong", "Embree wrong");
+    std::printf(
+        "\nRayLab / Embree (median rate of each; builds: Embree time / RayLab time); RayLab / "
+        "CGAL's AABB tree and RayLab / VTK's static cell locator (queries)\n");
+    std::printf("%-28s %14s %14s %8s %12s %12s %8s %8s\n", "case", "RayLab /s", "Embree /s",
+                "ratio", "RayLab wrong", "Embree wrong", "/ CGAL", "/ VTK");
     for (const auto& [name, rates] : m_rates) {
       const std::string::size_type slash = name.find("/RayLab");
       if (slash == std::string::npos) continue;
@@ -310,6 +438,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
                   ours / theirs);
       if (wrongOurs != m_wrong.end() && wrongTheirs != m_wrong.end())
         std::printf(" %12d %12d", wrongOurs->second, wrongTheirs->second);
+      for (const char* peer : {"/CGAL", "/VTK"}) {
+        const auto p = m_rates.find(name.substr(0, slash) + peer + name.substr(slash + 7));
+        if (p != m_rates.end()) std::printf(" %8.1f", ours / median(p->second));
+      }
       std::printf("\n");
     }
   }
@@ -335,6 +467,15 @@ void registerAll() {
       const std::string name = std::string("Query/") + c.name + (useEmbree ? "/Embree" : "/RayLab");
       benchmark::RegisterBenchmark(name.c_str(), [c, useEmbree](benchmark::State& s) {
         query(s, c.big, c.camera, useEmbree);
+      })->Unit(benchmark::kMillisecond);
+    }
+  for (const Case c :
+       {Case{"Sphere80k_Camera", false, true}, Case{"Sphere80k_Random", false, false},
+        Case{"Noisy1M_Camera", true, true}, Case{"Noisy1M_Random", true, false}})
+    for (const bool useCgal : {true, false}) {
+      const std::string name = std::string("Query/") + c.name + (useCgal ? "/CGAL" : "/VTK");
+      benchmark::RegisterBenchmark(name.c_str(), [c, useCgal](benchmark::State& s) {
+        queryPeer(s, c.big, c.camera, useCgal);
       })->Unit(benchmark::kMillisecond);
     }
   for (const bool useEmbree : {false, true})
