@@ -637,10 +637,56 @@ void checkSpheresAgainstOneAtATime(bool others) {
   }
   EXPECT_GT(hits, 15000);
   EXPECT_GT(grazing, 1000);
+
+  // Segments (occlusion, whose cheap tests skip spheres around both ends or beyond the
+  // end): from points in the room, on its walls and on the glass sphere, towards points
+  // on the light's cap below the ceiling and on the walls, ending short of the target, at
+  // it or beyond it by relative amounts from 1e-15 to 1e-2, so that ends fall within
+  // rounding of a surface; occluded must still be what Sphere::intersect says.
+  int blocked = 0, near = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const Vec2 u = random.next2D(), v = random.next2D(), w = random.next2D();
+    Point3 origin(1 + 98 * u.x, 81.6 * u.y, 170 * v.x);
+    if (i % 4 == 1) origin.y = 0.0;  // on the floor
+    if (i % 4 == 2) origin.x = 1.0;  // on the left wall
+    if (i % 9 == 0) origin = Point3(73, 16.5, 78) + 16.5 * sampleUniformSphere(w);
+    Point3 target;
+    if (i % 3 == 0) {
+      // On the light's sphere, in or near the cap that pokes 0.27 below the ceiling.
+      const Vec3 n = glm::normalize(Vec3(0.04 * (2 * w.x - 1), -1.0, 0.04 * (2 * w.y - 1)));
+      target = Point3(50, 681.33, 81.6) + 600.0 * n;
+    } else if (i % 3 == 1) {
+      // On the ceiling (the sphere of radius 1e5 below y = 81.6), above the room.
+      const double dx = 1 + 98 * w.x - 50, dz = 170 * w.y - 81.6;
+      target = Point3(50 + dx, -1e5 + 81.6 + std::sqrt(1e10 - dx * dx - dz * dz), 81.6 + dz);
+    } else {
+      // On the right wall (the sphere of radius 1e5 left of x = 99).
+      const double dy = 81.6 * w.x - 40.8, dz = 170 * w.y - 81.6;
+      target = Point3(-1e5 + 99 + std::sqrt(1e10 - dy * dy - dz * dz), 40.8 + dy, 81.6 + dz);
+    }
+    const Vec3 d = target - origin;
+    const double distance = glm::length(d);
+    if (!(distance > 0.0)) continue;
+    const double relative = std::pow(10.0, -15.0 + 13.0 * v.y);  // 1e-15 .. 1e-2
+    const int side = i % 5;  // short of the target, at it, beyond it
+    const double scale = side < 2 ? 1.0 - relative : side == 2 ? 1.0 : 1.0 + relative;
+    Ray ray{origin, i % 2 ? d / distance : d, 0.0, (i % 2 ? distance : 1.0) * scale, 0.0};
+    if (i % 8 == 7) ray.tMin = 1e-9;
+    const auto expected = reference(ray);
+    ASSERT_EQ(si.occluded(ray), expected.first >= 0) << "segment " << i;
+    blocked += expected.first >= 0;
+    near += relative < 1e-9;
+  }
+  std::printf("segments: %d of 40000 blocked, %d ending within 1e-9 of their target\n", blocked,
+              near);
+  EXPECT_GT(blocked, 5000);
+  EXPECT_LT(blocked, 35000);
+  EXPECT_GT(near, 10000);
 }
 
 TEST(SceneIntersector, 12_SpheresSeveralAtATimeGiveTheBitsOfOneAtATime) {
   // CTest runs it twice: with AVX where the processor has it, and with RAYLAB_NO_AVX=1.
+  // Rays, then segments (occlusion) ending near the surfaces.
   // With other shapes between the spheres (the loop over objects), then spheres only (the
   // intersector's branch-free pick among them, ties going to the later object: "again").
   checkSpheresAgainstOneAtATime(true);

@@ -142,13 +142,30 @@ namespace {
 // missed (the small spheres, columns sorted by radius) is not computed at all.
 constexpr double kMissFilter = 1e-12;
 
+// Two more cheap tests for segments (occlusion: tMax finite), with h = f + tMax d the end
+// of the segment seen from the centre, g(t) = |f + t d|^2 - r^2 (convex; its roots are the
+// sphere's) and S = |f|^2 + tMax^2 |d|^2 + r^2:
+// - both ends inside: g(0) < 0 and g(tMax) < 0, then the segment lies inside the ball and
+//   crosses no surface (with tMin >= 0 the near root is below tMin, the far one above
+//   tMax);
+// - it ends before the sphere: g(tMax) > 0 while g still falls there (h . d < 0), then
+//   g > 0 on all of [tMin, tMax] and both roots lie beyond tMax.
+// A lane counts as decided only when each of those values clears kSegmentFilter * S
+// (h . d: kSegmentFilter times the bound |h . d| <= sqrt(2 (|f|^2 + tMax^2 |d|^2) |d|^2)),
+// tens of thousands of times the naive values' rounding and the error of Sphere::roots'
+// roots (a few tens of ulps of r^2 in g, whatever the angle: a grazing root is off by
+// more, but so is its distance to tMax when g(tMax) is that far from 0). Then the exact
+// test finds no root in [tMin, tMax] either. Shadow rays towards smallpt's light skip the
+// walls around both ends and the light itself.
+constexpr double kSegmentFilter = 1e-11;
+
 // Sphere::roots for spheres (xs, ys, zs, rr)[0, count) (the columns padded to a multiple of
 // 4), k lanes at a time: every step is one IEEE operation, none fused, as the scalar code
 // compiles to without -mfma, so the bits are Sphere::nearestRoot's. A miss is a mask; the
 // steps after it run on whatever they get (a square root of a negative is NaN, a division
 // by 0 infinite) and are dropped. out[k]: the root nearestRoot gives, or NaN.
 void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const double* zs,
-                    const double* rr, const double* pad, int count, double* out) {
+                    const double* rr, const double* pad, int count, bool segment, double* out) {
   const __m128d signBit = _mm_set1_pd(-0.0);
   const __m128d zero = _mm_setzero_pd();
   const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
@@ -163,6 +180,13 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
   const auto dot = [](__m128d x0, __m128d y0, __m128d z0, __m128d x1, __m128d y1, __m128d z1) {
     return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, x1), _mm_mul_pd(y0, y1)), _mm_mul_pd(z0, z1));
   };
+  // The segment tests (kSegmentFilter), for a finite tMax only.
+  segment = segment && std::isfinite(ray.tMax);
+  const bool fromStart = ray.tMin >= 0.0;
+  const double aValue = glm::dot(d, d);
+  const __m128d tMaxSquaredA = _mm_set1_pd(ray.tMax * ray.tMax * aValue);
+  const __m128d segmentFilter = _mm_set1_pd(kSegmentFilter);
+  const __m128d slopeFilter = _mm_set1_pd(2.0 * kSegmentFilter * kSegmentFilter * aValue);
   const auto select = [](__m128d mask, __m128d yes, __m128d no) {
     return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
   };
@@ -179,7 +203,22 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
     const __m128d r2a = _mm_mul_pd(radius2, a);
     const __m128d gap = _mm_sub_pd(_mm_sub_pd(ffa, hb2), r2a);
     const __m128d bound = _mm_mul_pd(filter, _mm_add_pd(_mm_add_pd(ffa, hb2), r2a));
-    const __m128d sure = _mm_or_pd(_mm_cmpgt_pd(gap, bound), _mm_loadu_pd(&pad[std::size_t(k)]));
+    __m128d sure = _mm_or_pd(_mm_cmpgt_pd(gap, bound), _mm_loadu_pd(&pad[std::size_t(k)]));
+    if (segment && _mm_movemask_pd(sure) != 0x3) {
+      const __m128d hx = _mm_add_pd(fx, _mm_mul_pd(tMax, dx));
+      const __m128d hy = _mm_add_pd(fy, _mm_mul_pd(tMax, dy));
+      const __m128d hz = _mm_add_pd(fz, _mm_mul_pd(tMax, dz));
+      const __m128d hh = dot(hx, hy, hz, hx, hy, hz), hd = dot(hx, hy, hz, dx, dy, dz);
+      const __m128d ends = _mm_add_pd(ff, tMaxSquaredA);
+      const __m128d margin = _mm_mul_pd(segmentFilter, _mm_add_pd(ends, radius2));
+      const __m128d endInside = _mm_cmpgt_pd(_mm_sub_pd(radius2, hh), margin);
+      const __m128d startInside = _mm_cmpgt_pd(_mm_sub_pd(radius2, ff), margin);
+      const __m128d inside = fromStart ? _mm_and_pd(endInside, startInside) : _mm_setzero_pd();
+      const __m128d falling = _mm_and_pd(
+          _mm_cmplt_pd(hd, zero), _mm_cmpgt_pd(_mm_mul_pd(hd, hd), _mm_mul_pd(slopeFilter, ends)));
+      const __m128d before = _mm_and_pd(_mm_cmpgt_pd(_mm_sub_pd(hh, radius2), margin), falling);
+      sure = _mm_or_pd(sure, _mm_or_pd(inside, before));
+    }
     if (_mm_movemask_pd(sure) == 0x3) {
       _mm_storeu_pd(out + k, nan);
       continue;
@@ -206,7 +245,7 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
     const __m128d first = _mm_and_pd(_mm_cmpge_pd(low, tMin), _mm_cmple_pd(low, tMax));
     const __m128d second = _mm_and_pd(_mm_cmpge_pd(high, tMin), _mm_cmple_pd(high, tMax));
     const __m128d t = select(first, low, select(second, high, nan));
-    _mm_storeu_pd(out + k, select(miss, nan, t));
+    _mm_storeu_pd(out + k, select(_mm_or_pd(miss, sure), nan, t));
   }
 }
 
@@ -224,7 +263,7 @@ __attribute__((target("avx"))) inline __m256d select4(__m256d mask, __m256d yes,
 __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* xs,
                                                   const double* ys, const double* zs,
                                                   const double* rr, const double* pad, int count,
-                                                  double* out) {
+                                                  bool segment, double* out) {
   // roundRootsSse2's steps, four lanes wide (target "avx" enables no FMA either).
   const __m256d signBit = _mm256_set1_pd(-0.0);
   const __m256d zero = _mm256_setzero_pd();
@@ -237,6 +276,12 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
   const __m256d tMin = _mm256_set1_pd(ray.tMin), tMax = _mm256_set1_pd(ray.tMax);
   const __m256d slack = _mm256_set1_pd(1.0 + 1e-9);
   const __m256d filter = _mm256_set1_pd(kMissFilter);
+  segment = segment && std::isfinite(ray.tMax);
+  const bool fromStart = ray.tMin >= 0.0;
+  const double aValue = glm::dot(d, d);
+  const __m256d tMaxSquaredA = _mm256_set1_pd(ray.tMax * ray.tMax * aValue);
+  const __m256d segmentFilter = _mm256_set1_pd(kSegmentFilter);
+  const __m256d slopeFilter = _mm256_set1_pd(2.0 * kSegmentFilter * kSegmentFilter * aValue);
   for (int k = 0; k < count; k += 4) {
     const __m256d radius = _mm256_loadu_pd(&rr[std::size_t(k)]);
     const __m256d fx = _mm256_sub_pd(ox, _mm256_loadu_pd(&xs[std::size_t(k)]));
@@ -249,8 +294,26 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
     const __m256d r2a = _mm256_mul_pd(radius2, a);
     const __m256d gap = _mm256_sub_pd(_mm256_sub_pd(ffa, hb2), r2a);
     const __m256d bound = _mm256_mul_pd(filter, _mm256_add_pd(_mm256_add_pd(ffa, hb2), r2a));
-    const __m256d sure =
+    __m256d sure =
         _mm256_or_pd(_mm256_cmp_pd(gap, bound, _CMP_GT_OQ), _mm256_loadu_pd(&pad[std::size_t(k)]));
+    if (segment && _mm256_movemask_pd(sure) != 0xf) {
+      const __m256d hx = _mm256_add_pd(fx, _mm256_mul_pd(tMax, dx));
+      const __m256d hy = _mm256_add_pd(fy, _mm256_mul_pd(tMax, dy));
+      const __m256d hz = _mm256_add_pd(fz, _mm256_mul_pd(tMax, dz));
+      const __m256d hh = dot4(hx, hy, hz, hx, hy, hz), hd = dot4(hx, hy, hz, dx, dy, dz);
+      const __m256d ends = _mm256_add_pd(ff, tMaxSquaredA);
+      const __m256d margin = _mm256_mul_pd(segmentFilter, _mm256_add_pd(ends, radius2));
+      const __m256d endInside = _mm256_cmp_pd(_mm256_sub_pd(radius2, hh), margin, _CMP_GT_OQ);
+      const __m256d startInside = _mm256_cmp_pd(_mm256_sub_pd(radius2, ff), margin, _CMP_GT_OQ);
+      const __m256d inside =
+          fromStart ? _mm256_and_pd(endInside, startInside) : _mm256_setzero_pd();
+      const __m256d falling = _mm256_and_pd(
+          _mm256_cmp_pd(hd, zero, _CMP_LT_OQ),
+          _mm256_cmp_pd(_mm256_mul_pd(hd, hd), _mm256_mul_pd(slopeFilter, ends), _CMP_GT_OQ));
+      const __m256d before =
+          _mm256_and_pd(_mm256_cmp_pd(_mm256_sub_pd(hh, radius2), margin, _CMP_GT_OQ), falling);
+      sure = _mm256_or_pd(sure, _mm256_or_pd(inside, before));
+    }
     if (_mm256_movemask_pd(sure) == 0xf) {
       _mm256_storeu_pd(out + k, nan);
       continue;
@@ -280,7 +343,7 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
     const __m256d second =
         _mm256_and_pd(_mm256_cmp_pd(high, tMin, _CMP_GE_OQ), _mm256_cmp_pd(high, tMax, _CMP_LE_OQ));
     const __m256d t = select4(first, low, select4(second, high, nan));
-    _mm256_storeu_pd(out + k, select4(miss, nan, t));
+    _mm256_storeu_pd(out + k, select4(_mm256_or_pd(miss, sure), nan, t));
   }
 }
 
@@ -293,14 +356,15 @@ bool useAvx() {
 }  // namespace
 #endif
 
-bool SceneIntersector::roundRoots(const Ray& ray, double* out) const {
+bool SceneIntersector::roundRoots(const Ray& ray, bool segment, double* out) const {
 #if RAYLAB_SPHERES_SIMD
   const auto roots = useAvx() ? roundRootsAvx : roundRootsSse2;
   roots(ray, m_roundX.data(), m_roundY.data(), m_roundZ.data(), m_roundR.data(), m_roundPad.data(),
-        m_roundCount, out);
+        m_roundCount, segment, out);
   return true;
 #else
   (void)ray;
+  (void)segment;
   (void)out;
   return false;
 #endif
@@ -325,7 +389,7 @@ bool SceneIntersector::intersect(const Ray& ray, SceneHit& out) const {
   constexpr int kStackSpheres = 64;
   double roots[kStackSpheres];
   const bool precomputed =
-      m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, roots);
+      m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, false, roots);
   if (precomputed && m_allRound) {
     // Every object a static round sphere (smallpt). The same choice as the loop below,
     // without its branches: the last (in object order) of the smallest roots within tMax.
@@ -391,7 +455,7 @@ bool SceneIntersector::occluded(const Ray& ray) const {
   constexpr int kStackSpheres = 64;
   double roots[kStackSpheres];
   const bool precomputed =
-      m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, roots);
+      m_roundCount > 0 && m_roundCount + 3 <= kStackSpheres && roundRoots(ray, true, roots);
   if (precomputed) {
     for (int k = 0; k < m_roundCount; ++k)
       if (roots[k] == roots[k]) return true;  // not NaN: a root in range

@@ -127,8 +127,10 @@ class SceneIntersector {
   /// NaN when it gives none, into out[k] (m_roundCount values; out has room for the padded
   /// columns). Four spheres at a time with AVX, two with SSE2, the same operations in the
   /// same order as Sphere::roots: the same bits; a group of lanes that a cheap test proves
-  /// all missed is skipped (NaN). False when not on x86-64 (the caller loops).
-  bool roundRoots(const Ray& ray, double* out) const;
+  /// all missed is skipped (NaN). With `segment` (occlusion), lanes whose segment [tMin,
+  /// tMax] provably lies inside the sphere or ends before it are NaN without their roots.
+  /// False when not on x86-64 (the caller loops).
+  bool roundRoots(const Ray& ray, bool segment, double* out) const;
   /// Meshes' hierarchies rebuilt with the settings' split (Entry::bvh points into them).
   std::vector<std::shared_ptr<const Bvh>> m_rebuilt;
   std::vector<int> m_lights;
