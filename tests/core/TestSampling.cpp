@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <set>
@@ -269,6 +270,42 @@ std::vector<Vec2> stratifiedPoints(std::uint64_t seed, int x, int y, int n, int 
     points.push_back(s.nextStratified2D());
   }
   return points;
+}
+
+TEST(Sampling, 09_CosSinWithinAnUlp) {
+  // The warps' cosine and sine (fdlibm's kernels, no libm call): within one ulp of libm's
+  // on [-pi/4, pi/4], including tiny angles and both ends; by whole turns within 1e-15 of
+  // libm's cos(2 pi u), sin(2 pi u) (whose argument 2 pi u is itself rounded by up to
+  // 4.4e-16), with each quarter turn's signs, and exact at u = 0, 1/4, 1/2, 3/4.
+  const auto ulps = [](double value, double expected) {
+    if (value == expected) return 0.0;
+    const double a = std::abs(expected);
+    return std::abs(value - expected) / (std::nextafter(a, 2.0 * a + 1.0) - a);
+  };
+  Sampler rng(3, 1, 4, 1);
+  double worstCos = 0.0, worstSin = 0.0, worstTurn = 0.0;
+  for (int i = 0; i < 400000; ++i) {
+    double x = (2.0 * rng.next1D() - 1.0) * (kPi / 4.0);
+    if (i < 1000) x = (kPi / 4.0) * (1.0 - 1e-7 * i) * (i % 2 ? -1.0 : 1.0);
+    if (i >= 1000 && i < 2000) x = std::ldexp(kPi / 4.0, -(i - 1000) / 10) * (i % 2 ? -1.0 : 1.0);
+    const Vec2 cs = cosSinQuarter(x);
+    worstCos = std::max(worstCos, ulps(cs.x, std::cos(x)));
+    worstSin = std::max(worstSin, ulps(cs.y, std::sin(x)));
+    const double u = i < 2000 ? double(i) / 2000.0 : rng.next1D();
+    const Vec2 turn = cosSinTurn(u);
+    worstTurn = std::max({worstTurn, std::abs(turn.x - std::cos(2.0 * kPi * u)),
+                          std::abs(turn.y - std::sin(2.0 * kPi * u))});
+  }
+  std::cout << "worst: cos " << worstCos << " ulp, sin " << worstSin << " ulp, turn " << worstTurn
+            << "\n";
+  EXPECT_LE(worstCos, 1.0);
+  EXPECT_LE(worstSin, 1.0);
+  EXPECT_LE(worstTurn, 1e-15);
+  EXPECT_EQ(cosSinTurn(0.0), Vec2(1.0, 0.0));
+  EXPECT_EQ(cosSinTurn(0.25), Vec2(-0.0, 1.0));
+  EXPECT_EQ(cosSinTurn(0.5), Vec2(-1.0, -0.0));
+  EXPECT_EQ(cosSinTurn(0.75), Vec2(0.0, -1.0));
+  EXPECT_EQ(cosSinTurn(1.0), Vec2(1.0, 0.0));
 }
 
 TEST(StratifiedSampler, 01_PointsAreIn01AndDeterministic) {

@@ -11,15 +11,14 @@ Vec2 sampleUniformDisk(const Vec2& u) {
   const double ox = 2.0 * u.x - 1.0;
   const double oy = 2.0 * u.y - 1.0;
   if (ox == 0.0 && oy == 0.0) return {0.0, 0.0};
-  double r, theta;
+  // The angle is within pi / 4 of the x axis (cos, sin of theta) or of the y axis (theta =
+  // pi / 2 - x: cos theta = sin x, sin theta = cos x).
   if (std::abs(ox) > std::abs(oy)) {
-    r = ox;
-    theta = (kPi / 4.0) * (oy / ox);
-  } else {
-    r = oy;
-    theta = kPi / 2.0 - (kPi / 4.0) * (ox / oy);
+    const Vec2 cs = cosSinQuarter((kPi / 4.0) * (oy / ox));
+    return {ox * cs.x, ox * cs.y};
   }
-  return {r * std::cos(theta), r * std::sin(theta)};
+  const Vec2 cs = cosSinQuarter((kPi / 4.0) * (ox / oy));
+  return {oy * cs.y, oy * cs.x};
 }
 
 double uniformDiskPdf() { return 1.0 / kPi; }
@@ -38,8 +37,8 @@ Vec3 sampleUniformSphere(const Vec2& u) {
   // Archimedes: z uniform in [-1, 1] gives equal areas; phi uniform around the axis.
   const double z = 1.0 - 2.0 * u.x;
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-  const double phi = 2.0 * kPi * u.y;
-  return {r * std::cos(phi), r * std::sin(phi), z};
+  const Vec2 cs = cosSinTurn(u.y);
+  return {r * cs.x, r * cs.y, z};
 }
 
 double uniformSpherePdf() { return 1.0 / (4.0 * kPi); }
@@ -50,8 +49,8 @@ Vec3 sampleUniformCone(const Vec2& u, double cosThetaMax) {
   const double oneMinusCos = u.x * (1.0 - cosThetaMax);
   const double cosTheta = 1.0 - oneMinusCos;
   const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
-  const double phi = 2.0 * kPi * u.y;
-  return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+  const Vec2 cs = cosSinTurn(u.y);
+  return {sinTheta * cs.x, sinTheta * cs.y, cosTheta};
 }
 
 double uniformConePdf(double cosThetaMax) { return 1.0 / (2.0 * kPi * (1.0 - cosThetaMax)); }

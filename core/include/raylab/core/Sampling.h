@@ -30,6 +30,47 @@ struct Frame {
   Vec3 toWorld(const Vec3& local) const { return local.x * s + local.y * t + local.z * n; }
 };
 
+/// cos(x) and sin(x) for |x| <= pi / 4: fdlibm's kernel polynomials (__kernel_cos and
+/// __kernel_sin without their tail arguments), within one ulp of libm's there (checked by
+/// Sampling.09_CosSinWithinAnUlp). Sampling calls them on every bounce: libm's general sincos,
+/// with its range reduction, cost 5% of a path sample.
+inline Vec2 cosSinQuarter(double x) {
+  const double z = x * x;
+  const double sinTail =
+      -1.66666666666666324348e-01 +
+      z * (8.33333333332248946124e-03 +
+           z * (-1.98412698298579493134e-04 +
+                z * (2.75573137070700676789e-06 +
+                     z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10))));
+  const double cosTail =
+      z * (4.16666666666666019037e-02 +
+           z * (-1.38888888888741095749e-03 +
+                z * (2.48015872894767294178e-05 +
+                     z * (-2.75573143513906633035e-07 +
+                          z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+  const double half = 0.5 * z;
+  const double w = 1.0 - half;
+  return {w + (((1.0 - w) - half) + z * cosTail), x + x * z * sinTail};
+}
+
+/// cos(2 pi u) and sin(2 pi u) for u in [0, 1]: the nearest quarter turn k exactly (4 u - k
+/// is exact), the rest by cosSinQuarter, turned by k quarters.
+inline Vec2 cosSinTurn(double u) {
+  const double v = 4.0 * u;
+  const int k = int(v + 0.5);
+  const Vec2 cs = cosSinQuarter((v - double(k)) * (kPi / 2.0));
+  switch (k & 3) {
+    case 0:
+      return cs;
+    case 1:
+      return {-cs.y, cs.x};
+    case 2:
+      return {-cs.x, -cs.y};
+    default:
+      return {cs.y, -cs.x};
+  }
+}
+
 /// Cosine-weighted direction on the +z hemisphere (Malley's method).
 Vec3 sampleCosineHemisphere(const Vec2& u);
 /// Density of sampleCosineHemisphere per steradian: cos(theta) / pi (0 below the horizon).
