@@ -36,7 +36,7 @@ namespace raylab {
 namespace {
 
 /// Number of chi-square tests below that must pass (the Sidak correction's m).
-constexpr int kPositiveTests = 32;
+constexpr int kPositiveTests = 33;
 /// Overall significance level of the file.
 constexpr double kSignificance = 0.01;
 /// Per-test level: 1 - (1 - 0.01)^(1/18) = 5.58e-4.
@@ -513,10 +513,10 @@ TEST(Chi2, 07_LensSampling) {
 TEST(Chi2, 08_TheCountOfTestsMatchesTheCorrection) {
   // cosine 1 + sphere 1 + phong warp 1 + glossy 9 + sphere light 1 + quad light 1 + disk 2
   // + cone warp 1 + separated sphere light 1 + microfacet normals 2 + visible normals 6
-  // + rough conductor 3 + rough dielectric 3.
-  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1 + 2 + 6 + 3 + 3);
-  // 1 - (1 - 0.01)^(1/32).
-  EXPECT_NEAR(kAlpha, 3.1402e-4, 1e-7);
+  // + rough conductor 3 + rough dielectric 3 + separated sphere light by area 1.
+  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1 + 2 + 6 + 3 + 3 + 1);
+  // 1 - (1 - 0.01)^(1/33).
+  EXPECT_NEAR(kAlpha, 3.0451e-04, 1e-7);
 }
 
 TEST(Chi2, 09_UniformConeWarp) {
@@ -726,6 +726,91 @@ TEST(Chi2, 14_RoughDielectricSampling) {
   const RoughSetup wrong(MaterialType::RoughDielectric, MicrofacetModel::GGX, 0.36, 45.0);
   expectRejected(roughChi2("NEGATIVE rough dielectric 0.3 as 0.36", cases[0], wrong, 30),
                  "rough dielectric 0.3 as 0.36");
+}
+
+TEST(Chi2, 15_SphereLightCapByArea) {
+  // Chi2.10's light and room, seen from beside the cap (a point 0.45 below the rim's plane
+  // and 1.7 from the light's axis): the cap is seen obliquely and fills little of its
+  // ball's cone, so the sampler draws points uniformly in area on the cap instead and
+  // converts their density to solid angle. The claimed density (lightPdf at the first
+  // hit of a real ray) must be the density of the samples; the mean of 1 / pdf over all
+  // samples (0 for dropped ones) must be the solid angle the light shows through the room,
+  // found by rays; and fewer samples are dropped than the cone would drop.
+  Scene scene = lightScene(std::make_unique<Sphere>(Point3(0, 3, 0), 2.5));
+  Material wall;
+  wall.name = "wall";
+  scene.materials.push_back(wall);
+  scene.objects.emplace_back("room", std::make_unique<Sphere>(Point3(0, -10, 0), 10.8), 1);
+  const SceneIntersector si(scene);
+  const Point3 ref(1.6, 0.3, -0.4);
+  const double D = 13.0, R = 2.5, rho = 10.8;
+  const double cosAlpha = (D * D + R * R - rho * rho) / (2.0 * R * D);
+  const Point3 rimCentre(0.0, 3.0 - R * cosAlpha, 0.0);
+  const double rimRadius = R * std::sqrt(1.0 - cosAlpha * cosAlpha);
+  const double distance = glm::length(rimCentre - ref);
+  const double cosMax = std::sqrt(1.0 - (rimRadius / distance) * (rimRadius / distance));
+  // The grid: the light's whole cone, fine at its silhouette (SqrtEdge), where the area
+  // density converted to solid angle has its 1 / cos_light singularity.
+  const Vec3 toLight = Point3(0, 3, 0) - ref;
+  const double lightDistance = glm::length(toLight);
+  SphereGrid grid{Frame(toLight / lightDistance), Polar::SqrtEdge,
+                  std::sqrt(1.0 - (R / lightDistance) * (R / lightDistance))};
+  Sampler rng(31, 0, 0, 0);
+  long long accepted = 0;
+  double inversePdf = 0.0, inversePdf2 = 0.0;
+  constexpr long long kSamples = 1000000;
+  auto sample = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(ref, rng.next2D(), rng.next1D());
+    if (!ls) return std::nullopt;
+    ++accepted;
+    inversePdf += 1.0 / ls->pdf;
+    inversePdf2 += 1.0 / (ls->pdf * ls->pdf);
+    return grid.toGrid(ls->wi);
+  };
+  expectAccepted(
+      runChi2("sphere light cap by area", 60, 60, kSamples, sample,
+              grid.density([&](const Vec3& w) { return lightDensity(si, w, ref); }), 24, false),
+      "sphere light cap by area");
+  // The visible solid angle by rays: directions uniform in the ball's cone, the share whose
+  // first hit is the light.
+  Sampler rays(32, 0, 0, 0);
+  const Frame frame((rimCentre - ref) / distance);
+  long long seen = 0;
+  constexpr long long kRays = 1000000;
+  for (long long i = 0; i < kRays; ++i) {
+    const Vec3 w = frame.toWorld(sampleUniformCone(rays.next2D(), cosMax));
+    const auto hit = si.intersect(Ray::make(ref, w));
+    seen += hit && hit->object == 0;
+  }
+  const double cone = 2.0 * kPi * (1.0 - cosMax);
+  const double byRays = cone * double(seen) / double(kRays);
+  const double byRaysError =
+      cone * std::sqrt(double(seen) * double(kRays - seen) / double(kRays)) / double(kRays);
+  const double mean = inversePdf / double(kSamples);
+  const double meanError =
+      std::sqrt((inversePdf2 / double(kSamples) - mean * mean) / double(kSamples));
+  std::printf(
+      "visible solid angle: %.6f +- %.6f by light samples, %.6f +- %.6f by rays; "
+      "%.3f of light samples kept, %.3f of the cone's directions reach the light\n",
+      mean, meanError, byRays, byRaysError, double(accepted) / double(kSamples),
+      double(seen) / double(kRays));
+  EXPECT_NEAR(mean, byRays, 5.0 * std::hypot(meanError, byRaysError));
+  EXPECT_GT(double(accepted) / double(kSamples), double(seen) / double(kRays) + 0.1);
+  // Negative control: the same sampler against the density uniform over the visible
+  // directions (what the cap's cone gives), scaled to the same kept share.
+  Sampler rng2(33, 0, 0, 0);
+  auto sample2 = [&]() -> std::optional<Vec2> {
+    const auto ls = si.sampleLight(ref, rng2.next2D(), rng2.next1D());
+    if (!ls) return std::nullopt;
+    return grid.toGrid(ls->wi);
+  };
+  const double kept = double(accepted) / double(kSamples);
+  expectRejected(runChi2("NEGATIVE cap by area as uniform in angle", 60, 60, kSamples, sample2,
+                         grid.density([&](const Vec3& w) {
+                           return lightDensity(si, w, ref) > 0.0 ? kept / byRays : 0.0;
+                         }),
+                         24, false),
+                 "cap by area as uniform in angle");
 }
 
 }  // namespace

@@ -65,6 +65,16 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
         const Vec3 axis = inside ? sep.axis : -sep.axis;
         sep.capCentre[inside] = m_centre + R * cosAlpha * axis;
         sep.capRadius2[inside] = R * R * std::max(0.0, 1.0 - cosAlpha * cosAlpha);
+        // 1 - cos(half-angle) of the cap: (rho^2 - (D - R)^2) / (2 R D) inside S,
+        // ((D + R)^2 - rho^2) / (2 R D) outside it, as products of sums (smallpt's cap is
+        // 4.5e-4 high on the unit sphere).
+        const double height = inside ? (rho - D + R) * (rho + D - R) / (2.0 * R * D)
+                                     : (D + R - rho) * (D + R + rho) / (2.0 * R * D);
+        sep.capHeight[inside] = std::clamp(height, 0.0, 1.0);
+        sep.capArea[inside] = 2.0 * kPi * R * R * sep.capHeight[inside];
+        const Frame frame(axis);
+        sep.capS[inside] = frame.s;
+        sep.capT[inside] = frame.t;
       }
     }
     m_separators.push_back(sep);
@@ -81,13 +91,40 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
     if (sep.relation == Separator::Relation::Encloses) m_encloses |= bit;
     if (sep.relation == Separator::Relation::Cuts) {
       m_cuts.push_back(int(i));
+      m_cutsMask |= bit;
       if (sep.capRadius2[0] >= 0.0) m_capOutside |= bit;
       if (sep.capRadius2[1] >= 0.0) m_capInside |= bit;
+    }
+  }
+  // Which caps lie within which: the cap of half-angle alpha around a lies within the one
+  // of half-angle beta around b when angle(a, b) + alpha <= beta. (A wrong verdict would
+  // cost efficiency only: sample() and pdf() skip the same checks, and shadow rays find
+  // what hides a point.)
+  const auto capAxis = [](const Separator& s, int side) { return side ? s.axis : -s.axis; };
+  const auto halfAngle = [](const Separator& s, int side) {
+    return std::acos(std::clamp(side ? s.cosAlpha : -s.cosAlpha, -1.0, 1.0));
+  };
+  for (const int i : m_cuts) {
+    Separator& a = m_separators[std::size_t(i)];
+    for (const int side : {0, 1}) {
+      if (!(a.capRadius2[side] >= 0.0)) continue;  // only caps that are sampled by area
+      for (const int j : m_cuts) {
+        const Separator& b = m_separators[std::size_t(j)];
+        for (const int sideJ : {0, 1}) {
+          const Vec3 u = capAxis(a, side), v = capAxis(b, sideJ);
+          const double between = std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+          if (j != i && between + halfAngle(a, side) + 1e-9 <= halfAngle(b, sideJ))
+            a.within[side][sideJ] |= std::uint64_t(1) << j;
+        }
+      }
     }
   }
 }
 
 SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
+  // One named result, returned from everywhere, so that it is built in the caller's
+  // place: copying it out through the stack cost store-forwarding stalls.
+  // best.mode stays Invisible until the end (or Area, returned at once).
   Plan best;
   // From inside (or on) the light there is no cone: area sampling.
   const Vec3 toCentre = m_centre - ref;
@@ -102,14 +139,18 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
   Vec3 bestToCentre = toCentre;
   double bestDistance2 = centreDistance2;
   double bestRadius2 = m_radius * m_radius;
-  const auto consider = [&](const Point3& centre, double radius2) {
-    const Vec3 v = centre - ref;
+  const auto consider = [&](int i, int side) {
+    const Separator& s = m_separators[std::size_t(i)];
+    const double radius2 = s.capRadius2[side];
+    const Vec3 v = s.capCentre[side] - ref;
     const double distance2 = glm::dot(v, v);
     if (!(distance2 > radius2)) return;
     if (radius2 * bestDistance2 < bestRadius2 * distance2) {
       bestRadius2 = radius2;
       bestToCentre = v;
       bestDistance2 = distance2;
+      best.cap = i;
+      best.capSide = side;
     }
   };
   if (m_separators.size() <= 64) {
@@ -120,14 +161,13 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
       const double fx = ref.x - m_sepX[i], fy = ref.y - m_sepY[i], fz = ref.z - m_sepZ[i];
       inside |= std::uint64_t(fx * fx + fy * fy + fz * fz < m_sepRadius2[i]) << i;
     }
-    if ((inside & m_disjoint) != 0 || (~inside & m_encloses) != 0) return Plan{};
+    if ((inside & m_disjoint) != 0 || (~inside & m_encloses) != 0) return best;
     best.inside = inside;
+    best.check = m_cutsMask;
     for (std::uint64_t caps = (inside & m_capInside) | (~inside & m_capOutside); caps != 0;
          caps &= caps - 1) {
       const int i = __builtin_ctzll(caps);
-      const Separator& s = m_separators[std::size_t(i)];
-      const int side = int((inside >> i) & 1);
-      consider(s.capCentre[side], s.capRadius2[side]);
+      consider(i, int((inside >> i) & 1));
     }
   }
   for (std::size_t i = m_separators.size() <= 64 ? m_separators.size() : 0; i < m_separators.size();
@@ -137,14 +177,30 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
     if (inside && i < 64) best.inside |= std::uint64_t(1) << i;
     switch (s.relation) {
       case Separator::Relation::Disjoint:
-        if (inside) return Plan{};  // the light is on the other side of S
+        if (inside) return best;  // the light is on the other side of S
         break;
       case Separator::Relation::Encloses:
-        if (!inside) return Plan{};
+        if (!inside) return best;
         break;
       case Separator::Relation::Cuts:
-        if (s.capRadius2[inside] >= 0.0) consider(s.capCentre[inside], s.capRadius2[inside]);
+        if (s.capRadius2[inside] >= 0.0) consider(int(i), int(inside));
         break;
+    }
+  }
+  if (best.cap >= 0) {
+    // The narrowest cone is a cap's ball. Of its directions, about the share cos(phi) reach
+    // the cap, phi the angle at the cap between its axis and ref (the cap seen obliquely
+    // fills less of its ball): sample the cap by area instead where cos(phi) is below 0.9
+    // (kConeMinCos2; for smallpt's flat cap, everywhere but close under it).
+    const Separator& s = m_separators[std::size_t(best.cap)];
+    const Vec3 axis = best.capSide ? s.axis : -s.axis;
+    const double along = -glm::dot(bestToCentre, axis);  // ref - capCentre along the axis
+    if (!(along > 0.0) || along * along < kConeMinCos2 * bestDistance2) {
+      best.mode = Plan::Mode::CapArea;
+      // Separators whose side ref is on contains the whole cap cannot drop its points.
+      const int side = best.capSide;
+      best.check &= ~((best.inside & s.within[side][1]) | (~best.inside & s.within[side][0]));
+      return best;
     }
   }
   best.mode = Plan::Mode::Cone;
@@ -160,7 +216,8 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
 
 bool SphereLightSampler::visibleSide(const Plan& plan, const Point3& ref, const Normal3& n) const {
   if (m_separators.size() <= 64) {
-    for (const int i : m_cuts) {
+    for (std::uint64_t check = plan.check; check != 0; check &= check - 1) {
+      const int i = __builtin_ctzll(check);
       const Separator& s = m_separators[std::size_t(i)];
       const bool inside = (plan.inside >> i) & 1;
       const double side = glm::dot(n, s.axis) - s.cosAlpha;
@@ -187,6 +244,25 @@ bool SphereLightSampler::sample(const Point3& ref, const Vec2& u, LightSample& l
       // Uniform on the surface, converted to solid angle (only the outside emits, so from
       // inside this finds nothing; it keeps the density well defined).
       if (!lightSampleFromArea(m_sphere->sampleArea(u), ref, ls)) return false;
+      break;
+    }
+    case Plan::Mode::CapArea: {
+      // Uniform in area on the cap (Archimedes: 1 - cos(theta) uniform in [0, height]),
+      // converted to solid angle; points facing away from ref or hidden by another
+      // separating sphere are dropped.
+      const Separator& s = m_separators[std::size_t(p.cap)];
+      const int side = p.capSide;
+      const double oneMinusCos = u.x * s.capHeight[side];
+      const double sinTheta = std::sqrt(oneMinusCos * (2.0 - oneMinusCos));
+      const Vec2 cs = cosSinTurn(u.y);
+      const Vec3 axis = side ? s.axis : -s.axis;
+      ShapeSample point;
+      point.n = (sinTheta * cs.x) * s.capS[side] + (sinTheta * cs.y) * s.capT[side] +
+                (1.0 - oneMinusCos) * axis;
+      if (!visibleSide(p, ref, point.n)) return false;
+      point.p = m_centre + m_radius * point.n;
+      point.pdfArea = 1.0 / s.capArea[side];
+      if (!lightSampleFromArea(point, ref, ls)) return false;
       break;
     }
     case Plan::Mode::Cone: {
@@ -229,6 +305,11 @@ double SphereLightSampler::pdf(const Point3& ref, const Point3& point, const Nor
   const double cosLight = -glm::dot(n, d) / std::sqrt(distance2);
   if (!(cosLight > 0.0)) return 0.0;
   if (p.mode == Plan::Mode::Area) return m_sphere->pdfArea(point) * distance2 / cosLight;
+  if (p.mode == Plan::Mode::CapArea) {
+    // Every visible point lies in the sampled cap, where the area density is uniform.
+    if (!visibleSide(p, ref, n)) return 0.0;
+    return distance2 / (m_separators[std::size_t(p.cap)].capArea[p.capSide] * cosLight);
+  }
   // Cone: every visible point lies in the chosen cone, where the density is uniform.
   return visibleSide(p, ref, n) ? uniformConePdf(p.cosThetaMax) : 0.0;
 }
