@@ -52,9 +52,8 @@ Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const V
   return f * cosThetaI;
 }
 
-QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
-                   double pdf, double tMax) {
-  QueuedRay child;
+void childRay(QueuedRay& child, const HitContext& context, const Vec3& wi, RayKind kind,
+              const Vec3& weight, double pdf, double tMax) {
   // Past the hit's error bound, or (the acne lesson's switch) from the computed point.
   child.ray = context.settings.rayOffset ? spawnRay(context.hit.si, wi, tMax)
                                          : Ray::make(context.hit.si.p, wi, 0.0, tMax);
@@ -63,7 +62,6 @@ QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, cons
   child.depth = context.ray.depth + 1;
   child.weight = weight;
   child.pdf = pdf;
-  return child;
 }
 
 Vec3 ambientSeen(const HitContext& context) {
@@ -75,8 +73,8 @@ Vec3 emitterSeen(const HitContext& context) {
   return context.intersector.emitted(context.hit.object, context.hit.si, context.ray.ray.direction);
 }
 
-QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
-                    const Vec3& Le, bool targetIsSurface) {
+void shadowRay(QueuedRay& child, const HitContext& context, const Point3& target,
+               const Vec3& weight, const Vec3& Le, bool targetIsSurface) {
   const Point3 origin = context.settings.rayOffset
                             ? offsetRayOrigin(context.hit.si, target - context.hit.si.p)
                             : context.hit.si.p;
@@ -87,24 +85,24 @@ QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3&
       targetIsSurface
           ? std::max(0.0, distance * (1.0 - kShadowShortening) - rayOffsetDistance(target))
           : distance;
-  QueuedRay child;
   child.ray = Ray::make(origin, target - origin, 0.0, tMax, context.ray.ray.time);
   child.kind = RayKind::Shadow;
   child.depth = context.ray.depth + 1;
   child.weight = weight;
   child.shadowLe = Le;
-  return child;
 }
 
-QueuedRay shadowRayToSample(const HitContext& context, const Point3& ref, const LightSample& ls,
-                            const Vec3& weight) {
+void shadowRayToSample(QueuedRay& child, const HitContext& context, const Point3& ref,
+                       const LightSample& ls, const Vec3& weight) {
   const SurfaceInteraction& si = context.hit.si;
   // offsetRayOrigin(si, w) depends on w only through the side of the surface w points to.
   const bool sameOrigin = context.settings.rayOffset &&
                           (glm::dot(si.n, ls.p - si.p) < 0.0) == !si.frontFace && ls.distance > 0.0;
   const Vec3& velocity = context.intersector.scene().objects[std::size_t(ls.object)].velocity;
-  if (!sameOrigin || velocity != Vec3(0.0)) return shadowRay(context, ls.p, weight, ls.Le, true);
-  QueuedRay child;
+  if (!sameOrigin || velocity != Vec3(0.0)) {
+    shadowRay(child, context, ls.p, weight, ls.Le, true);
+    return;
+  }
   const double tMax =
       std::max(0.0, ls.distance * (1.0 - kShadowShortening) - rayOffsetDistance(ls.p));
   child.ray = Ray{ref, ls.wi, 0.0, tMax, context.ray.ray.time};
@@ -112,7 +110,6 @@ QueuedRay shadowRayToSample(const HitContext& context, const Point3& ref, const 
   child.depth = context.ray.depth + 1;
   child.weight = weight;
   child.shadowLe = ls.Le;
-  return child;
 }
 
 void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
@@ -127,9 +124,8 @@ void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<Queue
     if (isNonPositive(fCos)) continue;
     // Radiance arriving from a point light: I / d^2 (a classic material's own falloff),
     // weight f cos.
-    children.push_back(shadowRay(context, light.position, fCos,
-                                 attenuated(context.material, light.intensity, 1.0, distance2),
-                                 false));
+    shadowRay(children.emplace_back(), context, light.position, fCos,
+              attenuated(context.material, light.intensity, 1.0, distance2), false);
   }
 }
 
@@ -155,7 +151,7 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
       const Vec3 fCos = localFactor(context, ls->wi, lobes);
       if (isNonPositive(fCos) || isNonPositive(ls->Le)) continue;
       // Monte Carlo estimate of the light's integral: f cos Le / pdf, averaged over N.
-      children.push_back(shadowRay(context, ls->p, fCos * (invN / ls->pdf), ls->Le, true));
+      shadowRay(children.emplace_back(), context, ls->p, fCos * (invN / ls->pdf), ls->Le, true);
     }
   }
 }
@@ -193,8 +189,8 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
     Ray probe = Ray::make(si.p - shift, wi);
     const std::optional<Hit> entry = light.shape->intersect(probe);
     const Point3 target = entry ? si.p + entry->t * wi : centre;
-    children.push_back(shadowRay(context, target, fCos,
-                                 attenuated(context.material, Le, projectedArea, distance2), true));
+    shadowRay(children.emplace_back(), context, target, fCos,
+              attenuated(context.material, Le, projectedArea, distance2), true);
   }
 }
 
@@ -213,7 +209,7 @@ EndReason addSpecularChildren(const HitContext& context, std::vector<QueuedRay>&
   for (int i = 0; i < lobes.count; ++i) {
     const BsdfSample& lobe = lobes.lobe[i];
     if (isNonPositive(lobe.weight)) continue;
-    children.push_back(childRay(context, lobe.wi, lobe.kind, lobe.weight, 0.0));
+    childRay(children.emplace_back(), context, lobe.wi, lobe.kind, lobe.weight, 0.0);
   }
   return children.size() == before ? EndReason::Absorbed : EndReason::Spawned;
 }

@@ -36,12 +36,14 @@ enum class Lobes {
 Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
                     Lobes lobes);
 
-/// A child leaving the hit of `context` in unit world direction `wi`: origin offset by the
-/// RayOffset rule (or the hit point itself when settings.rayOffset is off), the parent's time,
-/// depth + 1, the given kind, weight and pdf (the solid-angle density it was sampled with, 0 for a
-/// deterministic direction; path tracing weighs emitters it finds by it), t in [0, tMax].
-QueuedRay childRay(const HitContext& context, const Vec3& wi, RayKind kind, const Vec3& weight,
-                   double pdf, double tMax = kInfinity);
+/// Into `child` (a default QueuedRay, typically children.emplace_back(): rays are written in
+/// place, as copying them through the stack stalled on store forwarding), a child leaving the
+/// hit of `context` in unit world direction `wi`: origin offset by the RayOffset rule (or the
+/// hit point itself when settings.rayOffset is off), the parent's time, depth + 1, the given
+/// kind, weight and pdf (the solid-angle density it was sampled with, 0 for a deterministic
+/// direction; path tracing weighs emitters it finds by it), t in [0, tMax].
+void childRay(QueuedRay& child, const HitContext& context, const Vec3& wi, RayKind kind,
+              const Vec3& weight, double pdf, double tMax = kInfinity);
 
 /// The classic model's ambient term at a Phong or BlinnPhong hit (classic::ambientTerm,
 /// ambient * colour), returned as radiance found there; 0 for every other material.
@@ -51,17 +53,18 @@ Vec3 ambientSeen(const HitContext& context);
 /// non-emitters and for the back side of lights).
 Vec3 emitterSeen(const HitContext& context);
 
-/// A shadow ray from the hit of `context` to the light point `target` (world space),
-/// stopping just short of it, with `weight` and the radiance `Le` it delivers.
-QueuedRay shadowRay(const HitContext& context, const Point3& target, const Vec3& weight,
-                    const Vec3& Le, bool targetIsSurface);
+/// Into `child` (as childRay), a shadow ray from the hit of `context` to the light point
+/// `target` (world space), stopping just short of it, with `weight` and the radiance `Le` it
+/// delivers.
+void shadowRay(QueuedRay& child, const HitContext& context, const Point3& target,
+               const Vec3& weight, const Vec3& Le, bool targetIsSurface);
 
-/// shadowRay(context, ls.p, weight, ls.Le, true) for a light point sampled from `ref`, the
+/// shadowRay(child, context, ls.p, weight, ls.Le, true) for a light point sampled from `ref`, the
 /// hit's offset origin on its facing side (offsetRayOrigin(si, si.facingNormal())): when
 /// the shadow ray leaves from that same origin and the light does not move, the sample's
 /// direction and distance are the ray's, and are not computed again.
-QueuedRay shadowRayToSample(const HitContext& context, const Point3& ref, const LightSample& ls,
-                            const Vec3& weight);
+void shadowRayToSample(QueuedRay& child, const HitContext& context, const Point3& ref,
+                       const LightSample& ls, const Vec3& weight);
 
 /// Appends one shadow ray per point light that lies above the surface: weight
 /// f cos (classicShading; bsdf::eval for rough materials), delivering intensity / d^2 (for

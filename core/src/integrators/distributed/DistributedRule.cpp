@@ -29,7 +29,7 @@ void addGlossyRays(const HitContext& context, int count, std::vector<QueuedRay>&
     if (cosThetaI <= 0.0 || !(pdf > 0.0) || !std::isfinite(pdf)) continue;
     // Weight f cos / pdf / N with the highlight f = ks (n+2)/(2 pi) cos^n(alpha).
     const Vec3 weight(bsdf::phongLobe(m, local.z) * cosThetaI / pdf * invN);
-    children.push_back(shading::childRay(context, wi, RayKind::Glossy, weight, pdf));
+    shading::childRay(children.emplace_back(), context, wi, RayKind::Glossy, weight, pdf);
   }
 }
 
@@ -42,7 +42,8 @@ void addRoughRays(const HitContext& context, int count, std::vector<QueuedRay>& 
     const std::optional<BsdfSample> bs =
         bsdf::sample(context.material, context.hit.si, wo, context.sampler);
     if (!bs || !(bs->pdf > 0.0) || !std::isfinite(bs->pdf)) continue;
-    children.push_back(shading::childRay(context, bs->wi, bs->kind, bs->weight * invN, bs->pdf));
+    shading::childRay(children.emplace_back(), context, bs->wi, bs->kind, bs->weight * invN,
+                      bs->pdf);
   }
 }
 

@@ -83,7 +83,7 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
                              : 1.0;
         const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
         if (isUsable(weight) && isUsable(ls->Le))
-          children.push_back(shading::shadowRayToSample(context, ref, *ls, weight));
+          shading::shadowRayToSample(children.emplace_back(), context, ref, *ls, weight);
       }
     }
     for (const PointLight& light : context.intersector.scene().pointLights) {
@@ -92,8 +92,8 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
       if (!(distance2 > 0.0)) continue;
       const Vec3 weight = bsdf::eval(m, si, wo, d / std::sqrt(distance2)) * rouletteScale;
       if (isUsable(weight))
-        children.push_back(shading::shadowRay(context, light.position, weight,
-                                              light.intensity / distance2, false));
+        shading::shadowRay(children.emplace_back(), context, light.position, weight,
+                           light.intensity / distance2, false);
     }
   }
 
@@ -102,8 +102,8 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
   if (bs && (bs->specular || (bs->pdf > 0.0 && std::isfinite(bs->pdf)))) {
     const Vec3 weight = bs->weight * rouletteScale;
     if (isUsable(weight))
-      children.push_back(
-          shading::childRay(context, bs->wi, bs->kind, weight, bs->specular ? 0.0 : bs->pdf));
+      shading::childRay(children.emplace_back(), context, bs->wi, bs->kind, weight,
+                        bs->specular ? 0.0 : bs->pdf);
   }
   return {emitted, children.empty() ? EndReason::Absorbed : EndReason::Spawned};
 }
