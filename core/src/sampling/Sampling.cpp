@@ -12,13 +12,13 @@ Vec2 sampleUniformDisk(const Vec2& u) {
   const double oy = 2.0 * u.y - 1.0;
   if (ox == 0.0 && oy == 0.0) return {0.0, 0.0};
   // The angle is within pi / 4 of the x axis (cos, sin of theta) or of the y axis (theta =
-  // pi / 2 - x: cos theta = sin x, sin theta = cos x).
-  if (std::abs(ox) > std::abs(oy)) {
-    const Vec2 cs = cosSinQuarter((kPi / 4.0) * (oy / ox));
-    return {ox * cs.x, ox * cs.y};
-  }
-  const Vec2 cs = cosSinQuarter((kPi / 4.0) * (ox / oy));
-  return {oy * cs.y, oy * cs.x};
+  // pi / 2 - x: cos theta = sin x, sin theta = cos x). Selects, not branches: which axis is
+  // a coin toss per sample.
+  const bool nearX = std::abs(ox) > std::abs(oy);
+  const double r = nearX ? ox : oy, other = nearX ? oy : ox;
+  const Vec2 cs = cosSinQuarter((kPi / 4.0) * (other / r));
+  const double along = nearX ? cs.x : cs.y, across = nearX ? cs.y : cs.x;
+  return {r * along, r * across};
 }
 
 double uniformDiskPdf() { return 1.0 / kPi; }

@@ -6,6 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define RAYLAB_SEPARATORS_SSE2 1
+#include <emmintrin.h>
+#else
+#define RAYLAB_SEPARATORS_SSE2 0
+#endif
+
 namespace raylab {
 
 namespace {
@@ -96,6 +103,13 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
       if (sep.capRadius2[1] >= 0.0) m_capInside |= bit;
     }
   }
+  // Padded to an even count (a radius^2 of -1 holds no point) for plan()'s pairs.
+  if (m_sepX.size() % 2 != 0) {
+    m_sepX.push_back(0.0);
+    m_sepY.push_back(0.0);
+    m_sepZ.push_back(0.0);
+    m_sepRadius2.push_back(-1.0);
+  }
   // Which caps lie within which: the cap of half-angle alpha around a lies within the one
   // of half-angle beta around b when angle(a, b) + alpha <= beta. (A wrong verdict would
   // cost efficiency only: sample() and pdf() skip the same checks, and shadow rays find
@@ -157,10 +171,24 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
     // Which separators ref is inside (isInside's operations), then the verdicts as masks,
     // and the caps' balls on ref's side considered in the same order as the loop below.
     std::uint64_t inside = 0;
+#if RAYLAB_SEPARATORS_SSE2
+    // Two at a time, the same IEEE operations lane by lane (no FMA).
+    const __m128d rx = _mm_set1_pd(ref.x), ry = _mm_set1_pd(ref.y), rz = _mm_set1_pd(ref.z);
+    for (std::size_t i = 0; i < m_sepX.size(); i += 2) {
+      const __m128d fx = _mm_sub_pd(rx, _mm_loadu_pd(&m_sepX[i]));
+      const __m128d fy = _mm_sub_pd(ry, _mm_loadu_pd(&m_sepY[i]));
+      const __m128d fz = _mm_sub_pd(rz, _mm_loadu_pd(&m_sepZ[i]));
+      const __m128d f2 =
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(fx, fx), _mm_mul_pd(fy, fy)), _mm_mul_pd(fz, fz));
+      inside |= std::uint64_t(_mm_movemask_pd(_mm_cmplt_pd(f2, _mm_loadu_pd(&m_sepRadius2[i]))))
+                << i;
+    }
+#else
     for (std::size_t i = 0; i < m_sepX.size(); ++i) {
       const double fx = ref.x - m_sepX[i], fy = ref.y - m_sepY[i], fz = ref.z - m_sepZ[i];
       inside |= std::uint64_t(fx * fx + fy * fy + fz * fz < m_sepRadius2[i]) << i;
     }
+#endif
     if ((inside & m_disjoint) != 0 || (~inside & m_encloses) != 0) return best;
     best.inside = inside;
     best.check = m_cutsMask;

@@ -146,7 +146,8 @@ class SphereLightSampler {
   Point3 m_centre;
   double m_radius;
   std::vector<Separator> m_separators;
-  /// The first 64 separators: centres and squared radii as columns, and bit i set in
+  /// The first 64 separators: centres and squared radii as columns (padded to an even
+  /// count with a separator that holds no point), and bit i set in
   /// m_disjoint / m_encloses by relation, in m_capInside / m_capOutside when the cap on
   /// that side has a ball (capRadius2 >= 0); m_cuts lists the Cuts separators.
   std::vector<double> m_sepX, m_sepY, m_sepZ, m_sepRadius2;
