@@ -138,7 +138,7 @@ namespace {
 // a r^2, and Sphere::roots' l^2 one of some ulps of |f|^2 <= S; a lane counts as missed only
 // when the naive value exceeds kMissFilter * S, a thousand times both errors: then the
 // exact test finds l > r, a negative discriminant, no root. Multiplications only, where
-// the roots take two divisions and two square roots per lane, and a group of lanes all
+// the roots take a division and a square root per lane, and a group of lanes all
 // missed (the small spheres, columns sorted by radius) is not computed at all.
 constexpr double kMissFilter = 1e-12;
 
@@ -174,6 +174,7 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
   const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z);
   const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
   const __m128d a = _mm_set1_pd(glm::dot(d, d));
+  const __m128d inverseA = _mm_set1_pd(1.0 / glm::dot(d, d));
   const __m128d tMin = _mm_set1_pd(ray.tMin), tMax = _mm_set1_pd(ray.tMax);
   const __m128d slack = _mm_set1_pd(1.0 + 1e-9);
   const __m128d filter = _mm_set1_pd(kMissFilter);
@@ -223,22 +224,20 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
       _mm_storeu_pd(out + k, nan);
       continue;
     }
-    const __m128d along = _mm_div_pd(halfB, a);
+    const __m128d along = _mm_mul_pd(halfB, inverseA);
     const __m128d lx = _mm_sub_pd(fx, _mm_mul_pd(along, dx));
     const __m128d ly = _mm_sub_pd(fy, _mm_mul_pd(along, dy));
     const __m128d lz = _mm_sub_pd(fz, _mm_mul_pd(along, dz));
     const __m128d lineDistance2 = dot(lx, ly, lz, lx, ly, lz);
     const __m128d far = _mm_cmpgt_pd(lineDistance2, _mm_mul_pd(radius2, slack));
-    const __m128d lineDistance = _mm_sqrt_pd(lineDistance2);
-    const __m128d discriminant = _mm_mul_pd(_mm_mul_pd(a, _mm_sub_pd(radius, lineDistance)),
-                                            _mm_add_pd(radius, lineDistance));
+    const __m128d discriminant = _mm_mul_pd(a, _mm_sub_pd(radius2, lineDistance2));
     const __m128d miss = _mm_or_pd(far, _mm_cmplt_pd(discriminant, zero));
     const __m128d c = _mm_sub_pd(ff, radius2);
     const __m128d root = _mm_sqrt_pd(discriminant);
     const __m128d signedRoot = _mm_or_pd(_mm_andnot_pd(signBit, root), _mm_and_pd(signBit, halfB));
     const __m128d q = _mm_xor_pd(_mm_add_pd(halfB, signedRoot), signBit);
     const __m128d qZero = _mm_cmpeq_pd(q, zero);
-    const __m128d t0 = _mm_andnot_pd(qZero, _mm_div_pd(q, a));
+    const __m128d t0 = _mm_andnot_pd(qZero, _mm_mul_pd(q, inverseA));
     const __m128d t1 = _mm_andnot_pd(qZero, _mm_div_pd(c, q));
     const __m128d swap = _mm_cmpgt_pd(t0, t1);
     const __m128d low = select(swap, t1, t0), high = select(swap, t0, t1);
@@ -273,6 +272,7 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
   const __m256d ox = _mm256_set1_pd(o.x), oy = _mm256_set1_pd(o.y), oz = _mm256_set1_pd(o.z);
   const __m256d dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
   const __m256d a = _mm256_set1_pd(glm::dot(d, d));
+  const __m256d inverseA = _mm256_set1_pd(1.0 / glm::dot(d, d));
   const __m256d tMin = _mm256_set1_pd(ray.tMin), tMax = _mm256_set1_pd(ray.tMax);
   const __m256d slack = _mm256_set1_pd(1.0 + 1e-9);
   const __m256d filter = _mm256_set1_pd(kMissFilter);
@@ -318,15 +318,13 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
       _mm256_storeu_pd(out + k, nan);
       continue;
     }
-    const __m256d along = _mm256_div_pd(halfB, a);
+    const __m256d along = _mm256_mul_pd(halfB, inverseA);
     const __m256d lx = _mm256_sub_pd(fx, _mm256_mul_pd(along, dx));
     const __m256d ly = _mm256_sub_pd(fy, _mm256_mul_pd(along, dy));
     const __m256d lz = _mm256_sub_pd(fz, _mm256_mul_pd(along, dz));
     const __m256d lineDistance2 = dot4(lx, ly, lz, lx, ly, lz);
     const __m256d far = _mm256_cmp_pd(lineDistance2, _mm256_mul_pd(radius2, slack), _CMP_GT_OQ);
-    const __m256d lineDistance = _mm256_sqrt_pd(lineDistance2);
-    const __m256d discriminant = _mm256_mul_pd(
-        _mm256_mul_pd(a, _mm256_sub_pd(radius, lineDistance)), _mm256_add_pd(radius, lineDistance));
+    const __m256d discriminant = _mm256_mul_pd(a, _mm256_sub_pd(radius2, lineDistance2));
     const __m256d miss = _mm256_or_pd(far, _mm256_cmp_pd(discriminant, zero, _CMP_LT_OQ));
     const __m256d c = _mm256_sub_pd(ff, radius2);
     const __m256d root = _mm256_sqrt_pd(discriminant);
@@ -334,7 +332,7 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
         _mm256_or_pd(_mm256_andnot_pd(signBit, root), _mm256_and_pd(signBit, halfB));
     const __m256d q = _mm256_xor_pd(_mm256_add_pd(halfB, signedRoot), signBit);
     const __m256d qZero = _mm256_cmp_pd(q, zero, _CMP_EQ_OQ);
-    const __m256d t0 = _mm256_andnot_pd(qZero, _mm256_div_pd(q, a));
+    const __m256d t0 = _mm256_andnot_pd(qZero, _mm256_mul_pd(q, inverseA));
     const __m256d t1 = _mm256_andnot_pd(qZero, _mm256_div_pd(c, q));
     const __m256d swap = _mm256_cmp_pd(t0, t1, _CMP_GT_OQ);
     const __m256d low = select4(swap, t1, t0), high = select4(swap, t0, t1);
