@@ -18,7 +18,7 @@ inline bool lightSampleFromArea(const ShapeSample& s, const Vec3& ref, LightSamp
   const double distance2 = glm::dot(toLight, toLight);
   if (!(distance2 > 0.0)) return false;
   ls.distance = std::sqrt(distance2);
-  ls.wi = toLight / ls.distance;
+  ls.wi = toLight * (1.0 / ls.distance);  // one division, not three
   const double cosLight = -glm::dot(s.n, ls.wi);
   if (!(cosLight > 0.0)) return false;
   ls.p = s.p;

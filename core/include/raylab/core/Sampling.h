@@ -54,21 +54,16 @@ inline Vec2 cosSinQuarter(double x) {
 }
 
 /// cos(2 pi u) and sin(2 pi u) for u in [0, 1]: the nearest quarter turn k exactly (4 u - k
-/// is exact), the rest by cosSinQuarter, turned by k quarters.
+/// is exact), the rest by cosSinQuarter, turned by k quarters: (c, s), (-s, c), (-c, -s),
+/// (s, -c) for k = 0..3, by table lookups rather than a four-way branch that random u
+/// would mispredict.
 inline Vec2 cosSinTurn(double u) {
   const double v = 4.0 * u;
   const int k = int(v + 0.5);
   const Vec2 cs = cosSinQuarter((v - double(k)) * (kPi / 2.0));
-  switch (k & 3) {
-    case 0:
-      return cs;
-    case 1:
-      return {-cs.y, cs.x};
-    case 2:
-      return {-cs.x, -cs.y};
-    default:
-      return {cs.y, -cs.x};
-  }
+  const double parts[2] = {cs.x, cs.y};
+  static constexpr double kSigns[2] = {1.0, -1.0};
+  return {kSigns[((k + 1) >> 1) & 1] * parts[k & 1], kSigns[(k >> 1) & 1] * parts[(k & 1) ^ 1]};
 }
 
 /// Cosine-weighted direction on the +z hemisphere (Malley's method).
