@@ -768,7 +768,7 @@ TEST(Lesson, 13_LessonTwoTangentRaysAreWhatTheTextSays) {
   ASSERT_TRUE(knife.comparison.floating);  // double precision hits
   EXPECT_NEAR(knife.comparison.floating->t, 8.6, 0.05);
   EXPECT_LT(knife.comparison.exact.margin, 0.0);
-  EXPECT_GT(knife.comparison.exact.margin, -1e-17);  // "about 6e-18 of the radius"
+  EXPECT_GT(knife.comparison.exact.margin, -1e-17);  // "-7 x 10^-18"
   EXPECT_FALSE(knife.agrees);
 }
 
