@@ -347,34 +347,34 @@ void query(benchmark::State& state, bool big, bool camera, bool useEmbree) {
 /// Every 16th ray of a case: the peers' share.
 constexpr std::size_t kPeerStride = 16;
 
+/// The rays of every 16th index of `all` traced by `scene` for each iteration of `state`.
+template <typename Scene>
+void tracePeer(benchmark::State& state, Scene& scene, const std::vector<Ray>& all) {
+  int hits = 0;
+  for (auto _ : state) {
+    hits = 0;
+    for (std::size_t i = 0; i < all.size(); i += kPeerStride) hits += scene.intersect(all[i]);
+    benchmark::DoNotOptimize(hits);
+  }
+  const auto traced = std::int64_t((all.size() + kPeerStride - 1) / kPeerStride);
+  state.SetItemsProcessed(state.iterations() * traced);
+  state.counters["hit_fraction"] = double(hits) / double(traced);
+}
+
 /// CGAL's AABB tree or VTK's static cell locator on every 16th ray of a case, one thread.
 void queryPeer(benchmark::State& state, bool big, bool camera, bool useCgal) {
-  const std::vector<Ray>& all = rays(camera);
   // Built once per mesh and kept (builds are not what this measures).
   static std::map<int, std::unique_ptr<CgalScene>> cgal;
   static std::map<int, std::unique_ptr<VtkScene>> vtk;
-  int hits = 0;
-  std::int64_t traced = 0;
   if (useCgal) {
     auto& scene = cgal[big];
     if (!scene) scene = std::make_unique<CgalScene>(mesh(big));
-    for (auto _ : state) {
-      hits = 0;
-      for (std::size_t i = 0; i < all.size(); i += kPeerStride) hits += scene->intersect(all[i]);
-      benchmark::DoNotOptimize(hits);
-    }
+    tracePeer(state, *scene, rays(camera));
   } else {
     auto& scene = vtk[big];
     if (!scene) scene = std::make_unique<VtkScene>(mesh(big));
-    for (auto _ : state) {
-      hits = 0;
-      for (std::size_t i = 0; i < all.size(); i += kPeerStride) hits += scene->intersect(all[i]);
-      benchmark::DoNotOptimize(hits);
-    }
+    tracePeer(state, *scene, rays(camera));
   }
-  traced = std::int64_t((all.size() + kPeerStride - 1) / kPeerStride);
-  state.SetItemsProcessed(state.iterations() * traced);
-  state.counters["hit_fraction"] = double(hits) / double(traced);
 }
 
 void buildRaylab(benchmark::State& state) {
@@ -460,18 +460,18 @@ void registerAll() {
     const char* name;
     bool big, camera;
   };
-  for (const Case c :
-       {Case{"Sphere80k_Camera", false, true}, Case{"Sphere80k_Random", false, false},
-        Case{"Noisy1M_Camera", true, true}, Case{"Noisy1M_Random", true, false}})
+  const Case cases[] = {{"Sphere80k_Camera", false, true},
+                        {"Sphere80k_Random", false, false},
+                        {"Noisy1M_Camera", true, true},
+                        {"Noisy1M_Random", true, false}};
+  for (const Case c : cases)
     for (const bool useEmbree : {false, true}) {
       const std::string name = std::string("Query/") + c.name + (useEmbree ? "/Embree" : "/RayLab");
       benchmark::RegisterBenchmark(name.c_str(), [c, useEmbree](benchmark::State& s) {
         query(s, c.big, c.camera, useEmbree);
       })->Unit(benchmark::kMillisecond);
     }
-  for (const Case c :
-       {Case{"Sphere80k_Camera", false, true}, Case{"Sphere80k_Random", false, false},
-        Case{"Noisy1M_Camera", true, true}, Case{"Noisy1M_Random", true, false}})
+  for (const Case c : cases)
     for (const bool useCgal : {true, false}) {
       const std::string name = std::string("Query/") + c.name + (useCgal ? "/CGAL" : "/VTK");
       benchmark::RegisterBenchmark(name.c_str(), [c, useCgal](benchmark::State& s) {

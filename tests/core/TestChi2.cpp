@@ -397,6 +397,17 @@ Scene lightScene(std::unique_ptr<Shape> light) {
   return scene;
 }
 
+/// smallpt in miniature (Chi2.10, Chi2.15): a light of radius 2.5 centred at (0, 3, 0) poking
+/// 0.3 below the top of a "room", the inside of a sphere of radius 10.8 centred at (0, -10, 0).
+Scene smallptLightScene() {
+  Scene scene = lightScene(std::make_unique<Sphere>(Point3(0, 3, 0), 2.5));
+  Material wall;
+  wall.name = "wall";
+  scene.materials.push_back(wall);
+  scene.objects.emplace_back("room", std::make_unique<Sphere>(Point3(0, -10, 0), 10.8), 1);
+  return scene;
+}
+
 /// Solid-angle density of the intersector's light sampling towards w, from `ref` (the
 /// origin unless given): lightPdf at the first hit along w, 0 when that is not a light.
 double lightDensity(const SceneIntersector& si, const Vec3& w, const Point3& ref = Point3(0.0)) {
@@ -560,11 +571,7 @@ TEST(Chi2, 10_SphereLightCutByASeparatingSphere) {
   // the test also checks that no sample lands where the room hides the light. Cells
   // straddle the cap's rim, where the density jumps: many sub-cells keep the integration
   // error there small.
-  Scene scene = lightScene(std::make_unique<Sphere>(Point3(0, 3, 0), 2.5));
-  Material wall;
-  wall.name = "wall";
-  scene.materials.push_back(wall);
-  scene.objects.emplace_back("room", std::make_unique<Sphere>(Point3(0, -10, 0), 10.8), 1);
+  const Scene scene = smallptLightScene();
   const SceneIntersector si(scene);
   const Point3 ref(0.3, -1.2, 0.2);
   // The cap inside the room: n . (-y) >= cos(alpha) with cos(alpha) = (D^2 + R^2 - rho^2) /
@@ -736,11 +743,7 @@ TEST(Chi2, 15_SphereLightCapByArea) {
   // hit of a real ray) must be the density of the samples; the mean of 1 / pdf over all
   // samples (0 for dropped ones) must be the solid angle the light shows through the room,
   // found by rays; and fewer samples are dropped than the cone would drop.
-  Scene scene = lightScene(std::make_unique<Sphere>(Point3(0, 3, 0), 2.5));
-  Material wall;
-  wall.name = "wall";
-  scene.materials.push_back(wall);
-  scene.objects.emplace_back("room", std::make_unique<Sphere>(Point3(0, -10, 0), 10.8), 1);
+  const Scene scene = smallptLightScene();
   const SceneIntersector si(scene);
   const Point3 ref(1.6, 0.3, -0.4);
   const double D = 13.0, R = 2.5, rho = 10.8;
