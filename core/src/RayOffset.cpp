@@ -33,7 +33,7 @@ double nextDouble(double x, bool up) {
 Vec3 transformedPointError(const Mat4& m, const Point3& p, const Vec3& objectError) {
   // GLM is column-major: m[c][r] is row r, column c; the translation is column 3.
   Vec3 error(0.0);
-  const double g3 = roundingGamma(3);
+  constexpr double g3 = kRoundingGamma<3>;
   for (int r = 0; r < 3; ++r) {
     double terms = std::abs(m[3][r]), propagated = 0.0;
     for (int c = 0; c < 3; ++c) {

@@ -442,7 +442,7 @@ bool SceneIntersector::intersect(const Ray& ray, SceneHit& out) const {
   if (e.moving) {
     // The shift adds two roundings (the product and the sum).
     const Vec3 shift = ray.time * e.velocity;
-    out.si.pError += roundingGamma(2) * (glm::abs(out.si.p) + glm::abs(shift));
+    out.si.pError += kRoundingGamma<2> * (absolute(out.si.p) + absolute(shift));
     out.si.p += shift;
   }
   return true;

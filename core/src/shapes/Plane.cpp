@@ -48,7 +48,7 @@ SurfaceInteraction Plane::surfaceAt(const Ray& ray, const Hit& hit) const {
   const Point3 p = ray.at(hit.t);
   si.p = p - glm::dot(p - m_point, m_normal) * m_normal;
   // The projection: a difference, a dot product, a product and a difference.
-  si.pError = roundingGamma(7) * (glm::abs(p) + glm::abs(m_point));
+  si.pError = kRoundingGamma<7> * (absolute(p) + absolute(m_point));
   si.n = m_normal;
   si.frontFace = glm::dot(ray.direction, m_normal) < 0.0;
   Vec3 t1, t2;

@@ -41,8 +41,8 @@ SurfaceInteraction Quad::surfaceAt(const Ray& ray, const Hit& hit) const {
   si.t = hit.t;
   si.p = m_corner + hit.uv.x * m_u + hit.uv.y * m_v;
   // Two products and two sums: within gamma(4) of the sum of the magnitudes.
-  si.pError =
-      roundingGamma(4) * (glm::abs(m_corner) + glm::abs(hit.uv.x * m_u) + glm::abs(hit.uv.y * m_v));
+  si.pError = kRoundingGamma<4> *
+              (absolute(m_corner) + absolute(hit.uv.x * m_u) + absolute(hit.uv.y * m_v));
   si.n = m_normal;
   si.frontFace = glm::dot(ray.direction, m_normal) < 0.0;
   si.uv = hit.uv;

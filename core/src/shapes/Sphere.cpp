@@ -109,7 +109,7 @@ SurfaceInteraction Sphere::geometryAt(const Ray& ray, const Hit& hit) const {
   si.p = m_hasTransform ? m.transformPoint(onSurface) : onSurface;
   // Error of centre + r * radial (normalising by a reciprocal, scaling, adding: gamma(6)),
   // then of the map.
-  const Vec3 objectError = roundingGamma(6) * (glm::abs(m_centre) + glm::abs(m_radius * radial));
+  const Vec3 objectError = kRoundingGamma<6> * (absolute(m_centre) + absolute(m_radius * radial));
   si.pError =
       m_hasTransform ? transformedPointError(m.matrix(), onSurface, objectError) : objectError;
   si.n = m_hasTransform ? m.transformNormal(radial) : radial;

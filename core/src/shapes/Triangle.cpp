@@ -40,7 +40,7 @@ SurfaceInteraction Triangle::surfaceAt(const Ray& ray, const Hit& hit) const {
   si.p = b0 * m_p[0] + b1 * m_p[1] + b2 * m_p[2];
   // The barycentric sum (pbrt 4th ed., 6.8.5): gamma(7) of the terms' magnitudes.
   si.pError =
-      roundingGamma(7) * (glm::abs(b0 * m_p[0]) + glm::abs(b1 * m_p[1]) + glm::abs(b2 * m_p[2]));
+      kRoundingGamma<7> * (absolute(b0 * m_p[0]) + absolute(b1 * m_p[1]) + absolute(b2 * m_p[2]));
   si.n = normal(si.p);
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
   si.uv = hit.uv;

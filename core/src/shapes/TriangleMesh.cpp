@@ -250,7 +250,7 @@ SurfaceInteraction TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const
   const double b1 = hit.uv.x, b2 = hit.uv.y, b0 = 1.0 - b1 - b2;
   si.p = b0 * p0 + b1 * p1 + b2 * p2;
   // The barycentric sum (pbrt 4th ed., 6.8.5): gamma(7) of the terms' magnitudes.
-  si.pError = roundingGamma(7) * (glm::abs(b0 * p0) + glm::abs(b1 * p1) + glm::abs(b2 * p2));
+  si.pError = kRoundingGamma<7> * (absolute(b0 * p0) + absolute(b1 * p1) + absolute(b2 * p2));
   si.n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
   if (!m_normalIndices.empty()) {

@@ -4,6 +4,7 @@
 #include "raylab/core/Shape.h"
 #include "raylab/core/Types.h"
 
+#include <cmath>
 #include <limits>
 
 namespace raylab {
@@ -32,6 +33,15 @@ constexpr double roundingGamma(int n) {
   constexpr double u = 0.5 * std::numeric_limits<double>::epsilon();
   return (n * u) / (1.0 - n * u);
 }
+
+/// gamma(N) as a constant. A call to roundingGamma is folded only where a constant is
+/// required: in Sphere::geometryAt GCC left it a division at run time on every hit.
+template <int N>
+inline constexpr double kRoundingGamma = roundingGamma(N);
+
+/// |v| per component, without branches: glm::abs compiles to a compare and a jump per
+/// component, which mispredict where signs vary from hit to hit.
+inline Vec3 absolute(const Vec3& v) { return {std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}; }
 
 /**
  * \brief Bound on the error of M p computed in doubles (world = M object, M affine), for
