@@ -63,6 +63,21 @@ Point3 offsetRayOrigin(const SurfaceInteraction& si, const Vec3& w) {
   if (glm::dot(si.n, w) < 0.0) offset = -offset;
   Point3 origin = si.p + offset;
   // The addition rounds too: step one ulp further away from si.p.
+  if (std::abs(origin.x) > 0.0 && std::abs(origin.x) < kInfinity && std::abs(origin.y) > 0.0 &&
+      std::abs(origin.y) < kInfinity && std::abs(origin.z) > 0.0 &&
+      std::abs(origin.z) < kInfinity) {
+    // The usual case, nextDouble without its branches (which mispredicted on the signs):
+    // a finite non-zero double steps away from zero by adding one to its bit pattern,
+    // towards zero by subtracting one.
+    for (int i = 0; i < 3; ++i) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &origin[i], sizeof bits);
+      const std::uint64_t away = (offset[i] > 0.0) == (origin[i] > 0.0) ? 1 : ~std::uint64_t(0);
+      bits += offset[i] != 0.0 ? away : 0;
+      std::memcpy(&origin[i], &bits, sizeof bits);
+    }
+    return origin;
+  }
   for (int i = 0; i < 3; ++i) {
     if (offset[i] > 0.0)
       origin[i] = nextDouble(origin[i], true);

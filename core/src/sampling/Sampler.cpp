@@ -7,14 +7,15 @@ namespace {
 using detail::combine;  // Sampler.h: the hash, inline there for next1D
 using detail::mix64;
 
-/// Reverses the order of the 32 bits of x (bit 0 becomes bit 31).
+/// Reverses the order of the 32 bits of x (bit 0 becomes bit 31): the bytes by one byte
+/// swap (an instruction), then the nibbles, pairs and bits within each byte.
 constexpr std::uint32_t reverseBits(std::uint32_t x) {
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  x = __builtin_bswap32(x);
   x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
-  x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-  return (x >> 16) | (x << 16);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
 }
+static_assert(reverseBits(1u) == 0x80000000u && reverseBits(0x12345678u) == 0x1e6a2c48u);
 
 /// A seeded bijection of 32-bit words in which each bit is flipped by a function of the seed
 /// and of the bits below it only (Laine and Karras 2011, with Burley's constants): adding the
