@@ -46,4 +46,10 @@ function(raylab_add_gtest)
     "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${labels}\")\n"
     "endif()\n")
   set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${labels_script})
+  # The sanitizer stage builds exactly the programs whose tests carry the label `asan`
+  # (target raylab_asan_tests, tests/CMakeLists.txt): a program labelled but not built had
+  # its tests silently missing from `ctest -L asan`.
+  if("asan" IN_LIST labels)
+    set_property(GLOBAL APPEND PROPERTY RAYLAB_ASAN_TEST_TARGETS ${ARG_NAME})
+  endif()
 endfunction()

@@ -2,7 +2,8 @@
 # The AddressSanitizer + UBSan stage of the test suite (issue 14), built with Clang in
 # build/asan-fuzz:
 # - the core library and the test programs of its loaders and file formats (scene, mesh,
-#   lesson and ray-tree readers, limits, atomic saves, transforms, shapes, the tracer),
+#   lesson and ray-tree readers, limits, atomic saves, transforms, shapes, the tracer, the
+#   BVH, the offsets of secondary rays, the sampling warps),
 #   with the `asan` preset's settings; their tests carry the CTest label `asan`;
 # - the raylab executable (its command line, without the window) and its CLI tests that
 #   need no display (`app.*` but the labels render, python and lessons);
@@ -17,9 +18,8 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$here"
 build=build/asan-fuzz
-targets=(TestSceneIO TestMeshIO TestRayTreeJson TestLesson TestAtomicFile TestImageIO
-         TestSceneEdit TestTransform TestShapes TestTracer raylab raylab_check_render
-         raylab_check_picture
+# raylab_asan_tests: every test program whose tests carry the label `asan`.
+targets=(raylab_asan_tests raylab raylab_check_render raylab_check_picture
          FuzzScene FuzzLesson FuzzRayTree Fuzzobj Fuzzoff Fuzzply Fuzzstl)
 
 # The asan preset's cache variables, without what the subset does not build, and -O1 -g1
