@@ -9,23 +9,36 @@ namespace raylab {
 
 namespace {
 
-/// std::nextafter(x, +inf) (up) or (x, -inf) (down), bit for bit, without the library call:
-/// the next double is one step of the bit pattern away from zero for x on that side of
-/// zero, towards zero on the other (IEEE 754 doubles are ordered like sign-magnitude
-/// integers); +-0 steps to the smallest denormal; infinities and NaN stay.
-double nextDouble(double x, bool up) {
-  if (!(std::abs(x) < kInfinity)) {
-    if (std::isnan(x) || (x > 0.0) == up) return x;
-    return up ? -std::numeric_limits<double>::max() : std::numeric_limits<double>::max();
-  }
+/// Whether x is finite and not zero, the case stepFinite handles.
+bool isRegular(double x) { return std::abs(x) > 0.0 && std::abs(x) < kInfinity; }
+
+/// A regular x (finite, non-zero) moved one ulp to the side `toward` points to (up when
+/// positive, down when negative; x itself when toward is 0 or NaN). IEEE 754 doubles are
+/// ordered like sign-magnitude integers, so x steps away from zero by adding one to its bit
+/// pattern and towards zero by subtracting one. No branch: branches on the signs mispredicted
+/// (3% of a path sample).
+double stepFinite(double x, double toward) {
+  const bool up = toward > 0.0, down = toward < 0.0;
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const std::uint64_t away = (x > 0.0) == up ? 1 : ~std::uint64_t(0);  // +1 or -1
+  bits += up || down ? away : 0;
+  std::memcpy(&x, &bits, sizeof bits);
+  return x;
+}
+
+/// Any x moved as stepFinite moves a regular one: std::nextafter(x, toward * inf), bit for
+/// bit, without the library call. +-0 steps to the smallest denormal; infinities and NaN
+/// stay, but an infinity stepped inwards becomes the largest finite double.
+double stepOneUlp(double x, double toward) {
+  if (isRegular(x)) return stepFinite(x, toward);
+  const bool up = toward > 0.0, down = toward < 0.0;
+  if (!(up || down) || std::isnan(x)) return x;
   if (x == 0.0)
     return up ? std::numeric_limits<double>::denorm_min()
               : -std::numeric_limits<double>::denorm_min();
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  bits = ((x > 0.0) == up) ? bits + 1 : bits - 1;
-  std::memcpy(&x, &bits, sizeof bits);
-  return x;
+  if ((x > 0.0) == up) return x;
+  return up ? -std::numeric_limits<double>::max() : std::numeric_limits<double>::max();
 }
 
 }  // namespace
@@ -63,26 +76,12 @@ Point3 offsetRayOrigin(const SurfaceInteraction& si, const Vec3& w) {
   if (glm::dot(si.n, w) < 0.0) offset = -offset;
   Point3 origin = si.p + offset;
   // The addition rounds too: step one ulp further away from si.p.
-  if (std::abs(origin.x) > 0.0 && std::abs(origin.x) < kInfinity && std::abs(origin.y) > 0.0 &&
-      std::abs(origin.y) < kInfinity && std::abs(origin.z) > 0.0 &&
-      std::abs(origin.z) < kInfinity) {
-    // The usual case, nextDouble without its branches (which mispredicted on the signs):
-    // a finite non-zero double steps away from zero by adding one to its bit pattern,
-    // towards zero by subtracting one.
-    for (int i = 0; i < 3; ++i) {
-      std::uint64_t bits;
-      std::memcpy(&bits, &origin[i], sizeof bits);
-      const std::uint64_t away = (offset[i] > 0.0) == (origin[i] > 0.0) ? 1 : ~std::uint64_t(0);
-      bits += offset[i] != 0.0 ? away : 0;
-      std::memcpy(&origin[i], &bits, sizeof bits);
-    }
-    return origin;
-  }
-  for (int i = 0; i < 3; ++i) {
-    if (offset[i] > 0.0)
-      origin[i] = nextDouble(origin[i], true);
-    else if (offset[i] < 0.0)
-      origin[i] = nextDouble(origin[i], false);
+  // One test for the usual origin, whose three coordinates are regular, rather than one
+  // per coordinate (1% of a path sample).
+  if (isRegular(origin.x) && isRegular(origin.y) && isRegular(origin.z)) {
+    for (int i = 0; i < 3; ++i) origin[i] = stepFinite(origin[i], offset[i]);
+  } else {
+    for (int i = 0; i < 3; ++i) origin[i] = stepOneUlp(origin[i], offset[i]);
   }
   return origin;
 }
