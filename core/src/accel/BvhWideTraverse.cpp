@@ -8,6 +8,9 @@
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -22,8 +25,9 @@
 // visited nearest first, a leaf's triangles tested four at a time. The code is
 // written once with GCC's vector extensions (4 doubles per vector) and compiled twice: for
 // the baseline instruction set (two SSE2 halves on x86-64) and, in functions marked
-// target("avx2"), for AVX2, chosen at run time (Bvh::kernel). Neither may use fused
-// multiply-add: the build is ISO C++ (-ffp-contract=off) and "avx2" does not enable FMA.
+// target("avx2,fma"), for AVX2 with FMA, chosen at run time (Bvh::kernel). The compiler may
+// fuse nothing (core builds with -ffp-contract=off): the only fused operations are the
+// AVX2 kernel's float slab test (slab8), written with intrinsics, proved below (WideRay).
 //
 // Exactness: the float slab test never rejects a box, nor puts its entry later, where the
 // double slab test of BvhTraverse.cpp would not (WideRay gives the proof), and the double one
@@ -61,6 +65,43 @@ inline float toFloat(double x) {
   return static_cast<float>(x);  // NaN stays NaN
 }
 
+/// std::min(std::max(x, lo), hi) (NaN stays NaN) and float(x) rounded to nearest (infinity
+/// beyond float's range, as IEEE rounding gives), without the branches GCC emits for them
+/// in scalar code: the wide traversal prepares every ray.
+inline double clampTo(double x, double lo, double hi) {
+#if defined(__SSE2__)
+  // maxsd / minsd return their second operand when either is NaN.
+  const __m128d v = _mm_max_sd(_mm_set_sd(lo), _mm_set_sd(x));
+  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(hi), v));
+#else
+  return std::min(std::max(x, lo), hi);
+#endif
+}
+inline float roundToFloat(double x) {
+#if defined(__SSE2__)
+  return _mm_cvtss_f32(_mm_cvtsd_ss(_mm_setzero_ps(), _mm_set_sd(x)));
+#else
+  return toFloat(x);
+#endif
+}
+
+/// A float at least x (floatUp) or at most x (floatDown), NaN for NaN, without branches:
+/// x moved away by more than float's rounding can take back (a relative 2^-22 and an
+/// absolute 2^-125, for float's subnormal range) and rounded to nearest. Beyond float's
+/// range that gives infinity on x's far side or FLT_MAX (clamped to, on the near side; on
+/// the far side IEEE rounding gives FLT_MAX only to a value within 2^-24 of it, so at least
+/// x, which lies 2^-22 nearer).
+inline float floatUp(double x) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  const double y = x + (std::fabs(x) * 0x1p-22 + 0x1p-125);
+  return roundToFloat(clampTo(y, -kMax, std::numeric_limits<double>::infinity()));
+}
+inline float floatDown(double x) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  const double y = x - (std::fabs(x) * 0x1p-22 + 0x1p-125);
+  return roundToFloat(clampTo(y, -std::numeric_limits<double>::infinity(), kMax));
+}
+
 /// `x` moved away from zero by more than float's rounding can take back (a relative 2^-22
 /// and an absolute 2^-125, for float's subnormal range), so that float(x) rounded to nearest is
 /// on the far side of x: above it (up) or below it. Branch-free: this runs for every ray.
@@ -92,7 +133,8 @@ inline float floatPast(double x, bool up) {
 /// lo - o > 0 the float distance is below (lo - o) / d * (1 - 2^-20 + 2^-22 + ...) <
 /// tNear_d, and when lo - o <= 0 it is <= 0; with tMin >= 0 (and tMinF <= tMin) the running
 /// entry max(tMin, tNear, ...) is thus never above the double test's. The far distance
-/// mirrors this (oFar <= o, invFar >= |1 / d|(1 + 2^-20)(1 - 2^-24), infinite beyond FLT_MAX)
+/// mirrors this (oFar <= o, invFar >= |1 / d|(1 + 2^-20)(1 - 2^-24): rounded to nearest,
+/// which beyond FLT_MAX gives FLT_MAX within that factor, or infinity)
 /// and comes out above the double test's scaled far distance whenever that is positive,
 /// which it is whenever the double test accepts. Overflow only moves a distance beyond
 /// FLT_MAX to infinity on the same side, and tMax rounds up (to infinity above FLT_MAX); a
@@ -100,32 +142,67 @@ inline float floatPast(double x, bool up) {
 /// invFar = inf, as there (a NaN from 0 * inf is ignored, as there). A distance that
 /// underflows below float's normal range is off by at most 2^-150, so the entry is lowered
 /// by kFloatSlack (2^-125) before the comparison and before it orders and prunes children.
-/// The float test is used when tMin >= 0 and |o| < 1e30.
+/// The float test is used when tMin >= 0, |o| < 1e30 and |d| < 2^100 (so that invNear is
+/// never subnormal: its rounding error stays relative).
+///
+/// The fused test (the AVX2 kernel) computes each distance with one rounding, as
+/// fl(lo * invNear - cNear), where cNear >= o * invNear + kFloatSlack (computed in double and
+/// rounded up, floatUp). The exact value is then at most (lo - o) * invNear - kFloatSlack:
+/// when lo - o > 0 at most tNear_d (1 - 2^-21) - kFloatSlack, whose rounding (a factor
+/// 1 + 2^-24, or 2^-150 below float's normal range) stays below tNear_d - kFloatSlack +
+/// 2^-150; when lo - o <= 0 it is at most -kFloatSlack, and so is its rounding (rounding is
+/// monotonic and -kFloatSlack is a float). The far distance fl(hi * invFar - cFar), cFar <=
+/// o * invFar (floatDown), is at least (hi - o) * invFar rounded: whenever the double test's
+/// scaled far distance is >= 0 (as it is whenever that test accepts), above it, or below it
+/// by at most 2^-150 in float's subnormal range. With
+/// tMinF <= tMin - kFloatSlack + 2^-150 (floatPast's absolute margin), the entry is never
+/// above the double test's entry, and the comparison entry <= exit holds whenever the
+/// double test's does: kFloatSlack = 2^-125 covers the two 2^-150. The intermediate product
+/// of a fused operation never overflows; an infinite or NaN term (a zero direction
+/// component, an unused lane's infinite planes, cNear or cFar beyond float's range) gives
+/// an infinite distance on the conservative side or a NaN, which the test ignores (vmaxps
+/// and vminps keep the running value), so it only makes the test accept more.
 struct WideRay : ShearedRay {
   double inv[3];
   int nearPlane[3];
   int farPlane[3];
   bool floatSlabs = false;  ///< The float fields below hold and the float test may be used.
+  std::ptrdiff_t nearOffset[3], farOffset[3];  ///< Byte offsets of those planes in a node's box.
   float oNear[3], oFar[3];  ///< The origin rounded so each plane seems nearer / farther.
   float invNear[3], invFar[3];
-  float tMinF;  ///< tMin rounded down.
+  float cNear[3], cFar[3];  ///< The fused test's origin terms (see above).
+  float tMinF;              ///< tMin rounded down.
 
-  explicit WideRay(const Ray& ray) : ShearedRay(ray) {
+  /// `fused`: prepare the fused test (cNear, cFar) instead of the plain one (oNear, oFar).
+  WideRay(const Ray& ray, bool fused) : ShearedRay(ray) {
+    // Without branches (every ray is prepared, and random directions would mispredict each
+    // sign test). An origin matters here only when |o| < 1e30 (floatSlabs), so it is
+    // clamped into float's range first, where floatPast needs no range checks.
     bool ok = tMin >= 0.0;  // false for NaN too
+    constexpr double kFloatMax = std::numeric_limits<float>::max();
     for (int a = 0; a < 3; ++a) {
       inv[a] = 1.0 / ray.direction[a];
-      const bool neg = inv[a] < 0.0;
-      nearPlane[a] = neg ? 3 + a : a;
-      farPlane[a] = neg ? a : 3 + a;
-      ok = ok && std::fabs(o[a]) < 1e30;
-      // d > 0: the near plane lies ahead of o, so o moved up brings it nearer; d < 0 the
-      // opposite. The far plane takes the other side.
-      oNear[a] = floatPast(o[a], !neg);
-      oFar[a] = floatPast(o[a], neg);
-      constexpr double kFloatMax = std::numeric_limits<float>::max();
-      invNear[a] =
-          static_cast<float>(std::min(std::max(inv[a] * (1.0 - 0x1p-20), -kFloatMax), kFloatMax));
-      invFar[a] = toFloat(inv[a] * (1.0 + 0x1p-20));
+      const int neg = inv[a] < 0.0;
+      nearPlane[a] = a + 3 * neg;
+      farPlane[a] = a + 3 - 3 * neg;
+      nearOffset[a] = std::ptrdiff_t(nearPlane[a]) * kBvhWidth * std::ptrdiff_t(sizeof(float));
+      farOffset[a] = std::ptrdiff_t(farPlane[a]) * kBvhWidth * std::ptrdiff_t(sizeof(float));
+      // |d| < 2^100 keeps invNear out of float's subnormal range.
+      ok = ok & (std::fabs(o[a]) < 1e30) & (std::fabs(ray.direction[a]) < 0x1p100);
+      invNear[a] = static_cast<float>(clampTo(inv[a] * (1.0 - 0x1p-20), -kFloatMax, kFloatMax));
+      invFar[a] = roundToFloat(inv[a] * (1.0 + 0x1p-20));
+      const double oc = clampTo(o[a], -1e30, 1e30);
+      if (fused) {
+        cNear[a] = floatUp(oc * double(invNear[a]) + double(kFloatSlack));
+        cFar[a] = floatDown(oc * double(invFar[a]));
+      } else {
+        // d > 0: the near plane lies ahead of o, so o moved up brings it nearer; d < 0 the
+        // opposite. The far plane takes the other side: floatPast(o, !neg), floatPast(o, neg).
+        const double margin = std::fabs(oc) * 0x1p-22 + 0x1p-125;
+        const double toNear = margin - 2.0 * margin * neg;  // -margin when neg, exactly
+        oNear[a] = static_cast<float>(oc + toNear);
+        oFar[a] = static_cast<float>(oc - toNear);
+      }
     }
     tMinF = floatPast(tMin, false);
     floatSlabs = ok;
@@ -153,14 +230,15 @@ namespace portable {
 
 #if defined(__x86_64__) || defined(__i386__)
 #define RAYLAB_BVH_HAVE_AVX2 1
-// The same kernel compiled for AVX2 (4 doubles per ymm register), without FMA (see the top).
+// The same kernel compiled for AVX2 and FMA (4 doubles per ymm register; FMA only where
+// written, see the top).
 // GCC takes a target for the functions that follow; Clang (the fuzz build) ignores that
 // pragma and takes an attribute applied to each function instead.
 #if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#pragma clang attribute push(__attribute__((target("avx2,fma"))), apply_to = function)
 #else
 #pragma GCC push_options
-#pragma GCC target("avx2")
+#pragma GCC target("avx2,fma")
 #endif
 #define RAYLAB_BVH_KERNEL_AVX2 1
 namespace avx2 {
@@ -191,18 +269,18 @@ void anyPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const
 }
 
 #if defined(RAYLAB_BVH_HAVE_AVX2)
-__attribute__((target("avx2"))) void closestAvx2(const BvhWideNode* nodes,
-                                                 const BvhTriangleBlock* blocks, const int* ids,
-                                                 const WideRay& r, WideResult& res) {
+__attribute__((target("avx2,fma"))) void closestAvx2(const BvhWideNode* nodes,
+                                                     const BvhTriangleBlock* blocks, const int* ids,
+                                                     const WideRay& r, WideResult& res) {
   if (r.floatSlabs)
     avx2::traverseWide<false, true>(nodes, blocks, ids, r, res);
   else
     avx2::traverseWide<false, false>(nodes, blocks, ids, r, res);
 }
 
-__attribute__((target("avx2"))) void anyAvx2(const BvhWideNode* nodes,
-                                             const BvhTriangleBlock* blocks, const int* ids,
-                                             const WideRay& r, WideResult& res) {
+__attribute__((target("avx2,fma"))) void anyAvx2(const BvhWideNode* nodes,
+                                                 const BvhTriangleBlock* blocks, const int* ids,
+                                                 const WideRay& r, WideResult& res) {
   if (r.floatSlabs)
     avx2::traverseWide<true, true>(nodes, blocks, ids, r, res);
   else
@@ -213,7 +291,7 @@ __attribute__((target("avx2"))) void anyAvx2(const BvhWideNode* nodes,
 bool cpuHasAvx2() {
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   __builtin_cpu_init();
-  return __builtin_cpu_supports("avx2");
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 #else
   return false;
 #endif
@@ -243,7 +321,7 @@ void Bvh::setKernel(BvhKernel kernel) {
 
 std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return std::nullopt;
-  const WideRay r(ray);
+  const WideRay r(ray, kernel() == BvhKernel::Avx2);
   WideResult res(ray.tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   if (kernel() == BvhKernel::Avx2)
@@ -257,7 +335,7 @@ std::optional<Hit> Bvh::intersect(const Ray& ray) const {
 
 bool Bvh::occluded(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return false;
-  const WideRay r(ray);
+  const WideRay r(ray, kernel() == BvhKernel::Avx2);
   WideResult res(ray.tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   if (kernel() == BvhKernel::Avx2)

@@ -3,6 +3,7 @@
 #include "raylab/core/Ray.h"
 #include "raylab/core/Triangle.h"
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -24,16 +25,22 @@ struct ShearedRay {
   double sx, sy, sz;  ///< Shear taking the direction to (0, 0, 1).
 
   explicit ShearedRay(const Ray& ray) {
-    const Vec3& d = ray.direction;
+    // Written without branches: a BVH prepares every ray it traces, and random directions
+    // would mispredict each one (glm's abs and operator[] branch; a plain array does not).
+    const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
     for (int a = 0; a < 3; ++a) o[a] = ray.origin[a];
     tMin = ray.tMin;
     // Choose the ray-aligned frame: z is the dominant axis of d, x and y follow it;
     // swap x and y when d.z is negative to keep the triangle's winding.
-    const Vec3 ad = glm::abs(d);
-    kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kx + 1) % 3;
-    if (d[kz] < 0.0) std::swap(kx, ky);
+    // kz = |x| > |y| ? (|x| > |z| ? 0 : 2) : (|y| > |z| ? 1 : 2).
+    const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
+    const int xy = ax > ay, xz = ax > az, yz = ay > az;
+    kz = 2 - 2 * (xy & xz) - ((xy ^ 1) & yz);
+    static constexpr int kNext[3] = {1, 2, 0};
+    const int next = kNext[kz], after = kNext[next];
+    const int flip = -int(d[kz] < 0.0);  // all ones: swap
+    kx = next ^ ((next ^ after) & flip);
+    ky = after ^ ((next ^ after) & flip);
     // Shear constants that take d to (0, 0, 1).
     sx = d[kx] / d[kz];
     sy = d[ky] / d[kz];

@@ -113,7 +113,8 @@ struct alignas(32) BvhTriangleBlock {
 /// answers, bit for bit: the same IEEE operations lane by lane, without fused multiply-add.
 enum class BvhKernel {
   Portable,  ///< 4-double vector code lowered to the baseline instruction set (SSE2 on x86-64).
-  Avx2       ///< The same code compiled for AVX2 (x86-64 CPUs that have it).
+  Avx2       ///< The same code compiled for AVX2 and FMA (x86-64 CPUs that have both; the
+             ///< float slab test is fused there).
 };
 /// "portable", "avx2".
 const char* toString(BvhKernel kernel);
@@ -183,8 +184,8 @@ struct BvhTrace {
  * (BvhWideNode): the eight children's boxes are tested at once in float with outward
  * rounding of the ray's origin and inverse direction, so that no box the double test
  * accepts is ever rejected (unusual rays, tMin < 0, take the double test, four boxes at once;
- * AVX2 when the CPU has it, see BvhKernel), the children hit are visited nearest entry first,
- * and a leaf's triangles are tested four at a time (BvhTriangleBlock). The binary tree stays
+ * AVX2 and FMA when the CPU has them, see BvhKernel), the children hit are visited nearest entry
+ * first, and a leaf's triangles are tested four at a time (BvhTriangleBlock). The binary tree stays
  * the teaching view (levels, traceVisits) and answers intersectAll and closestTriangle.
  * Whichever tree runs, every box holds its triangles after rounding (see below) and every
  * triangle test is the same arithmetic, so the answers are the same bits: the nearest t,
@@ -256,8 +257,8 @@ class Bvh {
   /// The 8-wide tree of intersect() and occluded() (node 0 is its root).
   const std::vector<BvhWideNode>& wideNodes() const { return m_wide; }
 
-  /// The kernel intersect() and occluded() use in this process; at start-up AVX2 when the
-  /// CPU has it, else Portable.
+  /// The kernel intersect() and occluded() use in this process; at start-up Avx2 when the
+  /// CPU has AVX2 and FMA, else Portable.
   static BvhKernel kernel();
   /// Whether this CPU (and build) can run `kernel`.
   static bool kernelSupported(BvhKernel kernel);
