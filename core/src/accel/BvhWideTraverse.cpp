@@ -85,23 +85,6 @@ inline float roundToFloat(double x) {
 #endif
 }
 
-/// A float at least x (floatUp) or at most x (floatDown), NaN for NaN, without branches:
-/// x moved away by more than float's rounding can take back (a relative 2^-22 and an
-/// absolute 2^-125, for float's subnormal range) and rounded to nearest. Beyond float's
-/// range that gives infinity on x's far side or FLT_MAX (clamped to, on the near side; on
-/// the far side IEEE rounding gives FLT_MAX only to a value within 2^-24 of it, so at least
-/// x, which lies 2^-22 nearer).
-inline float floatUp(double x) {
-  constexpr double kMax = std::numeric_limits<float>::max();
-  const double y = x + (std::fabs(x) * 0x1p-22 + 0x1p-125);
-  return roundToFloat(clampTo(y, -kMax, std::numeric_limits<double>::infinity()));
-}
-inline float floatDown(double x) {
-  constexpr double kMax = std::numeric_limits<float>::max();
-  const double y = x - (std::fabs(x) * 0x1p-22 + 0x1p-125);
-  return roundToFloat(clampTo(y, -std::numeric_limits<double>::infinity(), kMax));
-}
-
 /// `x` moved away from zero by more than float's rounding can take back (a relative 2^-22
 /// and an absolute 2^-125, for float's subnormal range), so that float(x) rounded to nearest is
 /// on the far side of x: above it (up) or below it. Branch-free: this runs for every ray.
@@ -147,12 +130,12 @@ inline float floatPast(double x, bool up) {
 ///
 /// The fused test (the AVX2 kernel) computes each distance with one rounding, as
 /// fl(lo * invNear - cNear), where cNear >= o * invNear + kFloatSlack (computed in double and
-/// rounded up, floatUp). The exact value is then at most (lo - o) * invNear - kFloatSlack:
+/// rounded up with floatPast's margins; prepareFused). The exact value is then at most (lo - o) * invNear - kFloatSlack:
 /// when lo - o > 0 at most tNear_d (1 - 2^-21) - kFloatSlack, whose rounding (a factor
 /// 1 + 2^-24, or 2^-150 below float's normal range) stays below tNear_d - kFloatSlack +
 /// 2^-150; when lo - o <= 0 it is at most -kFloatSlack, and so is its rounding (rounding is
 /// monotonic and -kFloatSlack is a float). The far distance fl(hi * invFar - cFar), cFar <=
-/// o * invFar (floatDown), is at least (hi - o) * invFar rounded: whenever the double test's
+/// o * invFar (rounded down likewise), is at least (hi - o) * invFar rounded: whenever the double test's
 /// scaled far distance is >= 0 (as it is whenever that test accepts), above it, or below it
 /// by at most 2^-150 in float's subnormal range. With
 /// tMinF <= tMin - kFloatSlack + 2^-150 (floatPast's absolute margin), the entry is never
@@ -163,18 +146,20 @@ inline float floatPast(double x, bool up) {
 /// an infinite distance on the conservative side or a NaN, which the test ignores (vmaxps
 /// and vminps keep the running value), so it only makes the test accept more.
 struct WideRay : ShearedRay {
-  double inv[3];
+  double inv[4];  ///< 1 / d; inv[3] pads it to a vector.
   int nearPlane[3];
   int farPlane[3];
   bool floatSlabs = false;  ///< The float fields below hold and the float test may be used.
   std::ptrdiff_t nearOffset[3], farOffset[3];  ///< Byte offsets of those planes in a node's box.
-  float oNear[3], oFar[3];  ///< The origin rounded so each plane seems nearer / farther.
-  float invNear[3], invFar[3];
-  float cNear[3], cFar[3];  ///< The fused test's origin terms (see above).
+  float oNear[3], oFar[3];                     ///< The origin rounded so each plane seems nearer / farther.
+  float invNear[4], invFar[4];                 ///< [3]: padding.
+  float cNear[4], cFar[4];  ///< The fused test's origin terms (see above); [3]: padding.
   float tMinF;              ///< tMin rounded down.
 
-  /// `fused`: prepare the fused test (cNear, cFar) instead of the plain one (oNear, oFar).
-  WideRay(const Ray& ray, bool fused) : ShearedRay(ray) {
+  WideRay() = default;  ///< Fields unset: the AVX2 kernel fills them (prepareFused).
+
+  /// The ray prepared for the plain float test (oNear, oFar; cNear and cFar unset).
+  explicit WideRay(const Ray& ray) : ShearedRay(ray) {
     // Without branches (every ray is prepared, and random directions would mispredict each
     // sign test). An origin matters here only when |o| < 1e30 (floatSlabs), so it is
     // clamped into float's range first, where floatPast needs no range checks.
@@ -183,29 +168,31 @@ struct WideRay : ShearedRay {
     for (int a = 0; a < 3; ++a) {
       inv[a] = 1.0 / ray.direction[a];
       const int neg = inv[a] < 0.0;
-      nearPlane[a] = a + 3 * neg;
-      farPlane[a] = a + 3 - 3 * neg;
-      nearOffset[a] = std::ptrdiff_t(nearPlane[a]) * kBvhWidth * std::ptrdiff_t(sizeof(float));
-      farOffset[a] = std::ptrdiff_t(farPlane[a]) * kBvhWidth * std::ptrdiff_t(sizeof(float));
+      setPlanes(a, neg);
       // |d| < 2^100 keeps invNear out of float's subnormal range.
       ok = ok & (std::fabs(o[a]) < 1e30) & (std::fabs(ray.direction[a]) < 0x1p100);
       invNear[a] = static_cast<float>(clampTo(inv[a] * (1.0 - 0x1p-20), -kFloatMax, kFloatMax));
       invFar[a] = roundToFloat(inv[a] * (1.0 + 0x1p-20));
+      // d > 0: the near plane lies ahead of o, so o moved up brings it nearer; d < 0 the
+      // opposite. The far plane takes the other side: floatPast(o, !neg), floatPast(o, neg).
       const double oc = clampTo(o[a], -1e30, 1e30);
-      if (fused) {
-        cNear[a] = floatUp(oc * double(invNear[a]) + double(kFloatSlack));
-        cFar[a] = floatDown(oc * double(invFar[a]));
-      } else {
-        // d > 0: the near plane lies ahead of o, so o moved up brings it nearer; d < 0 the
-        // opposite. The far plane takes the other side: floatPast(o, !neg), floatPast(o, neg).
-        const double margin = std::fabs(oc) * 0x1p-22 + 0x1p-125;
-        const double toNear = margin - 2.0 * margin * neg;  // -margin when neg, exactly
-        oNear[a] = static_cast<float>(oc + toNear);
-        oFar[a] = static_cast<float>(oc - toNear);
-      }
+      const double margin = std::fabs(oc) * 0x1p-22 + 0x1p-125;
+      const double toNear = margin - 2.0 * margin * neg;  // -margin when neg, exactly
+      oNear[a] = static_cast<float>(oc + toNear);
+      oFar[a] = static_cast<float>(oc - toNear);
     }
+    inv[3] = 1.0;
     tMinF = floatPast(tMin, false);
     floatSlabs = ok;
+  }
+
+  /// The planes axis `a` enters and leaves by: lower first unless the direction is
+  /// negative (`neg` 1).
+  void setPlanes(int a, int neg) {
+    nearPlane[a] = a + 3 * neg;
+    farPlane[a] = a + 3 - 3 * neg;
+    nearOffset[a] = std::ptrdiff_t(nearPlane[a]) * kBvhWidth * std::ptrdiff_t(sizeof(float));
+    farOffset[a] = std::ptrdiff_t(farPlane[a]) * kBvhWidth * std::ptrdiff_t(sizeof(float));
   }
 };
 
@@ -252,8 +239,11 @@ namespace avx2 {
 #endif
 #endif
 
+/// The queries on one kernel: the ray prepared (for the AVX2 kernel inside it, in vectors)
+/// and traversed with the float slab test when WideRay allows it, else the double one.
 void closestPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const int* ids,
-                     const WideRay& r, WideResult& res) {
+                     const Ray& ray, WideResult& res) {
+  const WideRay r(ray);
   if (r.floatSlabs)
     portable::traverseWide<false, true>(nodes, blocks, ids, r, res);
   else
@@ -261,7 +251,8 @@ void closestPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, c
 }
 
 void anyPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const int* ids,
-                 const WideRay& r, WideResult& res) {
+                 const Ray& ray, WideResult& res) {
+  const WideRay r(ray);
   if (r.floatSlabs)
     portable::traverseWide<true, true>(nodes, blocks, ids, r, res);
   else
@@ -270,8 +261,11 @@ void anyPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const
 
 #if defined(RAYLAB_BVH_HAVE_AVX2)
 __attribute__((target("avx2,fma"))) void closestAvx2(const BvhWideNode* nodes,
-                                                     const BvhTriangleBlock* blocks, const int* ids,
-                                                     const WideRay& r, WideResult& res) {
+                                                     const BvhTriangleBlock* blocks,
+                                                     const int* ids, const Ray& ray,
+                                                     WideResult& res) {
+  WideRay r;
+  avx2::prepareFused(ray, r);
   if (r.floatSlabs)
     avx2::traverseWide<false, true>(nodes, blocks, ids, r, res);
   else
@@ -280,7 +274,9 @@ __attribute__((target("avx2,fma"))) void closestAvx2(const BvhWideNode* nodes,
 
 __attribute__((target("avx2,fma"))) void anyAvx2(const BvhWideNode* nodes,
                                                  const BvhTriangleBlock* blocks, const int* ids,
-                                                 const WideRay& r, WideResult& res) {
+                                                 const Ray& ray, WideResult& res) {
+  WideRay r;
+  avx2::prepareFused(ray, r);
   if (r.floatSlabs)
     avx2::traverseWide<true, true>(nodes, blocks, ids, r, res);
   else
@@ -321,28 +317,26 @@ void Bvh::setKernel(BvhKernel kernel) {
 
 std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return std::nullopt;
-  const WideRay r(ray, kernel() == BvhKernel::Avx2);
   WideResult res(ray.tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   if (kernel() == BvhKernel::Avx2)
-    closestAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), r, res);
+    closestAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
   else
 #endif
-    closestPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), r, res);
+    closestPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
   if (res.bestId == INT_MAX) return std::nullopt;
   return Hit{res.tMax, res.bestId, Vec2(res.b1, res.b2)};
 }
 
 bool Bvh::occluded(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return false;
-  const WideRay r(ray, kernel() == BvhKernel::Avx2);
   WideResult res(ray.tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   if (kernel() == BvhKernel::Avx2)
-    anyAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), r, res);
+    anyAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
   else
 #endif
-    anyPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), r, res);
+    anyPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
   return res.found;
 }
 

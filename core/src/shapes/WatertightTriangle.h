@@ -24,27 +24,31 @@ struct ShearedRay {
   int kx, ky, kz;     ///< Ray-aligned frame: z is the dominant axis of the direction.
   double sx, sy, sz;  ///< Shear taking the direction to (0, 0, 1).
 
+  ShearedRay() = default;  ///< Fields unset: for a caller that fills them itself.
   explicit ShearedRay(const Ray& ray) {
-    // Written without branches: a BVH prepares every ray it traces, and random directions
-    // would mispredict each one (glm's abs and operator[] branch; a plain array does not).
     const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
     for (int a = 0; a < 3; ++a) o[a] = ray.origin[a];
     tMin = ray.tMin;
-    // Choose the ray-aligned frame: z is the dominant axis of d, x and y follow it;
-    // swap x and y when d.z is negative to keep the triangle's winding.
-    // kz = |x| > |y| ? (|x| > |z| ? 0 : 2) : (|y| > |z| ? 1 : 2).
-    const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
-    const int xy = ax > ay, xz = ax > az, yz = ay > az;
-    kz = 2 - 2 * (xy & xz) - ((xy ^ 1) & yz);
-    static constexpr int kNext[3] = {1, 2, 0};
-    const int next = kNext[kz], after = kNext[next];
-    const int flip = -int(d[kz] < 0.0);  // all ones: swap
-    kx = next ^ ((next ^ after) & flip);
-    ky = after ^ ((next ^ after) & flip);
+    chooseFrame(d);
     // Shear constants that take d to (0, 0, 1).
     sx = d[kx] / d[kz];
     sy = d[ky] / d[kz];
     sz = 1.0 / d[kz];
+  }
+
+  /// Chooses the ray-aligned frame for direction d: z is the dominant axis of d, x and y
+  /// follow it; x and y swap when d.z is negative to keep the triangle's winding. Written
+  /// without branches: a BVH prepares every ray it traces, and random directions would
+  /// mispredict each one (glm's abs and operator[] branch; a plain array does not).
+  void chooseFrame(const double d[3]) {
+    // kz = |x| > |y| ? (|x| > |z| ? 0 : 2) : (|y| > |z| ? 1 : 2).
+    const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
+    const int xy = ax > ay, xz = ax > az, yz = ay > az;
+    kz = 2 - 2 * (xy & xz) - ((xy ^ 1) & yz);
+    const int next = kz + 1 - 3 * (kz >> 1), after = next + 1 - 3 * (next >> 1);  // mod 3
+    const int flip = -int(d[kz] < 0.0);                                            // all ones: swap
+    kx = next ^ ((next ^ after) & flip);
+    ky = after ^ ((next ^ after) & flip);
   }
 };
 
