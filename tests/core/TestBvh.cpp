@@ -433,6 +433,44 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
   }
 }
 
+TEST(Bvh, 12_FloatSlabTestLosesNoHitForAnyDirectionLength) {
+  // Directions are not always unit vectors. The float slab test (fused in the AVX2 kernel)
+  // takes 1 / d rounded to float: for |d| from 1e-30 (1 / d near FLT_MAX) to 1e25 (1 / d
+  // near float's smallest normal), and beyond 2^100, where the double test takes over (1 / d
+  // would be subnormal in float from 2^126 on, its rounding error no longer relative), each
+  // kernel's closest and any hit must be the brute-force bits, with origins near and far.
+  std::mt19937_64 rng(1612);
+  const Soup s = randomSoup(rng, 400);
+  const Bvh bvh(s.vertices, s.triangles);
+  for (const BvhKernel kernel : supportedKernels()) {
+    const KernelScope scope(kernel);
+    int rays = 0, hits = 0, mismatches = 0;
+    for (const double length : {1e-30, 1e-8, 1.0, 1e12, 1e25, 0x1p99, 0x1p101, 1e35, 1e39, 3e44}) {
+      for (int i = 0; i < 1500; ++i) {
+        Ray r = randomRay(rng);
+        if (i % 3 == 0) r.origin *= 1e6;  // far away, aimed back at the soup below
+        if (i % 3 == 0) r.direction = glm::normalize(-r.origin + Vec3(0.1, -0.2, 0.3));
+        r.direction *= length;
+        const Brute expect = bruteForce(s, r);
+        const auto got = bvh.intersect(r);
+        const bool same =
+            got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
+            (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id));
+        ++rays;
+        hits += expect.hit;
+        if (!same && ++mismatches <= 5)
+          ADD_FAILURE() << toString(kernel) << " kernel, |d| " << length << ", ray " << r.toString()
+                        << ": brute force " << (expect.hit ? std::to_string(expect.t) : "miss")
+                        << ", bvh " << (got ? std::to_string(got->t) : std::string("miss"));
+      }
+    }
+    std::printf("%s kernel: %d rays, %d hits, %d mismatches\n", toString(kernel), rays, hits,
+                mismatches);
+    EXPECT_EQ(mismatches, 0) << toString(kernel);
+    EXPECT_GT(hits, rays / 10);
+  }
+}
+
 TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
   // The 8-wide tree is the binary one collapsed: its lanes are binary nodes (their float
   // boxes unchanged); its leaf lanes start at a multiple of 4, hold binary subtrees of at
