@@ -129,32 +129,33 @@ inline float floatPast(double x, bool up) {
 /// never subnormal: its rounding error stays relative).
 ///
 /// The fused test (the AVX2 kernel) computes each distance with one rounding, as
-/// fl(lo * invNear - cNear), where cNear >= o * invNear + kFloatSlack (computed in double and
-/// rounded up with floatPast's margins; prepareFused). The exact value is then at most (lo - o) * invNear - kFloatSlack:
-/// when lo - o > 0 at most tNear_d (1 - 2^-21) - kFloatSlack, whose rounding (a factor
-/// 1 + 2^-24, or 2^-150 below float's normal range) stays below tNear_d - kFloatSlack +
-/// 2^-150; when lo - o <= 0 it is at most -kFloatSlack, and so is its rounding (rounding is
-/// monotonic and -kFloatSlack is a float). The far distance fl(hi * invFar - cFar), cFar <=
-/// o * invFar (rounded down likewise), is at least (hi - o) * invFar rounded: whenever the double test's
-/// scaled far distance is >= 0 (as it is whenever that test accepts), above it, or below it
-/// by at most 2^-150 in float's subnormal range. With
-/// tMinF <= tMin - kFloatSlack + 2^-150 (floatPast's absolute margin), the entry is never
-/// above the double test's entry, and the comparison entry <= exit holds whenever the
-/// double test's does: kFloatSlack = 2^-125 covers the two 2^-150. The intermediate product
-/// of a fused operation never overflows; an infinite or NaN term (a zero direction
-/// component, an unused lane's infinite planes, cNear or cFar beyond float's range) gives
-/// an infinite distance on the conservative side or a NaN, which the test ignores (vmaxps
-/// and vminps keep the running value), so it only makes the test accept more.
+/// fl(lo * invNear - cNear), where cNear >= o * invNear + kFloatSlack (computed in double
+/// and rounded up with floatPast's margins; prepareFused). The exact value is then at most
+/// (lo - o) * invNear - kFloatSlack: when lo - o > 0 at most tNear_d (1 - 2^-21) -
+/// kFloatSlack, whose rounding (a factor 1 + 2^-24, or 2^-150 below float's normal range)
+/// stays below tNear_d - kFloatSlack + 2^-150; when lo - o <= 0 at most -kFloatSlack, and
+/// so is its rounding (rounding is monotonic and -kFloatSlack is a float). The far distance
+/// fl(hi * invFar - cFar), cFar <= o * invFar (rounded down likewise), is at least
+/// (hi - o) * invFar rounded: whenever the double test's scaled far distance is >= 0 (as it
+/// is whenever that test accepts), above it, or below it by at most 2^-150 in float's
+/// subnormal range. With tMinF <= tMin - kFloatSlack + 2^-150 (floatPast's absolute
+/// margin), the entry is never above the double test's entry, and the comparison entry <=
+/// exit holds whenever the double test's does: kFloatSlack = 2^-125 covers the two 2^-150.
+/// The intermediate product of a fused operation never overflows; an infinite or NaN term
+/// (a zero direction component, an unused lane's infinite planes, cNear or cFar beyond
+/// float's range) gives an infinite distance on the conservative side or a NaN, which the
+/// test ignores (vmaxps and vminps keep the running value), so it only makes the test
+/// accept more.
 struct WideRay : ShearedRay {
   double inv[4];  ///< 1 / d; inv[3] pads it to a vector.
   int nearPlane[3];
   int farPlane[3];
   bool floatSlabs = false;  ///< The float fields below hold and the float test may be used.
   std::ptrdiff_t nearOffset[3], farOffset[3];  ///< Byte offsets of those planes in a node's box.
-  float oNear[3], oFar[3];                     ///< The origin rounded so each plane seems nearer / farther.
-  float invNear[4], invFar[4];                 ///< [3]: padding.
-  float cNear[4], cFar[4];  ///< The fused test's origin terms (see above); [3]: padding.
-  float tMinF;              ///< tMin rounded down.
+  float oNear[3], oFar[3];      ///< The origin rounded so each plane seems nearer / farther.
+  float invNear[4], invFar[4];  ///< [3]: padding.
+  float cNear[4], cFar[4];      ///< The fused test's origin terms (see above); [3]: padding.
+  float tMinF;                  ///< tMin rounded down.
 
   WideRay() = default;  ///< Fields unset: the AVX2 kernel fills them (prepareFused).
 
@@ -261,9 +262,8 @@ void anyPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const
 
 #if defined(RAYLAB_BVH_HAVE_AVX2)
 __attribute__((target("avx2,fma"))) void closestAvx2(const BvhWideNode* nodes,
-                                                     const BvhTriangleBlock* blocks,
-                                                     const int* ids, const Ray& ray,
-                                                     WideResult& res) {
+                                                     const BvhTriangleBlock* blocks, const int* ids,
+                                                     const Ray& ray, WideResult& res) {
   WideRay r;
   avx2::prepareFused(ray, r);
   if (r.floatSlabs)

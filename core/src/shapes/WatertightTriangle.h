@@ -45,8 +45,9 @@ struct ShearedRay {
     const double ax = std::fabs(d[0]), ay = std::fabs(d[1]), az = std::fabs(d[2]);
     const int xy = ax > ay, xz = ax > az, yz = ay > az;
     kz = 2 - 2 * (xy & xz) - ((xy ^ 1) & yz);
-    const int next = kz + 1 - 3 * (kz >> 1), after = next + 1 - 3 * (next >> 1);  // mod 3
-    const int flip = -int(d[kz] < 0.0);                                            // all ones: swap
+    // next and after: kz + 1 and kz + 2 modulo 3; flip: all ones when x and y swap.
+    const int next = kz + 1 - 3 * (kz >> 1), after = next + 1 - 3 * (next >> 1);
+    const int flip = -int(d[kz] < 0.0);
     kx = next ^ ((next ^ after) & flip);
     ky = after ^ ((next ^ after) & flip);
   }
