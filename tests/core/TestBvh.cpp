@@ -376,6 +376,33 @@ TEST(Bvh, 08_EveryKernelAnswersTheSameBitsAsBruteForce) {
   }
 }
 
+/// Rays checked against brute force under one kernel: closest hit (t, triangle) and any hit
+/// must be the brute-force answer; the first five differences are reported with the
+/// varied quantity (`what`, `value`).
+struct WideTally {
+  int rays = 0, hits = 0, mismatches = 0;
+
+  void check(const Soup& s, const Bvh& bvh, const Ray& r, BvhKernel kernel, const char* what,
+             double value) {
+    const Brute expect = bruteForce(s, r);
+    const auto got = bvh.intersect(r);
+    const bool same = got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
+                      (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id));
+    ++rays;
+    hits += expect.hit;
+    if (!same && ++mismatches <= 5)
+      ADD_FAILURE() << toString(kernel) << " kernel, " << what << " " << value << ", ray "
+                    << r.toString() << ": brute force "
+                    << (expect.hit ? std::to_string(expect.t) : "miss") << ", bvh "
+                    << (got ? std::to_string(got->t) : std::string("miss"));
+  }
+
+  void print(BvhKernel kernel) const {
+    std::printf("%s kernel: %d rays, %d hits, %d mismatches\n", toString(kernel), rays, hits,
+                mismatches);
+  }
+};
+
 TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
   // The wide traversal tests boxes in float with directed rounding (BvhWideTraverse.cpp,
   // WideRay): it must never cull a box holding the nearest hit, whatever the scale. Grids
@@ -385,7 +412,7 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
   // FLT_MAX or infinite; each kernel's answer must be the brute-force bits.
   for (const BvhKernel kernel : supportedKernels()) {
     const KernelScope scope(kernel);
-    int rays = 0, hits = 0, mismatches = 0;
+    WideTally tally;
     for (const double scale : {1e-42, 1e-38, 1e-20, 1.0, 3.0, 1e20, 1e30}) {
       Soup grid;
       constexpr int kSide = 6;
@@ -411,25 +438,13 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
                   r.tMin = tMin;
                   r.tMax = tMax;
                   if (!(r.tMin <= r.tMax)) continue;
-                  const Brute expect = bruteForce(grid, r);
-                  const auto got = bvh.intersect(r);
-                  const bool same =
-                      got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
-                      (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id));
-                  ++rays;
-                  hits += expect.hit;
-                  if (!same && ++mismatches <= 5)
-                    ADD_FAILURE() << toString(kernel) << " kernel, scale " << scale << ", ray "
-                                  << r.toString() << ": brute force "
-                                  << (expect.hit ? std::to_string(expect.t) : "miss") << ", bvh "
-                                  << (got ? std::to_string(got->t) : std::string("miss"));
+                  tally.check(grid, bvh, r, kernel, "scale", scale);
                 }
             }
     }
-    std::printf("%s kernel: %d rays, %d hits, %d mismatches\n", toString(kernel), rays, hits,
-                mismatches);
-    EXPECT_EQ(mismatches, 0) << toString(kernel);
-    EXPECT_GT(hits, rays / 4);
+    tally.print(kernel);
+    EXPECT_EQ(tally.mismatches, 0) << toString(kernel);
+    EXPECT_GT(tally.hits, tally.rays / 4);
   }
 }
 
@@ -444,30 +459,19 @@ TEST(Bvh, 12_FloatSlabTestLosesNoHitForAnyDirectionLength) {
   const Bvh bvh(s.vertices, s.triangles);
   for (const BvhKernel kernel : supportedKernels()) {
     const KernelScope scope(kernel);
-    int rays = 0, hits = 0, mismatches = 0;
+    WideTally tally;
     for (const double length : {1e-30, 1e-8, 1.0, 1e12, 1e25, 0x1p99, 0x1p101, 1e35, 1e39, 3e44}) {
       for (int i = 0; i < 1500; ++i) {
         Ray r = randomRay(rng);
         if (i % 3 == 0) r.origin *= 1e6;  // far away, aimed back at the soup below
         if (i % 3 == 0) r.direction = glm::normalize(-r.origin + Vec3(0.1, -0.2, 0.3));
         r.direction *= length;
-        const Brute expect = bruteForce(s, r);
-        const auto got = bvh.intersect(r);
-        const bool same =
-            got.has_value() == expect.hit && bvh.occluded(r) == expect.hit &&
-            (!expect.hit || (sameBits(got->t, expect.t) && got->primitive == expect.id));
-        ++rays;
-        hits += expect.hit;
-        if (!same && ++mismatches <= 5)
-          ADD_FAILURE() << toString(kernel) << " kernel, |d| " << length << ", ray " << r.toString()
-                        << ": brute force " << (expect.hit ? std::to_string(expect.t) : "miss")
-                        << ", bvh " << (got ? std::to_string(got->t) : std::string("miss"));
+        tally.check(s, bvh, r, kernel, "|d|", length);
       }
     }
-    std::printf("%s kernel: %d rays, %d hits, %d mismatches\n", toString(kernel), rays, hits,
-                mismatches);
-    EXPECT_EQ(mismatches, 0) << toString(kernel);
-    EXPECT_GT(hits, rays / 10);
+    tally.print(kernel);
+    EXPECT_EQ(tally.mismatches, 0) << toString(kernel);
+    EXPECT_GT(tally.hits, tally.rays / 10);
   }
 }
 

@@ -147,7 +147,7 @@ inline float floatPast(double x, bool up) {
 /// test ignores (vmaxps and vminps keep the running value), so it only makes the test
 /// accept more.
 struct WideRay : ShearedRay {
-  double inv[4];  ///< 1 / d; inv[3] pads it to a vector.
+  double inv[4];  ///< 1 / d; inv[3] pads it for prepareFused's vector store.
   int nearPlane[3];
   int farPlane[3];
   bool floatSlabs = false;  ///< The float fields below hold and the float test may be used.
@@ -182,7 +182,6 @@ struct WideRay : ShearedRay {
       oNear[a] = static_cast<float>(oc + toNear);
       oFar[a] = static_cast<float>(oc - toNear);
     }
-    inv[3] = 1.0;
     tMinF = floatPast(tMin, false);
     floatSlabs = ok;
   }
