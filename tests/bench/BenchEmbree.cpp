@@ -286,6 +286,7 @@ bool agree(const Answer& a, const Answer& b, double relative) {
 struct WrongRays {
   int raylab = 0, embree = 0, disagreements = 0, bruteForced = 0;
   int binaryDiffers = 0;  ///< Rays where intersect() and intersectBinary() differ at all.
+  int batchDiffers = 0;   ///< Rays where the batch intersect() and intersect() differ at all.
 };
 
 /// The wrong-ray count of one case (see the file comment), computed once.
@@ -303,8 +304,12 @@ WrongRays wrongRays(bool big, bool camera) {
   std::mt19937_64 rng(7 + key);
   const std::size_t offset = rng() % stride;
   WrongRays w;
+  std::vector<std::optional<Hit>> batch(rs.size());
+  m.bvh().intersect(rs.data(), rs.size(), batch.data());
   for (std::size_t i = 0; i < rs.size(); ++i) {
     const Answer ours = raylabAnswer(m.bvh(), rs[i]);
+    const Answer fromBatch = batch[i] ? Answer{batch[i]->t, batch[i]->primitive} : Answer{};
+    w.batchDiffers += fromBatch.primitive != ours.primitive || fromBatch.t != ours.t;
     const Answer theirs = e.intersect(rs[i]);
     const auto binaryHit = m.bvh().intersectBinary(rs[i]);
     const Answer binary = binaryHit ? Answer{binaryHit->t, binaryHit->primitive} : Answer{};
@@ -322,25 +327,39 @@ WrongRays wrongRays(bool big, bool camera) {
   return w;
 }
 
-void query(benchmark::State& state, bool big, bool camera, bool useEmbree) {
+/// Who answers a query benchmark: RayLab one ray at a time (Bvh::intersect(ray)), RayLab's
+/// batch (Bvh::intersect(rays, count, hits): a few searches interleaved, rays from one point
+/// in packets), or Embree (rtcIntersect1, one ray at a time).
+enum class Engine { RayLab, RayLabBatch, Embree };
+
+void query(benchmark::State& state, bool big, bool camera, Engine engine) {
   const std::vector<Ray>& rs = rays(camera);
   const Bvh& bvh = mesh(big).bvh();
   const EmbreeScene& e = embree(big);
   const WrongRays wrong = wrongRays(big, camera);
+  std::vector<std::optional<Hit>> batch(rs.size());
   int hits = 0;
   for (auto _ : state) {
     hits = 0;
-    if (useEmbree)
+    if (engine == Engine::Embree) {
       for (const Ray& r : rs) hits += e.intersect(r).primitive >= 0;
-    else
+    } else if (engine == Engine::RayLab) {
       for (const Ray& r : rs) hits += bvh.intersect(r).has_value();
+    } else {
+      bvh.intersect(rs.data(), rs.size(), batch.data());
+      for (const std::optional<Hit>& h : batch) hits += h.has_value();
+    }
     benchmark::DoNotOptimize(hits);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rs.size()));
   state.counters["hit_fraction"] = double(hits) / rs.size();
-  state.counters["wrong"] = useEmbree ? wrong.embree : wrong.raylab;
+  // The batch is wrong where RayLab is, and wherever it differs from intersect(ray).
+  state.counters["wrong"] = engine == Engine::Embree   ? wrong.embree
+                            : engine == Engine::RayLab ? wrong.raylab
+                                                       : wrong.raylab + wrong.batchDiffers;
   state.counters["disagree"] = wrong.disagreements;
   state.counters["binary_differs"] = wrong.binaryDiffers;
+  state.counters["batch_differs"] = wrong.batchDiffers;
   state.counters["brute_forced"] = wrong.bruteForced;
 }
 
@@ -422,24 +441,30 @@ class RatioReporter : public benchmark::ConsoleReporter {
     std::printf(
         "\nRayLab / Embree (median rate of each; builds: Embree time / RayLab time); RayLab / "
         "CGAL's AABB tree and RayLab / VTK's static cell locator (queries)\n");
-    std::printf("%-28s %14s %14s %8s %12s %12s %8s %8s\n", "case", "RayLab /s", "Embree /s",
+    std::printf("%-32s %14s %14s %8s %12s %12s %8s %8s\n", "case", "RayLab /s", "Embree /s",
                 "ratio", "RayLab wrong", "Embree wrong", "/ CGAL", "/ VTK");
     for (const auto& [name, rates] : m_rates) {
-      const std::string::size_type slash = name.find("/RayLab");
+      // "Query/<case>/RayLab" and "Query/<case>/RayLabBatch" against "Query/<case>/Embree";
+      // "Build/Noisy1M/RayLab/threads:1" against "Build/Noisy1M/Embree/threads:1".
+      std::string engine = "/RayLabBatch";
+      std::string::size_type slash = name.find(engine);
+      if (slash == std::string::npos) {
+        engine = "/RayLab";
+        slash = name.find(engine);
+      }
       if (slash == std::string::npos) continue;
-      const std::string embreeName = name.substr(0, slash) + "/Embree" + name.substr(slash + 7);
-      const auto other = m_rates.find(embreeName);
+      const std::string head = name.substr(0, slash), tail = name.substr(slash + engine.size());
+      const auto other = m_rates.find(head + "/Embree" + tail);
       if (other == m_rates.end()) continue;
       const double ours = median(rates), theirs = median(other->second);
-      const auto wrongOurs = m_wrong.find(name.substr(0, slash) + "/RayLab");
-      const auto wrongTheirs = m_wrong.find(name.substr(0, slash) + "/Embree");
-      std::printf("%-28s %14.4g %14.4g %8.3f",
-                  (name.substr(0, slash) + name.substr(slash + 7)).c_str(), ours, theirs,
-                  ours / theirs);
+      const auto wrongOurs = m_wrong.find(head + engine);
+      const auto wrongTheirs = m_wrong.find(head + "/Embree");
+      const std::string label = head + tail + (engine == "/RayLabBatch" ? " (batch)" : "");
+      std::printf("%-32s %14.4g %14.4g %8.3f", label.c_str(), ours, theirs, ours / theirs);
       if (wrongOurs != m_wrong.end() && wrongTheirs != m_wrong.end())
         std::printf(" %12d %12d", wrongOurs->second, wrongTheirs->second);
       for (const char* peer : {"/CGAL", "/VTK"}) {
-        const auto p = m_rates.find(name.substr(0, slash) + peer + name.substr(slash + 7));
+        const auto p = m_rates.find(head + peer + tail);
         if (p != m_rates.end()) std::printf(" %8.1f", ours / median(p->second));
       }
       std::printf("\n");
@@ -465,10 +490,13 @@ void registerAll() {
                         {"Noisy1M_Camera", true, true},
                         {"Noisy1M_Random", true, false}};
   for (const Case c : cases)
-    for (const bool useEmbree : {false, true}) {
-      const std::string name = std::string("Query/") + c.name + (useEmbree ? "/Embree" : "/RayLab");
-      benchmark::RegisterBenchmark(name.c_str(), [c, useEmbree](benchmark::State& s) {
-        query(s, c.big, c.camera, useEmbree);
+    for (const Engine engine : {Engine::RayLab, Engine::RayLabBatch, Engine::Embree}) {
+      const char* who = engine == Engine::RayLab        ? "/RayLab"
+                        : engine == Engine::RayLabBatch ? "/RayLabBatch"
+                                                        : "/Embree";
+      const std::string name = std::string("Query/") + c.name + who;
+      benchmark::RegisterBenchmark(name.c_str(), [c, engine](benchmark::State& s) {
+        query(s, c.big, c.camera, engine);
       })->Unit(benchmark::kMillisecond);
     }
   for (const Case c : cases)

@@ -198,6 +198,7 @@ struct WideRay : ShearedRay {
 
 /// The result of a wide query: the nearest hit so far (closest) or whether any was found.
 struct WideResult {
+  WideResult() : WideResult(std::numeric_limits<double>::infinity()) {}
   explicit WideResult(double t) : tMax(t), tMaxF(floatPast(t, true)) {}
   /// A new best distance, and its float rounded up for the float slab test.
   void setTMax(double t) {
@@ -206,7 +207,10 @@ struct WideResult {
   }
   double tMax;
   float tMaxF;
-  int bestId = INT_MAX;
+  /// The slot of the nearest hit so far (-1: none yet). Its triangle's index is looked up
+  /// in the ids array only on a tie and once at the end: that array is apart from the
+  /// blocks, and reading it at every hit cost a cache miss per hit on random rays.
+  int bestSlot = -1;
   double b1 = 0.0, b2 = 0.0;
   bool found = false;
 };
@@ -271,6 +275,13 @@ __attribute__((target("avx2,fma"))) void closestAvx2(const BvhWideNode* nodes,
     avx2::traverseWide<false, false>(nodes, blocks, ids, r, res);
 }
 
+__attribute__((target("avx2,fma"))) void closestStreamAvx2(const BvhWideNode* nodes,
+                                                           const BvhTriangleBlock* blocks,
+                                                           const int* ids, const Ray* rays,
+                                                           std::size_t count, WideResult* res) {
+  avx2::closestStream(nodes, blocks, ids, rays, count, res);
+}
+
 __attribute__((target("avx2,fma"))) void anyAvx2(const BvhWideNode* nodes,
                                                  const BvhTriangleBlock* blocks, const int* ids,
                                                  const Ray& ray, WideResult& res) {
@@ -323,8 +334,35 @@ std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   else
 #endif
     closestPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
-  if (res.bestId == INT_MAX) return std::nullopt;
-  return Hit{res.tMax, res.bestId, Vec2(res.b1, res.b2)};
+  if (res.bestSlot < 0) return std::nullopt;
+  return Hit{res.tMax, m_primIds[std::size_t(res.bestSlot)], Vec2(res.b1, res.b2)};
+}
+
+void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const {
+  if (m_stats.triangleCount == 0) {
+    std::fill(hits, hits + count, std::nullopt);
+    return;
+  }
+  // In chunks, so that the results need no allocation.
+  constexpr std::size_t kChunk = 64;
+  WideResult res[kChunk];
+  for (std::size_t first = 0; first < count; first += kChunk) {
+    const std::size_t n = std::min(kChunk, count - first);
+    for (std::size_t i = 0; i < n; ++i) res[i] = WideResult(rays[first + i].tMax);
+#if defined(RAYLAB_BVH_HAVE_AVX2)
+    if (kernel() == BvhKernel::Avx2)
+      closestStreamAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), rays + first, n, res);
+    else
+#endif
+      portable::closestStream(m_wide.data(), m_blocks.data(), m_primIds.data(), rays + first, n,
+                              res);
+    for (std::size_t i = 0; i < n; ++i)
+      hits[first + i] =
+          res[i].bestSlot < 0
+              ? std::nullopt
+              : std::optional<Hit>(Hit{res[i].tMax, m_primIds[std::size_t(res[i].bestSlot)],
+                                       Vec2(res[i].b1, res[i].b2)});
+  }
 }
 
 bool Bvh::occluded(const Ray& ray) const {

@@ -212,6 +212,10 @@ class Bvh {
   /// Nearest hit with t in [ray.tMin, ray.tMax]; uv = barycentrics (b1, b2). On an exact tie
   /// in t the lowest triangle index wins, so the answer does not depend on the tree.
   std::optional<Hit> intersect(const Ray& ray) const;
+  /// intersect() of each of `count` rays into hits[i], the same answers bit for bit, the
+  /// searches of a few rays interleaved so that one ray's waits on memory overlap another's
+  /// work: for many rays at once (a tile's camera rays, a batch of bounces).
+  void intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const;
   /// intersect() answered by the binary tree (the search traceVisits records), the same bits;
   /// an independent second route for checks (the benchmark compares every ray).
   std::optional<Hit> intersectBinary(const Ray& ray) const;
