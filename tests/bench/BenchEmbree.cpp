@@ -1,6 +1,9 @@
 // RayLab's BVH against Embree 3 (issue 16): the same meshes and the same rays for both, one
 // thread, single-ray closest hit (Bvh::intersect against rtcIntersect1), and the BVH build
-// of the 1M-triangle mesh on 1 and 2 threads. Built only when libembree-dev is installed
+// of the 1M-triangle mesh on 1 and 2 threads. RayLab's batch query (Bvh::intersect(rays,
+// count, hits): four searches interleaved, rays from one point in packets) is measured too,
+// as "RayLabBatch", against the same single-ray Embree figure; its answers must be those of
+// intersect(ray), bit for bit (batch_differs). Built only when libembree-dev is installed
 // (an optional dependency of this benchmark, never of the program). After the Google
 // Benchmark table it prints RayLab's rate divided by Embree's per case, and how many rays
 // each engine got wrong.
