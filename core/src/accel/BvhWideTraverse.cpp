@@ -56,14 +56,17 @@ typedef int V8i __attribute__((vector_size(32)));
 /// path (a microcode assist) on every node.
 constexpr float kFloatSlack = 0x1p-125f;
 
+#if !defined(__SSE2__)
 /// `x` rounded to the nearest float, and beyond float's range to infinity: a plain conversion
-/// of a double outside that range is undefined behaviour in C++ (UBSan reports it).
+/// of a double outside that range is undefined behaviour in C++ (UBSan reports it). Only
+/// where SSE2 is missing (roundToFloat).
 inline float toFloat(double x) {
   constexpr double kMax = std::numeric_limits<float>::max();
   if (x > kMax) return std::numeric_limits<float>::infinity();
   if (x < -kMax) return -std::numeric_limits<float>::infinity();
   return static_cast<float>(x);  // NaN stays NaN
 }
+#endif
 
 /// std::min(std::max(x, lo), hi) (NaN stays NaN) and float(x) rounded to nearest (infinity
 /// beyond float's range, as IEEE rounding gives), without the branches GCC emits for them
