@@ -575,7 +575,7 @@ TEST(Bvh, 09_WideTreeHoldsEveryTriangleOnceInBinaryBoxes) {
     binaryBoxes.insert(std::vector<float>(n.box, n.box + 6));
     if (n.count > 0) binaryLeaves.emplace_back(n.offset, n.offset + n.count);
   }
-  const std::vector<BvhWideNode>& wide = bvh.wideNodes();
+  const auto& wide = bvh.wideNodes();
   ASSERT_FALSE(wide.empty());
   std::vector<int> parents(wide.size(), 0);
   std::vector<int> covered(5120, 0);

@@ -19,6 +19,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -267,6 +268,35 @@ void adviseHugePages(const void* p, std::size_t bytes) {
 #endif
 }
 
+}  // namespace
+
+namespace detail {
+
+namespace {
+constexpr std::size_t kHugePage = std::size_t(2) << 20;
+constexpr std::size_t kHugeArrayMin = std::size_t(256) << 10;
+}  // namespace
+
+void* bvhAllocate(std::size_t bytes, std::size_t alignment) {
+  if (bytes < kHugeArrayMin) return ::operator new(bytes, std::align_val_t(alignment));
+  const std::size_t rounded = (bytes + kHugePage - 1) & ~(kHugePage - 1);
+  void* p = std::aligned_alloc(kHugePage, rounded);
+  if (!p) throw std::bad_alloc();
+  adviseHugePages(p, rounded);
+  return p;
+}
+
+void bvhDeallocate(void* p, std::size_t bytes, std::size_t alignment) noexcept {
+  if (bytes < kHugeArrayMin)
+    ::operator delete(p, std::align_val_t(alignment));
+  else
+    std::free(p);
+}
+
+}  // namespace detail
+
+namespace {
+
 /// Resizes `v` to n elements, its fresh storage advised to huge pages first.
 template <typename Vector>
 void resizeHuge(Vector& v, std::size_t n) {
@@ -334,7 +364,6 @@ class WideCollapse {
   explicit WideCollapse(std::vector<BvhNodePair>& pairs) : m_flat(pairs) {
     const PairNodes& flat = m_flat;
     m_wide.reserve(flat.size() / 4 + 1);
-    adviseHugePages(m_wide.data(), m_wide.capacity() * sizeof(BvhWideNode));
     // Triangles and first triangle of every subtree: children come after their parent.
     m_count.resize(flat.size(), 0);
     m_first.resize(flat.size(), 0);
@@ -343,7 +372,7 @@ class WideCollapse {
   }
 
   /// The wide tree; `leaves` receives its leaves in triangle order, `slots` the slots used.
-  std::vector<BvhWideNode> run(bool empty, std::vector<LeafRun>& leaves, int& slots) {
+  BvhArray<BvhWideNode> run(bool empty, std::vector<LeafRun>& leaves, int& slots) {
     m_leaves = &leaves;
     if (empty) {
       m_wide.emplace_back();
@@ -463,7 +492,7 @@ class WideCollapse {
 
   PairNodes m_flat;
   std::vector<int> m_count, m_first;
-  std::vector<BvhWideNode> m_wide;
+  BvhArray<BvhWideNode> m_wide;
   std::vector<LeafRun>* m_leaves = nullptr;
   int m_blocks = 0;
 };
@@ -624,8 +653,8 @@ struct Builder {
   /// Step 4: the triangles in leaf order, each wide leaf from its slot on (a new block of 4):
   /// each slot's caller index (-1 for padding) and vertices, so a leaf reads its triangles
   /// contiguously, four to a block.
-  void copyTriangles(const std::vector<LeafRun>& leaves, int slots, std::vector<int>& primIds,
-                     std::vector<BvhTriangleBlock>& blocks) const {
+  void copyTriangles(const std::vector<LeafRun>& leaves, int slots, BvhArray<int>& primIds,
+                     BvhArray<BvhTriangleBlock>& blocks) const {
     resizeHuge(primIds, static_cast<std::size_t>(slots));
     resizeHuge(blocks, static_cast<std::size_t>(slots / 4));  // not zeroed: every lane is written
     const int leafCount = static_cast<int>(leaves.size());

@@ -109,6 +109,42 @@ struct alignas(32) BvhTriangleBlock {
   double v[9][4];
 };
 
+namespace detail {
+/// Storage for BvhAllocator: blocks of 256 KB and more are 2 MB-aligned, rounded up to whole
+/// 2 MB pages and (on Linux) advised to huge pages, smaller ones come from operator new.
+void* bvhAllocate(std::size_t bytes, std::size_t alignment);
+void bvhDeallocate(void* p, std::size_t bytes, std::size_t alignment) noexcept;
+}  // namespace detail
+
+/// The allocator of a Bvh's query arrays. Random rays touch the whole tree: in 4 KB pages its
+/// nodes and triangles land at scattered physical addresses, and a query was up to 1.6x
+/// slower or faster from one build (one process) to the next; in whole huge pages the
+/// address translation is cheap and the same every time.
+template <typename T>
+struct BvhAllocator {
+  using value_type = T;
+  BvhAllocator() = default;
+  template <typename U>
+  BvhAllocator(const BvhAllocator<U>&) {}
+  T* allocate(std::size_t n) {
+    return static_cast<T*>(detail::bvhAllocate(n * sizeof(T), alignof(T)));
+  }
+  void deallocate(T* p, std::size_t n) noexcept {
+    detail::bvhDeallocate(p, n * sizeof(T), alignof(T));
+  }
+  template <typename U>
+  bool operator==(const BvhAllocator<U>&) const {
+    return true;
+  }
+  template <typename U>
+  bool operator!=(const BvhAllocator<U>&) const {
+    return false;
+  }
+};
+/// An array a Bvh's queries read (BvhAllocator).
+template <typename T>
+using BvhArray = std::vector<T, BvhAllocator<T>>;
+
 /// The instruction set the wide traversal (intersect, occluded) runs on. Both give the same
 /// answers, bit for bit: the same IEEE operations lane by lane, without fused multiply-add.
 enum class BvhKernel {
@@ -259,7 +295,7 @@ class Bvh {
   /// The caller's index of the triangle in `slot`; -1 for a padding slot.
   int slotTriangle(int slot) const { return m_primIds[static_cast<std::size_t>(slot)]; }
   /// The 8-wide tree of intersect() and occluded() (node 0 is its root).
-  const std::vector<BvhWideNode>& wideNodes() const { return m_wide; }
+  const BvhArray<BvhWideNode>& wideNodes() const { return m_wide; }
 
   /// The kernel intersect() and occluded() use in this process; at start-up Avx2 when the
   /// CPU has AVX2 and FMA, else Portable.
@@ -275,10 +311,10 @@ class Bvh {
   std::vector<int> nodeDepths() const;
 
   BvhSettings m_settings;
-  std::vector<BvhNodePair> m_pairs;        ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
-  std::vector<BvhWideNode> m_wide;         ///< The 8-wide tree, depth first (root 0).
-  std::vector<BvhTriangleBlock> m_blocks;  ///< Triangle slot s: m_blocks[s / 4], lane s % 4.
-  std::vector<int> m_primIds;              ///< Triangle slot -> caller's index (-1: padding).
+  std::vector<BvhNodePair> m_pairs;     ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
+  BvhArray<BvhWideNode> m_wide;         ///< The 8-wide tree, depth first (root 0).
+  BvhArray<BvhTriangleBlock> m_blocks;  ///< Triangle slot s: m_blocks[s / 4], lane s % 4.
+  BvhArray<int> m_primIds;              ///< Triangle slot -> caller's index (-1: padding).
   Bounds3 m_bounds;
   BvhStats m_stats;
 };
