@@ -477,12 +477,12 @@ TEST(Bvh, 12_FloatSlabTestLosesNoHitForAnyDirectionLength) {
 
 TEST(Bvh, 13_BatchAnswersAsOneRayAtATime) {
   // Bvh::intersect(rays, count, hits) interleaves a few searches and takes rays from one
-  // point in packets of four; every answer must be intersect(ray)'s, bit for bit, and the
-  // brute-force one. Rays: a pinhole camera's (packets), some clipped by tMax, some with a
-  // negative tMin or an origin beyond 1e30 among them (the double slab test, outside any
-  // packet: searched alone); random rays from random points (interleaved); a mesh of every triangle
-  // twice (each hit a tie, won by the lower index); counts that are not multiples of the packet or
-  // of the batch's chunk; and the empty hierarchy.
+  // point in packets (of eight in the AVX2 kernel, four in the portable one); every answer must be
+  // intersect(ray)'s, bit for bit, and the brute-force one. Rays: a pinhole camera's (packets),
+  // some clipped by tMax, some with a negative tMin or an origin beyond 1e30 among them (the double
+  // slab test, outside any packet: searched alone); random rays from random points (interleaved); a
+  // mesh of every triangle twice (each hit a tie, won by the lower index); counts that are not
+  // multiples of the packet or of the batch's chunk; and the empty hierarchy.
   Soup sphere;
   {
     const TriangleMesh m = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 3);
@@ -527,18 +527,16 @@ TEST(Bvh, 13_BatchAnswersAsOneRayAtATime) {
                       sameBits(got->t, expect.t) && got->primitive == expect.id));
         ++checked;
         hits += expect.hit;
+        const auto describe = [](bool hit, double t, int id) {
+          return hit ? std::to_string(t) + " id=" + std::to_string(id) : std::string("miss");
+        };
         if (!same && ++mismatches <= 5)
           ADD_FAILURE() << toString(kernel) << " kernel, ray " << i << " " << rays[i].toString()
                         << ": one at a time "
-                        << (one ? std::to_string(one->t) + " id=" + std::to_string(one->primitive)
-                                : std::string("miss"))
+                        << describe(one.has_value(), one ? one->t : 0.0, one ? one->primitive : -1)
                         << ", batch "
-                        << (got ? std::to_string(got->t) + " id=" + std::to_string(got->primitive)
-                                : std::string("miss"))
-                        << ", brute force "
-                        << (expect.hit
-                                ? std::to_string(expect.t) + " id=" + std::to_string(expect.id)
-                                : std::string("miss"));
+                        << describe(got.has_value(), got ? got->t : 0.0, got ? got->primitive : -1)
+                        << ", brute force " << describe(expect.hit, expect.t, expect.id);
       }
     };
     check(sphere, camera);

@@ -655,8 +655,9 @@ struct Builder {
   /// contiguously, four to a block.
   void copyTriangles(const std::vector<LeafRun>& leaves, int slots, BvhArray<int>& primIds,
                      BvhArray<BvhTriangleBlock>& blocks) const {
-    resizeHuge(primIds, static_cast<std::size_t>(slots));
-    resizeHuge(blocks, static_cast<std::size_t>(slots / 4));  // not zeroed: every lane is written
+    // BvhArrays: their allocator asks for huge pages itself.
+    primIds.resize(static_cast<std::size_t>(slots));
+    blocks.resize(static_cast<std::size_t>(slots / 4));  // not zeroed: every lane is written
     const int leafCount = static_cast<int>(leaves.size());
     constexpr int kLeafGrain = kParallelBinGrain / 4;
     // The triangles are read in leaf order, far from the mesh's order: their indices and

@@ -328,6 +328,12 @@ void Bvh::setKernel(BvhKernel kernel) {
   currentKernel().store(kernel, std::memory_order_relaxed);
 }
 
+/// The closest hit `res` found, its triangle's index from the slot's (`ids`).
+std::optional<Hit> toHit(const WideResult& res, const int* ids) {
+  if (res.bestSlot < 0) return std::nullopt;
+  return Hit{res.tMax, ids[res.bestSlot], Vec2(res.b1, res.b2)};
+}
+
 std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return std::nullopt;
   WideResult res(ray.tMax);
@@ -337,8 +343,7 @@ std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   else
 #endif
     closestPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
-  if (res.bestSlot < 0) return std::nullopt;
-  return Hit{res.tMax, m_primIds[std::size_t(res.bestSlot)], Vec2(res.b1, res.b2)};
+  return toHit(res, m_primIds.data());
 }
 
 void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const {
@@ -359,12 +364,7 @@ void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits
 #endif
       portable::closestStream(m_wide.data(), m_blocks.data(), m_primIds.data(), rays + first, n,
                               res);
-    for (std::size_t i = 0; i < n; ++i)
-      hits[first + i] =
-          res[i].bestSlot < 0
-              ? std::nullopt
-              : std::optional<Hit>(Hit{res[i].tMax, m_primIds[std::size_t(res[i].bestSlot)],
-                                       Vec2(res[i].b1, res[i].b2)});
+    for (std::size_t i = 0; i < n; ++i) hits[first + i] = toHit(res[i], m_primIds.data());
   }
 }
 
