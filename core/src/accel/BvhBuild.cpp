@@ -680,6 +680,7 @@ struct Builder {
           BvhTriangleBlock& block = blocks[static_cast<std::size_t>(slot / 4)];
           if (j >= leaf.count) {
             primIds[static_cast<std::size_t>(slot)] = -1;
+            block.id[slot % 4] = -1;
             for (int c = 0; c < 9; ++c) block.v[c][slot % 4] = 0.0;
             continue;
           }
@@ -688,6 +689,7 @@ struct Builder {
           prefetchVertices(k + kAhead);
           const int id = static_cast<int>(prims[k].id);
           primIds[static_cast<std::size_t>(slot)] = id;
+          block.id[slot % 4] = id;
           for (int c = 0; c < 3; ++c) {
             const Point3& p = vertices[std::size_t(triangles[std::size_t(id)][c])];
             for (int a = 0; a < 3; ++a) block.v[3 * c + a][slot % 4] = p[a];

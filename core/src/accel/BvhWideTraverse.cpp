@@ -210,9 +210,8 @@ struct WideResult {
   }
   double tMax;
   float tMaxF;
-  /// The slot of the nearest hit so far (-1: none yet). Its triangle's index is looked up
-  /// in the ids array only on a tie and once at the end: that array is apart from the
-  /// blocks, and reading it at every hit cost a cache miss per hit on random rays.
+  /// The slot of the nearest hit so far (-1: none yet). Its triangle's index (the block's
+  /// id) is read only on a tie and once at the end.
   int bestSlot = -1;
   double b1 = 0.0, b2 = 0.0;
   bool found = false;
@@ -248,52 +247,52 @@ namespace avx2 {
 
 /// The queries on one kernel: the ray prepared (for the AVX2 kernel inside it, in vectors)
 /// and traversed with the float slab test when WideRay allows it, else the double one.
-void closestPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const int* ids,
-                     const Ray& ray, WideResult& res) {
+void closestPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const Ray& ray,
+                     WideResult& res) {
   const WideRay r(ray);
   if (r.floatSlabs)
-    portable::traverseWide<false, true>(nodes, blocks, ids, r, res);
+    portable::traverseWide<false, true>(nodes, blocks, r, res);
   else
-    portable::traverseWide<false, false>(nodes, blocks, ids, r, res);
+    portable::traverseWide<false, false>(nodes, blocks, r, res);
 }
 
-void anyPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const int* ids,
-                 const Ray& ray, WideResult& res) {
+void anyPortable(const BvhWideNode* nodes, const BvhTriangleBlock* blocks, const Ray& ray,
+                 WideResult& res) {
   const WideRay r(ray);
   if (r.floatSlabs)
-    portable::traverseWide<true, true>(nodes, blocks, ids, r, res);
+    portable::traverseWide<true, true>(nodes, blocks, r, res);
   else
-    portable::traverseWide<true, false>(nodes, blocks, ids, r, res);
+    portable::traverseWide<true, false>(nodes, blocks, r, res);
 }
 
 #if defined(RAYLAB_BVH_HAVE_AVX2)
 __attribute__((target("avx2,fma"))) void closestAvx2(const BvhWideNode* nodes,
-                                                     const BvhTriangleBlock* blocks, const int* ids,
-                                                     const Ray& ray, WideResult& res) {
+                                                     const BvhTriangleBlock* blocks, const Ray& ray,
+                                                     WideResult& res) {
   WideRay r;
   avx2::prepareFused(ray, r);
   if (r.floatSlabs)
-    avx2::traverseWide<false, true>(nodes, blocks, ids, r, res);
+    avx2::traverseWide<false, true>(nodes, blocks, r, res);
   else
-    avx2::traverseWide<false, false>(nodes, blocks, ids, r, res);
+    avx2::traverseWide<false, false>(nodes, blocks, r, res);
 }
 
 __attribute__((target("avx2,fma"))) void closestStreamAvx2(const BvhWideNode* nodes,
                                                            const BvhTriangleBlock* blocks,
-                                                           const int* ids, const Ray* rays,
-                                                           std::size_t count, WideResult* res) {
-  avx2::closestStream(nodes, blocks, ids, rays, count, res);
+                                                           const Ray* rays, std::size_t count,
+                                                           WideResult* res) {
+  avx2::closestStream(nodes, blocks, rays, count, res);
 }
 
 __attribute__((target("avx2,fma"))) void anyAvx2(const BvhWideNode* nodes,
-                                                 const BvhTriangleBlock* blocks, const int* ids,
-                                                 const Ray& ray, WideResult& res) {
+                                                 const BvhTriangleBlock* blocks, const Ray& ray,
+                                                 WideResult& res) {
   WideRay r;
   avx2::prepareFused(ray, r);
   if (r.floatSlabs)
-    avx2::traverseWide<true, true>(nodes, blocks, ids, r, res);
+    avx2::traverseWide<true, true>(nodes, blocks, r, res);
   else
-    avx2::traverseWide<true, false>(nodes, blocks, ids, r, res);
+    avx2::traverseWide<true, false>(nodes, blocks, r, res);
 }
 #endif
 
@@ -328,10 +327,10 @@ void Bvh::setKernel(BvhKernel kernel) {
   currentKernel().store(kernel, std::memory_order_relaxed);
 }
 
-/// The closest hit `res` found, its triangle's index from the slot's (`ids`).
-std::optional<Hit> toHit(const WideResult& res, const int* ids) {
+/// The closest hit `res` found, its triangle's index from the slot's block.
+std::optional<Hit> toHit(const WideResult& res, const BvhTriangleBlock* blocks) {
   if (res.bestSlot < 0) return std::nullopt;
-  return Hit{res.tMax, ids[res.bestSlot], Vec2(res.b1, res.b2)};
+  return Hit{res.tMax, blocks[res.bestSlot >> 2].id[res.bestSlot & 3], Vec2(res.b1, res.b2)};
 }
 
 std::optional<Hit> Bvh::intersect(const Ray& ray) const {
@@ -339,11 +338,11 @@ std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   WideResult res(ray.tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   if (kernel() == BvhKernel::Avx2)
-    closestAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
+    closestAvx2(m_wide.data(), m_blocks.data(), ray, res);
   else
 #endif
-    closestPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
-  return toHit(res, m_primIds.data());
+    closestPortable(m_wide.data(), m_blocks.data(), ray, res);
+  return toHit(res, m_blocks.data());
 }
 
 void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const {
@@ -359,12 +358,11 @@ void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits
     for (std::size_t i = 0; i < n; ++i) res[i] = WideResult(rays[first + i].tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
     if (kernel() == BvhKernel::Avx2)
-      closestStreamAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), rays + first, n, res);
+      closestStreamAvx2(m_wide.data(), m_blocks.data(), rays + first, n, res);
     else
 #endif
-      portable::closestStream(m_wide.data(), m_blocks.data(), m_primIds.data(), rays + first, n,
-                              res);
-    for (std::size_t i = 0; i < n; ++i) hits[first + i] = toHit(res[i], m_primIds.data());
+      portable::closestStream(m_wide.data(), m_blocks.data(), rays + first, n, res);
+    for (std::size_t i = 0; i < n; ++i) hits[first + i] = toHit(res[i], m_blocks.data());
   }
 }
 
@@ -373,10 +371,10 @@ bool Bvh::occluded(const Ray& ray) const {
   WideResult res(ray.tMax);
 #if defined(RAYLAB_BVH_HAVE_AVX2)
   if (kernel() == BvhKernel::Avx2)
-    anyAvx2(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
+    anyAvx2(m_wide.data(), m_blocks.data(), ray, res);
   else
 #endif
-    anyPortable(m_wide.data(), m_blocks.data(), m_primIds.data(), ray, res);
+    anyPortable(m_wide.data(), m_blocks.data(), ray, res);
   return res.found;
 }
 
