@@ -210,9 +210,8 @@ struct WideResult {
   }
   double tMax;
   float tMaxF;
-  /// The slot of the nearest hit so far (-1: none yet). Its triangle's index (the block's
-  /// id) is read only on a tie and once at the end.
-  int bestSlot = -1;
+  /// The caller's index of the nearest hit's triangle so far (-1: none yet).
+  int bestId = -1;
   double b1 = 0.0, b2 = 0.0;
   bool found = false;
 };
@@ -327,10 +326,10 @@ void Bvh::setKernel(BvhKernel kernel) {
   currentKernel().store(kernel, std::memory_order_relaxed);
 }
 
-/// The closest hit `res` found, its triangle's index from the slot's block.
-std::optional<Hit> toHit(const WideResult& res, const BvhTriangleBlock* blocks) {
-  if (res.bestSlot < 0) return std::nullopt;
-  return Hit{res.tMax, blocks[res.bestSlot >> 2].id[res.bestSlot & 3], Vec2(res.b1, res.b2)};
+/// The closest hit `res` found.
+std::optional<Hit> toHit(const WideResult& res) {
+  if (res.bestId < 0) return std::nullopt;
+  return Hit{res.tMax, res.bestId, Vec2(res.b1, res.b2)};
 }
 
 std::optional<Hit> Bvh::intersect(const Ray& ray) const {
@@ -342,7 +341,7 @@ std::optional<Hit> Bvh::intersect(const Ray& ray) const {
   else
 #endif
     closestPortable(m_wide.data(), m_blocks.data(), ray, res);
-  return toHit(res, m_blocks.data());
+  return toHit(res);
 }
 
 void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const {
@@ -362,7 +361,7 @@ void Bvh::intersect(const Ray* rays, std::size_t count, std::optional<Hit>* hits
     else
 #endif
       portable::closestStream(m_wide.data(), m_blocks.data(), rays + first, n, res);
-    for (std::size_t i = 0; i < n; ++i) hits[first + i] = toHit(res[i], m_blocks.data());
+    for (std::size_t i = 0; i < n; ++i) hits[first + i] = toHit(res[i]);
   }
 }
 
