@@ -19,6 +19,15 @@ constexpr double bvhGamma(int n) {
 /// meets a triangle always passes its boxes' slab tests. Private to core.
 constexpr double kBvhSlabScale = 1.0 + 2.0 * bvhGamma(3);
 
+/// The slab tests cull a box whose entry lies beyond this bound of the nearest hit so far,
+/// t, not beyond t itself. A box's float planes are rounded outwards relative to the
+/// scene's coordinates, which covers the rounding of entry distances and of a triangle's t
+/// near the scene; for a ray from far away (|o| in the 1e14s and beyond) both distances are
+/// huge, their rounding (a few ulps of t) outgrows the boxes' margin, and a box holding
+/// a triangle at exactly t (a tie, which goes to the lowest index) could be culled. The
+/// margin, 2^-44 t (256 ulps of t), never changes which triangles are tested against t.
+inline double bvhCullBound(double t) { return t + (t < 0.0 ? -t : t) * 0x1p-44; }
+
 /// Deepest tree the traversal stack can hold (BvhTraverse.cpp); the builder stops using
 /// SAH splits well before this (kSahDepthLimit) and halves ranges by index instead, and
 /// checks that the finished tree fits (BvhBuild.cpp). Private to core.

@@ -202,15 +202,17 @@ struct RayQuery {
   const int* ids;
   double tMax;
 
+  /// Boxes are culled beyond this, a little past tMax (bvhCullBound).
+  double cull() const { return bvhCullBound(tMax); }
   bool enterRoot(const BvhNodePair& root) const {
     double tEntry;
-    return ray.slab(root, 0, tMax, tEntry);
+    return ray.slab(root, 0, cull(), tEntry);
   }
   int children(const BvhNodePair& pair, double tEntry[2]) const {
-    return ray.slab2(pair, tMax, tEntry);
+    return ray.slab2(pair, cull(), tEntry);
   }
   int nearSide(int axis, const double*) const { return ray.dirNeg[axis] ? 1 : 0; }
-  bool stillNeeded(double tEntry) const { return tEntry <= tMax; }
+  bool stillNeeded(double tEntry) const { return tEntry <= cull(); }
 
   std::optional<TriangleHit> hit(int slot) const {
     double v[9];
@@ -323,7 +325,7 @@ struct RecordedClosestHit : ClosestHit {
 
   bool enterRoot(const BvhNodePair& root) {
     double tEntry;
-    const bool hit = ray.slab(root, 0, tMax, tEntry);
+    const bool hit = ray.slab(root, 0, cull(), tEntry);
     ++trace->boxTests;
     record(0, hit ? BvhVisitKind::Entered : BvhVisitKind::Missed, hit ? tEntry : kInfinity);
     return hit;
@@ -336,7 +338,7 @@ struct RecordedClosestHit : ClosestHit {
       if (mask & (1 << lane)) continue;
       // Not entered: passed by, or met only beyond the nearest hit so far?
       double t;
-      const bool beyond = ray.slab(pair, lane, rayTMax, t);
+      const bool beyond = ray.slab(pair, lane, bvhCullBound(rayTMax), t);
       record(offset + lane, beyond ? BvhVisitKind::Culled : BvhVisitKind::Missed,
              beyond ? t : kInfinity);
     }
