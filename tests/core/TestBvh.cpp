@@ -561,11 +561,14 @@ TEST(Bvh, 14_TiesFarFromTheSceneGoToTheLowestIndex) {
   // Rays from 1e14 to 1e35 away onto a unit icosphere: at such distances t's last bits
   // cannot tell its triangles apart, and ties (the same t from triangles in different boxes)
   // are common; brute force gives the lowest index. The rounding of a box's entry distance
-  // then outgrows the box's outward rounding, and without bvhCullBound's margin the binary
-  // traversal culled a tied triangle's box from 1e14 on (3 to 421 rays in 4,000 per
-  // distance), the wide one beyond 1e30 (its double slab test: 208 rays from 2e30). Each
-  // traversal (wide under each kernel, one ray and in a batch; binary) must give the brute
-  // force bits. Half the rays are axis-aligned (front and back tie), half random.
+  // and of t then outgrows the box's outward rounding, and without bvhCullBound's margin the
+  // binary traversal culled the box of a tied (or a few ulps nearer) triangle from 1e14 on,
+  // the wide one beyond 1e30 (its double slab test). Every query must give the brute force
+  // bits: the wide tree under each kernel, one ray and in a batch; the binary tree, alone and
+  // recorded (traceVisits); all hits (their first); any hit up to the nearest t. Per distance,
+  // half the rays are axis-aligned (front and back tie from about 2e16 on), half aimed from a
+  // random direction at a random point inside the sphere (ties among neighbouring triangles;
+  // from afar those miss, a miss that must be brute force's too).
   Soup sphere;
   {
     const TriangleMesh m = MeshFactory::makeIcosphere(Point3(0.0), 1.0, 3);
@@ -576,12 +579,14 @@ TEST(Bvh, 14_TiesFarFromTheSceneGoToTheLowestIndex) {
   std::mt19937_64 rng(1614);
   std::normal_distribution<double> n;
   const auto unit = [&] { return glm::normalize(Vec3(n(rng), n(rng), n(rng))); };
+  const double distances[] = {1e14, 1e15, 1e16, 3e16, 2e20, 2e30, 1e35};
+  constexpr int kPerDistance = 600;
   std::vector<Ray> rays;
-  for (const double distance : {1e14, 1e15, 1e16, 3e16, 2e20, 2e30, 1e35})
-    for (int i = 0; i < 600; ++i) {
+  for (const double distance : distances)
+    for (int i = 0; i < kPerDistance; ++i) {
       if (i % 2) {
-        const Vec3 d = unit();
-        rays.push_back(Ray::make(0.9 * unit() - distance * d, d));
+        const Point3 o = -distance * unit();
+        rays.push_back(Ray::make(o, 0.9 * unit() - o));
         continue;
       }
       const int axis = i / 2 % 3;
@@ -594,43 +599,60 @@ TEST(Bvh, 14_TiesFarFromTheSceneGoToTheLowestIndex) {
       d[axis] = sign;
       rays.push_back(Ray::make(o, d));
     }
-  int ties = 0;
   std::vector<Brute> expect;
-  for (const Ray& r : rays) {
-    expect.push_back(bruteForce(sphere, r));
+  std::vector<int> hits(std::size(distances)), ties(std::size(distances));
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    expect.push_back(bruteForce(sphere, rays[i]));
     int same = 0;
     for (const Index3& t : sphere.triangles) {
-      const auto h =
-          intersectTriangle(r, sphere.vertices[t[0]], sphere.vertices[t[1]], sphere.vertices[t[2]]);
+      const auto h = intersectTriangle(rays[i], sphere.vertices[t[0]], sphere.vertices[t[1]],
+                                       sphere.vertices[t[2]]);
       same += h && sameBits(h->t, expect.back().t);
     }
-    ties += same > 1;
+    hits[i / kPerDistance] += expect.back().hit;
+    ties[i / kPerDistance] += same > 1;
   }
-  std::printf("%zu rays, %d of them with a tie\n", rays.size(), ties);
-  EXPECT_GT(ties, 1000);  // the case this test is about
+  for (std::size_t k = 0; k < std::size(distances); ++k) {
+    std::printf("from %g: %d of %d rays hit, %d with a tie\n", distances[k], hits[k], kPerDistance,
+                ties[k]);
+    // The axis-aligned ones hit; the others too up to 1e15, while beyond about 1e16 their
+    // direction (target - o, rounded) can no longer aim within the sphere.
+    EXPECT_GE(hits[k], distances[k] < 1e16 ? kPerDistance : kPerDistance / 2) << distances[k];
+    EXPECT_GT(ties[k], 0) << distances[k];  // the case this test is about
+  }
   const auto agrees = [](const std::optional<Hit>& got, const Brute& want) {
     return got.has_value() == want.hit &&
            (!got || (sameBits(got->t, want.t) && got->primitive == want.id &&
                      sameBits(got->uv.x, want.uv.x) && sameBits(got->uv.y, want.uv.y)));
   };
-  int binaryWrong = 0;
-  for (std::size_t i = 0; i < rays.size(); ++i)
+  int binaryWrong = 0, traceWrong = 0, allWrong = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
     binaryWrong += !agrees(bvh.intersectBinary(rays[i]), expect[i]);
+    traceWrong += !agrees(bvh.traceVisits(rays[i]).hit, expect[i]);
+    const std::vector<Hit> all = bvh.intersectAll(rays[i]);
+    allWrong += !agrees(all.empty() ? std::nullopt : std::optional<Hit>(all.front()), expect[i]);
+  }
   EXPECT_EQ(binaryWrong, 0) << "binary tree";
+  EXPECT_EQ(traceWrong, 0) << "traceVisits";
+  EXPECT_EQ(allWrong, 0) << "intersectAll";
   for (const BvhKernel kernel : supportedKernels()) {
     const KernelScope scope(kernel);
     std::vector<std::optional<Hit>> batch(rays.size());
     bvh.intersect(rays.data(), rays.size(), batch.data());
-    int wrong = 0, batchWrong = 0;
+    int wrong = 0, batchWrong = 0, occludedWrong = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
       const bool one = agrees(bvh.intersect(rays[i]), expect[i]);
       if (!one && ++wrong <= 3)
         ADD_FAILURE() << toString(kernel) << " kernel, ray " << rays[i].toString()
                       << ": brute force triangle " << expect[i].id;
       batchWrong += !agrees(batch[i], expect[i]);
+      Ray upToHit = rays[i];
+      upToHit.tMax = expect[i].t;
+      occludedWrong += bvh.occluded(upToHit) != expect[i].hit;
     }
     EXPECT_EQ(wrong, 0) << toString(kernel);
     EXPECT_EQ(batchWrong, 0) << toString(kernel);
+    EXPECT_EQ(occludedWrong, 0) << toString(kernel);
   }
 }
 

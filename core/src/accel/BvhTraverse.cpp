@@ -192,7 +192,7 @@ void slotVertices(const BvhTriangleBlock* blocks, int slot, double v[9]) {
   for (int i = 0; i < 9; ++i) v[i] = block.v[i][slot & 3];
 }
 
-/// The boxes a ray query visits: those the ray enters within [tMin, tMax], the child the
+/// The boxes a ray query visits: those the ray enters within [tMin, cull()], the child the
 /// ray's direction reaches first (on the split axis) before the other. Keys are entry
 /// distances. The triangle slots' data: `blocks` (vertices) and `ids` (caller's index,
 /// -1 for padding).

@@ -36,8 +36,9 @@
 // functions have a zero goes to hitTriangle itself (its extended-precision fallback). The nearest
 // hit (lowest t, then lowest triangle index) over all triangles does not depend on the order they
 // are met in, as long as no box holding a candidate is skipped: boxes are skipped only when their
-// entry distance exceeds the best t so far, and a box's entry distance never exceeds the t of a
-// triangle it holds (kBvhSlabScale, and boxes rounded outwards at build).
+// entry distance exceeds bvhCullBound(best t so far), a little past it, and a box's computed
+// entry distance does not exceed a held triangle's computed t by that much (kBvhSlabScale, boxes
+// rounded outwards at build, and the bound's margin for rays from far away; BvhLimits.h).
 
 namespace raylab {
 

@@ -176,7 +176,8 @@ enum class BvhVisitKind {
   Entered,  ///< The ray entered the box and the traversal went inside (a leaf: its
             ///< triangles were tested).
   Missed,   ///< The slab test found the ray passes by the box.
-  Culled,   ///< The ray meets the box, but only beyond the nearest hit found so far: skipped
+  Culled,   ///< The ray meets the box, but only beyond the nearest hit found so far (a hair
+            ///< past it: bvhCullBound, BvhLimits.h): skipped
             ///< when its pair was tested, or when it was taken off the stack.
 };
 /// "entered", "missed", "culled".
@@ -237,8 +238,10 @@ struct BvhTrace {
  * with a robust slab test (pbrt section 6.1.2: far distances scaled by 1 + 2 gamma(3), NaN-safe
  * min/max so zero direction components are harmless), the near child (by the sign of the
  * direction on the split axis) is visited first, and boxes beyond the current best t are
- * skipped. Leaves use the watertight ray/triangle test of Triangle.h with the ray's shear
- * computed once per ray; the result is bit-for-bit that of `intersectTriangle`.
+ * skipped (beyond a hair past it, 2^-44 t: far from the scene the rounding of t and of a
+ * box's entry outgrows the boxes' outward rounding). Leaves use the watertight ray/triangle test of
+ * Triangle.h with the ray's shear computed once per ray; the result is bit-for-bit that of
+ * `intersectTriangle`.
  *
  * All positions and directions are in world space. Hit::primitive is the caller's
  * triangle index (its position in the `triangles` vector given to the constructor).
