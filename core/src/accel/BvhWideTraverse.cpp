@@ -203,16 +203,16 @@ struct WideRay : ShearedRay {
 /// The result of a wide query: the nearest hit so far (closest) or whether any was found.
 struct WideResult {
   WideResult() : WideResult(std::numeric_limits<double>::infinity()) {}
-  explicit WideResult(double t) : tMax(t), tCull(bvhCullBound(t)), tMaxF(floatPast(t, true)) {}
-  /// A new best distance, its cull bound for the double slab test, and its float rounded up
-  /// for the float slab test (floatPast's margin is above bvhCullBound's).
+  explicit WideResult(double t) : tMax(t), tMaxF(floatPast(t, true)) {}
+  /// A new best distance, and its float rounded up for the float slab test (floatPast's
+  /// margin is above bvhCullBound's).
   void setTMax(double t) {
     tMax = t;
-    tCull = bvhCullBound(t);
     tMaxF = floatPast(t, true);
   }
+  /// Where the double slab test culls: a little past tMax (bvhCullBound).
+  double cull() const { return bvhCullBound(tMax); }
   double tMax;
-  double tCull;
   float tMaxF;
   /// The caller's index of the nearest hit's triangle so far (-1: none yet).
   int bestId = -1;
