@@ -413,13 +413,27 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
   for (const BvhKernel kernel : supportedKernels()) {
     const KernelScope scope(kernel);
     WideTally tally;
-    for (const double scale : {1e-42, 1e-38, 1e-20, 1.0, 3.0, 1e20, 1e30}) {
+    // Beyond 1e30 the rays take the double slab test; from 1e39 on the float boxes are
+    // infinite. The last grids lie far from the origin, the very last near FLT_MAX, where
+    // their float boxes are many float ulps wide.
+    for (const auto& [scale, centre] : std::vector<std::pair<double, double>>{{1e-42, 0.0},
+                                                                              {1e-38, 0.0},
+                                                                              {1e-20, 0.0},
+                                                                              {1.0, 0.0},
+                                                                              {3.0, 0.0},
+                                                                              {1e20, 0.0},
+                                                                              {1e30, 0.0},
+                                                                              {1e36, 0.0},
+                                                                              {1e39, 0.0},
+                                                                              {1e-3, 1e6},
+                                                                              {1e-9, -7.0},
+                                                                              {1e24, 3e38}}) {
       Soup grid;
       constexpr int kSide = 6;
       for (int y = 0; y <= kSide; ++y)
         for (int x = 0; x <= kSide; ++x)
-          grid.vertices.emplace_back(scale * (x - 3), scale * (y - 3),
-                                     scale * 0.25 * ((x + y) % 3));
+          grid.vertices.emplace_back(centre + scale * (x - 3), centre + scale * (y - 3),
+                                     centre + scale * 0.25 * ((x + y) % 3));
       for (int y = 0; y < kSide; ++y)
         for (int x = 0; x < kSide; ++x) {
           const int i = y * (kSide + 1) + x;
@@ -431,7 +445,8 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
         for (int x = 0; x <= 12; ++x)
           for (const double tiny : {0.0, 1e-30, 1e-300, 0.3})
             for (const double height : {0.0, 0.5, 2.0}) {
-              const Point3 o(scale * (0.5 * x - 3.0), scale * (0.5 * y - 3.0), scale * height);
+              const Point3 o(centre + scale * (0.5 * x - 3.0), centre + scale * (0.5 * y - 3.0),
+                             centre + scale * height);
               Ray r = Ray::make(o, Vec3(tiny, -tiny, -1.0));
               for (const double tMin : {0.0, 1e-45, scale * 0.1})
                 for (const double tMax : {kInfinity, 3.4e38, scale * 0.4}) {
