@@ -1,12 +1,14 @@
 // RayLab's BVH against Embree 3 (issue 16): the same meshes and the same rays for both, one
 // thread, single-ray closest hit (Bvh::intersect against rtcIntersect1), and the BVH build
 // of the 1M-triangle mesh on 1 and 2 threads. RayLab's batch query (Bvh::intersect(rays,
-// count, hits): four searches interleaved, rays from one point in packets) is measured too,
+// count, hits): six searches interleaved, rays from one point in packets) is measured too,
 // as "RayLabBatch", against the same single-ray Embree figure; its answers must be those of
 // intersect(ray), bit for bit (batch_differs). Built only when libembree-dev is installed
 // (an optional dependency of this benchmark, never of the program). After the Google
 // Benchmark table it prints RayLab's rate divided by Embree's per case, and how many rays
-// each engine got wrong.
+// each engine got wrong. "Query/<case>/Paired" times the three in turn on the same chunks of
+// rays (queryPaired) and prints their ratios last: in whole-set chunks, the comparison above
+// without the host's drift between benchmarks; in chunks of 8,192, with caches shared.
 //
 // Cases (1,048,576 rays each):
 //   Sphere80k   icosphere, 6 subdivisions: 81,920 triangles
@@ -63,6 +65,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -366,6 +369,53 @@ void query(benchmark::State& state, bool big, bool camera, Engine engine) {
   state.counters["brute_forced"] = wrong.bruteForced;
 }
 
+/// The three engines side by side on the same rays: each chunk of `state.range(0)` rays traced
+/// by Embree, by RayLab one ray at a time and by RayLab's batch in turn, the order rotating
+/// from chunk to chunk, each timed alone; the ratios of their times summed over the run. In
+/// chunks of the whole set (1,048,576 rays) this is the separate benchmarks' comparison, warm
+/// caches and all, with the three seeing the same moments of a shared host (whose speed drifts
+/// by a quarter from minute to minute). In chunks of 8,192 rays each engine starts every chunk
+/// after the other two have used the caches: the figure a tracer that does other work between
+/// its queries would see, and a measure of how much a ratio owes to a tree staying in cache.
+void queryPaired(benchmark::State& state, bool big, bool camera) {
+  const std::vector<Ray>& rs = rays(camera);
+  const Bvh& bvh = mesh(big).bvh();
+  const EmbreeScene& e = embree(big);
+  const auto kChunk = static_cast<std::size_t>(state.range(0));
+  std::vector<std::optional<Hit>> batch(kChunk);
+  using Clock = std::chrono::steady_clock;
+  double seconds[3] = {0.0, 0.0, 0.0};  // Embree, RayLab, RayLab's batch
+  int hits[3] = {0, 0, 0};
+  std::size_t turn = 0;
+  for (auto _ : state) {
+    for (std::size_t first = 0; first < rs.size(); first += kChunk, ++turn) {
+      const std::size_t n = std::min(kChunk, rs.size() - first);
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t who = (turn + k) % 3;
+        const auto start = Clock::now();
+        int found = 0;
+        if (who == 0) {
+          for (std::size_t i = first; i < first + n; ++i)
+            found += e.intersect(rs[i]).primitive >= 0;
+        } else if (who == 1) {
+          for (std::size_t i = first; i < first + n; ++i) found += bvh.intersect(rs[i]).has_value();
+        } else {
+          bvh.intersect(rs.data() + first, n, batch.data());
+          for (std::size_t i = 0; i < n; ++i) found += batch[i].has_value();
+        }
+        benchmark::DoNotOptimize(found);
+        seconds[who] += std::chrono::duration<double>(Clock::now() - start).count();
+        hits[who] += found;
+      }
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rs.size()));
+  state.counters["paired_single"] = seconds[0] / seconds[1];
+  state.counters["paired_batch"] = seconds[0] / seconds[2];
+  // All three must find the same number of hits (Embree's float answers aside, on these rays).
+  state.counters["hits_differ"] = double(std::abs(hits[1] - hits[2]));
+}
+
 /// Every 16th ray of a case: the peers' share.
 constexpr std::size_t kPeerStride = 16;
 
@@ -433,6 +483,12 @@ class RatioReporter : public benchmark::ConsoleReporter {
       const std::string args = run.run_name.args.empty() ? "" : "/" + run.run_name.args;
       if (rate != run.counters.end())
         m_rates[run.run_name.function_name + args].push_back(rate->second.value);
+      for (const char* paired : {"paired_single", "paired_batch"}) {
+        const auto ratio = run.counters.find(paired);
+        if (ratio != run.counters.end())
+          m_paired[run.run_name.function_name + args + (paired[7] == 's' ? "" : " (batch)")]
+              .push_back(ratio->second.value);
+      }
       const auto wrong = run.counters.find("wrong");
       if (wrong != run.counters.end())
         m_wrong[run.run_name.function_name] = static_cast<int>(wrong->second.value);
@@ -472,6 +528,16 @@ class RatioReporter : public benchmark::ConsoleReporter {
       }
       std::printf("\n");
     }
+    if (m_paired.empty()) return;
+    std::printf(
+        "\nRayLab / Embree, paired (each chunk of rays traced by the three in turn; the ratio "
+        "of summed times, the median over repetitions; see queryPaired)\n");
+    for (const auto& [name, ratios] : m_paired) {
+      std::printf("%-52s %8.3f  (", name.c_str(), median(ratios));
+      for (std::size_t i = 0; i < ratios.size(); ++i)
+        std::printf("%s%.3f", i ? " " : "", ratios[i]);
+      std::printf(")\n");
+    }
   }
 
  private:
@@ -481,6 +547,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
   }
   std::map<std::string, std::vector<double>> m_rates;
   std::map<std::string, int> m_wrong;
+  std::map<std::string, std::vector<double>> m_paired;
 };
 
 void registerAll() {
@@ -502,6 +569,15 @@ void registerAll() {
         query(s, c.big, c.camera, engine);
       })->Unit(benchmark::kMillisecond);
     }
+  for (const Case c : cases) {
+    const std::string name = std::string("Query/") + c.name + "/Paired";
+    benchmark::RegisterBenchmark(name.c_str(),
+                                 [c](benchmark::State& s) { queryPaired(s, c.big, c.camera); })
+        ->ArgName("chunk")
+        ->Arg(8192)
+        ->Arg(kRayCount)
+        ->Unit(benchmark::kMillisecond);
+  }
   for (const Case c : cases)
     for (const bool useCgal : {true, false}) {
       const std::string name = std::string("Query/") + c.name + (useCgal ? "/CGAL" : "/VTK");
