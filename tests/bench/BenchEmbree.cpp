@@ -65,6 +65,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -120,6 +121,13 @@ class EmbreeScene {
   EmbreeScene(const TriangleMesh& mesh, int threads) {
     const std::string config = "threads=" + std::to_string(threads);
     m_device = rtcNewDevice(threads > 0 ? config.c_str() : nullptr);
+    rtcSetDeviceMemoryMonitorFunction(
+        m_device,
+        [](void* user, ssize_t bytes, bool) {
+          *static_cast<std::atomic<std::int64_t>*>(user) += bytes;
+          return true;
+        },
+        &m_deviceBytes);
     m_vertices.resize(3 * mesh.vertices().size() + 1);
     for (std::size_t i = 0; i < mesh.vertices().size(); ++i)
       for (int a = 0; a < 3; ++a) m_vertices[3 * i + a] = float(mesh.vertices()[i][a]);
@@ -139,6 +147,7 @@ class EmbreeScene {
   /// Builds the scene again (the build benchmark).
   void build() {
     if (m_scene) rtcReleaseScene(m_scene);
+    const std::int64_t before = m_deviceBytes;
     m_scene = rtcNewScene(m_device);
     RTCGeometry geometry = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -150,7 +159,12 @@ class EmbreeScene {
     rtcAttachGeometry(m_scene, geometry);
     rtcReleaseGeometry(geometry);
     rtcCommitScene(m_scene);
+    m_sceneBytes = m_deviceBytes - before;
   }
+
+  /// The bytes Embree's device holds for the scene (its BVH and triangle leaves; the vertices
+  /// and indices are ours, shared), as its memory monitor counts them.
+  std::int64_t sceneBytes() const { return m_sceneBytes; }
 
   Answer intersect(const Ray& ray) const {
     RTCIntersectContext context;
@@ -181,6 +195,8 @@ class EmbreeScene {
   std::vector<float> m_vertices;
   std::vector<unsigned> m_indices;
   std::size_t m_triangleCount = 0;
+  std::atomic<std::int64_t> m_deviceBytes{0};  ///< Net bytes the device holds (its threads add).
+  std::int64_t m_sceneBytes = 0;
 };
 
 const EmbreeScene& embree(bool big) {
@@ -367,6 +383,13 @@ void query(benchmark::State& state, bool big, bool camera, Engine engine) {
   state.counters["binary_differs"] = wrong.binaryDiffers;
   state.counters["batch_differs"] = wrong.batchDiffers;
   state.counters["brute_forced"] = wrong.bruteForced;
+  // What the queries read: RayLab's 8-wide nodes and triangle blocks; Embree's scene.
+  state.counters["tree_MB"] =
+      engine == Engine::Embree
+          ? double(e.sceneBytes()) / 1e6
+          : double(bvh.wideNodes().size() * sizeof(BvhWideNode) +
+                   std::size_t(bvh.triangleSlots()) / 4 * sizeof(BvhTriangleBlock)) /
+                1e6;
 }
 
 /// The three engines side by side on the same rays: each chunk of `state.range(0)` rays traced
