@@ -262,7 +262,7 @@ TEST_F(WindowRenderTest, 08_ABushyTraceIsCancelledAndTheWindowStaysAlive) {
   rays.setPixel(scene.camera.width / 2, scene.camera.height / 2);
   // The event loop runs while it traces: a timer fires, and its first tick cancels it. (Not
   // a fixed delay: the whole tree takes about 150 ms here, and a cancel at 150 ms came after
-  // it one run in two.)
+  // it one run in two. The first tick, 10 ms in, leaves the worker time to trace some rays.)
   int ticks = 0;
   QTimer ticker;
   QObject::connect(&ticker, &QTimer::timeout, [&ticks, &rays] {

@@ -66,9 +66,9 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <map>
 #include <memory>
 #include <optional>
@@ -392,12 +392,21 @@ void query(benchmark::State& state, bool big, bool camera, Engine engine) {
                 1e6;
 }
 
+/// This thread's CPU time in seconds (queries are timed in CPU time, as the benchmarks are).
+double threadSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 /// The three engines side by side on the same rays: each chunk of `state.range(0)` rays traced
-/// by Embree, by RayLab one ray at a time and by RayLab's batch in turn, the order rotating
-/// from chunk to chunk, each timed alone; the ratios of their times summed over the run. In
-/// chunks of the whole set (1,048,576 rays) this is the separate benchmarks' comparison, warm
-/// caches and all, with the three seeing the same moments of a shared host (whose speed drifts
-/// by a quarter from minute to minute). In chunks of 8,192 rays each engine starts every chunk
+/// by Embree, by RayLab one ray at a time and by RayLab's batch in turn, each timed alone (CPU
+/// time of this thread), who goes first rotating from chunk to chunk and, for whole-set
+/// chunks, from one run (repetition) to the next; the ratios of their times summed over the
+/// run, Embree's over RayLab's (a rate ratio, as the other benchmarks print). In chunks of the
+/// whole set (1,048,576 rays) this is the separate benchmarks' comparison, warm caches and
+/// all, with the three seeing the same moments of a shared host (whose speed drifts by a
+/// quarter from minute to minute). In chunks of 8,192 rays each engine starts every chunk
 /// after the other two have used the caches: the figure a tracer that does other work between
 /// its queries would see, and a measure of how much a ratio owes to a tree staying in cache.
 void queryPaired(benchmark::State& state, bool big, bool camera) {
@@ -406,16 +415,15 @@ void queryPaired(benchmark::State& state, bool big, bool camera) {
   const EmbreeScene& e = embree(big);
   const auto kChunk = static_cast<std::size_t>(state.range(0));
   std::vector<std::optional<Hit>> batch(kChunk);
-  using Clock = std::chrono::steady_clock;
   double seconds[3] = {0.0, 0.0, 0.0};  // Embree, RayLab, RayLab's batch
   int hits[3] = {0, 0, 0};
-  std::size_t turn = 0;
+  static std::size_t turn = 0;  // kept from run to run
   for (auto _ : state) {
     for (std::size_t first = 0; first < rs.size(); first += kChunk, ++turn) {
       const std::size_t n = std::min(kChunk, rs.size() - first);
       for (std::size_t k = 0; k < 3; ++k) {
         const std::size_t who = (turn + k) % 3;
-        const auto start = Clock::now();
+        const double start = threadSeconds();
         int found = 0;
         if (who == 0) {
           for (std::size_t i = first; i < first + n; ++i)
@@ -427,7 +435,7 @@ void queryPaired(benchmark::State& state, bool big, bool camera) {
           for (std::size_t i = 0; i < n; ++i) found += batch[i].has_value();
         }
         benchmark::DoNotOptimize(found);
-        seconds[who] += std::chrono::duration<double>(Clock::now() - start).count();
+        seconds[who] += threadSeconds() - start;
         hits[who] += found;
       }
     }
@@ -435,7 +443,8 @@ void queryPaired(benchmark::State& state, bool big, bool camera) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(rs.size()));
   state.counters["paired_single"] = seconds[0] / seconds[1];
   state.counters["paired_batch"] = seconds[0] / seconds[2];
-  // All three must find the same number of hits (Embree's float answers aside, on these rays).
+  // RayLab one ray at a time and its batch must find the same hits (the other benchmarks check
+  // them ray by ray, and Embree's).
   state.counters["hits_differ"] = double(std::abs(hits[1] - hits[2]));
 }
 
@@ -553,8 +562,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
     }
     if (m_paired.empty()) return;
     std::printf(
-        "\nRayLab / Embree, paired (each chunk of rays traced by the three in turn; the ratio "
-        "of summed times, the median over repetitions; see queryPaired)\n");
+        "\nRayLab / Embree, paired (each chunk of rays traced by the three in turn; Embree's "
+        "summed time over RayLab's, the median over repetitions; see queryPaired)\n");
     for (const auto& [name, ratios] : m_paired) {
       std::printf("%-52s %8.3f  (", name.c_str(), median(ratios));
       for (std::size_t i = 0; i < ratios.size(); ++i)

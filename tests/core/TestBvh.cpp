@@ -414,8 +414,9 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
     const KernelScope scope(kernel);
     WideTally tally;
     // Beyond 1e30 the rays take the double slab test; from 1e39 on the float boxes are
-    // infinite. The last grids lie far from the origin, the very last near FLT_MAX, where
-    // their float boxes are many float ulps wide.
+    // infinite. The last grids lie far from the origin, each cell a few float ulps wide
+    // there (0.0625 at 1e6, 4.8e-7 at 7, 2^104 near FLT_MAX), so that the boxes' outward
+    // rounding is a large share of them; the one near FLT_MAX takes the double test.
     for (const auto& [scale, centre] : std::vector<std::pair<double, double>>{{1e-42, 0.0},
                                                                               {1e-38, 0.0},
                                                                               {1e-20, 0.0},
@@ -425,9 +426,9 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
                                                                               {1e30, 0.0},
                                                                               {1e36, 0.0},
                                                                               {1e39, 0.0},
-                                                                              {1e-3, 1e6},
-                                                                              {1e-9, -7.0},
-                                                                              {1e24, 3e38}}) {
+                                                                              {0.2, 1e6},
+                                                                              {2e-6, -7.0},
+                                                                              {1e32, 3e38}}) {
       Soup grid;
       constexpr int kSide = 6;
       for (int y = 0; y <= kSide; ++y)
@@ -441,6 +442,7 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
           grid.triangles.push_back({i, i + kSide + 2, i + kSide + 1});
         }
       const Bvh bvh(grid.vertices, grid.triangles);
+      const int hitsBefore = tally.hits;
       for (int y = 0; y <= 12; ++y)
         for (int x = 0; x <= 12; ++x)
           for (const double tiny : {0.0, 1e-30, 1e-300, 0.3})
@@ -456,6 +458,8 @@ TEST(Bvh, 11_FloatSlabTestLosesNoHitAtAnyScale) {
                   tally.check(grid, bvh, r, kernel, "scale", scale);
                 }
             }
+      EXPECT_GT(tally.hits, hitsBefore)
+          << "no ray hit the grid of scale " << scale << " at " << centre;
     }
     tally.print(kernel);
     EXPECT_EQ(tally.mismatches, 0) << toString(kernel);
