@@ -653,10 +653,9 @@ struct Builder {
   /// Step 4: the triangles in leaf order, each wide leaf from its slot on (a new block of 4):
   /// each slot's caller index (-1 for padding) and vertices, so a leaf reads its triangles
   /// contiguously, four to a block.
-  void copyTriangles(const std::vector<LeafRun>& leaves, int slots, BvhArray<int>& primIds,
+  void copyTriangles(const std::vector<LeafRun>& leaves, int slots,
                      BvhArray<BvhTriangleBlock>& blocks) const {
-    // BvhArrays: their allocator asks for huge pages itself.
-    primIds.resize(static_cast<std::size_t>(slots));
+    // A BvhArray: its allocator asks for huge pages itself.
     blocks.resize(static_cast<std::size_t>(slots / 4));  // not zeroed: every lane is written
     const int leafCount = static_cast<int>(leaves.size());
     constexpr int kLeafGrain = kParallelBinGrain / 4;
@@ -679,7 +678,6 @@ struct Builder {
           const int slot = leaf.slot + j;
           BvhTriangleBlock& block = blocks[static_cast<std::size_t>(slot / 4)];
           if (j >= leaf.count) {
-            primIds[static_cast<std::size_t>(slot)] = -1;
             block.id[slot % 4] = -1;
             for (int c = 0; c < 9; ++c) block.v[c][slot % 4] = 0.0;
             continue;
@@ -688,7 +686,6 @@ struct Builder {
           prefetchTriangle(k + 2 * kAhead);
           prefetchVertices(k + kAhead);
           const int id = static_cast<int>(prims[k].id);
-          primIds[static_cast<std::size_t>(slot)] = id;
           block.id[slot % 4] = id;
           for (int c = 0; c < 3; ++c) {
             const Point3& p = vertices[std::size_t(triangles[std::size_t(id)][c])];
@@ -1227,7 +1224,7 @@ Bvh::Bvh(const std::vector<Point3>& vertices, const std::vector<Index3>& triangl
       m_wide = WideCollapse(m_pairs).run(n == 0, wideLeaves, wideSlots);
     };
     // Step 4: copy the triangles' vertices in leaf order, four to a block.
-    const auto copy = [&] { builder.copyTriangles(leaves, slots, m_primIds, m_blocks); };
+    const auto copy = [&] { builder.copyTriangles(leaves, slots, m_blocks); };
     if (m_settings.parallel) {
       invokeBoth(trees, copy);
     } else {

@@ -192,14 +192,15 @@ void slotVertices(const BvhTriangleBlock* blocks, int slot, double v[9]) {
   for (int i = 0; i < 9; ++i) v[i] = block.v[i][slot & 3];
 }
 
+/// The caller's index of the triangle in `slot` (-1 for padding), from its block.
+int slotId(const BvhTriangleBlock* blocks, int slot) { return blocks[slot >> 2].id[slot & 3]; }
+
 /// The boxes a ray query visits: those the ray enters within [tMin, cull()], the child the
 /// ray's direction reaches first (on the split axis) before the other. Keys are entry
-/// distances. The triangle slots' data: `blocks` (vertices) and `ids` (caller's index,
-/// -1 for padding).
+/// distances. The triangle slots' data: `blocks` (vertices and caller's indices).
 struct RayQuery {
   const PreparedRay& ray;
   const BvhTriangleBlock* blocks;
-  const int* ids;
   double tMax;
 
   /// Boxes are culled beyond this, a little past tMax (bvhCullBound).
@@ -230,7 +231,7 @@ struct ClosestHit : RayQuery {
     // On an exact tie in t keep the lowest triangle index.
     for (int slot = begin; slot < end; ++slot)
       if (const auto h = hit(slot)) {
-        const int id = ids[slot];
+        const int id = slotId(blocks, slot);
         if (h->t < tMax || id < bestId) {
           tMax = h->t;
           bestId = id;
@@ -262,7 +263,8 @@ struct AllHits : RayQuery {
 
   bool visitLeaf(int begin, int end) {
     for (int slot = begin; slot < end; ++slot)
-      if (const auto h = hit(slot)) hits.push_back(Hit{h->t, ids[slot], Vec2(h->b1, h->b2)});
+      if (const auto h = hit(slot))
+        hits.push_back(Hit{h->t, slotId(blocks, slot), Vec2(h->b1, h->b2)});
     return false;
   }
 };
@@ -272,7 +274,6 @@ struct AllHits : RayQuery {
 struct NearestTriangle {
   const Point3& p;
   const BvhTriangleBlock* blocks;
-  const int* ids;
   double best2 = kInfinity;
   int bestId = -1;
 
@@ -291,7 +292,7 @@ struct NearestTriangle {
       slotVertices(blocks, slot, v);
       const double d2 = triangleDistance2(p, Point3(v[0], v[1], v[2]), Point3(v[3], v[4], v[5]),
                                           Point3(v[6], v[7], v[8]));
-      const int id = ids[slot];
+      const int id = slotId(blocks, slot);
       if (d2 < best2 || (d2 == best2 && id < bestId)) {
         best2 = d2;
         bestId = id;
@@ -376,7 +377,7 @@ struct RecordedClosestHit : ClosestHit {
 std::optional<Hit> Bvh::intersectBinary(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return std::nullopt;
   const PreparedRay r(ray);
-  ClosestHit query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  ClosestHit query{{r, m_blocks.data(), ray.tMax}};
   traverse(m_pairs.data(), query);
   if (query.bestId == INT_MAX) return std::nullopt;
   return Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
@@ -385,7 +386,7 @@ std::optional<Hit> Bvh::intersectBinary(const Ray& ray) const {
 std::vector<Hit> Bvh::intersectAll(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return {};
   const PreparedRay r(ray);
-  AllHits query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  AllHits query{{r, m_blocks.data(), ray.tMax}};
   traverse(m_pairs.data(), query);
   std::sort(query.hits.begin(), query.hits.end(), [](const Hit& a, const Hit& b) {
     return a.t < b.t || (a.t == b.t && a.primitive < b.primitive);
@@ -395,7 +396,7 @@ std::vector<Hit> Bvh::intersectAll(const Ray& ray) const {
 
 int Bvh::closestTriangle(const Point3& p) const {
   if (m_stats.triangleCount == 0) return -1;
-  NearestTriangle query{p, m_blocks.data(), m_primIds.data()};
+  NearestTriangle query{p, m_blocks.data()};
   traverse(m_pairs.data(), query);
   return query.bestId;
 }
@@ -408,10 +409,10 @@ std::optional<Hit> Bvh::intersectBruteForce(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return std::nullopt;
   // Every leaf's triangles, whatever the boxes say (the padding slots hold none).
   const PreparedRay r(ray);
-  ClosestHit query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  ClosestHit query{{r, m_blocks.data(), ray.tMax}};
   const int slots = triangleSlots();
   for (int slot = 0; slot < slots; ++slot)
-    if (m_primIds[static_cast<std::size_t>(slot)] >= 0) query.visitLeaf(slot, slot + 1);
+    if (slotTriangle(slot) >= 0) query.visitLeaf(slot, slot + 1);
   if (query.bestId == INT_MAX) return std::nullopt;
   return Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};
 }
@@ -419,11 +420,10 @@ std::optional<Hit> Bvh::intersectBruteForce(const Ray& ray) const {
 bool Bvh::occludedBruteForce(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return false;
   const PreparedRay r(ray);
-  AnyHit query{{r, m_blocks.data(), m_primIds.data(), ray.tMax}};
+  AnyHit query{{r, m_blocks.data(), ray.tMax}};
   const int slots = triangleSlots();
   for (int slot = 0; slot < slots; ++slot)
-    if (m_primIds[static_cast<std::size_t>(slot)] >= 0 && query.visitLeaf(slot, slot + 1))
-      return true;
+    if (slotTriangle(slot) >= 0 && query.visitLeaf(slot, slot + 1)) return true;
   return false;
 }
 
@@ -432,11 +432,8 @@ BvhTrace Bvh::traceVisits(const Ray& ray) const {
   if (m_stats.triangleCount == 0) return trace;
   const std::vector<int> depth = nodeDepths();
   const PreparedRay r(ray);
-  RecordedClosestHit query{{{r, m_blocks.data(), m_primIds.data(), ray.tMax}},
-                           m_pairs.data(),
-                           depth.data(),
-                           ray.tMax,
-                           &trace};
+  RecordedClosestHit query{
+      {{r, m_blocks.data(), ray.tMax}}, m_pairs.data(), depth.data(), ray.tMax, &trace};
   traverse(m_pairs.data(), query);
   if (query.bestId != INT_MAX)
     trace.hit = Hit{query.tMax, query.bestId, Vec2(query.bestB1, query.bestB2)};

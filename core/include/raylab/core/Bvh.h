@@ -107,9 +107,9 @@ struct alignas(64) BvhTriangleBlock {
   /// 80 MB that zeroing first would write twice.
   BvhTriangleBlock() {}
   double v[9][4];
-  /// The caller's index of each lane's triangle (-1 for padding), as Bvh::slotTriangle: the
-  /// hit's index is read from the lines its test has just read, not from the index array
-  /// (a cache miss for random rays, 10% of a query's time). It fills the block's fifth line,
+  /// The caller's index of each lane's triangle (-1 for padding; Bvh::slotTriangle): the
+  /// hit's index is read from the lines its test has just read, not from an array apart (a
+  /// cache miss for random rays, 10% of a query's time). It fills the block's fifth line,
   /// which a block of 288 bytes took anyway.
   std::int32_t id[4];
 };
@@ -239,9 +239,9 @@ struct BvhTrace {
  * min/max so zero direction components are harmless), the near child (by the sign of the
  * direction on the split axis) is visited first, and boxes beyond the current best t are
  * skipped (beyond a hair past it, 2^-44 t: far from the scene the rounding of t and of a
- * box's entry outgrows the boxes' outward rounding). Leaves use the watertight ray/triangle test of
- * Triangle.h with the ray's shear computed once per ray; the result is bit-for-bit that of
- * `intersectTriangle`.
+ * box's entry outgrows the boxes' outward rounding). Leaves use the watertight ray/triangle
+ * test of Triangle.h with the ray's shear computed once per ray; the result is bit-for-bit
+ * that of `intersectTriangle`.
  *
  * All positions and directions are in world space. Hit::primitive is the caller's
  * triangle index (its position in the `triangles` vector given to the constructor).
@@ -300,9 +300,11 @@ class Bvh {
   /// Triangle slots (4 per BvhTriangleBlock): each leaf of the wide tree starts at a
   /// multiple of 4, so the slots after its last triangle up to the next multiple of 4 are
   /// padding; a binary leaf's triangles are contiguous slots.
-  int triangleSlots() const { return static_cast<int>(m_primIds.size()); }
+  int triangleSlots() const { return 4 * static_cast<int>(m_blocks.size()); }
   /// The caller's index of the triangle in `slot`; -1 for a padding slot.
-  int slotTriangle(int slot) const { return m_primIds[static_cast<std::size_t>(slot)]; }
+  int slotTriangle(int slot) const {
+    return m_blocks[static_cast<std::size_t>(slot) / 4].id[slot % 4];
+  }
   /// The 8-wide tree of intersect() and occluded() (node 0 is its root).
   const BvhArray<BvhWideNode>& wideNodes() const { return m_wide; }
 
@@ -323,7 +325,6 @@ class Bvh {
   std::vector<BvhNodePair> m_pairs;     ///< Nodes 2i and 2i + 1 (C++17 honours alignas(64)).
   BvhArray<BvhWideNode> m_wide;         ///< The 8-wide tree, depth first (root 0).
   BvhArray<BvhTriangleBlock> m_blocks;  ///< Triangle slot s: m_blocks[s / 4], lane s % 4.
-  BvhArray<int> m_primIds;              ///< Triangle slot -> caller's index (-1: padding).
   Bounds3 m_bounds;
   BvhStats m_stats;
 };
