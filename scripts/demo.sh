@@ -17,5 +17,5 @@ fi
 
 mkdir -p "$out"
 echo "raylab demo: no display; rendering the default scene headless (xvfb-run)"
-xvfb-run -a -s "-screen 0 1280x1024x24" "$raylab" snapshot --size 1024x768 --out "$out/default-scene.png"
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$raylab" snapshot --size 1024x768 --out "$out/default-scene.png"
 echo "raylab demo: wrote $out/default-scene.png"

@@ -14,7 +14,7 @@
 //                     as the window's Image tab runs it (RenderJob, 2 threads): from start() to
 //                     the first full pass (1 spp) arriving on the UI thread.
 // Needs an X server (the window): run by hand, e.g.
-//   xvfb-run -a -s "-screen 0 1280x1024x24" build/release/tests/bench/raylab_bench_window
+//   xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" build/release/tests/bench/raylab_bench_window
 //       --benchmark_counters_tabular=true --benchmark_repetitions=5   (one line)
 #include "MainWindow.h"
 #include "RenderJob.h"

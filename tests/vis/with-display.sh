@@ -10,4 +10,4 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
        "-DRAYLAB_ENABLE_RENDERING_TESTS=OFF" >&2
   exit 1
 fi
-exec xvfb-run -a -s "-screen 0 1280x1024x24" "$@"
+exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$@"
