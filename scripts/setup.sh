@@ -11,7 +11,7 @@ shift || true
 
 packages=(
   build-essential cmake ninja-build pkg-config git    # compiler and build tools
-  xvfb xauth libgl1-mesa-dri                          # an X server + software OpenGL for VTK
+  xvfb xauth libgl1-mesa-dri libx11-dev               # an X server + software OpenGL for VTK
   libvtk9-dev libvtk9-qt-dev                          # VTK 9.1 with its Qt widget
   qtbase5-dev libqt5opengl5-dev                       # Qt 5 widgets
   qttools5-dev qttools5-dev-tools qttranslations5-l10n  # the window in Chinese (Qt Linguist)

@@ -844,12 +844,12 @@
         <translation>%1 被俄罗斯轮盘赌终止</translation>
     </message>
     <message>
-        <source>%1 hit &apos;%2&apos; and was absorbed: the material scatters nothing here</source>
-        <translation>%1 击中“%2”后被吸收：该材质在此处不散射任何光</translation>
+        <source>%1 hit &apos;%2&apos; and was absorbed: no further ray leaves this hit</source>
+        <translation>%1 击中“%2”后被吸收：不再有光线从这个交点出发</translation>
     </message>
     <message>
-        <source>%1 was absorbed: the material scatters nothing here</source>
-        <translation>%1 被吸收：该材质在此处不散射任何光</translation>
+        <source>%1 was absorbed: no further ray leaves this hit</source>
+        <translation>%1 被吸收：不再有光线从这个交点出发</translation>
     </message>
     <message>
         <source>%1 was blocked by &apos;%2&apos; before reaching its light</source>

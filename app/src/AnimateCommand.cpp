@@ -8,6 +8,7 @@
 
 #include "raylab/core/Exception.h"
 #include "raylab/vis/BounceAnimation.h"
+#include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
 
 #if RAYLAB_WITH_GUI
@@ -137,7 +138,8 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   }
   const RenderSettings settings = o.common.settings(scene);
 
-  // Step 2: the tree, its view and the frames to write.
+  // Step 2: the tree, its view and the frames to write (once they can be drawn).
+  vis::requireDisplay();
   const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
   const RayTree& tree = trace.tree;
   const vis::AnimationSettings animation = o.animation();

@@ -78,6 +78,7 @@ int runCommandLine(int argc, char** argv) {
   CLI::Option* traceOption =
       cli.add_option("--trace", tracePixel, "Trace pixel X Y when the window opens")
           ->expected(2)
+          ->delimiter(',')
           ->type_name("X Y");
   int traceSample = 0;
   cli.add_option("--sample", traceSample, "With --trace: which sample of the pixel (default 0)")

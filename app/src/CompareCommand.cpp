@@ -10,6 +10,7 @@
 #include "raylab/core/ReferenceCache.h"
 #include "raylab/vis/ComparisonCaptions.h"
 #include "raylab/vis/ComparisonView.h"
+#include "raylab/vis/Display.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -64,6 +65,7 @@ CLI::Validator endsIn(const std::string& extension) {
 int runCompare(const CompareOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the budget.
   Scene scene = options.common.loadScene(topLevelScene);
+  vis::requireDisplay();  // before the renders: the picture needs it
   fitDefaultCompareSize(options.common, scene);
   const RenderSettings settings = options.common.settings(scene);
   const int width = scene.camera.width, height = scene.camera.height;
@@ -278,8 +280,10 @@ Subcommand addCompareCommand(CLI::App& cli) {
   options->reference.add(command, "1920x1080");
   command
       ->add_option("--pixel", options->pixel,
-                   "Also show the ray tree of pixel X Y (image coordinates, y down)")
-      ->expected(2);
+                   "Also show the ray tree of pixel X Y or X,Y (image coordinates, y down)")
+      ->expected(2)
+      ->delimiter(',')
+      ->type_name("X Y");
   command->add_option("--columns", options->columns, "Panels per row: 2 (2x2), 4 or 1")
       ->check(CLI::IsMember({1, 2, 4}))
       ->capture_default_str();

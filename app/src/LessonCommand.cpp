@@ -15,6 +15,7 @@
 #include "raylab/vis/BvhCaptions.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ConvergencePlot.h"
+#include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/SceneView.h"
@@ -27,7 +28,9 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -109,13 +112,50 @@ int runList(const LessonOptions& o) {
   return failed ? kExitRuntimeError : kExitOk;
 }
 
+/// A number of a question, for the handout and for --check's messages.
+std::string formatNumber(double value) {
+  // 15 significant digits: an answer is printed as its author typed it (98304000, not
+  // 9.8304e+07 as six digits would give).
+  std::ostringstream out;
+  out << std::setprecision(15) << value;
+  return out.str();
+}
+
 int runCheck(const LessonOptions& o) {
   // LessonIO::load validates everything; its LoadError reaches main() as exit code 1.
   const std::string path = resolveLesson(o);
   const Lesson lesson = LessonIO::load(path);
+  // Then every answer with a check is computed again: a typed answer that the program does
+  // not give is an error, before a handout prints it.
+  int computed = 0, wrong = 0;
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+    const LessonStep& step = lesson.steps[i];
+    if (!step.question || !step.question->check) continue;
+    const LessonQuestion& q = *step.question;
+    const std::string where = path + ": step " + std::to_string(i + 1) + " (\"" + step.title.en +
+                              "\"): " + toString(q.check->quantity);
+    double value = 0.0;
+    try {
+      value = computeCheck(step, *q.check);
+    } catch (const Exception& e) {
+      std::cerr << "raylab: error: " << where << ": " << e.what() << std::endl;
+      ++wrong;
+      continue;
+    }
+    ++computed;
+    if (!(std::abs(value - q.answer) <= q.tolerance)) {
+      std::cerr << "raylab: error: " << where << ": the answer is " << formatNumber(q.answer)
+                << (q.tolerance > 0 ? " (± " + formatNumber(q.tolerance) + ")" : std::string())
+                << " but the program computes " << formatNumber(value) << std::endl;
+      ++wrong;
+    }
+  }
+  if (wrong > 0) return kExitRuntimeError;
   const int steps = static_cast<int>(lesson.steps.size());
   std::cout << path << ": OK (" << steps << (steps == 1 ? " step, " : " steps, ")
             << lesson.questionCount() << (lesson.questionCount() == 1 ? " question" : " questions")
+            << (computed > 0 ? ", " + std::to_string(computed) + " answers computed and matched"
+                             : std::string())
             << needsNote(lesson) << ")" << std::endl;
   return kExitOk;
 }
@@ -412,12 +452,6 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
 /// "01", "02", ...
 std::string twoDigits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
-std::string formatNumber(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 /// The handout's section of step `index` (0-based).
 std::string stepSection(const Lesson& lesson, std::size_t index, const StepPicture& picture,
                         const std::string& png, Language language) {
@@ -497,6 +531,7 @@ int runRender(const LessonOptions& o) {
   const std::string path = resolveLesson(o);
   const Lesson lesson = LessonIO::load(path);
   const Language language = *parseLanguage(o.lang);
+  vis::requireDisplay();  // before the folder and the first picture
   prepareFolder(o.out);
   std::optional<std::pair<int, int>> size;  // (assigned, not ?:, which GCC 12 misreads)
   if (!o.size.empty()) size = parseSize(o.size);

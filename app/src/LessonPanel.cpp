@@ -69,7 +69,8 @@ class ChoiceWords : public QLabel {
 };
 
 /// "0.25" for people: up to 6 significant digits.
-QString number(double value) { return QString::number(value, 'g', 6); }
+/// 15 significant digits: 98304000 as typed, not 9.8304e+07.
+QString number(double value) { return QString::number(value, 'g', 15); }
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include "raylab/core/Comparison.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/vis/ConvergencePlot.h"
+#include "raylab/vis/Display.h"
 
 #include <iostream>
 #include <memory>
@@ -25,6 +26,7 @@ struct PlotOptions {
 int runPlot(const PlotOptions& options, const std::string& topLevelScene) {
   // Step 1: every algorithm up to --max-spp; each pass is a point of its curve.
   Scene scene = options.common.loadScene(topLevelScene);
+  vis::requireDisplay();  // before the renders: the plot needs it
   fitDefaultCompareSize(options.common, scene);
   const RenderSettings settings = options.common.settings(scene);
   ComparisonSettings compare;

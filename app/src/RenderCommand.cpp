@@ -38,6 +38,11 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
   if (!options.acceleration.empty()) settings.acceleration = options.acceleration == "bvh";
   if (!options.bvhSplit.empty()) settings.bvhSplit = *parseBvhSplit(options.bvhSplit);
   const std::string& out = options.common.out;
+  // Only path tracing has next-event estimation to switch off: say so rather than ignore it.
+  if ((options.noNee || options.noMis) && settings.algorithm != Algorithm::PathTracing)
+    std::cerr << "raylab: warning: " << (options.noNee ? "--no-nee" : "--no-mis")
+              << " applies to path tracing only; " << toString(settings.algorithm) << " ignores it"
+              << std::endl;
 
   // Step 2: render, reporting each pass.
   Renderer renderer(scene, settings);

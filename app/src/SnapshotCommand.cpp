@@ -2,6 +2,7 @@
 
 #include "ExitCodes.h"
 
+#include "raylab/vis/Display.h"
 #include "raylab/vis/SceneView.h"
 
 #include <iostream>
@@ -17,6 +18,7 @@ Subcommand addSnapshotCommand(CLI::App& cli) {
                /*outRequired=*/true, /*withAlgorithm=*/false);
   return {command, [options](const std::string& topLevelScene) {
             const Scene scene = options->loadScene(topLevelScene);
+            vis::requireDisplay();
             const auto [width, height] = options->size.value_or(std::make_pair(300, 300));
             vis::SceneView view(scene);
             view.resetViewCamera(static_cast<double>(width) / height);

@@ -11,6 +11,7 @@
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/Tracer.h"
+#include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/SceneView.h"
 
@@ -170,7 +171,8 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
             ") samples " + std::to_string(o.sample) + ".." + last);
   }
 
-  // Step 2: trace the sample, recording its tree.
+  // Step 2: trace the sample, recording its tree (once the picture can be drawn).
+  vis::requireDisplay();
   const PixelTrace trace =
       root ? traceRay(scene, settings, *root, o.pixel.first, o.pixel.second, o.sample)
            : tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
@@ -227,7 +229,8 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
   m_defaultSize = parseSize(defaultSize).value_or(m_defaultSize);
   common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
   CLI::Option* pixelOption = command->add_option(
-      "--pixel", pixel, "Pixel X Y of the scene camera's image to trace (y down)");
+      "--pixel", pixel, "Pixel X Y (or X,Y) of the scene camera's image to trace (y down)");
+  pixelOption->delimiter(',')->type_name("X Y");
   if (pixelRequired) pixelOption->required();
   command->add_option("--sample", sample, "Which sample of the pixel (its random numbers)")
       ->check(CLI::Range(0, 1 << 24))

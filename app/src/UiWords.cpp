@@ -121,11 +121,10 @@ QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& 
                          .arg(ray);
     case EndReason::Absorbed:
       return named ? QCoreApplication::translate(
-                         "UiWords",
-                         "%1 hit '%2' and was absorbed: the material scatters nothing here")
+                         "UiWords", "%1 hit '%2' and was absorbed: no further ray leaves this hit")
                          .arg(ray, object)
-                   : QCoreApplication::translate(
-                         "UiWords", "%1 was absorbed: the material scatters nothing here")
+                   : QCoreApplication::translate("UiWords",
+                                                 "%1 was absorbed: no further ray leaves this hit")
                          .arg(ray);
     case EndReason::Occluded:
       return named ? QCoreApplication::translate("UiWords",

@@ -13,6 +13,7 @@
 
 #include "raylab/core/Exception.h"
 #include "raylab/core/Lesson.h"
+#include "raylab/vis/Display.h"
 
 #include <QVTKOpenGLNativeWidget.h>
 #include <QApplication>
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -59,6 +61,11 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
               << ")" << std::endl;
     return kExitUsage;
   }
+
+  // The window draws through X (Qt's xcb, and VTK in it), unless Qt is told to use another
+  // platform: without an X server Qt would abort with a message of its own.
+  const char* platform = std::getenv("QT_QPA_PLATFORM");
+  if (!platform || !*platform || std::string(platform).rfind("xcb", 0) == 0) vis::requireDisplay();
 
   // Step 2: Qt, with the OpenGL surface format VTK's widget needs (set before the app).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());

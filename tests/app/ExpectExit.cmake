@@ -5,7 +5,7 @@
 #   -DEXPECT_CODE=<n>         required exit code
 #   -DEXPECT_STDERR=<regex>   optional: stderr must match
 #   -DEXPECT_STDOUT=<regex>   optional: stdout must match
-#   -DEXPECT_NO_FILE=<path>   optional: this file must not exist afterwards
+#   -DEXPECT_NO_FILE=<path>   optional: this file (or folder) must not exist afterwards
 #   -DENV_VARS=<K=V|...>      optional: environment for the command
 # Fails (non-zero exit of cmake) with both outputs printed when a check does not hold.
 if(NOT DEFINED COMMAND OR NOT DEFINED EXPECT_CODE)
@@ -14,7 +14,7 @@ endif()
 string(REPLACE "|" ";" COMMAND "${COMMAND}")
 string(REPLACE "|" ";" ENV_VARS "${ENV_VARS}")
 if(DEFINED EXPECT_NO_FILE)
-  file(REMOVE "${EXPECT_NO_FILE}")
+  file(REMOVE_RECURSE "${EXPECT_NO_FILE}")  # a file, or a folder
 endif()
 if(ENV_VARS)
   execute_process(COMMAND ${CMAKE_COMMAND} -E env ${ENV_VARS} ${COMMAND}

@@ -536,74 +536,6 @@ TEST(Lesson, 07_EveryStepHasBothLanguages) {
   }
 }
 
-/// The quantity a question's check names, computed by the program on the step's scene.
-double compute(const LessonStep& step, const LessonCheck& c) {
-  const Scene& scene = *step.scene;
-  RenderSettings settings = scene.render;
-  settings.algorithm = c.algorithm;
-  using Q = LessonCheck::Quantity;
-  if (c.quantity == Q::CameraRays) {
-    // Every algorithm sends the same camera rays; ray casting is the quickest to run.
-    settings.algorithm = Algorithm::RayCasting;
-    Renderer renderer(scene, settings);
-    renderer.render();
-    return double(renderer.stats().rays.byKind[static_cast<int>(RayKind::Camera)]);
-  }
-  if (c.quantity == Q::BvhNodes || c.quantity == Q::BvhBoxesEntered ||
-      c.quantity == Q::BvhTriangleTests) {
-    // The hierarchy the step's render searches, and the camera ray of the check's pixel.
-    const SceneIntersector intersector(scene, step.settings());  // owns a rebuilt hierarchy
-    const Bvh* bvh = intersector.hierarchy(c.object);
-    if (!bvh) {
-      ADD_FAILURE() << "object " << c.object << " is not a mesh";
-      return -1.0;
-    }
-    if (c.quantity == Q::BvhNodes) return bvh->stats().nodeCount;
-    LessonStep at = step;
-    at.pixelX = c.pixelX;
-    at.pixelY = c.pixelY;
-    at.sample = c.sample;
-    const BvhTrace trace = bvh->traceVisits(*at.cameraRay());
-    return c.quantity == Q::BvhBoxesEntered ? trace.boxesEntered : trace.triangleTests;
-  }
-  const Tracer tracer(scene, settings);
-  if (c.quantity == Q::PixelLuminance) {
-    const int spp = c.spp > 0 ? c.spp : settings.samplesPerPixel;
-    double sum = 0.0;
-    for (int s = 0; s < spp; ++s) sum += luminance(tracer.trace(c.pixelX, c.pixelY, s));
-    return sum / spp;
-  }
-  Stepper stepper(tracer, c.pixelX, c.pixelY, c.sample, kDefaultTreeBudget, c.root);
-  stepper.runToEnd();
-  const RayTree& tree = stepper.tree();
-  EXPECT_FALSE(tree.truncated);
-  switch (c.quantity) {
-    case Q::TreeRays:
-      return double(
-          std::count_if(tree.segments.begin(), tree.segments.end(), [&](const RaySegment& r) {
-            return (!c.kind || r.kind == *c.kind) && (!c.end || r.endReason == *c.end);
-          }));
-    case Q::TreeDepth: {
-      int depth = 0;
-      for (const RaySegment& r : tree.segments) depth = std::max(depth, r.depth);
-      return depth;
-    }
-    case Q::EstimateLuminance:
-      return luminance(stepper.estimate());
-    case Q::RayLength: {
-      if (c.ray >= static_cast<int>(tree.segments.size())) {
-        ADD_FAILURE() << "ray " << c.ray << " is not in the tree";
-        return -1.0;
-      }
-      const RaySegment& r = tree.segments[c.ray];
-      EXPECT_TRUE(r.hit) << "ray " << c.ray << " hits nothing: its length is not defined";
-      return glm::length(r.endPoint - r.origin);
-    }
-    default:
-      return -1.0;
-  }
-}
-
 TEST(Lesson, 08_ComputedAnswersMatchTheProgram) {
   int checked = 0;
   for (const std::string& file : shippedLessons()) {
@@ -612,7 +544,7 @@ TEST(Lesson, 08_ComputedAnswersMatchTheProgram) {
       const LessonStep& step = lesson.steps[i];
       if (!step.question || !step.question->check) continue;
       SCOPED_TRACE(file + " step " + std::to_string(i + 1) + " (" + step.title.en + ")");
-      const double value = compute(step, *step.question->check);
+      const double value = computeCheck(step, *step.question->check);
       EXPECT_NEAR(step.question->answer, value, step.question->tolerance)
           << toString(step.question->check->quantity);
       ++checked;

@@ -1,6 +1,7 @@
 #include "raylab/vis/ComparisonView.h"
 
 #include "raylab/vis/ComparisonCaptions.h"
+#include "raylab/vis/Display.h"
 
 #include "ComparisonLayout.h"
 #include "TextFonts.h"
@@ -549,6 +550,7 @@ bool ComparisonView::hasRayTrees() const {
 
 SrgbImage ComparisonView::renderOffscreen(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
+  requireDisplay();
   Impl& d = *m_impl;
   const std::vector<vtkRenderer*> all = renderers();
   for (vtkRenderer* renderer : all)

@@ -6,6 +6,7 @@
 #include "raylab/core/Check.h"
 #include "raylab/vis/ComparisonCaptions.h"
 #include "raylab/vis/ComparisonView.h"
+#include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
 
 #include <vtkAxis.h>
@@ -236,6 +237,7 @@ void ConvergencePlot::layout(int width, int height) {
 
 SrgbImage ConvergencePlot::renderOffscreen(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
+  requireDisplay();
   vtkRenderWindow* window = m_impl->view->GetRenderWindow();
   if (!m_impl->offscreen) {
     window->SetOffScreenRendering(1);

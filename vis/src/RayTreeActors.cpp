@@ -304,8 +304,9 @@ void RayTreeActors::layoutLegend(int width, int height) {
   m_energyBar->GetPosition2Coordinate()->SetValue(5 * font, barHeight);
   m_energyBar->SetMaximumWidthInPixels(5 * font);
   m_energyBar->SetMaximumHeightInPixels(barHeight);
-  // What the colours mean, beside the bar's numbers: high at the top, none at the bottom.
-  const int wordsX = margin + font / 2 + 5 * font + font / 2;
+  // What the colours mean, beside the bar's numbers: high at the top, none at the bottom,
+  // a font's width past the bar's box (at the smallest font, 10 px, "0.0001" fills the box).
+  const int wordsX = margin + font / 2 + 6 * font + font / 2;
   const int rows[] = {barTop - font, barTop - barHeight / 2, barTop - barHeight + font};
   for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
     m_energyWords[i]->GetTextProperty()->SetFontSize(font);

@@ -12,6 +12,7 @@
 #include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Shape.h"
 #include "raylab/core/Sphere.h"
+#include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
 
 #include <vtkActor.h>
@@ -46,10 +47,12 @@ constexpr double kBackground[3] = {0.12, 0.13, 0.16};
 /// Colour of the selection outline.
 constexpr double kHighlight[3] = {1.0, 0.85, 0.0};
 /// Colour and opacity of the scene camera's body, colour of its frustum lines: the lime of
-/// camera rays (kindColour), never the light grey that means "no energy" on rays.
+/// camera rays (kindColour), never the light grey that means "no energy" on rays; the
+/// frustum a darker lime in thin lines, so that a camera ray inside it stands out.
 constexpr double kCameraBody[3] = {0.75, 0.95, 0.65};
 constexpr double kCameraBodyOpacity = 0.45;
-constexpr double kFrustum[3] = {0.55, 0.95, 0.35};
+constexpr double kFrustum[3] = {0.33, 0.52, 0.22};
+constexpr double kFrustumLineWidth = 1.0;
 /// Colour of a point light's glyph: the original course program's flesh-coloured light.
 constexpr double kPointLight[3] = {1.0, 0.8, 0.65};
 
@@ -148,7 +151,7 @@ void addCameraAndLights(const Scene& scene, vtkRenderer* renderer) {
   auto frustum = makeActor(
       cameraFrustumGeometry(scene.camera, kFrustumLengthInGlyphs * cameraGlyphSize(scene)));
   frustum->GetProperty()->SetColor(kFrustum[0], kFrustum[1], kFrustum[2]);
-  frustum->GetProperty()->SetLineWidth(1.5);
+  frustum->GetProperty()->SetLineWidth(kFrustumLineWidth);
   frustum->GetProperty()->LightingOff();
   renderer->AddActor(frustum);
 
@@ -496,6 +499,7 @@ void SceneView::update() { m_impl->rays.ensureBuilt(); }
 
 SrgbImage SceneView::renderOffscreen(int width, int height) {
   RAYLAB_CHECK(width > 0 && height > 0);
+  requireDisplay();
   update();
   vtkRenderer* renderer = m_impl->renderer;
   // The renderer can live in one window only: not while a widget shows it.

@@ -3,8 +3,11 @@
 #include "io/JsonChecks.h"
 #include "io/PrettyJson.h"
 
+#include "raylab/core/Bvh.h"
 #include "raylab/core/Check.h"
+#include "raylab/core/Exception.h"
 #include "raylab/core/Limits.h"
+#include "raylab/core/Renderer.h"
 #include "raylab/core/Sampler.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/SceneIO.h"
@@ -840,6 +843,71 @@ const char* toString(LessonCameraView view) { return nameOf(kCameraViews, view);
 const char* toString(LessonMeasure measure) { return nameOf(kMeasures, measure); }
 const char* toString(LessonSamples::Sampler sampler) { return nameOf(kSamplers, sampler); }
 const char* toString(LessonCheck::Quantity quantity) { return nameOf(kQuantities, quantity); }
+
+double computeCheck(const LessonStep& step, const LessonCheck& c) {
+  const Scene& scene = *step.scene;
+  RenderSettings settings = scene.render;
+  settings.algorithm = c.algorithm;
+  using Q = LessonCheck::Quantity;
+  if (c.quantity == Q::CameraRays) {
+    // Every algorithm sends the same camera rays; ray casting is the quickest to run.
+    settings.algorithm = Algorithm::RayCasting;
+    Renderer renderer(scene, settings);
+    renderer.render();
+    return double(renderer.stats().rays.byKind[static_cast<int>(RayKind::Camera)]);
+  }
+  if (c.quantity == Q::BvhNodes || c.quantity == Q::BvhBoxesEntered ||
+      c.quantity == Q::BvhTriangleTests) {
+    // The hierarchy the step's render searches, and the camera ray of the check's pixel.
+    const SceneIntersector intersector(scene, step.settings());  // owns a rebuilt hierarchy
+    const Bvh* bvh = intersector.hierarchy(c.object);
+    if (!bvh) throw Exception("object " + std::to_string(c.object) + " is not a mesh");
+    if (c.quantity == Q::BvhNodes) return bvh->stats().nodeCount;
+    LessonStep at = step;
+    at.pixelX = c.pixelX;
+    at.pixelY = c.pixelY;
+    at.sample = c.sample;
+    const BvhTrace trace = bvh->traceVisits(*at.cameraRay());
+    return c.quantity == Q::BvhBoxesEntered ? trace.boxesEntered : trace.triangleTests;
+  }
+  const Tracer tracer(scene, settings);
+  if (c.quantity == Q::PixelLuminance) {
+    const int spp = c.spp > 0 ? c.spp : settings.samplesPerPixel;
+    double sum = 0.0;
+    for (int s = 0; s < spp; ++s) sum += luminance(tracer.trace(c.pixelX, c.pixelY, s));
+    return sum / spp;
+  }
+  Stepper stepper(tracer, c.pixelX, c.pixelY, c.sample, kDefaultTreeBudget, c.root);
+  stepper.runToEnd();
+  const RayTree& tree = stepper.tree();
+  if (tree.truncated) throw Exception("the ray tree reached its budget: its counts are not whole");
+  switch (c.quantity) {
+    case Q::TreeRays:
+      return double(
+          std::count_if(tree.segments.begin(), tree.segments.end(), [&](const RaySegment& r) {
+            return (!c.kind || r.kind == *c.kind) && (!c.end || r.endReason == *c.end);
+          }));
+    case Q::TreeDepth: {
+      int depth = 0;
+      for (const RaySegment& r : tree.segments) depth = std::max(depth, r.depth);
+      return depth;
+    }
+    case Q::EstimateLuminance:
+      return luminance(stepper.estimate());
+    case Q::RayLength: {
+      if (c.ray >= static_cast<int>(tree.segments.size()))
+        throw Exception("ray " + std::to_string(c.ray) + " is not in the tree");
+      const RaySegment& r = tree.segments[static_cast<std::size_t>(c.ray)];
+      if (!r.hit)
+        throw Exception("ray " + std::to_string(c.ray) +
+                        " hits nothing: its length is not defined");
+      return glm::length(r.endPoint - r.origin);
+    }
+    default:
+      break;
+  }
+  throw Exception(std::string("no computation for quantity ") + toString(c.quantity));
+}
 
 std::vector<Vec3> LessonSamples::directions(std::uint64_t seed) const {
   std::vector<Vec3> result;

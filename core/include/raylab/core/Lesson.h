@@ -245,6 +245,13 @@ struct Lesson {
   std::vector<std::string> requiredFeatures() const;
 };
 
+/// The quantity `check` names, computed by the program on `step`'s scene: what the
+/// question's typed answer must equal within its tolerance (`raylab lesson FILE --check`
+/// and the test suite compare them). Throws Exception when it cannot be computed (the check's
+/// object is not a mesh, its ray is not in the tree or hits nothing, the tree reached its
+/// budget).
+double computeCheck(const LessonStep& step, const LessonCheck& check);
+
 /**
  * \brief Reads lesson files: versioned JSON naming a scene in lessons/scenes/ and a list
  * of steps, each in English and Chinese.

@@ -21,7 +21,8 @@ enum class EndReason {
   HitLight,         ///< Hit an emitter; the algorithm does not continue from lights.
   MaxDepth,         ///< Hit a surface at the maximum depth.
   RussianRoulette,  ///< Path tracing stopped it at random (survivors are reweighted).
-  Absorbed,         ///< The material scatters nothing here (black, or no lobe applies).
+  Absorbed,         ///< No further ray leaves the hit: the material scatters nothing the algorithm
+                    ///< follows here (black, no lobe applies, no light faces it).
   Occluded,         ///< Shadow ray blocked before reaching its light.
   ReachedLight,     ///< Shadow ray reached its light unblocked.
   Spawned,          ///< Ended by spawning children (an inner node of the tree).
