@@ -65,7 +65,6 @@ CLI::Validator endsIn(const std::string& extension) {
 int runCompare(const CompareOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the budget.
   Scene scene = options.common.loadScene(topLevelScene);
-  vis::requireDisplay();  // before the renders: the picture needs it
   fitDefaultCompareSize(options.common, scene);
   const RenderSettings settings = options.common.settings(scene);
   const int width = scene.camera.width, height = scene.camera.height;
@@ -88,6 +87,12 @@ int runCompare(const CompareOptions& options, const std::string& topLevelScene) 
   const auto picture = parseSize(options.reference.picture);
   const std::string json =
       options.json.empty() ? replaceExtension(options.common.out, ".json") : options.json;
+  // Every input and output checked before the renders, and before the display: bad input
+  // is reported (exit 1 or 2) the same with or without an X server.
+  for (const std::string& path : {options.common.out, json})
+    if (const auto problem = cannotWrite(path)) throw WriteError(path + ": " + *problem);
+  options.reference.checkFile();
+  vis::requireDisplay();  // before the renders: the picture needs it
 
   // Step 2: the renders, then the trees of the chosen pixel (sample 0, same seed).
   const ComparisonResult result =
@@ -126,6 +131,12 @@ void fitDefaultCompareSize(const CommonOptions& common, Scene& scene) {
                 double(kDefaultCompareHeight) / std::max(1, scene.camera.height)});
   scene.camera.width = std::max(1, int(scene.camera.width * scale + 0.5));
   scene.camera.height = std::max(1, int(scene.camera.height * scale + 0.5));
+}
+
+void ReferenceOptions::checkFile() const {
+  if (!file.empty()) (void)imageio::readPfm(file);
+  if (!saveAs.empty())
+    if (const auto problem = cannotWrite(saveAs)) throw WriteError(saveAs + ": " + *problem);
 }
 
 void ReferenceOptions::add(CLI::App* command, const std::string& pictureDefault) {

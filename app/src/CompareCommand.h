@@ -36,6 +36,9 @@ struct ReferenceOptions {
   /// Adds --reference, --reference-spp, --save-reference, --no-cache, --cache-dir,
   /// --threads and --picture (`pictureDefault`, e.g. "1920x1080") to `command`.
   void add(CLI::App* command, const std::string& pictureDefault);
+  /// Throws what reading --reference or writing --save-reference would, before any render
+  /// (the reference is read here once more, later: the price of failing first).
+  void checkFile() const;
 };
 
 /// The image size `compare` and `plot` render at when --size is not given: the scene's

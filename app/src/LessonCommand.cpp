@@ -571,14 +571,17 @@ Subcommand addLessonCommand(CLI::App& cli) {
       "handout with each step's text, picture and question, and the answers at the end.\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.\n"
       "Exit codes: 0 ok, 1 a lesson does not load (the message names the file, the step\n"
-      "            and the place) or DIR cannot be written, 2 usage error, 3 internal error\n"
+      "            and the place), --check computes another answer than the file's, or DIR\n"
+      "            cannot be written, 2 usage error, 3 internal error\n"
       "            (please report it).");
   CLI::Option* file =
       command->add_option("FILE", options->file, "Lesson file (or the id of a lesson in --dir)");
   CLI::Option* list =
       command->add_flag("--list", options->list, "List the lessons in --dir: id, title, steps");
   CLI::Option* check = command->add_flag(
-      "--check", options->check, "Validate FILE (its scene, steps, questions) without rendering");
+      "--check", options->check,
+      "Validate FILE (its scene, steps, questions) and compute every answer that has a check "
+      "(no pictures; no X server needed)");
   CLI::Option* out =
       command->add_option("--out", options->out,
                           "Render every step of FILE to DIR/step-NN.png and write DIR/lesson.md");

@@ -3,8 +3,10 @@
 #include "CompareCommand.h"
 #include "ExitCodes.h"
 
+#include "raylab/core/AtomicFile.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/FilePaths.h"
+#include "raylab/core/Image.h"
 #include "raylab/vis/ConvergencePlot.h"
 #include "raylab/vis/Display.h"
 
@@ -26,6 +28,9 @@ struct PlotOptions {
 int runPlot(const PlotOptions& options, const std::string& topLevelScene) {
   // Step 1: every algorithm up to --max-spp; each pass is a point of its curve.
   Scene scene = options.common.loadScene(topLevelScene);
+  if (const auto problem = cannotWrite(options.common.out))
+    throw imageio::WriteError(options.common.out + ": " + *problem);
+  options.reference.checkFile();
   vis::requireDisplay();  // before the renders: the plot needs it
   fitDefaultCompareSize(options.common, scene);
   const RenderSettings settings = options.common.settings(scene);

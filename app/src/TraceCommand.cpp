@@ -103,6 +103,7 @@ int writeTrees(const TraceOptions& options, const Scene& scene, const RenderSett
 /// one picture, and one JSON document holding every tree's dump.
 int runGrid(const TraceOptions& options, const Scene& scene, const RenderSettings& settings) {
   const auto grid = gridSize(options.grid);
+  vis::requireDisplay();  // before the traces: the picture needs it
   const GridTrace traced = traceGrid(scene, settings, grid->first, grid->second);
   return writeTrees(options, scene, settings, traced, "grid",
                     "[" + std::to_string(grid->first) + ", " + std::to_string(grid->second) + "]",
@@ -159,6 +160,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
                 << std::endl;
       return kExitUsage;
     }
+    vis::requireDisplay();  // before the traces: the picture needs it
     const GridTrace traced =
         traceBundle(scene, settings, o.pixel.first, o.pixel.second, o.sample, options.bundle);
     const std::string last = std::to_string(o.sample + int(traced.traces.size()) - 1);
@@ -171,8 +173,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
             ") samples " + std::to_string(o.sample) + ".." + last);
   }
 
-  // Step 2: trace the sample, recording its tree (once the picture can be drawn).
-  vis::requireDisplay();
+  // Step 2: trace the sample, recording its tree.
   const PixelTrace trace =
       root ? traceRay(scene, settings, *root, o.pixel.first, o.pixel.second, o.sample)
            : tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
@@ -183,7 +184,9 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     return kExitUsage;
   }
 
-  // Step 3: the 3D view with the tree, in memory first.
+  // Step 3: the 3D view with the tree, in memory first (usage errors need no display: they
+  // come before this).
+  vis::requireDisplay();
   const auto [width, height] = o.pictureSize();
   const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree);
   if (options.frame >= 0) view->setReveal(vis::revealFrame(tree, o.animation(), options.frame));

@@ -109,8 +109,9 @@ const char* toString(LessonSamples::Sampler sampler);
 
 /**
  * \brief A number a question's answer is computed from, so answers are not typed by hand:
- * the test suite recomputes each with Tracer / Stepper on the step's scene (scene changes
- * applied) and checks the stated answer lies within its tolerance.
+ * computeCheck recomputes it with Tracer / Stepper on the step's scene (scene changes
+ * applied), and `raylab lesson FILE --check` (run on every lesson by the test suite) checks
+ * the stated answer lies within its tolerance.
  */
 struct LessonCheck {
   enum class Quantity {
