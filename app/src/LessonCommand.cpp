@@ -161,13 +161,16 @@ int runCheck(const LessonOptions& o) {
 }
 
 /// Pictures and sizes of `raylab lesson FILE --out DIR`.
-constexpr std::pair<int, int> kDefaultPicture{640, 480};  ///< 3D views, comparison, plot.
-constexpr std::pair<int, int> kImageCap{320, 240};        ///< Largest "image" render.
-constexpr int kImageSppCap = 64;                          ///< Most spp of an "image" render.
-constexpr std::pair<int, int> kCompareImage{160, 120};    ///< Each comparison image.
-constexpr int kCompareSpp = 8;                            ///< Equal samples: spp of each.
-constexpr double kCompareSeconds = 0.25;                  ///< Equal time: per algorithm.
-constexpr int kPlotMaxSpp = 16;                           ///< The plot's last pass.
+constexpr std::pair<int, int> kDefaultPicture{640, 480};  ///< 3D views.
+/// Comparisons and plots: four panels of figures, and a plot's axes, need more pixels than a
+/// 3D view for their text to be read (at 640x480 it was about 7 pixels high).
+constexpr std::pair<int, int> kDefaultFiguresPicture{960, 720};
+constexpr std::pair<int, int> kImageCap{320, 240};      ///< Largest "image" render.
+constexpr int kImageSppCap = 64;                        ///< Most spp of an "image" render.
+constexpr std::pair<int, int> kCompareImage{160, 120};  ///< Each comparison image.
+constexpr int kCompareSpp = 8;                          ///< Equal samples: spp of each.
+constexpr double kCompareSeconds = 0.25;                ///< Equal time: per algorithm.
+constexpr int kPlotMaxSpp = 16;                         ///< The plot's last pass.
 constexpr int kCompareReferenceSpp = 128;  ///< Reference of the comparison (16 x its spp).
 constexpr int kPlotReferenceSpp = 256;     ///< Reference of the plot (16 x its last pass).
 
@@ -437,9 +440,9 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
     case LessonView::Image:
       return imagePicture(step, size.value_or(kImageCap), maxSpp, language);
     case LessonView::Compare:
-      return comparePicture(step, picture, maxSpp, language);
+      return comparePicture(step, size.value_or(kDefaultFiguresPicture), maxSpp, language);
     case LessonView::Plot:
-      return plotPicture(step, picture, maxSpp, language);
+      return plotPicture(step, size.value_or(kDefaultFiguresPicture), maxSpp, language);
     case LessonView::Inspector:
       return scenePicture(step, picture, true, language);
     case LessonView::Samples:
@@ -588,8 +591,8 @@ Subcommand addLessonCommand(CLI::App& cli) {
   CLI::Option* size =
       command
           ->add_option("--size", options->size,
-                       "Picture size WIDTHxHEIGHT (default 640x480; image steps: the largest "
-                       "render, default 320x240)")
+                       "Picture size WIDTHxHEIGHT (default 640x480, comparisons and plots "
+                       "960x720; image steps: the largest render, default 320x240)")
           ->check(CLI::Validator(checkSize, "WxH"));
   CLI::Option* maxSpp =
       command
