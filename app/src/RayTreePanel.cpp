@@ -490,8 +490,13 @@ void RayTreePanel::simulate() {
   m_trace = combined;
   m_grid = true;
 
-  // Coloured by energy, as the original program drew its trees.
-  m_colouring->setCurrentIndex(m_colouring->findData(QStringLiteral("energy")));
+  // Coloured by energy, as the original program drew its trees. Without its signal: its
+  // restyle would reveal the grid's rays on the tree the view still draws; showTrace below
+  // draws the grid in the box's colouring.
+  {
+    const QSignalBlocker block(m_colouring);
+    m_colouring->setCurrentIndex(m_colouring->findData(QStringLiteral("energy")));
+  }
   QString info = tr("%1: Simulate %2 x %3, %4 pixels, %5 rays")
                      .arg(algorithmLabel(settings.algorithm))
                      .arg(across)

@@ -548,6 +548,35 @@ TEST_F(MainWindowTest, 15_Simulate2x2DrawsFourTrees) {
   EXPECT_EQ(gridPixels(320, 240, 1, 1).front(), std::make_pair(160, 120));  // 1 x 1: the centre
 }
 
+// Simulate colours the grid by energy. From another colouring, with a pixel's tree shown or
+// none, the view must take the new tree before its colours change: the window aborted
+// (a reveal of the grid's rays checked against the tree still drawn).
+TEST_F(MainWindowTest, 15b_SimulateFromAnotherColouring) {
+  RayTreePanel& panel = *m_window->rayTreePanel();
+  panel.setAlgorithm(Algorithm::Whitted);
+  panel.colouringBox()->setCurrentIndex(panel.colouringBox()->findData(QStringLiteral("kind")));
+  panel.acrossBox()->setValue(2);
+  panel.downBox()->setValue(2);
+  panel.simulateButton()->click();
+  settle();
+  ASSERT_TRUE(panel.showsGrid());
+  EXPECT_EQ(panel.colouringBox()->currentData().toString(), QStringLiteral("energy"));
+  EXPECT_EQ(m_window->sceneView().rayTreeStyle().colouring, RayColouring::Energy);
+  int roots = 0;
+  for (const RaySegment& s : m_window->sceneView().rayTree().segments)
+    roots += s.kind == RayKind::Camera;
+  EXPECT_EQ(roots, 4);
+  // Again from "depth", over the grid now shown.
+  panel.colouringBox()->setCurrentIndex(panel.colouringBox()->findData(QStringLiteral("depth")));
+  panel.acrossBox()->setValue(3);
+  panel.simulateButton()->click();
+  settle();
+  roots = 0;
+  for (const RaySegment& s : m_window->sceneView().rayTree().segments)
+    roots += s.kind == RayKind::Camera;
+  EXPECT_EQ(roots, 6);
+}
+
 // Start-up opens the scene open last time; when it cannot be read, the default scene,
 // and the status bar says why.
 TEST_F(MainWindowTest, 16_StartUpWithTheLastSceneOrTheDefault) {
