@@ -103,7 +103,7 @@ ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_status);
 
   // Step 2: the comparison, and the convergence plot under it.
-  auto* split = new QSplitter(Qt::Vertical);
+  auto* split = m_split = new QSplitter(Qt::Vertical);
   m_widget = vtkWidget();
   m_widget->installEventFilter(this);
   m_widget->setToolTip(tr("Click a pixel of any image to trace it with all four algorithms"));
@@ -125,7 +125,14 @@ ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
   connect(m_cancelButton, &QPushButton::clicked, this, [this] { cancel(); });
   connect(m_showPlot, &QCheckBox::toggled, this, [this](bool on) {
     m_plotWidget->setVisible(on);
-    if (on) showPlot();
+    if (!on) return;
+    // Hidden when the splitter was laid out, the plot may have been left no height at all.
+    const QList<int> sizes = m_split->sizes();
+    if (sizes.size() == 2 && sizes[1] < m_split->height() / 5) {
+      const int total = std::max(1, sizes[0] + sizes[1]);
+      m_split->setSizes({total - 2 * total / 5, 2 * total / 5});
+    }
+    showPlot();
   });
   updateControls();
 }
@@ -284,6 +291,10 @@ void ComparePanel::redraw() {
   m_widget->renderWindow()->Render();
   m_widget->update();
 }
+
+void ComparePanel::setPlotShown(bool on) { m_showPlot->setChecked(on); }
+
+bool ComparePanel::plotShown() const { return m_showPlot->isChecked(); }
 
 void ComparePanel::showPlot() {
   clearRenderers(m_plotWidget);

@@ -17,6 +17,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
+class QSplitter;
 class QVTKOpenGLNativeWidget;
 
 namespace raylab::vis {
@@ -59,6 +60,11 @@ class ComparePanel : public QWidget {
   void setEqualTime(bool on);
   void setSamplesPerPixel(int spp);
   void setSeconds(double seconds);
+  /// Shows or hides the convergence plot under the comparison (its check box), giving it
+  /// two fifths of the height when it had none.
+  void setPlotShown(bool on);
+  bool plotShown() const;
+  QVTKOpenGLNativeWidget* plotWidget() const { return m_plotWidget; }
   /// Traces pixel (x, y) with every algorithm compared and shows the trees beside the
   /// images (what a click on a panel does). False without a comparison.
   bool traceAll(int x, int y);
@@ -123,6 +129,7 @@ class ComparePanel : public QWidget {
   QProgressBar* m_progress = nullptr;
   QLabel* m_status = nullptr;
   QCheckBox* m_showPlot = nullptr;
+  QSplitter* m_split = nullptr;  ///< The comparison above, the plot below.
   QVTKOpenGLNativeWidget* m_widget = nullptr;
   QVTKOpenGLNativeWidget* m_plotWidget = nullptr;
 };

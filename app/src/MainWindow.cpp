@@ -584,6 +584,9 @@ void MainWindow::showLessonStep(int index) {
     m_comparePanel->setSamplesPerPixel(kLessonCompareSpp);
     m_comparePanel->setSeconds(kLessonCompareSeconds);
     showImageTab(m_comparePanel);
+    // A plot step shows the convergence plot under the comparison; a comparison step
+    // leaves the panels the whole height.
+    m_comparePanel->setPlotShown(step.view == LessonView::Plot);
     m_comparePanel->compare();
   }
   if (step.view == LessonView::Image) {

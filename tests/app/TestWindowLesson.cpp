@@ -6,6 +6,7 @@
 // under xvfb.
 #include "WindowTest.h"
 
+#include "ComparePanel.h"
 #include "Language.h"
 #include "LessonPanel.h"
 #include "RenderPanel.h"
@@ -296,6 +297,35 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
   EXPECT_TRUE(render.figuresLabel()->text().contains(QStringLiteral("rays/s")));
   EXPECT_TRUE(render.figuresLabel()->text().contains(QStringLiteral("brute force")))
       << render.figuresLabel()->text().toStdString();
+}
+
+// A plot step shows the convergence plot under the comparison, with room to be seen; a
+// comparison step leaves the panels the whole height. (The plot stayed hidden, and once its
+// box was ticked it had no height at all: the splitter had been laid out without it.)
+TEST_F(WindowLessonTest, 11_PlotStepsShowThePlot) {
+  const QString seven = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/07-four-side-by-side.json");
+  ASSERT_TRUE(m_window->openLesson(seven));
+  const Lesson lesson = LessonIO::load(seven.toStdString());
+  const int plot =
+      firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Plot; });
+  const int compare =
+      firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Compare; });
+  LessonPanel& panel = *m_window->lessonPanel();
+  ComparePanel& comparison = *m_window->comparePanel();
+  panel.showStep(plot);
+  for (int i = 0; i < 20; ++i) QApplication::processEvents(QEventLoop::AllEvents, 10);
+  EXPECT_TRUE(comparison.plotShown());
+  EXPECT_TRUE(comparison.plotWidget()->isVisible());
+  EXPECT_GT(comparison.plotWidget()->height(), comparison.comparisonWidget()->height() / 3);
+  panel.showStep(compare);
+  for (int i = 0; i < 5; ++i) QApplication::processEvents(QEventLoop::AllEvents, 10);
+  EXPECT_FALSE(comparison.plotShown());
+  EXPECT_FALSE(comparison.plotWidget()->isVisible());
+  comparison.cancel();
+  const auto start = std::chrono::steady_clock::now();
+  while (comparison.running() &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
 }
 
 }  // namespace
