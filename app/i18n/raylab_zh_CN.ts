@@ -1046,6 +1046,10 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Pixel (%1, %2) traced with every algorithm: the trees are beside the images</source>
         <translation>已用每种算法追踪像素 (%1, %2)：光线树显示在图像旁</translation>
     </message>
+    <message>
+        <source>the reference</source>
+        <translation>参考图像</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::EditPanel</name>

@@ -201,7 +201,11 @@ void ComparePanel::launch() {
   comparison->setReferenceCache(ReferenceCache::fromEnvironment());
   // Posts to this object from the worker; the destructor joins the worker first.
   comparison->setProgress([this, generation](const std::string& stage, double fraction, int spp) {
-    const QString what = QString::fromStdString(stage);
+    // The stage in the window's language: an algorithm's name, or the reference.
+    const std::optional<Algorithm> algorithm = parseAlgorithm(stage);
+    const QString what = algorithm              ? algorithmLabel(*algorithm)
+                         : stage == "reference" ? tr("the reference")
+                                                : QString::fromStdString(stage);
     QMetaObject::invokeMethod(
         this,
         [this, generation, what, fraction, spp] {
