@@ -31,6 +31,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cstdint>
 
 namespace raylab::app {
 
@@ -283,7 +284,17 @@ void ComparePanel::ended(int generation, const std::shared_ptr<const ComparisonR
   m_status->setText(cancelled ? tr("Cancelled") : tr("Done") + reference);
   emit statusChanged(cancelled ? tr("Comparison cancelled") : tr("Comparison done") + reference);
   updateControls();
+  if (!cancelled && m_traceWhenDone && m_resultScene) {
+    const auto [x, y, width, height] = *m_traceWhenDone;
+    const Scene& scene = *m_resultScene;
+    traceAll(int(std::int64_t(x) * scene.camera.width / std::max(1, width)),
+             int(std::int64_t(y) * scene.camera.height / std::max(1, height)));
+  }
   emit comparisonEnded(cancelled);
+}
+
+void ComparePanel::traceWhenDone(std::optional<std::array<int, 4>> pixelOfImage) {
+  m_traceWhenDone = pixelOfImage;
 }
 
 void ComparePanel::redraw() {

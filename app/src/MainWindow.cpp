@@ -587,6 +587,12 @@ void MainWindow::showLessonStep(int index) {
     // A plot step shows the convergence plot under the comparison; a comparison step
     // leaves the panels the whole height.
     m_comparePanel->setPlotShown(step.view == LessonView::Plot);
+    // A step's pixel: its four trees beside the images once they are done, as in the handout.
+    if (step.pixelX && step.pixelY)
+      m_comparePanel->traceWhenDone(std::array<int, 4>{
+          *step.pixelX, *step.pixelY, step.scene->camera.width, step.scene->camera.height});
+    else
+      m_comparePanel->traceWhenDone(std::nullopt);
     m_comparePanel->compare();
   }
   if (step.view == LessonView::Image) {

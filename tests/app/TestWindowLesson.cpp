@@ -328,5 +328,26 @@ TEST_F(WindowLessonTest, 11_PlotStepsShowThePlot) {
     QApplication::processEvents(QEventLoop::AllEvents, 20);
 }
 
+// A comparison step with a pixel shows that pixel's four trees beside the images once the
+// comparison is done, as its handout picture does (lesson 7, "Four trees of one pixel").
+TEST_F(WindowLessonTest, 12_AComparisonStepWithAPixelShowsItsFourTrees) {
+  const QString seven = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/07-four-side-by-side.json");
+  ASSERT_TRUE(m_window->openLesson(seven));
+  const Lesson lesson = LessonIO::load(seven.toStdString());
+  const int trees = firstStep(lesson, [](const LessonStep& st) {
+    return st.view == LessonView::Compare && st.pixelX.has_value();
+  });
+  ComparePanel& comparison = *m_window->comparePanel();
+  const int ended = comparison.comparisonsEnded();
+  m_window->lessonPanel()->showStep(trees);
+  const auto start = std::chrono::steady_clock::now();
+  while (comparison.comparisonsEnded() == ended &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(120))
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  ASSERT_GT(comparison.comparisonsEnded(), ended);
+  EXPECT_EQ(comparison.trees().size(), 4u);
+  EXPECT_GE(comparison.tracedPixel().first, 0);
+  for (const RayTree& tree : comparison.trees()) EXPECT_FALSE(tree.segments.empty());
+}
 }  // namespace
 }  // namespace raylab::app
