@@ -1260,8 +1260,8 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>显示精确判定器（CGAL，精确数值运算）对这条光线交点的检验，并与双精度结果对照：t 值、二者相差多少个 ulp，以及误差界</translation>
     </message>
     <message>
-        <source>(Exactness figures: the exact oracle&apos;s check of the hit, one click away above.)</source>
-        <translation>（精确性数据：精确判定器对交点的检验，点击上方按钮即可查看。）</translation>
+        <source>(The exact oracle&apos;s check of the hit: press Exactness figures in the Ray inspector.)</source>
+        <translation>（精确判定器对交点的检验：在“光线检查器”中按“精确性数据”按钮即可查看。）</translation>
     </message>
     <message>
         <source>Where: towards a light, but &apos;%1&apos; is in the way, %2 units on</source>

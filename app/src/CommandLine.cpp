@@ -78,6 +78,7 @@ int runCommandLine(int argc, char** argv) {
   CLI::Option* traceOption =
       cli.add_option("--trace", tracePixel, "Trace pixel X Y when the window opens")
           ->expected(2)
+          ->allow_extra_args(false)  // `--trace 90 100 scene.json`: the file stays the scene
           ->delimiter(',')
           ->type_name("X Y");
   int traceSample = 0;

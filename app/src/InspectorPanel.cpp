@@ -99,8 +99,9 @@ void InspectorPanel::showSegment(int id) {
   m_text->setPlainText(
       inWords(inspection) + QStringLiteral("\n") + values +
       (exact ? QString()
-             : QStringLiteral("\n") + tr("(Exactness figures: the exact oracle's check of the hit, "
-                                         "one click away above.)")));
+             : QStringLiteral("\n") +
+                   tr("(The exact oracle's check of the hit: press Exactness figures in the Ray "
+                      "inspector.)")));
 }
 
 QString InspectorPanel::inWords(const RayInspection& r) const {

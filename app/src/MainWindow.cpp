@@ -578,7 +578,9 @@ void MainWindow::showLessonStep(int index) {
     m_view->clearBvh();
   m_lessonPanel->setBvhView(bvh, m_view->bvhSummary());
 
-  // Step 4: the image or the comparison beside the 3D view, for the steps that show it.
+  // Step 4: the image or the comparison beside the 3D view, for the steps that show it. The
+  // Image tab takes the step's algorithm on every step, so Render there renders the step's.
+  m_renderPanel->setAlgorithm(step.algorithm);
   if (step.view == LessonView::Compare || step.view == LessonView::Plot) {
     m_comparePanel->setEqualTime(step.measure == LessonMeasure::Time);
     m_comparePanel->setSamplesPerPixel(kLessonCompareSpp);

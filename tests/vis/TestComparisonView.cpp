@@ -9,6 +9,7 @@
 #include "raylab/core/Image.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Tracer.h"
+#include "raylab/vis/ComparisonCaptions.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ConvergencePlot.h"
 #include "raylab/vis/ImageIO.h"
@@ -202,6 +203,14 @@ TEST(ComparisonView, 04_PanelsListTheFigures) {
   EXPECT_TRUE(contains(path, "error 0.039 (lowest)")) << ::testing::PrintToString(path);
   EXPECT_TRUE(contains(hidden.panelText(2), "error 0.")) << "distributed, not the lowest";
   EXPECT_FALSE(contains(hidden.panelText(2), "lowest"));
+  // A lowest error that prints as another's is no lowest.
+  ComparisonResult tie = result;
+  tie.algorithms[3].rmse = 0.0391;
+  tie.algorithms[2].rmse = 0.0393;  // both print 0.039
+  EXPECT_EQ(lowestErrorIndex(tie), -1);
+  EXPECT_FALSE(contains(ComparisonView(tie, baselineOptions()).panelText(3), "lowest"));
+  tie.algorithms[2].rmse = 0.0412;
+  EXPECT_EQ(lowestErrorIndex(tie), 3);
   EXPECT_TRUE(contains(path, "rays 326 k")) << ::testing::PrintToString(path);
   EXPECT_TRUE(contains(path, "diffuse 121 k")) << ::testing::PrintToString(path);
   EXPECT_FALSE(contains(path, " ms")) << "times hidden";

@@ -132,17 +132,15 @@ std::string headerLine(const ComparisonResult& result, Language language) {
 
 int lowestErrorIndex(const ComparisonResult& result) {
   int best = -1;
-  bool shared = false;
-  for (std::size_t i = 0; i < result.algorithms.size(); ++i) {
-    const double rmse = result.algorithms[i].rmse;
-    if (best < 0 || rmse < result.algorithms[std::size_t(best)].rmse) {
+  for (std::size_t i = 0; i < result.algorithms.size(); ++i)
+    if (best < 0 || result.algorithms[i].rmse < result.algorithms[std::size_t(best)].rmse)
       best = int(i);
-      shared = false;
-    } else if (rmse == result.algorithms[std::size_t(best)].rmse) {
-      shared = true;
-    }
-  }
-  return shared ? -1 : best;
+  if (best < 0) return -1;
+  // Shared when another prints the same (0.096 and 0.096 are no lowest to a reader).
+  const std::string shown = formatError(result.algorithms[std::size_t(best)].rmse);
+  for (std::size_t i = 0; i < result.algorithms.size(); ++i)
+    if (int(i) != best && formatError(result.algorithms[i].rmse) == shown) return -1;
+  return best;
 }
 
 std::vector<std::string> figureLines(const ComparisonResult& result,
