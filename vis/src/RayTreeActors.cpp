@@ -42,6 +42,10 @@ void setInput(vtkActor* actor, vtkPolyData* data) {
   static_cast<vtkPolyDataMapper*>(actor->GetMapper())->SetInputData(data);
 }
 
+/// Behind the legend's words: the 3D view's background (SceneView's kBackground).
+constexpr double kLegendBackdrop[3] = {0.12, 0.13, 0.16};
+constexpr double kLegendBackdropOpacity = 0.75;
+
 void styleText(vtkTextProperty* text, const double colour[3]) {
   text->SetColor(colour[0], colour[1], colour[2]);
   text->SetFontFamilyToArial();
@@ -50,6 +54,10 @@ void styleText(vtkTextProperty* text, const double colour[3]) {
   text->ShadowOff();
   text->SetJustificationToLeft();
   text->SetVerticalJustificationToBottom();
+  // On the view's dark slate, mostly opaque: the legend's yellow, violet and orange words
+  // stay readable where a close-up puts a grey wall behind them.
+  text->SetBackgroundColor(kLegendBackdrop[0], kLegendBackdrop[1], kLegendBackdrop[2]);
+  text->SetBackgroundOpacity(kLegendBackdropOpacity);
 }
 
 void layoutCallback(vtkObject* caller, unsigned long, void* clientData, void*) {
