@@ -230,9 +230,9 @@ struct ComparisonView::Impl {
   }
   void layoutPanel(Panel& panel, const PixelRect& rect, int width, int height, int font);
   /// Lays out a band of text across the window (the header, the explanation): the font
-  /// `size`, smaller while the text is wider than the window, or (`wrap`) the lines
-  /// wrapped to the window's width (the font smaller only past four lines); returns the
-  /// band's height.
+  /// `size`, smaller while the text is wider than the window (and wrapped when it still is
+  /// at 8 pixels), or (`wrap`) the lines wrapped to the window's width (the font smaller
+  /// only past four lines); returns the band's height.
   int layoutBand(vtkRenderer* band, vtkTextActor* text, const std::vector<std::string>& lines,
                  int size, const double colour[3], int y, int width, int height, bool top,
                  bool wrap) const;
@@ -319,6 +319,13 @@ int ComparisonView::Impl::layoutBand(vtkRenderer* band, vtkTextActor* text,
     const std::string caption = joinLines(shown);
     if (size <= 8) break;
     if (wrap ? shown.size() <= 4 : textSize(p, caption).first <= width - 2 * margin) break;
+  }
+  // Still too wide at the smallest font (a narrow window): wrapped rather than cut off.
+  if (!wrap && textSize(p, joinLines(shown)).first > width - 2 * margin) {
+    shown.clear();
+    for (const std::string& line : lines)
+      for (const std::string& piece : wrapToWidth(p, line, width - 2 * margin))
+        shown.push_back(piece);
   }
   text->SetInput(joinLines(shown).c_str());
   p->SetVerticalJustificationToCentered();
