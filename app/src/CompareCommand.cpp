@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace raylab::app {
@@ -89,14 +90,13 @@ int runCompare(const CompareOptions& options, const std::string& topLevelScene) 
       options.json.empty() ? replaceExtension(options.common.out, ".json") : options.json;
   // Every input and output checked before the renders, and before the display: bad input
   // is reported (exit 1 or 2) the same with or without an X server.
-  for (const std::string& path : {options.common.out, json})
-    if (const auto problem = cannotWrite(path)) throw WriteError(path + ": " + *problem);
-  options.reference.checkFile();
+  for (const std::string& path : {options.common.out, json}) checkWritable(path);
+  std::optional<FloatImage> reference = options.reference.load();
   vis::requireDisplay();  // before the renders: the picture needs it
 
   // Step 2: the renders, then the trees of the chosen pixel (sample 0, same seed).
   const ComparisonResult result =
-      runComparison(scene, settings, compare, options.reference, "compare");
+      runComparison(scene, settings, compare, options.reference, std::move(reference), "compare");
   vis::ComparisonViewOptions viewOptions;
   viewOptions.columns = options.columns;
   viewOptions.showTimes = !options.hideTimes;
@@ -112,9 +112,8 @@ int runCompare(const CompareOptions& options, const std::string& topLevelScene) 
   }
 
   // Step 3: the picture and the figures; each file complete or not at all, and neither
-  // replaced when the other cannot be written.
-  for (const std::string& path : {options.common.out, json})
-    if (const auto problem = cannotWrite(path)) throw WriteError(path + ": " + *problem);
+  // replaced when the other cannot be written (checked again: the renders took a while).
+  for (const std::string& path : {options.common.out, json}) checkWritable(path);
   view.renderToPng(options.common.out, picture->first, picture->second);
   writeTextFile(json, comparisonJson(result));
   std::cout << options.common.out << "\n" << json << "\n";
@@ -133,10 +132,14 @@ void fitDefaultCompareSize(const CommonOptions& common, Scene& scene) {
   scene.camera.height = std::max(1, int(scene.camera.height * scale + 0.5));
 }
 
-void ReferenceOptions::checkFile() const {
-  if (!file.empty()) (void)imageio::readPfm(file);
-  if (!saveAs.empty())
-    if (const auto problem = cannotWrite(saveAs)) throw WriteError(saveAs + ": " + *problem);
+void checkWritable(const std::string& path) {
+  if (const auto problem = cannotWrite(path)) throw WriteError(path + ": " + *problem);
+}
+
+std::optional<FloatImage> ReferenceOptions::load() const {
+  if (!saveAs.empty()) checkWritable(saveAs);
+  if (file.empty()) return std::nullopt;
+  return imageio::readPfm(file);
 }
 
 void ReferenceOptions::add(CLI::App* command, const std::string& pictureDefault) {
@@ -171,10 +174,10 @@ void ReferenceOptions::add(CLI::App* command, const std::string& pictureDefault)
 
 ComparisonResult runComparison(const Scene& scene, const RenderSettings& settings,
                                ComparisonSettings compare, const ReferenceOptions& reference,
-                               const std::string& label) {
+                               std::optional<FloatImage> image, const std::string& label) {
   Comparison comparison(scene, settings, compare);
-  if (!reference.file.empty()) {
-    comparison.setReference(imageio::readPfm(reference.file), reference.file);
+  if (image) {
+    comparison.setReference(std::move(*image), reference.file);
   } else if (!reference.noCache) {
     comparison.setReferenceCache(reference.cacheDir.empty()
                                      ? ReferenceCache::fromEnvironment()

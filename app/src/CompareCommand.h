@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 namespace raylab::app {
@@ -36,10 +37,13 @@ struct ReferenceOptions {
   /// Adds --reference, --reference-spp, --save-reference, --no-cache, --cache-dir,
   /// --threads and --picture (`pictureDefault`, e.g. "1920x1080") to `command`.
   void add(CLI::App* command, const std::string& pictureDefault);
-  /// Throws what reading --reference or writing --save-reference would, before any render
-  /// (the reference is read here once more, later: the price of failing first).
-  void checkFile() const;
+  /// Before any render, so that bad input fails first: the --reference image (nothing
+  /// without one), and --save-reference checked writable. Throws naming the file.
+  std::optional<FloatImage> load() const;
 };
+
+/// Throws a WriteError naming `path` when it cannot be written (cannotWrite).
+void checkWritable(const std::string& path);
 
 /// The image size `compare` and `plot` render at when --size is not given: the scene's
 /// size fitted inside 160x120 (aspect ratio kept), so a first comparison, reference
@@ -48,13 +52,13 @@ constexpr int kDefaultCompareWidth = 160, kDefaultCompareHeight = 120;
 /// Fits `scene`'s camera inside the default size unless `common` has a --size.
 void fitDefaultCompareSize(const CommonOptions& common, Scene& scene);
 
-/// Runs the comparison with a ProgressBar labelled `label`, reading or saving the
-/// reference as `reference` says (through the ReferenceCache unless --no-cache or
-/// --reference; a cache problem is a note on stderr, never a failure). Throws
-/// raylab::Exception subtypes naming the files.
+/// Runs the comparison with a ProgressBar labelled `label`, measuring against `image` (what
+/// reference.load() read) or else a reference rendered, through the ReferenceCache unless
+/// --no-cache (a cache problem is a note on stderr, never a failure), and saved as
+/// `reference` says. Throws raylab::Exception subtypes naming the files.
 ComparisonResult runComparison(const Scene& scene, const RenderSettings& settings,
                                ComparisonSettings compare, const ReferenceOptions& reference,
-                               const std::string& label);
+                               std::optional<FloatImage> image, const std::string& label);
 
 /// Prints one line per algorithm: spp, time, rays and error (and the reference line).
 void printFigures(const ComparisonResult& result, std::ostream& out);

@@ -31,7 +31,6 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
-#include <cstdint>
 
 namespace raylab::app {
 
@@ -104,18 +103,18 @@ ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_status);
 
   // Step 2: the comparison, and the convergence plot under it.
-  auto* split = m_split = new QSplitter(Qt::Vertical);
+  m_split = new QSplitter(Qt::Vertical);
   m_widget = vtkWidget();
   m_widget->installEventFilter(this);
   m_widget->setToolTip(tr("Click a pixel of any image to trace it with all four algorithms"));
   m_plotWidget = vtkWidget();
   m_plotWidget->installEventFilter(this);
   m_plotWidget->hide();
-  split->addWidget(m_widget);
-  split->addWidget(m_plotWidget);
-  split->setStretchFactor(0, 3);
-  split->setStretchFactor(1, 2);
-  layout->addWidget(split, 1);
+  m_split->addWidget(m_widget);
+  m_split->addWidget(m_plotWidget);
+  m_split->setStretchFactor(0, 3);
+  m_split->setStretchFactor(1, 2);
+  layout->addWidget(m_split, 1);
 
   connect(m_mode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
     const bool time = m_mode->currentData().toBool();
@@ -284,17 +283,12 @@ void ComparePanel::ended(int generation, const std::shared_ptr<const ComparisonR
   m_status->setText(cancelled ? tr("Cancelled") : tr("Done") + reference);
   emit statusChanged(cancelled ? tr("Comparison cancelled") : tr("Comparison done") + reference);
   updateControls();
-  if (!cancelled && m_traceWhenDone && m_resultScene) {
-    const auto [x, y, width, height] = *m_traceWhenDone;
-    const Scene& scene = *m_resultScene;
-    traceAll(int(std::int64_t(x) * scene.camera.width / std::max(1, width)),
-             int(std::int64_t(y) * scene.camera.height / std::max(1, height)));
-  }
+  if (!cancelled && m_traceWhenDone) traceAll(m_traceWhenDone->first, m_traceWhenDone->second);
   emit comparisonEnded(cancelled);
 }
 
-void ComparePanel::traceWhenDone(std::optional<std::array<int, 4>> pixelOfImage) {
-  m_traceWhenDone = pixelOfImage;
+void ComparePanel::traceWhenDone(std::optional<std::pair<int, int>> pixel) {
+  m_traceWhenDone = pixel;
 }
 
 void ComparePanel::redraw() {

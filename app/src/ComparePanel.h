@@ -6,7 +6,6 @@
 
 #include <QWidget>
 
-#include <array>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -69,9 +68,9 @@ class ComparePanel : public QWidget {
   /// Traces pixel (x, y) with every algorithm compared and shows the trees beside the
   /// images (what a click on a panel does). False without a comparison.
   bool traceAll(int x, int y);
-  /// When the next comparison ends complete, traces pixel (x, y) of an image of `width` x
-  /// `height` (scaled to the compared image's size) as a click would; nothing to forget it.
-  void traceWhenDone(std::optional<std::array<int, 4>> pixelOfImage);
+  /// When the next comparison ends complete, traces `pixel` (of the scene camera's image,
+  /// the size compared) as a click would; nothing to forget it.
+  void traceWhenDone(std::optional<std::pair<int, int>> pixel);
   /// The pixel whose trees are shown, (-1, -1) when none.
   std::pair<int, int> tracedPixel() const { return m_traced; }
   /// The trees shown, one per algorithm (empty when none).
@@ -133,8 +132,8 @@ class ComparePanel : public QWidget {
   QProgressBar* m_progress = nullptr;
   QLabel* m_status = nullptr;
   QCheckBox* m_showPlot = nullptr;
-  QSplitter* m_split = nullptr;                       ///< The comparison above, the plot below.
-  std::optional<std::array<int, 4>> m_traceWhenDone;  ///< x, y, width, height.
+  QSplitter* m_split = nullptr;  ///< The comparison above, the plot below.
+  std::optional<std::pair<int, int>> m_traceWhenDone;
   QVTKOpenGLNativeWidget* m_widget = nullptr;
   QVTKOpenGLNativeWidget* m_plotWidget = nullptr;
 };

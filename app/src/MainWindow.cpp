@@ -590,15 +590,12 @@ void MainWindow::showLessonStep(int index) {
     // leaves the panels the whole height.
     m_comparePanel->setPlotShown(step.view == LessonView::Plot);
     // A step's pixel: its four trees beside the images once they are done, as in the handout.
-    if (step.pixelX && step.pixelY)
-      m_comparePanel->traceWhenDone(std::array<int, 4>{
-          *step.pixelX, *step.pixelY, step.scene->camera.width, step.scene->camera.height});
-    else
-      m_comparePanel->traceWhenDone(std::nullopt);
+    std::optional<std::pair<int, int>> pixel;
+    if (step.pixelX && step.pixelY) pixel = std::make_pair(*step.pixelX, *step.pixelY);
+    m_comparePanel->traceWhenDone(pixel);
     m_comparePanel->compare();
   }
   if (step.view == LessonView::Image) {
-    m_renderPanel->setAlgorithm(step.algorithm);
     m_renderPanel->setSamplesPerPixel(std::min(step.settings().samplesPerPixel, kLessonImageSpp));
     showImageTab(m_renderPanel);
     m_renderPanel->render();

@@ -3,15 +3,14 @@
 #include "CompareCommand.h"
 #include "ExitCodes.h"
 
-#include "raylab/core/AtomicFile.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/FilePaths.h"
-#include "raylab/core/Image.h"
 #include "raylab/vis/ConvergencePlot.h"
 #include "raylab/vis/Display.h"
 
 #include <iostream>
 #include <memory>
+#include <utility>
 
 namespace raylab::app {
 
@@ -28,9 +27,8 @@ struct PlotOptions {
 int runPlot(const PlotOptions& options, const std::string& topLevelScene) {
   // Step 1: every algorithm up to --max-spp; each pass is a point of its curve.
   Scene scene = options.common.loadScene(topLevelScene);
-  if (const auto problem = cannotWrite(options.common.out))
-    throw imageio::WriteError(options.common.out + ": " + *problem);
-  options.reference.checkFile();
+  checkWritable(options.common.out);
+  std::optional<FloatImage> reference = options.reference.load();
   vis::requireDisplay();  // before the renders: the plot needs it
   fitDefaultCompareSize(options.common, scene);
   const RenderSettings settings = options.common.settings(scene);
@@ -39,7 +37,7 @@ int runPlot(const PlotOptions& options, const std::string& topLevelScene) {
   compare.threads = options.reference.threads;
   compare.referenceSamplesPerPixel = options.reference.samples;
   const ComparisonResult result =
-      runComparison(scene, settings, compare, options.reference, "plot");
+      runComparison(scene, settings, compare, options.reference, std::move(reference), "plot");
 
   // Step 2: the plot, then the series; each file complete or not at all.
   const auto picture = parseSize(options.reference.picture);

@@ -42,11 +42,13 @@ void setInput(vtkActor* actor, vtkPolyData* data) {
   static_cast<vtkPolyDataMapper*>(actor->GetMapper())->SetInputData(data);
 }
 
-/// Behind the legend's words: the 3D view's background (SceneView's kBackground).
-constexpr double kLegendBackdrop[3] = {0.12, 0.13, 0.16};
+/// How much of the view's background shows behind the legend's words.
 constexpr double kLegendBackdropOpacity = 0.75;
 
-void styleText(vtkTextProperty* text, const double colour[3]) {
+/// The legend's text: `colour` on a backdrop of the view's `background`, mostly opaque, so
+/// the yellow, violet and orange words stay readable where a close-up puts a grey wall
+/// behind them.
+void styleText(vtkTextProperty* text, const double colour[3], const Vec3& background) {
   text->SetColor(colour[0], colour[1], colour[2]);
   text->SetFontFamilyToArial();
   text->BoldOff();
@@ -54,9 +56,7 @@ void styleText(vtkTextProperty* text, const double colour[3]) {
   text->ShadowOff();
   text->SetJustificationToLeft();
   text->SetVerticalJustificationToBottom();
-  // On the view's dark slate, mostly opaque: the legend's yellow, violet and orange words
-  // stay readable where a close-up puts a grey wall behind them.
-  text->SetBackgroundColor(kLegendBackdrop[0], kLegendBackdrop[1], kLegendBackdrop[2]);
+  text->SetBackgroundColor(background.x, background.y, background.z);
   text->SetBackgroundOpacity(kLegendBackdropOpacity);
 }
 
@@ -114,11 +114,11 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
 
   // The legend: a title, then a colour bar (energy) or coloured names (kinds, depths).
   m_legendTitle = vtkSmartPointer<vtkTextActor>::New();
-  styleText(m_legendTitle->GetTextProperty(), kLegendText);
+  styleText(m_legendTitle->GetTextProperty(), kLegendText, m_background);
   m_legendTitle->GetTextProperty()->BoldOn();
   for (auto& entry : m_legendEntries) {
     entry = vtkSmartPointer<vtkTextActor>::New();
-    styleText(entry->GetTextProperty(), kLegendText);
+    styleText(entry->GetTextProperty(), kLegendText, m_background);
     entry->GetTextProperty()->BoldOn();
   }
   m_energyBar = vtkSmartPointer<vtkScalarBarActor>::New();
@@ -130,10 +130,10 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_energyBar->SetTitle("");
   m_energyBar->SetLabelFormat("%g");
   m_energyBar->DrawAnnotationsOff();
-  styleText(m_energyBar->GetLabelTextProperty(), kLegendText);
+  styleText(m_energyBar->GetLabelTextProperty(), kLegendText, m_background);
   for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
     m_energyWords[i] = vtkSmartPointer<vtkTextActor>::New();
-    styleText(m_energyWords[i]->GetTextProperty(), kLegendText);
+    styleText(m_energyWords[i]->GetTextProperty(), kLegendText, m_background);
     m_energyWords[i]->GetTextProperty()->SetVerticalJustificationToCentered();
   }
   m_energyBar->GetLabelTextProperty()->SetVerticalJustificationToCentered();
