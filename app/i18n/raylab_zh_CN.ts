@@ -2401,6 +2401,12 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
         <translation>%1：手工指定的光线，从 %2 出发，方向为 %3
 %4</translation>
     </message>
+    <message numerus="yes">
+        <source>The filters hide %n of these rays.</source>
+        <translation>
+            <numerusform>其中 %n 条光线被筛选条件隐藏。</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::RenderPanel</name>

@@ -138,8 +138,16 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   }
   const RenderSettings settings = o.common.settings(scene);
 
-  // Step 2: the tree, its view and the frames to write (once they can be drawn).
-  vis::requireDisplay();
+  // Step 2: the folder for the frames (its problems first), then the tree, its view and the
+  // frames to write (once they can be drawn).
+  const std::filesystem::path dir(o.common.out);
+  const std::string missing = firstMissingFolder(o.common.out);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw AnimateError(o.common.out + ": cannot create the folder for the frames (" +
+                       (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  requireDisplayAfterFolder(missing);
   const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
   const RayTree& tree = trace.tree;
   const vis::AnimationSettings animation = o.animation();
@@ -149,12 +157,6 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   std::vector<int> frames;
   for (int f = first; f <= last; f += options.every) frames.push_back(f);
 
-  const std::filesystem::path dir(o.common.out);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw AnimateError(o.common.out + ": cannot create the folder for the frames (" +
-                       (ec ? ec.message() : std::string("a file of that name exists")) + ")");
   const int digits = std::max(4, int(std::to_string(total - 1).size()));
   const auto frameFile = [&](int frame) {
     std::ostringstream name;

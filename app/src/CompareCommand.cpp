@@ -132,10 +132,6 @@ void fitDefaultCompareSize(const CommonOptions& common, Scene& scene) {
   scene.camera.height = std::max(1, int(scene.camera.height * scale + 0.5));
 }
 
-void checkWritable(const std::string& path) {
-  if (const auto problem = cannotWrite(path)) throw WriteError(path + ": " + *problem);
-}
-
 std::optional<FloatImage> ReferenceOptions::load() const {
   if (!saveAs.empty()) checkWritable(saveAs);
   if (file.empty()) return std::nullopt;

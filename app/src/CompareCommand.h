@@ -42,9 +42,6 @@ struct ReferenceOptions {
   std::optional<FloatImage> load() const;
 };
 
-/// Throws a WriteError naming `path` when it cannot be written (cannotWrite).
-void checkWritable(const std::string& path);
-
 /// The image size `compare` and `plot` render at when --size is not given: the scene's
 /// size fitted inside 160x120 (aspect ratio kept), so a first comparison, reference
 /// included, takes seconds; the picture shows each pixel enlarged.

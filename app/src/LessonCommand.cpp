@@ -534,8 +534,10 @@ int runRender(const LessonOptions& o) {
   const std::string path = resolveLesson(o);
   const Lesson lesson = LessonIO::load(path);
   const Language language = *parseLanguage(o.lang);
-  vis::requireDisplay();  // before the folder and the first picture
+  // The folder's problems first, then the display's (without one, nothing stays behind).
+  const std::string missing = firstMissingFolder(o.out);
   prepareFolder(o.out);
+  requireDisplayAfterFolder(missing);
   std::optional<std::pair<int, int>> size;  // (assigned, not ?:, which GCC 12 misreads)
   if (!o.size.empty()) size = parseSize(o.size);
   std::string md = "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n";

@@ -62,6 +62,12 @@ namespace raylab::app {
 
 namespace {
 
+/// The same camera, exactly: the view's camera still where a framing left it.
+bool sameCamera(const vis::ViewCamera& a, const vis::ViewCamera& b) {
+  return a.eye == b.eye && a.focalPoint == b.focalPoint && a.up == b.up &&
+         a.viewAngle == b.viewAngle;
+}
+
 /// Pixels a vertical scroll bar takes beside a panel.
 constexpr int kScrollBarRoom = 24;
 /// How many files Open Recent lists.
@@ -153,6 +159,8 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
   m_splitter->setStretchFactor(1, 1);
   m_splitter->setChildrenCollapsible(false);
   setCentralWidget(m_splitter);
+  // Framed for the view's shape once the window is laid out (frameView).
+  frameView([this](double aspect) { return vis::defaultViewCamera(m_view->scene(), aspect); });
   connect(m_renderPanel, &RenderPanel::pixelChosen, this,
           [this](Algorithm a, int x, int y) { tracePixel(a, x, y); });
   connect(m_renderPanel, &RenderPanel::statusChanged, this,
@@ -518,14 +526,16 @@ void MainWindow::showLessonStep(int index) {
 
   // Step 1: the step's scene, as a new document (its changes are the lesson's, not edits).
   m_document->adopt(*step.scene, {});
-  const double aspect =
-      m_vtkWidget->height() > 0 ? double(m_vtkWidget->width()) / m_vtkWidget->height() : 1.0;
-  if (step.cameraView == LessonCameraView::Camera)
-    m_view->setViewCamera(vis::behindCameraView(*step.scene, aspect));
-  else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
-    m_view->setViewCamera(vis::closeUpView(*step.scene, step.bvh->object, aspect));
-  else
-    m_view->resetViewCamera(aspect);
+  if (step.cameraView == LessonCameraView::Camera) {
+    frameView([this](double aspect) { return vis::behindCameraView(m_view->scene(), aspect); });
+  } else if (step.cameraView == LessonCameraView::CloseUp && step.bvh) {
+    const int object = step.bvh->object;
+    frameView([this, object](double aspect) {
+      return vis::closeUpView(m_view->scene(), object, aspect);
+    });
+  } else {
+    frameView([this](double aspect) { return vis::defaultViewCamera(m_view->scene(), aspect); });
+  }
 
   // Step 2: the ray-tree panel's algorithm, colours and filters, and the step's pixel.
   RayTreePanel& rays = *m_rayPanel;
@@ -898,11 +908,20 @@ void MainWindow::addObject(const QString& what, const std::function<Scene(const 
 }
 
 void MainWindow::resetView() {
-  const double aspect = m_vtkWidget->height() > 0
-                            ? static_cast<double>(m_vtkWidget->width()) / m_vtkWidget->height()
-                            : 1.0;
-  m_view->resetViewCamera(aspect);
+  frameView([this](double aspect) { return vis::defaultViewCamera(m_view->scene(), aspect); });
   render();
+}
+
+double MainWindow::viewAspect() const {
+  return m_vtkWidget->height() > 0 && m_vtkWidget->width() > 0
+             ? double(m_vtkWidget->width()) / m_vtkWidget->height()
+             : 1.0;
+}
+
+void MainWindow::frameView(std::function<vis::ViewCamera(double)> frame) {
+  m_frame = std::move(frame);
+  m_view->setViewCamera(m_frame(viewAspect()));
+  m_framed = m_view->viewCamera();
 }
 
 void MainWindow::render() {
@@ -951,6 +970,12 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
   // A left click that does not drag picks a ray or an object; the trackball still sees
   // every event.
   if (watched == m_vtkWidget) {
+    if (event->type() == QEvent::Resize && m_frame && m_framed &&
+        sameCamera(m_view->viewCamera(), *m_framed)) {
+      // Framed for another shape (often the layout before it settled): framed again.
+      m_view->setViewCamera(m_frame(viewAspect()));
+      m_framed = m_view->viewCamera();
+    }
     if (event->type() == QEvent::MouseButtonPress) {
       const auto* mouse = static_cast<QMouseEvent*>(event);
       m_pressed = mouse->button() == Qt::LeftButton;
@@ -1003,8 +1028,7 @@ bool MainWindow::openFile(const QString& path, bool ask) {
     return false;
   }
   rememberFile(path);
-  m_view->resetViewCamera(
-      m_vtkWidget->height() > 0 ? double(m_vtkWidget->width()) / m_vtkWidget->height() : 1.0);
+  frameView([this](double aspect) { return vis::defaultViewCamera(m_view->scene(), aspect); });
   statusBar()->showMessage(tr("Opened %1").arg(path));
   render();
   return true;

@@ -1,11 +1,13 @@
 #pragma once
 
 #include "raylab/core/Scene.h"
+#include "raylab/vis/ViewCamera.h"
 
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QStringList>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -182,6 +184,13 @@ class MainWindow : public QMainWindow {
   void restoreLayout();
   void showSelection(int row);
   void resetView();
+  /// The 3D view framed by `frame` (a camera for the view's aspect): now, and again whenever
+  /// the view changes shape while the camera is still where the last framing put it (the
+  /// window's layout settles after a lesson step or a file is shown; docks open and close).
+  /// A camera the user has turned or zoomed stays.
+  void frameView(std::function<vis::ViewCamera(double aspect)> frame);
+  /// The 3D view's width / height (1 before it has a size).
+  double viewAspect() const;
   void render();
   /// After any change of the scene: the view, the list, a traced tree retraced.
   void sceneChanged();
@@ -227,7 +236,9 @@ class MainWindow : public QMainWindow {
   int m_selected = -1;
   QString m_lastError;
   std::optional<QMessageBox::StandardButton> m_unsavedAnswer;
-  QPoint m_pressPosition;  ///< Where the left button went down in the view.
+  std::function<vis::ViewCamera(double)> m_frame;  ///< The last framing (frameView).
+  std::optional<vis::ViewCamera> m_framed;         ///< The camera it gave, as read back.
+  QPoint m_pressPosition;                          ///< Where the left button went down in the view.
   bool m_pressed = false;
   bool m_handedOver = false;  ///< takeDocument() was called: close without asking.
 

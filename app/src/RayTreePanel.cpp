@@ -463,7 +463,7 @@ void RayTreePanel::trace() {
                                   .arg(traceSummary(trace));
   if (trace.tree.truncated)
     info += QStringLiteral("\n") + QString::fromStdString(trace.tree.message);
-  m_traceInfo->setText(info);
+  setTraceInfo(info);
   showTrace();
 }
 
@@ -504,7 +504,7 @@ void RayTreePanel::simulate() {
                      .arg(grid.traces.size())
                      .arg(grid.combined.segments.size());
   if (grid.truncated) info += QStringLiteral("\n") + QString::fromStdString(grid.message);
-  m_traceInfo->setText(info);
+  setTraceInfo(info);
   showTrace();
   if (grid.truncated) setStatus(QString::fromStdString(grid.message));
 }
@@ -538,7 +538,7 @@ void RayTreePanel::traceBundleOf(const std::shared_ptr<const Scene>& copy,
                      .arg(first + int(bundle.traces.size()) - 1)
                      .arg(bundle.combined.segments.size());
   if (bundle.truncated) info += QStringLiteral("\n") + QString::fromStdString(bundle.message);
-  m_traceInfo->setText(info);
+  setTraceInfo(info);
   showTrace();
 }
 
@@ -590,7 +590,7 @@ void RayTreePanel::clearTrace() {
   m_view.clearRayTree();
   m_view.clearCrossings();
   m_crossingsText.clear();
-  m_traceInfo->clear();
+  setTraceInfo(QString());
   updateFrameControls();
   emit treeChanged();
   emit segmentSelected(-1);
@@ -654,7 +654,33 @@ vis::AnimationSettings RayTreePanel::animation() const {
 void RayTreePanel::restyle() {
   if (tree().segments.empty()) return;
   m_view.setRayTreeStyle(treeStyle());
+  showTraceInfo();
   showFrame();
+}
+
+void RayTreePanel::setTraceInfo(const QString& summary) {
+  m_traceSummary = summary;
+  showTraceInfo();
+}
+
+void RayTreePanel::showTraceInfo() {
+  QString text = m_traceSummary;
+  const int hidden = hiddenRays();
+  if (hidden > 0)
+    text += QStringLiteral("\n") + tr("The filters hide %n of these rays.", nullptr, hidden);
+  m_traceInfo->setText(text);
+}
+
+QString RayTreePanel::traceInfoText() const { return m_traceInfo->text(); }
+
+int RayTreePanel::hiddenRays() const {
+  const RayTree& t = tree();
+  if (t.segments.empty()) return 0;
+  const vis::RayFilter filter = treeStyle().filter;
+  const std::vector<bool> light = vis::reachesLight(t);
+  int hidden = 0;
+  for (int id = 0; id < int(t.segments.size()); ++id) hidden += !filter.passes(t, id, light);
+  return hidden;
 }
 
 int RayTreePanel::frameCount() const { return vis::frameCount(tree(), animation()); }

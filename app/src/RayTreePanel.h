@@ -126,6 +126,11 @@ class RayTreePanel : public QWidget {
 
   /// The status line: what the last step did.
   QString statusText() const;
+  /// The trace's summary under the Trace button (algorithm, pixel, rays by kind) and, when the
+  /// filters hide some of its rays, how many: the status line and the summary count them all.
+  QString traceInfoText() const;
+  /// Rays of the tree shown that the filters (kinds, depth, energy, reaching light) hide.
+  int hiddenRays() const;
 
   /// \name Controls, for tests and for the window's option handling.
   /// @{
@@ -177,6 +182,9 @@ class RayTreePanel : public QWidget {
   QWidget* buildAnimationGroup();
   /// Redraws the tree with the controls' style and the current frame.
   void restyle();
+  /// m_traceInfo: `summary`, then the filters' line (showTraceInfo).
+  void setTraceInfo(const QString& summary);
+  void showTraceInfo();
   /// Shows frame m_frame (reveal, slider, labels, status).
   void showFrame();
   void setStatus(const QString& text);
@@ -218,6 +226,7 @@ class RayTreePanel : public QWidget {
   QLabel* m_crossingsLabel = nullptr;
   QPushButton* m_traceButton = nullptr;
   QLabel* m_traceInfo = nullptr;
+  QString m_traceSummary;  ///< m_traceInfo's text before the filters' line (showTraceInfo).
   QComboBox* m_colouring = nullptr;
   std::array<QCheckBox*, kRayKindCount> m_kinds{};
   QSpinBox* m_maxDepth = nullptr;

@@ -18,6 +18,7 @@ Subcommand addSnapshotCommand(CLI::App& cli) {
                /*outRequired=*/true, /*withAlgorithm=*/false);
   return {command, [options](const std::string& topLevelScene) {
             const Scene scene = options->loadScene(topLevelScene);
+            checkWritable(options->out);
             vis::requireDisplay();
             const auto [width, height] = options->size.value_or(std::make_pair(300, 300));
             vis::SceneView view(scene);

@@ -1,13 +1,17 @@
 #include "Subcommand.h"
 
 #include "SceneSource.h"
+#include "raylab/core/AtomicFile.h"
+#include "raylab/core/Exception.h"
 #include "raylab/core/Limits.h"
 #include "raylab/core/Text.h"
+#include "raylab/vis/Display.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -23,6 +27,31 @@ std::string cappedSamplesWarning(std::uint64_t count) {
 }
 
 std::string printable(const std::string& text) { return printableText(text); }
+
+void checkWritable(const std::string& path) {
+  if (const auto problem = cannotWrite(path)) throw Exception(path + ": " + *problem);
+}
+
+std::string firstMissingFolder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path missing = fs::absolute(dir, ec);
+  if (ec || fs::exists(missing, ec)) return {};
+  while (missing.has_parent_path() && missing.parent_path() != missing &&
+         !fs::exists(missing.parent_path(), ec))
+    missing = missing.parent_path();
+  return missing.string();
+}
+
+void requireDisplayAfterFolder(const std::string& missing) {
+  try {
+    vis::requireDisplay();
+  } catch (...) {
+    std::error_code ec;
+    if (!missing.empty()) std::filesystem::remove_all(missing, ec);
+    throw;
+  }
+}
 
 namespace {
 constexpr int kMinSize = 16;

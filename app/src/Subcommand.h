@@ -16,6 +16,18 @@ class Option;
 
 namespace raylab::app {
 
+/// Throws an Exception naming `path` when it cannot be written (cannotWrite): a command checks
+/// its outputs before it renders, and before it asks for a display.
+void checkWritable(const std::string& path);
+/// Runs vis::requireDisplay after a command made its output folder `dir` (so that the folder's
+/// own problem is reported first, with or without a display): when there is no display, the
+/// folders that making `dir` added are removed again, and nothing stays behind. `missing` is
+/// firstMissingFolder(dir), taken before the folder was made.
+void requireDisplayAfterFolder(const std::string& missing);
+/// The first of `dir` and its parents that does not exist, or "" when `dir` exists: what
+/// creating `dir` adds.
+std::string firstMissingFolder(const std::string& dir);
+
 /// A subcommand of `raylab`: its CLI11 parser and what runs when it was chosen. The
 /// argument of `run` is the top-level `--scene` (so `raylab --scene F trace ...` works).
 struct Subcommand {

@@ -99,10 +99,18 @@ int writeTrees(const TraceOptions& options, const Scene& scene, const RenderSett
   return kExitOk;
 }
 
+/// The picture and the JSON checked writable, before the traces and the display.
+void checkOutputs(const TraceOptions& options) {
+  checkWritable(options.tree.common.out);
+  checkWritable(options.json.empty() ? replaceExtension(options.tree.common.out, ".json")
+                                     : options.json);
+}
+
 /// `raylab trace --grid NxM`: the window's Simulate, headless. Every tree of the grid in
 /// one picture, and one JSON document holding every tree's dump.
 int runGrid(const TraceOptions& options, const Scene& scene, const RenderSettings& settings) {
   const auto grid = gridSize(options.grid);
+  checkOutputs(options);
   vis::requireDisplay();  // before the traces: the picture needs it
   const GridTrace traced = traceGrid(scene, settings, grid->first, grid->second);
   return writeTrees(options, scene, settings, traced, "grid",
@@ -152,6 +160,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     return kExitUsage;
   }
   const RenderSettings settings = o.common.settings(scene);
+  checkOutputs(options);
 
   if (options.bundle > 1) {
     if (options.frame >= 0 || options.allHits) {

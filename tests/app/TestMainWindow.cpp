@@ -166,13 +166,25 @@ TEST_F(MainWindowTest, 08_KindFilterChangesWhatIsDrawn) {
   // differently from one redraw to the next.
   panel.legendBox()->setChecked(false);
   const QImage all = grabView();
+  EXPECT_EQ(panel.hiddenRays(), 0);
+  EXPECT_FALSE(panel.traceInfoText().contains(QStringLiteral("filters hide")));
   panel.kindBox(RayKind::Shadow)->click();
   EXPECT_FALSE(m_window->sceneView().rayTreeStyle().filter.kinds[std::size_t(RayKind::Shadow)]);
   const QImage noShadows = grabView();
   EXPECT_NE(all, noShadows);
+  // The summary under Trace counts every ray; a line says how many the filters hide.
+  int shadows = 0;
+  for (const RaySegment& s : panel.tree().segments) shadows += s.kind == RayKind::Shadow;
+  ASSERT_GT(shadows, 0);
+  EXPECT_EQ(panel.hiddenRays(), shadows);
+  EXPECT_TRUE(panel.traceInfoText().endsWith(
+      QStringLiteral("The filters hide %1 of these rays.").arg(shadows)))
+      << panel.traceInfoText().toStdString();
   panel.kindBox(RayKind::Shadow)->click();
   EXPECT_TRUE(m_window->sceneView().rayTreeStyle().filter.kinds[std::size_t(RayKind::Shadow)]);
   EXPECT_EQ(grabView(), all);
+  EXPECT_EQ(panel.hiddenRays(), 0);
+  EXPECT_FALSE(panel.traceInfoText().contains(QStringLiteral("filters hide")));
 
   // The other controls reach the style too.
   panel.maxDepthBox()->setValue(0);
@@ -715,6 +727,37 @@ TEST_F(MainWindowTest, 20_PresentationModeAndItsKeys) {
   EXPECT_FALSE(m_window->presentationMode());
   EXPECT_EQ(m_window->rayTreePanel()->font().toString(), textBefore);
   EXPECT_EQ(panel.lineScale(), 1.0);
+}
+
+// The 3D view is framed for its own shape, also after the window changes it (the layout
+// settling after a lesson step, a dock closed): the default view fits the view's aspect. A
+// camera the user has turned stays where it is.
+TEST_F(MainWindowTest, 20b_TheViewIsFramedAgainWhenItChangesShape) {
+  QWidget* w = m_window->viewWidget();
+  const auto aspect = [w] { return double(w->width()) / w->height(); };
+  const auto expectFramed = [&] {
+    const vis::ViewCamera want = vis::defaultViewCamera(m_window->document().scene(), aspect());
+    const vis::ViewCamera got = m_window->sceneView().viewCamera();
+    EXPECT_LT(glm::length(got.eye - want.eye), 1e-9 * glm::length(want.eye))
+        << got.toString() << " against " << want.toString() << " at aspect " << aspect();
+    EXPECT_LT(glm::length(got.focalPoint - want.focalPoint), 1e-9);
+  };
+  expectFramed();
+  const double before = aspect();
+  m_window->imageTabs()->show();  // the image beside the view: a narrower view
+  settle();
+  ASSERT_GT(std::abs(aspect() - before), 0.1);
+  expectFramed();
+  m_window->imageTabs()->hide();
+  settle();
+  expectFramed();
+
+  // Turned by the user: a change of shape leaves the camera alone.
+  drag(QPoint(w->width() / 2, w->height() / 2), QPoint(w->width() / 2 + 80, w->height() / 2));
+  const vis::ViewCamera turned = m_window->sceneView().viewCamera();
+  m_window->imageTabs()->show();
+  settle();
+  EXPECT_EQ(m_window->sceneView().viewCamera().eye, turned.eye);
 }
 
 TEST_F(MainWindowTest, 21_EveryActionHasATooltipAndTheShortcutTableListsThem) {
