@@ -57,7 +57,7 @@
     </message>
     <message>
         <source>throughput</source>
-        <translation>通量权重</translation>
+        <translation>路径吞吐量</translation>
     </message>
     <message>
         <source>emitted</source>
@@ -698,7 +698,7 @@
     </message>
     <message>
         <source>none</source>
-        <translation>无（蛮力求交）</translation>
+        <translation>无（暴力求交）</translation>
     </message>
     <message>
         <source>sah</source>
@@ -2078,7 +2078,7 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     </message>
     <message>
         <source>How rays search the meshes: bvh (through their bounding volume hierarchy) or none (brute force, every triangle; the same image, slower)</source>
-        <translation>光线如何在网格中求交：bvh（通过包围盒层次结构）或 none（蛮力求交，逐一检验每个三角形；图像相同，但更慢）</translation>
+        <translation>光线如何在网格中求交：bvh（通过包围盒层次结构）或 none（暴力求交，逐一检验每个三角形；图像相同，但更慢）</translation>
     </message>
     <message>
         <source>How the meshes&apos; hierarchies split their boxes: sah (surface area heuristic) or median (half of the triangles on each side); the same image</source>
@@ -2514,7 +2514,7 @@ Then click a pixel to see its ray tree.</source>
     </message>
     <message>
         <source>brute force, no BVH</source>
-        <translation>蛮力求交，不用包围盒层次结构</translation>
+        <translation>暴力求交，不用包围盒层次结构</translation>
     </message>
     <message>
         <source>BVH with median split</source>

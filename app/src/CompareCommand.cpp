@@ -53,16 +53,6 @@ struct CompareOptions {
 /// included, takes a few seconds on two cores.
 constexpr int kDefaultSpp = 4;
 
-/// A checker for file options: the name must end in `extension` (any case).
-CLI::Validator endsIn(const std::string& extension) {
-  return CLI::Validator(
-      [extension](const std::string& path) {
-        return lowerExtension(path) == extension ? std::string()
-                                                 : "the file name must end in " + extension;
-      },
-      "FILE");
-}
-
 int runCompare(const CompareOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the budget.
   Scene scene = options.common.loadScene(topLevelScene);

@@ -333,6 +333,17 @@ StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size) {
   return result;
 }
 
+/// The handout's note under a picture that --max-spp made with fewer samples than the step
+/// asks for (its text may describe the noise at `asked`).
+std::string cappedNote(int used, int asked, Language language) {
+  if (language == Language::Chinese)
+    return "此图按每像素 " + std::to_string(used) +
+           " 个样本渲染（受 --max-spp 限制），本步原本使用 " + std::to_string(asked) +
+           " 个；正文描述的是后者。";
+  return "Rendered at " + std::to_string(used) + " samples per pixel (capped by --max-spp); the " +
+         "step asks for " + std::to_string(asked) + ", which the text describes.";
+}
+
 /// The step's algorithm's image: the scene's size fitted inside `cap`, at most 64 spp
 /// unless the step sets the render block itself.
 StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int maxSpp,
@@ -345,10 +356,13 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int ma
       std::any_of(step.sceneChanges.begin(), step.sceneChanges.end(),
                   [](const std::string& c) { return c.find("\"render\"") != std::string::npos; });
   if (!stepSetsRender) settings.samplesPerPixel = std::min(settings.samplesPerPixel, kImageSppCap);
-  if (maxSpp > 0) settings.samplesPerPixel = std::min(settings.samplesPerPixel, maxSpp);
+  StepPicture result;
+  if (maxSpp > 0 && maxSpp < settings.samplesPerPixel) {
+    result.note = cappedNote(maxSpp, settings.samplesPerPixel, language);
+    settings.samplesPerPixel = maxSpp;
+  }
   Renderer renderer(scene, settings);
   const FloatImage image = renderer.render();
-  StepPicture result;
   result.image = imageio::toSrgb(image);
   // How the meshes were searched, and how fast (lesson 8 measures it live).
   const bool meshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const auto& o) {
@@ -376,10 +390,12 @@ ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot
   } else {
     compare.samplesPerPixel = kCompareSpp;
   }
-  if (maxSpp > 0) {  // a quick handout: fewer samples, the reference 16 x as many
-    compare.samplesPerPixel = std::min(compare.samplesPerPixel, maxSpp);
-    compare.referenceSamplesPerPixel =
-        std::min(compare.referenceSamplesPerPixel, 16 * std::min(compare.samplesPerPixel, maxSpp));
+  // A quick handout: fewer samples, the reference 16 x as many. An equal-time comparison
+  // keeps its time budget: capped, the cheap algorithms would lose the samples it is about.
+  if (maxSpp > 0) {
+    const bool equalTime = !plot && step.measure == LessonMeasure::Time;
+    if (!equalTime) compare.samplesPerPixel = std::min(compare.samplesPerPixel, maxSpp);
+    compare.referenceSamplesPerPixel = std::min(compare.referenceSamplesPerPixel, 16 * maxSpp);
   }
   return Comparison(scene, step.settings(), compare).run();
 }

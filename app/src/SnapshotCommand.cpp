@@ -16,6 +16,7 @@ Subcommand addSnapshotCommand(CLI::App& cli) {
       cli.add_subcommand("snapshot", "Render the window's 3D view offscreen to a PNG file");
   options->add(command, "PNG file to write", "Picture size WIDTHxHEIGHT (default: 300x300)",
                /*outRequired=*/true, /*withAlgorithm=*/false);
+  command->get_option("--out")->check(endsIn(".png"));
   return {command, [options](const std::string& topLevelScene) {
             const Scene scene = options->loadScene(topLevelScene);
             checkWritable(options->out);

@@ -3,6 +3,7 @@
 #include "SceneSource.h"
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"
+#include "raylab/core/FilePaths.h"
 #include "raylab/core/Limits.h"
 #include "raylab/core/Text.h"
 #include "raylab/vis/Display.h"
@@ -27,6 +28,15 @@ std::string cappedSamplesWarning(std::uint64_t count) {
 }
 
 std::string printable(const std::string& text) { return printableText(text); }
+
+CLI::Validator endsIn(const std::string& extension) {
+  return CLI::Validator(
+      [extension](const std::string& path) {
+        return lowerExtension(path) == extension ? std::string()
+                                                 : "the file name must end in " + extension;
+      },
+      "FILE");
+}
 
 void checkWritable(const std::string& path) {
   if (const auto problem = cannotWrite(path)) throw Exception(path + ": " + *problem);

@@ -12,10 +12,14 @@
 namespace CLI {
 class App;
 class Option;
+class Validator;
 }  // namespace CLI
 
 namespace raylab::app {
 
+/// A checker for file options: the name must end in `extension` (any case), e.g. ".png" for
+/// the commands that write PNG pictures only.
+CLI::Validator endsIn(const std::string& extension);
 /// Throws an Exception naming `path` when it cannot be written (cannotWrite): a command checks
 /// its outputs before it renders, and before it asks for a display.
 void checkWritable(const std::string& path);

@@ -382,6 +382,7 @@ Subcommand addTraceCommand(CLI::App& cli) {
       "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.");
   options->tree.add(command, "PNG file of the 3D view to write", "1024x768", false);
+  command->get_option("--out")->check(endsIn(".png"));
   command
       ->add_option("--bundle", options->bundle,
                    "Trace samples --sample .. --sample + N - 1 of the --pixel and draw them "

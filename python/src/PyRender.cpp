@@ -124,11 +124,36 @@ reached, the seconds, and whether it was cancelled.)");
   m.def(
       "write_image",
       [](const py::array& image, const std::string& path) {
+        // 8-bit pictures (view_image, to_srgb) are already sRGB: written as they are. Read
+        // as radiance, 128 would be 128 times white.
+        if (image.dtype().is(py::dtype::of<std::uint8_t>())) {
+          if (image.ndim() != 3 || image.shape(2) != 3)
+            throw py::value_error("image must be an H x W x 3 array, not of shape " +
+                                  py::str(py::getattr(image, "shape")).cast<std::string>());
+          const std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : path;
+          if (ext != ".png" && ext != ".PNG")
+            throw py::value_error(path +
+                                  ": an 8-bit sRGB picture (uint8, as view_image and to_srgb "
+                                  "give) is written as .png; .ppm and .pfm take linear "
+                                  "radiance (floats)");
+          const auto bytes =
+              py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(image);
+          SrgbImage srgb(int(image.shape(1)), int(image.shape(0)));
+          std::copy(bytes.data(), bytes.data() + srgb.rgb.size(), srgb.rgb.begin());
+          vis::writePng(srgb, path);
+          return;
+        }
+        if (image.dtype().kind() != 'f')
+          throw py::type_error(
+              "image must hold floats (linear radiance, as render gives) or uint8 (an sRGB "
+              "picture, as view_image gives), not " +
+              py::str(py::object(image.dtype())).cast<std::string>());
         vis::writeImage(arrayToImage(image, "image"), path);
       },
       py::arg("image"), py::arg("path"),
-      "Writes an H x W x 3 linear image as .png / .ppm (sRGB) or .pfm (floats), as raylab "
-      "render does; never leaves a half-written file.");
+      "Writes an H x W x 3 image: floats are linear radiance, written as .png / .ppm (sRGB) or "
+      ".pfm (floats), as raylab render does; uint8 is an sRGB picture (view_image, to_srgb), "
+      "written to .png as it is. Never leaves a half-written file.");
   m.def(
       "read_pfm",
       [](const std::string& path) {

@@ -153,3 +153,19 @@ def test12_write_image_writes_what_raylab_render_writes(tmp_path, raylab_exe):
     assert ours.read_bytes() == pfm.read_bytes()
     assert np.array_equal(raylab.read_pfm(str(ours)), image)
     assert raylab.display_rmse(image, image) == 0.0
+
+
+def test12b_write_image_takes_an_8bit_picture_as_it_is(tmp_path):
+    # view_image and to_srgb give uint8 sRGB: written as they are, not read as radiance
+    # (128 would have been 128 times white).
+    image = raylab.render(small_scene(), spp=2)
+    linear, picture = tmp_path / "linear.png", tmp_path / "picture.png"
+    raylab.write_image(image, str(linear))
+    raylab.write_image(raylab.to_srgb(image), str(picture))
+    assert picture.read_bytes() == linear.read_bytes()
+    grey = np.full((4, 5, 3), 128, np.uint8)
+    with pytest.raises(ValueError, match=r"grey\.pfm: an 8-bit sRGB picture .* is written as \.png"):
+        raylab.write_image(grey, str(tmp_path / "grey.pfm"))
+    assert not (tmp_path / "grey.pfm").exists()
+    with pytest.raises(TypeError, match="must hold floats .* or uint8"):
+        raylab.write_image(np.full((4, 5, 3), 1, np.int64), str(tmp_path / "ints.png"))

@@ -48,7 +48,7 @@ std::string bvhCaption(const Scene& scene, const BvhStyle& style, const BvhSumma
            split + "）中遇到的包围盒：进入 " + str(summary.entered) + " 个（粗线，按层着色），" +
            "未击中 " + str(summary.missed) + " 个（深灰），因位于已找到的交点之后而剔除 " +
            str(summary.culled) + " 个（浅灰）；光线与三角形求交 " + str(summary.triangleTests) +
-           " 次，而蛮力方法需要 " + str(triangles) + " 次" +
+           " 次，而暴力方法需要 " + str(triangles) + " 次" +
            (summary.hit ? "。" : "，这条光线没有击中网格。");
   return "3D view: the boxes the camera ray of pixel " + pixel + " meets in the BVH of \"" +
          object.name + "\" (" + split + "): " + str(summary.entered) +
@@ -62,7 +62,7 @@ std::string bvhCaption(const Scene& scene, const BvhStyle& style, const BvhSumma
 std::string searchCaption(const RenderSettings& settings, Language language) {
   const bool zh = language == Language::Chinese;
   if (!settings.acceleration)
-    return zh ? "蛮力求交：每条光线都与每个三角形求交（不使用包围盒层次结构）。"
+    return zh ? "暴力求交：每条光线都与每个三角形求交（不使用包围盒层次结构）。"
               : "Brute force: every ray tested against every triangle (no BVH).";
   const std::string split = splitName(settings.bvhSplit, language);
   return zh ? "网格通过包围盒层次结构求交（" + split + "）。"
