@@ -8,9 +8,11 @@ each one's error against a path-traced reference (raylab compare, from Python).
 
 import argparse
 
-import numpy as np
-
+# First: under another python3 than Debian's (pyenv), importing raylab adds Debian's NumPy
+# to the path.
 import raylab
+
+import numpy as np  # noqa: E402,I100
 
 
 def main():
@@ -18,7 +20,8 @@ def main():
     parser.add_argument("--scene", help="scene file (default: the built-in scene)")
     parser.add_argument("--size", default="160x120", help="WxH of each picture")
     parser.add_argument("--spp", type=int, default=16, help="samples per pixel of each")
-    parser.add_argument("--reference-spp", type=int, default=0, help="0: 16 x spp, at least 256")
+    parser.add_argument("--reference-spp", type=int, default=0,
+                        help="0: 16 x spp (256 at equal time)")
     parser.add_argument("--out", default="compare.png", help="PNG (or .pfm) to write")
     args = parser.parse_args()
 

@@ -8,13 +8,15 @@ the ray's kind, with matplotlib (python3-matplotlib); writes a PNG.
 
 import argparse
 
-import matplotlib
+# First: under another python3 than Debian's (pyenv), importing raylab adds Debian's packages
+# (NumPy, matplotlib) to the path.
+import raylab
+
+import matplotlib  # noqa: E402,I100
 
 matplotlib.use("Agg")  # no display needed
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-
-import raylab  # noqa: E402
 
 KIND_COLOURS = {"camera": "tab:blue", "reflection": "tab:purple", "refraction": "tab:cyan",
                 "diffuse": "tab:orange", "glossy": "tab:green", "shadow": "tab:gray"}

@@ -127,8 +127,24 @@ void checkPixel(const Scene& scene, int x, int y, int sample) {
 }
 
 std::pair<int, int> pixelOf(const py::handle& pixel) {
-  const auto xy = pixel.cast<std::vector<int>>();
-  if (xy.size() != 2) throw py::value_error("pixel must be (x, y)");
+  // Two whole numbers: a string, floats or another length is named, not pybind11's cast error.
+  const auto problem = [&pixel] {
+    return py::value_error("pixel must be (x, y), two integers, not " +
+                           py::repr(pixel).cast<std::string>());
+  };
+  if (py::isinstance<py::str>(pixel) || !py::isinstance<py::sequence>(pixel)) throw problem();
+  const auto items = pixel.cast<py::sequence>();
+  if (items.size() != 2) throw problem();
+  std::vector<int> xy;
+  for (const py::handle item : items) {
+    // Integers, NumPy's too (both have __index__); not floats, not True / False.
+    if (py::isinstance<py::bool_>(item) || !py::hasattr(item, "__index__")) throw problem();
+    try {
+      xy.push_back(item.attr("__index__")().cast<int>());
+    } catch (const std::exception&) {  // beyond int's range
+      throw problem();
+    }
+  }
   return {xy[0], xy[1]};
 }
 

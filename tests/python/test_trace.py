@@ -115,6 +115,15 @@ def test08_a_pixel_outside_the_image_is_refused():
         raylab.Stepper(raylab.default_scene(), (1, 1), -1)
 
 
+def test08b_a_pixel_that_is_not_two_integers_is_named():
+    scene = raylab.default_scene()
+    for bad in [(10.5, 10), "10,20", (1, 2, 3), 7, (True, 2)]:
+        with pytest.raises(ValueError, match=r"pixel must be \(x, y\), two integers, not "):
+            raylab.trace(scene, bad)
+    # NumPy's integers are integers.
+    assert raylab.trace(scene, (np.int64(10), np.int32(20))).pixel == (10, 20)
+
+
 def test09_a_chosen_ray_is_traced_in_place_of_the_camera_ray(tmp_path, raylab_exe):
     """ray=: lesson 2's ray level with the top of its sphere, exactly tangent (the oracle
     says so, double precision finds t = 5): the tree's root is that ray, and its dump is the
