@@ -152,10 +152,18 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   const RayTree& tree = trace.tree;
   const vis::AnimationSettings animation = o.animation();
   const int total = vis::frameCount(tree, animation);
-  const int first = range ? std::min(range->first, total - 1) : 0;
+  if (range && range->first > total - 1) {
+    std::error_code removeError;
+    if (!missing.empty()) std::filesystem::remove_all(missing, removeError);
+    throw AnimateError("--frames " + options.frames + ": this animation has frames 0 to " +
+                       std::to_string(total - 1));
+  }
+  const int first = range ? range->first : 0;
   const int last = range ? std::min(range->second, total - 1) : total - 1;
   std::vector<int> frames;
   for (int f = first; f <= last; f += options.every) frames.push_back(f);
+  // With --every, the last frame too: the finished tree (or the range's end).
+  if (frames.back() != last) frames.push_back(last);
 
   const int digits = std::max(4, int(std::to_string(total - 1).size()));
   const auto frameFile = [&](int frame) {
@@ -215,7 +223,7 @@ Subcommand addAnimateCommand(CLI::App& cli) {
   options->tree.add(command, "Folder for the frames (frame_0000.png, ...)", "640x480");
   command->add_option("--frames", options->frames, "Only frames FIRST:LAST (inclusive)")
       ->group("Animation");
-  command->add_option("--every", options->every, "Write every Nth frame")
+  command->add_option("--every", options->every, "Write every Nth frame, and the last")
       ->check(CLI::Range(1, 1 << 30))
       ->capture_default_str()
       ->group("Animation");

@@ -102,6 +102,31 @@ TEST(SceneEdit, 03_AValueSetAndSetBackSavesTheSameFile) {
   EXPECT_EQ(glossy.materials[1].type, MaterialType::Glossy);
 }
 
+// A value of the file reached through its own keys: the size of a box the file turns and
+// moves with transform steps is the size before them, and the steps still apply after it.
+TEST(SceneEdit, 03b_AValueBeneathTransformStepsIsTheFilesValue) {
+  const Scene scene = SceneIO::parse(R"({"raylab_scene": 2,
+    "materials": [{"name": "m"}],
+    "objects": [{"name": "b", "material": "m",
+      "shape": {"type": "box", "centre": [0, 0, 0], "size": [1, 1, 1]},
+      "transform": [{"rotate": {"axis": [0, 0, 1], "degrees": 90}}, {"translate": [5, 0, 0]}]}]})",
+                                     kOrigin);
+  EXPECT_EQ(edit::valueAt(scene, "/objects/0/shape/size", kOrigin), "[1,1,1]");
+  EXPECT_EQ(edit::valueAt(scene, "/objects/0/transform/1/translate", kOrigin), "[5,0,0]");
+  const Scene bigger = edit::setValue(scene, "/objects/0/shape/size", "[2, 4, 6]", kOrigin);
+  const auto& box = static_cast<const Box&>(*bigger.objects[0].shape);
+  EXPECT_NEAR(glm::length(box.centre() - Point3(5, 0, 0)), 0.0, 1e-12);
+  // Sizes (2, 4, 6) turned a quarter about z: x and y swap.
+  const Bounds3 b = box.bounds();
+  EXPECT_NEAR(b.extent().x, 4.0, 1e-9);
+  EXPECT_NEAR(b.extent().y, 2.0, 1e-9);
+  EXPECT_NEAR(b.extent().z, 6.0, 1e-9);
+  // A translation in the window appends a step; the file keeps the ones it had.
+  const Scene moved = edit::translateObject(bigger, 0, Vec3(0, 1, 0), kOrigin);
+  EXPECT_EQ(edit::valueAt(moved, "/objects/0/transform/0/rotate/degrees", kOrigin), "90");
+  EXPECT_EQ(edit::valueAt(moved, "/objects/0/transform/2/translate", kOrigin), "[0.0,1.0,0.0]");
+}
+
 TEST(SceneEdit, 04_DeleteDuplicateRenameAndTranslate) {
   const Scene scene = defaultScene();
   const int sphere = scene.findObject("red sphere");

@@ -100,6 +100,41 @@ TEST(SceneIO, 02_TransformStepsApplyInListedOrder) {
   EXPECT_EQ(sphere.radius(), 2.0);
 }
 
+// A file's readable transform steps are saved as written while the object is unchanged,
+// and only then: a moved object is saved as it now is (its steps baked into the shape).
+TEST(SceneIO, 02b_AnUnchangedObjectKeepsItsStepsAndAChangedOneIsBaked) {
+  const std::string text = R"({"raylab_scene": 2,
+    "materials": [{"name": "m"}],
+    "objects": [{"name": "b", "material": "m",
+      "shape": {"type": "box", "size": [1, 2, 1], "centre": [0, 0, 0]},
+      "transform": [{"rotate": {"degrees": 35, "axis": [0, 1, 0]}}, {"translate": [0.3, 0.6, 0.6]}]}]})";
+  const Scene s = SceneIO::parse(text, "steps.json");
+  const std::string saved = SceneIO::serialize(s);
+  std::string compact;  // the text without its layout
+  for (const char c : saved)
+    if (c != ' ' && c != '\n') compact += c;
+  // The entry as written, in the writer's key order (name, material, shape, transform).
+  EXPECT_NE(compact.find(R"("shape":{"type":"box","centre":[0,0,0],"size":[1,2,1]})"),
+            std::string::npos)
+      << saved;
+  EXPECT_NE(compact.find(R"({"rotate":{"axis":[0,1,0],"degrees":35}})"), std::string::npos)
+      << saved;
+  EXPECT_EQ(saved.find("matrix"), std::string::npos) << saved;
+  // Read back: the same box, bit for bit.
+  const Scene again = SceneIO::parse(saved, "steps.json");
+  EXPECT_EQ(static_cast<const Box&>(*again.objects[0].shape).worldFromBox().matrix(),
+            static_cast<const Box&>(*s.objects[0].shape).worldFromBox().matrix());
+  // Moved in code: the steps no longer describe it; the box is saved as it now is.
+  Scene moved = s;
+  moved.objects[0].apply(Transform::translate(Vec3(1, 0, 0)).matrix());
+  const std::string movedText = SceneIO::serialize(moved);
+  EXPECT_EQ(movedText.find("rotate"), std::string::npos) << movedText;
+  const Scene movedBack = SceneIO::parse(movedText, "moved.json");
+  EXPECT_NEAR(glm::length(static_cast<const Box&>(*movedBack.objects[0].shape).centre() -
+                          Point3(1.3, 0.6, 0.6)),
+              0.0, 1e-12);
+}
+
 /// "1,1,...,1" with `n` ones: a large JSON array's contents.
 std::string manyOnes(int n) {
   std::string text = "1";
@@ -157,6 +192,12 @@ TEST(SceneIO, 03_ErrorsNameThePlaceAndTheProblem) {
            R"({"name": "b", "material": "m", "shape": {"type": "sphere", "centre": [0,0,0], "radius": [)" +
            manyOnes(100000) + R"(]}}]})",
        "/objects/0/shape/radius: expected a number, got an array of 100000 values"},
+      {"repeated key (the second would silently win)",
+       "{\"raylab_scene\": 2, \"materials\": [{\"name\": \"m\"}], \"objects\": [\n"
+       "  {\"name\": \"b\", \"material\": \"m\", \"shape\": {\"type\": \"sphere\", "
+       "\"radius\": 1, \"radius\": 2, \"centre\": [0,0,0]}}]}",
+       "test.json:2:75: the key \"radius\" appears twice in one object (JSON would silently keep "
+       "the last: remove one)"},
       {"degenerate triangle",
        head +
            R"({"name": "t", "material": "m", "shape": {"type": "triangle", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}}]})",
@@ -480,6 +521,11 @@ TEST(SceneIO, 11_NewErrorsNameThePlaceAndTheProblem) {
   const ErrorCase cases[] = {
       {"unknown material type", withMaterial(R"({"name": "x", "type": "velvet"})"),
        "/materials/0/type: unknown material type \"velvet\" (expected diffuse, mirror"},
+      {"box matrix and size",
+       one + R"({"name": "c", "material": "m", "shape": {"type": "box", "size": [1, 1, 1],
+           "matrix": [[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]}}]})",
+       "/objects/0/shape/size: a box is given either by \"matrix\" or by centre, size and axes, "
+       "not both"},
       {"ior zero", withMaterial(R"({"name": "x", "type": "dielectric", "ior": 0})"),
        "/materials/0/ior: ior (index of refraction) must be positive"},
       {"ior negative", withMaterial(R"({"name": "x", "type": "mirror", "ior": -1.5})"),

@@ -110,12 +110,19 @@ def test08_a_place_the_file_does_not_have_is_refused():
 def test09_object_edits_are_the_windows_edits():
     scene = raylab.default_scene()
     count = len(scene.object_names)
-    cube = f"/objects/{scene.object_names.index('blue cube')}/shape"
+    cube = f"/objects/{scene.object_names.index('blue cube')}"
     before = scene.get(cube)
     scene.rotate_object("blue cube", 30, axis=(0, 1, 0))
     after = scene.get(cube)
-    assert after != before
-    assert after["centre"] == pytest.approx(before["centre"])  # turned about its centre
+    # The file keeps the shape as written and gains the turn as readable steps, about the
+    # cube's centre.
+    assert after["shape"] == before["shape"]
+    centre = before["shape"]["centre"]
+    assert after["transform"][-3:] == [
+        {"translate": pytest.approx([-c for c in centre])},
+        {"rotate": {"axis": [0.0, 1.0, 0.0], "degrees": 30.0}},
+        {"translate": pytest.approx(centre)},
+    ]
     scene.duplicate_object("red sphere")
     assert len(scene.object_names) == count + 1
     copy_name = scene.object_names[-1]

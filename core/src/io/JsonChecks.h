@@ -15,8 +15,11 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 /// \file JsonChecks.h
 /// The typed reads both of RayLab's validating loaders (scene files, lesson files) make
@@ -74,6 +77,33 @@ struct JsonErrorPlace {
     return false;
   }
 };
+
+/// The first key that appears twice in one JSON object of `text` (a syntactically valid
+/// text): its byte offset and its text as written. JSON parsers keep only the last of them,
+/// so a repeated key silently wins over the first; a scene or lesson file is refused instead.
+inline std::optional<std::pair<std::size_t, std::string>> repeatedKey(const std::string& text) {
+  std::vector<std::pair<bool, std::set<std::string>>> open;  // (is an object, its keys)
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '{' || c == '[') {
+      open.push_back({c == '{', {}});
+    } else if (c == '}' || c == ']') {
+      if (!open.empty()) open.pop_back();
+    } else if (c == '"') {
+      const std::size_t start = i;
+      for (++i; i < text.size() && text[i] != '"'; ++i)
+        if (text[i] == '\\') ++i;
+      std::size_t next = i + 1;
+      while (next < text.size() && std::isspace(static_cast<unsigned char>(text[next]))) ++next;
+      // A string followed by ':' inside an object is a key.
+      if (next < text.size() && text[next] == ':' && !open.empty() && open.back().first) {
+        std::string key = text.substr(start + 1, i - start - 1);
+        if (!open.back().second.insert(key).second) return std::make_pair(start, std::move(key));
+      }
+    }
+  }
+  return std::nullopt;
+}
 
 /// Parses `text` (read from `origin`) into `out`; on failure the message, naming the place
 /// of a syntax error (file:line:column) or the parser's other refusal (a number too large
@@ -147,6 +177,12 @@ inline std::optional<std::string> parseJson(const std::string& text, const std::
     const auto tag = what.find("] ");
     if (tag != std::string::npos) what = what.substr(tag + 2);
     return origin + ": JSON error: " + what;
+  }
+  if (const auto repeated = repeatedKey(text)) {
+    const auto [line, column] = lineColumn(text, repeated->first);
+    return origin + ":" + std::to_string(line) + ":" + std::to_string(column) + ": the key \"" +
+           repeated->second +
+           "\" appears twice in one object (JSON would silently keep the last: remove one)";
   }
   return std::nullopt;
 }

@@ -10,7 +10,8 @@ SceneObject::SceneObject(const SceneObject& o)
       source(o.source),
       worldFromSource(o.worldFromSource),
       meshNormals(o.meshNormals),
-      creaseAngle(o.creaseAngle) {}
+      creaseAngle(o.creaseAngle),
+      fileForm(o.fileForm) {}
 
 SceneObject& SceneObject::operator=(const SceneObject& o) {
   if (this != &o) *this = SceneObject(o);

@@ -12,6 +12,7 @@
 
 #include "io/JsonChecks.h"
 #include "io/PrettyJson.h"
+#include "scene/ObjectForm.h"
 #include "scene/SceneKeys.h"
 
 #include <nlohmann/json.hpp>
@@ -159,8 +160,15 @@ class Reader : private JsonChecks<Reader> {
       }
       if (type == "box") {
         onlyKeys(j, path, kBoxKeys);
-        if (j.contains("matrix"))
+        if (j.contains("matrix")) {
+          // Either form, not both: a "size" beside the matrix would be silently ignored.
+          for (const char* key : {"centre", "size", "axes"})
+            if (j.contains(key))
+              fail(path + "/" + key, std::string("a box is given either by \"matrix\" or by "
+                                                 "centre, size and axes, not both (\"") +
+                                         key + "\" beside \"matrix\")");
           return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
+        }
         const Vec3 centre = vec3(member(j, path, "centre"), path + "/centre");
         const json& sizes = member(j, path, "size");
         const Vec3 size = vec3(sizes, path + "/size");
@@ -528,6 +536,14 @@ class Reader : private JsonChecks<Reader> {
     if (!objects.is_array()) fail("/objects", "expected a list");
     for (std::size_t i = 0; i < objects.size(); ++i)
       scene.objects.push_back(object(objects[i], "/objects/" + std::to_string(i), scene));
+    // Each built-in shape's entry as written, saved as it is while the object is unchanged
+    // (meshes are saved by reference, their paths relative to where they are saved).
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      SceneObject& o = scene.objects[i];
+      if (o.shape->kind() == ShapeKind::TriangleMesh) continue;
+      o.fileForm = std::make_shared<const SceneObject::FileForm>(
+          SceneObject::FileForm{objects[i].dump(), detail::bakedObjectForm(o, scene)});
+    }
 
     if (root.contains("point_lights")) {
       const json& lights = root["point_lights"];

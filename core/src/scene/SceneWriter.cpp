@@ -9,6 +9,7 @@
 #include "raylab/core/Triangle.h"
 
 #include "io/PrettyJson.h"
+#include "scene/ObjectForm.h"
 #include "scene/SceneKeys.h"
 
 #include <nlohmann/json.hpp>
@@ -185,8 +186,9 @@ std::string meshPathFrom(const std::string& source, const std::string& sceneDir)
   return relative.empty() ? file.generic_string() : relative.generic_string();
 }
 
-/// An object as JSON; mesh paths are written relative to `sceneDir`.
-ojson objectToJson(const SceneObject& o, const Scene& scene, const std::string& sceneDir) {
+/// An object as JSON from what it is now, any transform of a built-in shape baked in; mesh
+/// paths are written relative to `sceneDir`.
+ojson bakedObject(const SceneObject& o, const Scene& scene, const std::string& sceneDir) {
   if (!o.shape) throw SceneIO::SaveError("object \"" + o.name + "\" has no shape");
   if (o.material < 0 || o.material >= static_cast<int>(scene.materials.size()))
     throw SceneIO::SaveError("object \"" + o.name + "\" refers to a missing material");
@@ -214,6 +216,37 @@ ojson objectToJson(const SceneObject& o, const Scene& scene, const std::string& 
   if (!transform.is_null()) object.add("transform", std::move(transform));
   if (o.velocity != Vec3(0.0)) object.add("velocity", toJson(o.velocity));
   return object.take();
+}
+
+/// `j` (read unordered) with the keys of `keys` in that list's order.
+template <std::size_t N>
+ojson inKeyOrder(const nlohmann::json& j, const std::array<const char*, N>& keys) {
+  ObjectWriter out(keys);
+  for (const char* key : keys)
+    if (j.contains(key)) out.add(key, ojson::parse(j[key].dump()));
+  return out.take();
+}
+
+/// The shape of a file's entry in the writer's key order for its type.
+ojson shapeInKeyOrder(const nlohmann::json& shape) {
+  const std::string type = shape.value("type", std::string());
+  if (type == "sphere") return inKeyOrder(shape, kSphereKeys);
+  if (type == "box") return inKeyOrder(shape, kBoxKeys);
+  if (type == "plane") return inKeyOrder(shape, kPlaneKeys);
+  if (type == "quad") return inKeyOrder(shape, kQuadKeys);
+  if (type == "triangle") return inKeyOrder(shape, kTriangleKeys);
+  return ojson::parse(shape.dump());
+}
+
+/// An object as JSON: the file's own entry while the object is as it was read (see
+/// SceneObject::FileForm), else its baked form.
+ojson objectToJson(const SceneObject& o, const Scene& scene, const std::string& sceneDir) {
+  ojson baked = bakedObject(o, scene, sceneDir);
+  if (!o.fileForm || baked.dump() != o.fileForm->whenRead) return baked;
+  const nlohmann::json entry = nlohmann::json::parse(o.fileForm->inFile);
+  ojson object = inKeyOrder(entry, kObjectKeys);
+  if (entry.contains("shape")) object["shape"] = shapeInKeyOrder(entry["shape"]);
+  return object;
 }
 
 ojson pointLightToJson(const PointLight& l) {
@@ -263,6 +296,10 @@ ojson renderToJson(const RenderSettings& r) {
 }
 
 }  // namespace
+
+std::string detail::bakedObjectForm(const SceneObject& o, const Scene& scene) {
+  return bakedObject(o, scene, std::string()).dump();
+}
 
 std::string SceneIO::serialize(const Scene& scene, const std::string& sceneDir) {
   ojson materials = ojson::array();

@@ -41,6 +41,19 @@ struct SceneObject {
   /// measured in the mesh file's space.
   double creaseAngle = 60.0;
 
+  /// An object as its scene file wrote it: the JSON text of its entry there ("transform"
+  /// steps and the shape before them, as written), and the writer's form of the object as
+  /// it was read. While the writer still makes that form of it (nothing about the object has
+  /// changed), SceneIO saves the file's own entry: readable steps stay steps, and edits
+  /// through the file's keys (SceneEdit, Python's scene.set) reach the values the file
+  /// holds, not the shape they made.
+  struct FileForm {
+    std::string inFile;    ///< The object's entry in the file (JSON).
+    std::string whenRead;  ///< The writer's form of the object when it was read (JSON).
+  };
+  /// Set by SceneIO for objects of built-in shapes read from a file; null otherwise.
+  std::shared_ptr<const FileForm> fileForm;
+
   /// How far the object has moved at shutter time `time` in [0, 1]: time * velocity, world
   /// units. The one rule of motion: a ray at time tau meets the object where it rests when
   /// the ray's origin is moved back by this much.
