@@ -597,6 +597,14 @@
         <source>normals</source>
         <translation>法线</translation>
     </message>
+    <message>
+        <source>axis</source>
+        <translation>旋转轴</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>角度（度）</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>
@@ -2095,6 +2103,14 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>Crease angle in degrees [0, 180]: edges between faces whose normals differ by more stay sharp when the normals are smooth</source>
         <translation>折痕角，单位为度，范围 [0, 180]：平滑着色时，相邻面法线夹角大于此值的棱边保持锐利</translation>
+    </message>
+    <message>
+        <source>Transform of %1</source>
+        <translation>%1 的变换</translation>
+    </message>
+    <message>
+        <source>The steps the scene file applies to the shape, in order: the shape&apos;s values above are the ones before them</source>
+        <translation>场景文件按顺序对形状施加的变换步骤：上面的形状参数是变换之前的值</translation>
     </message>
 </context>
 <context>

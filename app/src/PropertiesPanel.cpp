@@ -195,6 +195,7 @@ void PropertiesPanel::rebuild() {
     const SceneObject& o = scene.objects[std::size_t(m_object)];
     const std::string base = "/objects/" + std::to_string(m_object);
     addGroup(tr("Shape of %1").arg(QString::fromStdString(o.name)), base + "/shape");
+    addTransformGroup(QString::fromStdString(o.name), base);
     // Which material, chosen among the scene's.
     auto* materialGroup = new QGroupBox(tr("Material"));
     auto* materialForm = new QFormLayout(materialGroup);
@@ -282,7 +283,8 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
               setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
             });
     return box;
-  } else if (value.is_number_integer() || (value.is_number() && kIntegerKeys.count(key))) {
+  } else if (value.is_number() && kIntegerKeys.count(key)) {
+    // Whole numbers only where the format wants them: a radius written 1 still takes 1.5.
     auto* box = new QSpinBox;
     box->setRange(-1000000000, 1000000000);
     box->setValue(value.get<int>());
@@ -348,6 +350,48 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
     text->setWordWrap(true);
     return text;
   }
+}
+
+void PropertiesPanel::addTransformGroup(const QString& object, const std::string& base) {
+  json steps;
+  try {
+    steps =
+        json::parse(edit::valueAt(m_document.scene(), base + "/transform", m_document.origin()));
+  } catch (const std::exception&) {
+    return;  // no steps: the shape's values are where it is
+  }
+  if (!steps.is_array() || steps.empty()) return;
+  const QString title = tr("Transform of %1").arg(object);
+  auto* group = new QGroupBox(title);
+  group->setToolTip(
+      tr("The steps the scene file applies to the shape, in order: the shape's "
+         "values above are the ones before them"));
+  auto* form = new QFormLayout(group);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    if (!steps[i].is_object() || steps[i].size() != 1) continue;
+    const std::string kind = steps[i].begin().key();
+    const json& value = steps[i].begin().value();
+    const std::string place = base + "/transform/" + std::to_string(i) + "/" + kind;
+    const QString name = QStringLiteral("%1. %2").arg(i + 1).arg(label(kind));
+    const QString undoText = tr("Set %1 of %2").arg(name, title);
+    // A rotation's axis and angle each on a row; other steps one value.
+    std::vector<std::pair<std::string, const json*>> parts;
+    if (kind == "rotate" && value.is_object()) {
+      for (auto it = value.begin(); it != value.end(); ++it)
+        parts.emplace_back(it.key(), &it.value());
+    } else {
+      parts.emplace_back(kind, &value);
+    }
+    for (const auto& [key, part] : parts) {
+      const std::string at = key == kind ? place : place + "/" + key;
+      QWidget* widget = makeField(key, at, *part, false, undoText);
+      widget->setObjectName(QString::fromStdString(at));
+      widget->setToolTip(
+          tr("%1 (%2 in the scene file)").arg(label(key), QString::fromStdString(at)));
+      form->addRow(key == kind ? name : name + QStringLiteral(" ") + label(key), widget);
+    }
+  }
+  m_form->layout()->addWidget(group);
 }
 
 void PropertiesPanel::addGroup(const QString& title, const std::string& pointer) {

@@ -54,6 +54,9 @@ class PropertiesPanel : public QWidget {
   /// Makes the form again from the scene (after any change).
   void rebuild();
   void addGroup(const QString& title, const std::string& pointer);
+  /// The object's transform steps as the file lists them (applied in order after the shape,
+  /// whose values are the ones before them): each step's values editable in place.
+  void addTransformGroup(const QString& object, const std::string& base);
   /// The widget that edits the value `value` of `key` at JSON place `place` (a label when
   /// it is not edited here); `material` when the key belongs to a material.
   QWidget* makeField(const std::string& key, const std::string& place,

@@ -414,6 +414,42 @@ TEST_F(MainWindowTest, 14_EditAMaterialUndoItAndARefusedValue) {
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
 }
 
+// An object the file turns and moves with transform steps: the panel shows the shape's
+// values (before the steps) and the steps themselves, each editable; a turn in the Edit tab
+// adds steps, which the panel then lists too.
+TEST_F(MainWindowTest, 14a_TransformStepsAreShownAndEdited) {
+  const Scene turned = SceneIO::parse(R"({"raylab_scene": 2,
+    "materials": [{"name": "m"}, {"name": "lamp", "emission": [5, 5, 5]}],
+    "objects": [{"name": "cube", "material": "m",
+      "shape": {"type": "box", "centre": [0, 0, 0], "size": [1, 1, 1]},
+      "transform": [{"rotate": {"axis": [0, 1, 0], "degrees": 35}}, {"translate": [0.3, 0.6, 0.6]}]},
+      {"name": "light", "material": "lamp",
+       "shape": {"type": "quad", "corner": [-1, 3, -1], "u": [2, 0, 0], "v": [0, 0, 2]}}]})",
+                                      "turned.json");
+  m_window->document().adopt(turned, {});
+  settle();
+  m_window->selectObject(0);
+  PropertiesPanel& properties = *m_window->propertiesPanel();
+  ASSERT_NE(properties.field("/objects/0/shape/size"), nullptr);
+  QWidget* degrees = properties.field("/objects/0/transform/0/rotate/degrees");
+  ASSERT_NE(degrees, nullptr);
+  ASSERT_NE(properties.field("/objects/0/transform/0/rotate/axis"), nullptr);
+  ASSERT_NE(properties.field("/objects/0/transform/1/translate"), nullptr);
+  // 35 degrees typed as 90: the cube turns a quarter, still moved by the second step.
+  auto* angle = qobject_cast<QDoubleSpinBox*>(degrees);
+  if (!angle) angle = degrees->findChild<QDoubleSpinBox*>();
+  ASSERT_NE(angle, nullptr);
+  angle->setValue(90.0);
+  settle();
+  const auto& box = static_cast<const Box&>(*m_window->document().scene().objects[0].shape);
+  EXPECT_NEAR(glm::length(box.centre() - Point3(0.3, 0.6, 0.6)), 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(box.axis(0).z), 1.0, 1e-12);  // x turned onto -z
+  // A turn in the Edit tab adds three steps (to its centre, the turn, back).
+  m_window->editPanel()->rotate();
+  settle();
+  EXPECT_NE(properties.field("/objects/0/transform/3/rotate/degrees"), nullptr);
+}
+
 // The materials added to the scene format are offered in the properties panel: the
 // sphere's material switched to rough_conductor shows that model's fields, its roughness
 // set through the spin box reaches the scene, a roughness the loader refuses is refused
