@@ -307,6 +307,10 @@
         <source>The recorded hit is %1 along the ray, the object&apos;s nearest exact hit %2.</source>
         <translation>光线树中记录的交点沿光线的距离为 %1，而该物体最近的精确交点距离为 %2。</translation>
     </message>
+    <message>
+        <source>light</source>
+        <translation>目标光源</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

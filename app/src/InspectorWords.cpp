@@ -27,6 +27,7 @@ namespace {
     QT_TRANSLATE_NOOP("InspectorWords", "material"),
     QT_TRANSLATE_NOOP("InspectorWords", "parameters"),
     QT_TRANSLATE_NOOP("InspectorWords", "light point"),
+    QT_TRANSLATE_NOOP("InspectorWords", "light"),
     QT_TRANSLATE_NOOP("InspectorWords", "hit"),
     QT_TRANSLATE_NOOP("InspectorWords", "weight"),
     QT_TRANSLATE_NOOP("InspectorWords", "pdf"),

@@ -142,6 +142,11 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   EXPECT_GT(shadow.energy, 0.0);
   EXPECT_TRUE(contains(text, "Ray #1: shadow ray, depth 1, child of #0")) << text;
   EXPECT_TRUE(contains(text, "light point (0, 5, 0)")) << text;
+  // Which light it aimed at (a scene may have several).
+  EXPECT_EQ(shadow.segment.pointLight, 0);
+  EXPECT_EQ(shadow.segment.lightObject, -1);
+  EXPECT_EQ(shadow.lightName, "lamp");
+  EXPECT_TRUE(contains(text, "light       'lamp'\n")) << text;
   EXPECT_TRUE(contains(text, "reached its light unblocked")) << text;
   EXPECT_TRUE(contains(text, "Exact oracle: no hit to check")) << text;
 
@@ -164,6 +169,7 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   // It aimed at the lamp: the far end is kept beside the blocker's hit point.
   EXPECT_NEAR(glm::length(blocked.lightPoint - Point3(0, 5, 0)), 0.0, 1e-6);
   EXPECT_TRUE(contains(blockedText, "light point (0, 5, 0)")) << blockedText;
+  EXPECT_EQ(blocked.lightName, "lamp");
 }
 
 TEST(RayInspector, 04_EscapedRayHitsNothing) {

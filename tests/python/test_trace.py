@@ -40,6 +40,24 @@ def test02_every_segment_has_every_field_of_the_dump():
             assert (list(got) if isinstance(got, tuple) else got) == value
 
 
+def test02b_a_shadow_ray_names_its_light():
+    # A point light beside the light box: a floor point sends one shadow ray to each.
+    scene = raylab.load_scene(str(SCENES / "materials.json"))
+    key = scene.add_point_light()
+    index = scene.point_light_names.index(key)
+    scene.update({f"/point_lights/{index}/position": [2, 4, 2],
+                  f"/point_lights/{index}/intensity": [10, 10, 10]})
+    trace = raylab.trace(scene, (160, 220), algorithm="raycast")  # the floor
+    shadows = [s for s in trace.segments if s.kind == "shadow"]
+    assert sorted(s.light_name for s in shadows) == sorted([key, "light"])
+    for s in shadows:
+        if s.light_name == key:
+            assert s.point_light == index and s.light_object == -1
+        else:
+            assert s.light_object == scene.object_names.index("light") and s.point_light == -1
+    assert all(s.light_name == "" for s in trace.segments if s.kind != "shadow")
+
+
 @pytest.mark.parametrize("algorithm", raylab.ALGORITHMS)
 def test03_the_estimates_are_the_rendered_pixel(algorithm):
     """A pixel of a render is the mean of its samples' traced estimates (same spp, which

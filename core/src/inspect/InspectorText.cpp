@@ -129,6 +129,7 @@ std::string RayInspection::rayText() const {
   out << "\n";
   line(out, "origin", vec(segment.origin));
   line(out, "direction", vec(segment.direction));
+  if (!lightName.empty()) line(out, "light", "'" + lightName + "'");
 
   // Where it ended.
   if (segment.hit) {

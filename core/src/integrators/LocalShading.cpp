@@ -99,6 +99,7 @@ void shadowRayToSample(QueuedRay& child, const HitContext& context, const Point3
   const bool sameOrigin = context.settings.rayOffset &&
                           (glm::dot(si.n, ls.p - si.p) < 0.0) == !si.frontFace && ls.distance > 0.0;
   const Vec3& velocity = context.intersector.scene().objects[std::size_t(ls.object)].velocity;
+  child.lightObject = ls.object;
   if (!sameOrigin || velocity != Vec3(0.0)) {
     shadowRay(child, context, ls.p, weight, ls.Le, true);
     return;
@@ -114,7 +115,9 @@ void shadowRayToSample(QueuedRay& child, const HitContext& context, const Point3
 
 void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<QueuedRay>& children) {
   const SurfaceInteraction& si = context.hit.si;
-  for (const PointLight& light : context.intersector.scene().pointLights) {
+  const std::vector<PointLight>& lights = context.intersector.scene().pointLights;
+  for (std::size_t index = 0; index < lights.size(); ++index) {
+    const PointLight& light = lights[index];
     // Direction and distance to the light; it lights the side it is on.
     const Vec3 d = light.position - si.p;
     const double distance2 = glm::dot(d, d);
@@ -126,6 +129,7 @@ void addPointLightRays(const HitContext& context, Lobes lobes, std::vector<Queue
     // weight f cos.
     shadowRay(children.emplace_back(), context, light.position, fCos,
               attenuated(context.material, light.intensity, 1.0, distance2), false);
+    children.back().pointLight = int(index);
   }
 }
 
@@ -152,6 +156,7 @@ void addAreaLightRays(const HitContext& context, int samplesPerLight, Lobes lobe
       if (isNonPositive(fCos) || isNonPositive(ls->Le)) continue;
       // Monte Carlo estimate of the light's integral: f cos Le / pdf, averaged over N.
       shadowRay(children.emplace_back(), context, ls->p, fCos * (invN / ls->pdf), ls->Le, true);
+      children.back().lightObject = object;
     }
   }
 }
@@ -191,6 +196,7 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
     const Point3 target = entry ? si.p + entry->t * wi : centre;
     shadowRay(children.emplace_back(), context, target, fCos,
               attenuated(context.material, Le, projectedArea, distance2), true);
+    children.back().lightObject = object;
   }
 }
 

@@ -47,6 +47,8 @@ void TreeRecorder::startSegment(const QueuedRay& ray) {
   seg.weight = ray.weight;
   seg.pdf = ray.pdf;
   seg.throughput = ray.throughput;
+  seg.lightObject = ray.lightObject;
+  seg.pointLight = ray.pointLight;
 }
 
 void TreeRecorder::recordCamera(QueuedRay& camera, bool chosen) {

@@ -157,6 +157,14 @@ std::string RayTreeJson::serialize(const RayTree& tree, const Scene& scene,
     j["light_point"] = vec(s.lightPoint);
     j["object"] = s.object;
     j["object_name"] = named ? scene.objects[std::size_t(s.object)].name : std::string();
+    // A shadow ray's light: an area light (an object) or a point light, and its name.
+    if (s.lightObject >= 0 && s.lightObject < int(scene.objects.size())) {
+      j["light_object"] = s.lightObject;
+      j["light_name"] = scene.objects[std::size_t(s.lightObject)].name;
+    } else if (s.pointLight >= 0 && s.pointLight < int(scene.pointLights.size())) {
+      j["point_light"] = s.pointLight;
+      j["light_name"] = scene.pointLights[std::size_t(s.pointLight)].name;
+    }
     j["normal"] = vec(s.normal);
     if (!isZero(s.shadingNormal)) j["shading_normal"] = vec(s.shadingNormal);
     j["weight"] = vec(s.weight);
@@ -238,6 +246,8 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
     s.endPoint = vecField(j, "end_point", i, origin);
     s.lightPoint = vecField(j, "light_point", i, origin);
     s.object = field<int>(j, "object", i, origin);
+    if (j.contains("light_object")) s.lightObject = field<int>(j, "light_object", i, origin);
+    if (j.contains("point_light")) s.pointLight = field<int>(j, "point_light", i, origin);
     s.normal = vecField(j, "normal", i, origin);
     if (j.contains("shading_normal")) s.shadingNormal = vecField(j, "shading_normal", i, origin);
     s.weight = vecField(j, "weight", i, origin);

@@ -52,6 +52,8 @@ struct RayInspection {
   Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (else endPoint).
   double distance = 0.0;   ///< |endPoint - origin|, world units.
   std::string objectName;  ///< Name of the object hit, empty when none.
+  std::string lightName;   ///< Shadow rays: the light aimed at (an area light's object or a
+                           ///< point light), empty for other rays.
   std::optional<MaterialSummary> material;  ///< The object's material, when it hit one.
   double energy = 0.0;  ///< RaySegment::energy: its share of the pixel (the energy the
                         ///< ray-tree view colours by).

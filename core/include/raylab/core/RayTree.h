@@ -85,6 +85,8 @@ struct RaySegment {
   EndReason endReason = EndReason::Pending;  ///< Why it spawned nothing (or Spawned).
   Point3 lightPoint{0.0};  ///< Shadow rays: the point on the light aimed at (the far end);
                            ///< when Occluded, endPoint is where the blocker was hit.
+  int lightObject = -1;    ///< Shadow rays to an area light: that light's object index.
+  int pointLight = -1;     ///< Shadow rays to a point light: its index in Scene::pointLights.
 
   /// The ray's energy: the luminance of `throughput * radiance`, the share of the pixel's
   /// light this ray carries (what the ray-tree view colours by and the inspector shows).

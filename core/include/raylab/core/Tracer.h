@@ -38,6 +38,8 @@ struct QueuedRay {
   double pdf = 0.0;      ///< Solid-angle pdf it was sampled with (0: deterministic);
                          ///< path tracing MIS-weighs the emitter it finds by it.
   Vec3 shadowLe{0.0};    ///< Shadow rays: radiance delivered when unoccluded.
+  int lightObject = -1;  ///< Shadow rays to an area light: its object (Scene::objects).
+  int pointLight = -1;   ///< Shadow rays to a point light: its index (Scene::pointLights).
 };
 
 /// What the last step of the engine did, for the front end's narration.

@@ -86,14 +86,18 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
           shading::shadowRayToSample(children.emplace_back(), context, ref, *ls, weight);
       }
     }
-    for (const PointLight& light : context.intersector.scene().pointLights) {
+    const std::vector<PointLight>& lights = context.intersector.scene().pointLights;
+    for (std::size_t index = 0; index < lights.size(); ++index) {
+      const PointLight& light = lights[index];
       const Vec3 d = light.position - si.p;
       const double distance2 = glm::dot(d, d);
       if (!(distance2 > 0.0)) continue;
       const Vec3 weight = bsdf::eval(m, si, wo, d / std::sqrt(distance2)) * rouletteScale;
-      if (isUsable(weight))
+      if (isUsable(weight)) {
         shading::shadowRay(children.emplace_back(), context, light.position, weight,
                            light.intensity / distance2, false);
+        children.back().pointLight = int(index);
+      }
     }
   }
 
