@@ -13,10 +13,4 @@ namespace raylab::app {
 /// warning on stderr naming the file (sceneWarnings).
 Scene loadSceneOrDefault(const std::string& path);
 
-/// What a command warns about a scene it was given: no objects (every pixel shows the
-/// background), or nothing that gives light (no point light, emissive material, ambient
-/// term or background). Such a scene is valid (a teacher may start from it), so these
-/// are warnings, not errors.
-std::vector<std::string> sceneWarnings(const Scene& scene);
-
 }  // namespace raylab::app

@@ -87,6 +87,9 @@ struct SettingsOverrides {
 RenderSettings settingsFor(const Scene& scene, const SettingsOverrides& overrides);
 /// The algorithm named `name`; ValueError listing the four names otherwise.
 Algorithm algorithmNamed(const std::string& name);
+/// Python's UserWarning for each of sceneWarnings(scene) (a scene that renders black or
+/// empty), as the command line warns on stderr; an error when warnings are errors.
+void warnAbout(const Scene& scene);
 
 /// (x, y, z) as a Python tuple of floats.
 py::tuple toTuple(const Vec3& v);

@@ -82,6 +82,12 @@ py::array imageToArray(FloatImage image, const py::dtype& dtype) {
                         py::repr(py::object(dtype)).cast<std::string>());
 }
 
+void warnAbout(const Scene& scene) {
+  for (const std::string& warning : sceneWarnings(scene))
+    if (PyErr_WarnEx(PyExc_UserWarning, ("raylab: " + warning).c_str(), 2) != 0)
+      throw py::error_already_set();
+}
+
 FloatImage arrayToImage(const py::array& array, const char* what) {
   if (array.ndim() != 3 || array.shape(2) != 3)
     throw py::value_error(std::string(what) + " must be an H x W x 3 array, not of shape " +

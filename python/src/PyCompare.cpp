@@ -87,6 +87,7 @@ void bindCompare(py::module_& m) {
         const std::shared_ptr<const Scene> scene = handle.scene;
         const RenderSettings settings = settingsFor(
             *scene, {std::nullopt, std::nullopt, seed, maxDepth, std::nullopt, std::nullopt});
+        warnAbout(*scene);
         ComparisonSettings compare;
         compare.samplesPerPixel = spp;
         compare.secondsPerAlgorithm = seconds;

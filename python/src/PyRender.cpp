@@ -52,6 +52,7 @@ void bindRender(py::module_& m) {
          const py::object& progress, const py::object& dtype, bool withStats) -> py::object {
         const RenderSettings settings =
             settingsFor(*handle.scene, {algorithm, spp, seed, maxDepth, nee, mis});
+        warnAbout(*handle.scene);
         const py::dtype type = py::dtype::from_args(dtype);
         if (threads < 0) throw py::value_error("threads must be 0 (all) or more");
         // The renderer keeps a reference to the scene: hold the snapshot for the whole run.

@@ -7,6 +7,7 @@ import subprocess
 import sys
 import threading
 import time
+import warnings
 
 import numpy as np
 import pytest
@@ -153,6 +154,22 @@ def test12_write_image_writes_what_raylab_render_writes(tmp_path, raylab_exe):
     assert ours.read_bytes() == pfm.read_bytes()
     assert np.array_equal(raylab.read_pfm(str(ours)), image)
     assert raylab.display_rmse(image, image) == 0.0
+
+
+def test12c_a_scene_without_light_warns(tmp_path):
+    # Nothing gives light: the picture is black, and Python says why, as the command line does.
+    dark = tmp_path / "dark.json"
+    dark.write_text("""{"raylab_scene": 2, "materials": [{"name": "grey"}],
+      "objects": [{"name": "ball", "material": "grey",
+                   "shape": {"type": "sphere", "centre": [0, 0, -3], "radius": 1}}],
+      "camera": {"width": 16, "height": 16}}""")
+    scene = raylab.load_scene(str(dark))
+    with pytest.warns(UserWarning, match="the scene has no light"):
+        image = raylab.render(scene, spp=1)
+    assert image.max() == 0.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        raylab.render(small_scene(), spp=1)  # a lit scene: no warning
 
 
 def test12b_write_image_takes_an_8bit_picture_as_it_is(tmp_path):

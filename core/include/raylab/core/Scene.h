@@ -133,4 +133,10 @@ struct Scene {
  */
 Scene defaultScene();
 
+/// What a front end warns about a scene (the command line on stderr, Python as a
+/// UserWarning): no objects (every pixel shows the background), or nothing that gives light
+/// (no point light, emissive material, ambient term or background: the image is black).
+/// Such a scene is valid (a teacher may start from it), so these are warnings, not errors.
+std::vector<std::string> sceneWarnings(const Scene& scene);
+
 }  // namespace raylab
