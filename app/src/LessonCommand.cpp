@@ -306,7 +306,8 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
     }
   }
   // A mesh's BVH boxes (lesson 8), said in words under the picture.
-  const vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  bvh.language = language;
   if (bvh.shown()) {
     view.setBvh(bvh);
     result.caption = vis::bvhCaption(scene, bvh, view.bvhSummary(), language,

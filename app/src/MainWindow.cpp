@@ -581,7 +581,8 @@ void MainWindow::showLessonStep(int index) {
     m_view->clearSampleCloud();
 
   // Step 3: a mesh's BVH boxes (lesson 8), said in words in the lesson panel.
-  const vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  bvh.language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
   if (bvh.shown())
     m_view->setBvh(bvh);
   else

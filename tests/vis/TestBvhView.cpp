@@ -94,6 +94,51 @@ TEST(BvhView, 01_LevelsAreDrawnInTheirColours) {
   EXPECT_LT(pixelsOf(view.renderOffscreen(kSize, kSize), bvhLevelColour(1)), 20);
 }
 
+/// Pixels within 40 of `colour` (in every channel) in the top right corner, where the BVH
+/// legend sits: its words are thin and smoothed, few of their pixels reach the colour.
+int cornerPixelsOf(const SrgbImage& image, const Vec3& colour) {
+  const int r = int(std::lround(255 * colour.x)), g = int(std::lround(255 * colour.y)),
+            b = int(std::lround(255 * colour.z));
+  int n = 0;
+  for (int y = 0; y < image.height / 3; ++y)
+    for (int x = image.width - image.width / 3; x < image.width; ++x) {
+      const Rgb8 c = image.at(x, y);
+      n += std::abs(c[0] - r) <= 40 && std::abs(c[1] - g) <= 40 && std::abs(c[2] - b) <= 40;
+    }
+  return n;
+}
+
+// The legend in the top right corner names the levels drawn in their colours (the ray
+// tree's legend, top left, uses some of the same colours for ray kinds), in the style's
+// language; nothing of it without boxes.
+TEST(BvhView, 01b_TheLegendNamesTheLevelsDrawn) {
+  const Scene scene = bvhScene();
+  const int ball = scene.findObject("mesh ball");
+  SceneView view(scene);
+  ViewCamera far;  // the ball small in the middle: the corners hold the legend only
+  far.eye = Point3(0, 2, 40);
+  far.focalPoint = Point3(0, 1, 0);
+  view.setViewCamera(far);
+  const SrgbImage none = view.renderOffscreen(960, 720);
+  BvhStyle style;
+  style.object = ball;
+  style.firstLevel = 0;
+  style.lastLevel = 2;
+  view.setBvh(style);
+  const SrgbImage english = view.renderOffscreen(960, 720);
+  keep(english, "TestBvhView_legend");
+  for (int d = 0; d < 3; ++d) {
+    EXPECT_GT(cornerPixelsOf(english, bvhLevelColour(d)), 15) << "level " << d;
+    EXPECT_LT(cornerPixelsOf(none, bvhLevelColour(d)), 3) << "level " << d;
+  }
+  EXPECT_LT(cornerPixelsOf(english, bvhLevelColour(3)), 3);  // level 3 is not drawn
+  style.language = Language::Chinese;
+  view.setBvh(style);
+  const SrgbImage chinese = view.renderOffscreen(960, 720);
+  EXPECT_GT(cornerPixelsOf(chinese, bvhLevelColour(1)), 15);
+  EXPECT_NE(chinese.rgb, english.rgb);  // other words
+}
+
 TEST(BvhView, 02_TheBoxesOneRayMeets) {
   const Scene scene = bvhScene();
   const int ball = scene.findObject("mesh ball");

@@ -3,6 +3,9 @@
 #include "raylab/core/Lesson.h"
 #include "raylab/core/TriangleMesh.h"
 
+#include "TextFonts.h"
+
+#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkNew.h>
@@ -11,6 +14,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
@@ -93,15 +97,66 @@ Vec3 bvhLevelColour(int depth) {
 Vec3 bvhMissedColour() { return Vec3(0.4, 0.4, 0.43); }
 Vec3 bvhCulledColour() { return Vec3(0.72, 0.72, 0.76); }
 
+namespace {
+
+/// How much of the view's background shows behind the legend's words (as the ray tree's).
+constexpr double kLegendBackdropOpacity = 0.75;
+
+void layoutCallback(vtkObject* caller, unsigned long, void* clientData, void*) {
+  const int* size = static_cast<vtkRenderer*>(caller)->GetSize();
+  static_cast<BvhActors*>(clientData)->layoutLegend(size[0], size[1]);
+}
+
+}  // namespace
+
 BvhActors::BvhActors()
     : levels(lineActor(kLevelWidth)),
       entered(lineActor(kEnteredWidth)),
-      skipped(lineActor(kSkippedWidth)) {}
+      skipped(lineActor(kSkippedWidth)) {
+  for (auto& row : legend) {
+    row = vtkSmartPointer<vtkTextActor>::New();
+    vtkTextProperty* text = row->GetTextProperty();
+    text->SetFontFamilyToArial();
+    text->ShadowOff();
+    text->SetJustificationToRight();
+    text->SetVerticalJustificationToBottom();
+    text->SetBackgroundOpacity(kLegendBackdropOpacity);
+    row->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+    row->VisibilityOff();
+  }
+  m_layout = vtkSmartPointer<vtkCallbackCommand>::New();
+  m_layout->SetCallback(layoutCallback);
+  m_layout->SetClientData(this);
+}
 
-void BvhActors::addTo(vtkRenderer* renderer) const {
+BvhActors::~BvhActors() {
+  if (m_observed) m_observed->RemoveObserver(m_observer);
+}
+
+void BvhActors::addTo(vtkRenderer* renderer) {
   renderer->AddActor(levels);
   renderer->AddActor(entered);
   renderer->AddActor(skipped);
+  for (const auto& row : legend) renderer->AddViewProp(row);
+  if (m_observed != renderer) {
+    if (m_observed) m_observed->RemoveObserver(m_observer);
+    m_observer = renderer->AddObserver(vtkCommand::StartEvent, m_layout);
+    m_observed = renderer;
+  }
+}
+
+void BvhActors::layoutLegend(int width, int height) {
+  if (width <= 0 || height <= 0) return;
+  // The ray tree legend's size (RayTreeActors::layoutLegend), in the other top corner.
+  const int font = std::clamp(int(std::lround(height / 36.0)), 10, 28);
+  const int margin = std::max(4, int(std::lround(0.02 * height)));
+  const int line = int(std::lround(1.3 * font));
+  int y = height - margin - font;
+  for (const auto& row : legend) {
+    row->GetTextProperty()->SetFontSize(font);
+    row->SetDisplayPosition(width - margin, y);
+    y -= line;
+  }
 }
 
 namespace {
@@ -190,6 +245,33 @@ void BvhActors::build(const Scene& scene, const BvhStyle& newStyle) {
   lines[0].into(levels);
   lines[1].into(entered);
   lines[2].into(skipped);
+
+  // The legend: which colour is which level, and with a ray the greys of the boxes it
+  // passed by or met only beyond its nearest hit.
+  const bool zh = style.language == Language::Chinese;
+  std::vector<std::pair<std::string, Vec3>> rows;
+  if (summary.boxes > 0) {
+    rows.emplace_back(zh ? "包围盒层级" : "box level", Vec3(0.95));
+    const int last = std::min({style.lastLevel, summary.depth, style.firstLevel + 7});
+    for (int level = std::max(0, style.firstLevel); level <= last; ++level)
+      rows.emplace_back((zh ? "第 " : "level ") + std::to_string(level) + (zh ? " 层" : ""),
+                        bvhLevelColour(level));
+    if (style.ray) {
+      rows.emplace_back(zh ? "未命中" : "missed", bvhMissedColour());
+      rows.emplace_back(zh ? "已剔除" : "culled", bvhCulledColour());
+    }
+  }
+  for (std::size_t i = 0; i < legend.size(); ++i) {
+    vtkTextActor* row = legend[i];
+    row->SetVisibility(i < rows.size());
+    if (i >= rows.size()) continue;
+    row->SetInput(rows[i].first.c_str());
+    vtkTextProperty* text = row->GetTextProperty();
+    useFontFor(text, style.language);
+    text->SetColor(rows[i].second.x, rows[i].second.y, rows[i].second.z);
+    text->SetBold(i == 0);
+    text->SetBackgroundColor(background.x, background.y, background.z);
+  }
 }
 
 }  // namespace raylab::vis

@@ -219,6 +219,7 @@ SceneView::SceneView(const Scene& scene) : m_impl(std::make_unique<Impl>()) {
   // Lines drawn over faces (the selection outline) are pulled towards the eye.
   vtkMapper::SetResolveCoincidentTopologyToPolygonOffset();
   m_impl->renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+  m_impl->bvh.background = Vec3(kBackground[0], kBackground[1], kBackground[2]);
   setScene(scene);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Bvh.h"
+#include "raylab/core/Lesson.h"
 #include "raylab/core/Ray.h"
 #include "raylab/core/Types.h"
 
@@ -35,6 +36,9 @@ struct BvhStyle {
   int lastLevel = 0;   ///< Last level drawn, inclusive.
   BvhSettings::Split split = BvhSettings::Split::Sah;  ///< The hierarchy's split.
   std::optional<Ray> ray;  ///< A ray (world space) whose visited boxes are shown.
+  /// The words of the legend the view draws in its top right corner (which colour is which
+  /// level; with a ray, the greys of missed and culled boxes).
+  Language language = Language::English;
 
   bool shown() const { return object >= 0; }
 };
