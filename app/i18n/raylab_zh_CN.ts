@@ -957,6 +957,18 @@
         <source>%1 tracing stopped here (ray budget reached, or cancelled): %2</source>
         <translation>%1 的追踪在此停止（达到光线预算或被取消）：%2</translation>
     </message>
+    <message>
+        <source>%1 was blocked by &apos;%2&apos; before reaching the light &apos;%3&apos;</source>
+        <translation>%1 在到达光源“%3”之前被“%2”遮挡</translation>
+    </message>
+    <message>
+        <source>%1 was blocked before reaching the light &apos;%2&apos;</source>
+        <translation>%1 在到达光源“%2”之前被遮挡</translation>
+    </message>
+    <message>
+        <source>%1 reached the light &apos;%2&apos; unblocked and delivers its radiance</source>
+        <translation>%1 未受遮挡，到达光源“%2”并带回它的辐射亮度</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::ComparePanel</name>

@@ -55,10 +55,9 @@ std::function<std::string(int)> captionsIn(const std::string& lang, const Scene&
   if (lang == "zh") {
     if (!installLanguageHeadless(kChinese))
       throw AnimateError("--lang zh: the Chinese translation (raylab_zh_CN.qm) was not found");
-    std::vector<std::string> names;
-    for (const SceneObject& object : scene.objects) names.push_back(object.name);
-    return [&trace, animation, names](int frame) {
-      return stepCaption(trace, animation, frame, names).toStdString();
+    return [&trace, animation, names = objectNamesOf(scene),
+            lights = pointLightNamesOf(scene)](int frame) {
+      return stepCaption(trace, animation, frame, names, lights).toStdString();
     };
   }
 #else

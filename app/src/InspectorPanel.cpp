@@ -91,11 +91,9 @@ void InspectorPanel::showSegment(int id) {
   const bool exact = m_exact->isChecked();
   const RayInspection inspection =
       RayInspector::inspect(m_view.scene(), m_view.rayTree(), id, exact);
-  std::vector<std::string> names;
-  for (const SceneObject& object : m_view.scene().objects) names.push_back(object.name);
-  const QString values =
-      inspectorText(inspection.rayText() + (exact ? "\n" + inspection.oracleText() : ""),
-                    m_view.rayTree(), id, names);
+  const QString values = inspectorText(
+      inspection.rayText() + (exact ? "\n" + inspection.oracleText() : ""), m_view.rayTree(), id,
+      objectNamesOf(m_view.scene()), pointLightNamesOf(m_view.scene()));
   m_text->setPlainText(
       inWords(inspection) + QStringLiteral("\n") + values +
       (exact ? QString()

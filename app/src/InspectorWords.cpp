@@ -169,7 +169,8 @@ QString oracleNote(const QString& note) {
 }  // namespace
 
 QString inspectorText(const std::string& coreText, const RayTree& tree, int id,
-                      const std::vector<std::string>& objectNames) {
+                      const std::vector<std::string>& objectNames,
+                      const std::vector<std::string>& pointLightNames) {
   const QString text = QString::fromStdString(coreText);
   if (currentLanguage() != kChinese || id < 0 || id >= int(tree.segments.size())) return text;
   const RaySegment& s = tree.segments[std::size_t(id)];
@@ -203,8 +204,9 @@ QString inspectorText(const std::string& coreText, const RayTree& tree, int id,
       const QString label = line.mid(2, 12).trimmed();
       const QString value = line.mid(14);
       const QString name = word(label.toUtf8().constData());
-      const QString said = label == QStringLiteral("ended") ? narrateRay(tree, id, objectNames)
-                                                            : translateValue(value);
+      const QString said = label == QStringLiteral("ended")
+                               ? narrateRay(tree, id, objectNames, pointLightNames)
+                               : translateValue(value);
       out << QStringLiteral("  %1  %2").arg(name, said);
     } else {
       out << line;

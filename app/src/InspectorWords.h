@@ -16,6 +16,7 @@ namespace raylab::app {
  * vectors and names kept. `id` is the ray of `tree` the text is about.
  */
 QString inspectorText(const std::string& coreText, const RayTree& tree, int id,
-                      const std::vector<std::string>& objectNames);
+                      const std::vector<std::string>& objectNames,
+                      const std::vector<std::string>& pointLightNames = {});
 
 }  // namespace raylab::app

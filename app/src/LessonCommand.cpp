@@ -24,6 +24,7 @@
 #if RAYLAB_WITH_GUI
 #include "InspectorWords.h"
 #include "Language.h"
+#include "UiWords.h"
 
 #endif
 
@@ -256,9 +257,8 @@ std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Lang
   if (language == Language::Chinese) {
     static const bool chinese = installLanguageHeadless(kChinese);
     if (chinese) {
-      std::vector<std::string> names;
-      for (const SceneObject& object : scene.objects) names.push_back(object.name);
-      return inspectorText(english, tree, id, names).toStdString();
+      return inspectorText(english, tree, id, objectNamesOf(scene), pointLightNamesOf(scene))
+          .toStdString();
     }
   }
 #endif

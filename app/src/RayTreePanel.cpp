@@ -703,9 +703,8 @@ void RayTreePanel::showFrame() {
 
   // The picture and the status line: functions of the frame number only.
   m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), m_frame));
-  std::vector<std::string> names;
-  for (const SceneObject& object : m_view.scene().objects) names.push_back(object.name);
-  setStatus(stepCaption(*m_trace, animation(), m_frame, names));
+  setStatus(stepCaption(*m_trace, animation(), m_frame, objectNamesOf(m_view.scene()),
+                        pointLightNamesOf(m_view.scene())));
   emit viewChanged();
 }
 

@@ -84,9 +84,16 @@ QString endReasonLabel(EndReason reason) {
   return QStringLiteral("?");
 }
 
-QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& objectNames) {
+QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& objectNames,
+                   const std::vector<std::string>& pointLightNames) {
   if (id < 0 || id >= int(tree.segments.size())) return {};
   const RaySegment& s = tree.segments[std::size_t(id)];
+  // A shadow ray's light, when its name is known (core describeEnd).
+  QString light;
+  if (s.lightObject >= 0 && s.lightObject < int(objectNames.size()))
+    light = QString::fromStdString(objectNames[std::size_t(s.lightObject)]);
+  else if (s.pointLight >= 0 && s.pointLight < int(pointLightNames.size()))
+    light = QString::fromStdString(pointLightNames[std::size_t(s.pointLight)]);
   const QString ray =
       QCoreApplication::translate("UiWords", "%1 ray #%2").arg(rayKindWord(s.kind)).arg(id);
   const bool named = s.object >= 0 && s.object < int(objectNames.size());
@@ -127,6 +134,13 @@ QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& 
                                                  "%1 was absorbed: no further ray leaves this hit")
                          .arg(ray);
     case EndReason::Occluded:
+      if (!light.isEmpty())
+        return named ? QCoreApplication::translate(
+                           "UiWords", "%1 was blocked by '%2' before reaching the light '%3'")
+                           .arg(ray, object, light)
+                     : QCoreApplication::translate("UiWords",
+                                                   "%1 was blocked before reaching the light '%2'")
+                           .arg(ray, light);
       return named ? QCoreApplication::translate("UiWords",
                                                  "%1 was blocked by '%2' before reaching its light")
                          .arg(ray, object)
@@ -134,6 +148,10 @@ QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& 
                                                  "%1 was blocked before reaching its light")
                          .arg(ray);
     case EndReason::ReachedLight:
+      if (!light.isEmpty())
+        return QCoreApplication::translate(
+                   "UiWords", "%1 reached the light '%2' unblocked and delivers its radiance")
+            .arg(ray, light);
       return QCoreApplication::translate("UiWords",
                                          "%1 reached its light unblocked and delivers its radiance")
           .arg(ray);
@@ -192,8 +210,21 @@ QString traceSummary(const PixelTrace& trace) {
                            .arg(estimate));
 }
 
+std::vector<std::string> objectNamesOf(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const SceneObject& object : scene.objects) names.push_back(object.name);
+  return names;
+}
+
+std::vector<std::string> pointLightNamesOf(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const PointLight& light : scene.pointLights) names.push_back(light.name);
+  return names;
+}
+
 QString stepCaption(const PixelTrace& trace, const vis::AnimationSettings& settings, int frame,
-                    const std::vector<std::string>& objectNames) {
+                    const std::vector<std::string>& objectNames,
+                    const std::vector<std::string>& pointLightNames) {
   const RayTree& tree = trace.tree;
   if (tree.segments.empty()) return QCoreApplication::translate("UiWords", "No ray tree yet.");
   const int perFrame = std::max(1, settings.framesPerStep);
@@ -211,7 +242,7 @@ QString stepCaption(const PixelTrace& trace, const vis::AnimationSettings& setti
     const int perStep = std::max(1, settings.raysPerStep);
     const int first = step * perStep;
     const int end = std::min(int(tree.segments.size()), first + perStep);
-    const QString what = narrateRay(tree, first, objectNames);
+    const QString what = narrateRay(tree, first, objectNames, pointLightNames);
     text = end - first == 1
                ? QCoreApplication::translate("UiWords", "Step %1 of %2: %3.")
                      .arg(step + 1)

@@ -3,6 +3,7 @@
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
+#include "raylab/core/Scene.h"
 #include "raylab/vis/BounceAnimation.h"
 
 #include <QString>
@@ -34,7 +35,8 @@ QString endReasonLabel(EndReason reason);
  * and spawned 2 rays (#5..#6)" — the stepper's narration (core PixelTrace::stepTexts),
  * composed from the recorded segment so that it can be translated.
  */
-QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& objectNames);
+QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& objectNames,
+                   const std::vector<std::string>& pointLightNames = {});
 
 /// "22 rays (camera 1, shadow 9, …), depth 3, estimate (0.1, 0.2, 0.3)": a trace's figures
 /// (core PixelTrace::summary, translated).
@@ -43,6 +45,10 @@ QString traceSummary(const PixelTrace& trace);
 /// The animation's caption at `frame` (vis::stepCaption, translated): which step or depth
 /// is travelling, in the engine's words.
 QString stepCaption(const PixelTrace& trace, const vis::AnimationSettings& settings, int frame,
-                    const std::vector<std::string>& objectNames);
+                    const std::vector<std::string>& objectNames,
+                    const std::vector<std::string>& pointLightNames = {});
+/// The names of the scene's objects and of its point lights, as narrateRay takes them.
+std::vector<std::string> objectNamesOf(const Scene& scene);
+std::vector<std::string> pointLightNamesOf(const Scene& scene);
 
 }  // namespace raylab::app

@@ -23,7 +23,8 @@ TEST(UiWords, NarrationIsCoresStepTextForEveryRay) {
     for (const auto& [x, y] : gridPixels(scene.camera.width, scene.camera.height, 32, 24)) {
       const PixelTrace trace = tracePixel(tracer, x, y, 0);
       for (std::size_t id = 0; id < trace.tree.segments.size(); ++id) {
-        ASSERT_EQ(narrateRay(trace.tree, int(id), tracer.objectNames()).toStdString(),
+        ASSERT_EQ(narrateRay(trace.tree, int(id), tracer.objectNames(), tracer.pointLightNames())
+                      .toStdString(),
                   trace.stepTexts[id])
             << toString(algorithm) << " pixel (" << x << ", " << y << ") ray #" << id;
         ++reasons[std::size_t(trace.tree.segments[id].endReason)];

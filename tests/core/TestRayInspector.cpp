@@ -147,7 +147,7 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   EXPECT_EQ(shadow.segment.lightObject, -1);
   EXPECT_EQ(shadow.lightName, "lamp");
   EXPECT_TRUE(contains(text, "light       'lamp'\n")) << text;
-  EXPECT_TRUE(contains(text, "reached its light unblocked")) << text;
+  EXPECT_TRUE(contains(text, "reached the light 'lamp' unblocked")) << text;
   EXPECT_TRUE(contains(text, "Exact oracle: no hit to check")) << text;
 
   // Blocked by the box: the inspector names it, the oracle checks that hit, energy 0.
@@ -163,7 +163,7 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   ASSERT_TRUE(blocked.oracle.has_value());
   EXPECT_EQ(blocked.oracle->comparison.exact.classification, ExactClass::Hit);
   EXPECT_TRUE(blocked.oracle->agrees) << blocked.oracle->toString();
-  EXPECT_TRUE(contains(blockedText, "blocked by 'blocker' before reaching its light"))
+  EXPECT_TRUE(contains(blockedText, "blocked by 'blocker' before reaching the light 'lamp'"))
       << blockedText;
   EXPECT_TRUE(contains(blockedText, "blocked at")) << blockedText;
   // It aimed at the lamp: the far end is kept beside the blocker's hit point.

@@ -83,6 +83,19 @@ TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
   EXPECT_EQ(describeEnd(s, names), "hit the light 'lamp': the path ends there");
   s.endReason = EndReason::Occluded;
   EXPECT_EQ(describeEnd(s, names), "was blocked by 'lamp' before reaching its light");
+  // A shadow ray's light by name: an area light (an object), a point light.
+  s.object = 0;
+  s.lightObject = 1;
+  EXPECT_EQ(describeEnd(s, names), "was blocked by 'floor' before reaching the light 'lamp'");
+  s.lightObject = -1;
+  s.pointLight = 0;
+  EXPECT_EQ(describeEnd(s, names, {"key"}),
+            "was blocked by 'floor' before reaching the light 'key'");
+  EXPECT_EQ(describeEnd(s, names), "was blocked by 'floor' before reaching its light");
+  s.endReason = EndReason::ReachedLight;
+  EXPECT_EQ(describeEnd(s, names, {"key"}),
+            "reached the light 'key' unblocked and delivers its radiance");
+  s.pointLight = -1;
   s.object = -1;
   s.endReason = EndReason::Escaped;
   EXPECT_EQ(describeEnd(s, names), words(EndReason::Escaped).clause);
@@ -528,7 +541,9 @@ TEST(Tracer, 10_PixelTraceIsTheRenderersSampleWithItsNarration) {
       const std::string subject =
           std::string(toString(seg.kind)) + " ray #" + std::to_string(seg.id) + " ";
       EXPECT_EQ(trace.stepTexts[i].rfind(subject, 0), 0u) << trace.stepTexts[i];
-      EXPECT_NE(trace.stepTexts[i].find(describeEnd(seg, tracer.objectNames())), std::string::npos)
+      EXPECT_NE(
+          trace.stepTexts[i].find(describeEnd(seg, tracer.objectNames(), tracer.pointLightNames())),
+          std::string::npos)
           << trace.stepTexts[i];
     }
     EXPECT_EQ(trace.counts.total(), trace.tree.segments.size());

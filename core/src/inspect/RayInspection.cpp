@@ -39,7 +39,9 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
     r.lightName = scene.pointLights[std::size_t(s.pointLight)].name;
   std::vector<std::string> names;
   for (const SceneObject& o : scene.objects) names.push_back(o.name);
-  r.ended = describeEnd(s, names);
+  std::vector<std::string> lights;
+  for (const PointLight& light : scene.pointLights) lights.push_back(light.name);
+  r.ended = describeEnd(s, names, lights);
 
   // Check the hit against the exact oracle.
   if (withOracle && s.hit && s.object >= 0 && s.object < int(scene.objects.size()) &&

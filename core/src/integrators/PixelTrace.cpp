@@ -67,9 +67,9 @@ PixelTrace traceFrom(const Tracer& tracer, int x, int y, int sample, const Trace
   // A cancel cuts some child lists: tell those rays' ends again.
   for (const RaySegment& s : trace.tree.segments)
     if (s.endReason == EndReason::Stopped && trace.cancelled)
-      trace.stepTexts[std::size_t(s.id)] = std::string(toString(s.kind)) + " ray #" +
-                                           std::to_string(s.id) + " " +
-                                           describeEnd(s, tracer.objectNames());
+      trace.stepTexts[std::size_t(s.id)] =
+          std::string(toString(s.kind)) + " ray #" + std::to_string(s.id) + " " +
+          describeEnd(s, tracer.objectNames(), tracer.pointLightNames());
   trace.counts = stepper.counts();
   trace.estimate = stepper.estimate();
   return trace;

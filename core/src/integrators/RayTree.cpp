@@ -63,9 +63,16 @@ std::optional<EndReason> endReasonFromJson(const std::string& json) {
   return std::nullopt;
 }
 
-std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames) {
+std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames,
+                        const std::vector<std::string>& pointLightNames) {
   const bool named = s.object >= 0 && s.object < int(objectNames.size());
   const std::string object = named ? "'" + objectNames[std::size_t(s.object)] + "'" : "";
+  // A shadow ray's light, when its name is known.
+  std::string light;
+  if (s.lightObject >= 0 && s.lightObject < int(objectNames.size()))
+    light = "'" + objectNames[std::size_t(s.lightObject)] + "'";
+  else if (s.pointLight >= 0 && s.pointLight < int(pointLightNames.size()))
+    light = "'" + pointLightNames[std::size_t(s.pointLight)] + "'";
   switch (s.endReason) {
     case EndReason::Spawned: {
       std::string text = named ? "hit " + object + " and spawned " : "spawned ";
@@ -92,8 +99,14 @@ std::string describeEnd(const RaySegment& s, const std::vector<std::string>& obj
       return named ? "hit the light " + object + ": the path ends there"
                    : words(s.endReason).clause;
     case EndReason::Occluded:
+      if (!light.empty())
+        return (named ? "was blocked by " + object : std::string("was blocked")) +
+               " before reaching the light " + light;
       return named ? "was blocked by " + object + " before reaching its light"
                    : words(s.endReason).clause;
+    case EndReason::ReachedLight:
+      return light.empty() ? words(s.endReason).clause
+                           : "reached the light " + light + " unblocked and delivers its radiance";
     case EndReason::MaxDepth:
     case EndReason::RussianRoulette:
     case EndReason::Absorbed:

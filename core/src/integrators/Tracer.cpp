@@ -194,6 +194,7 @@ Tracer::Tracer(const Scene& scene, const RenderSettings& settings)
   const double diagonal = glm::length(bounds.extent());
   m_escapeLength = diagonal > 0.0 ? diagonal : 1.0;
   for (const SceneObject& object : scene.objects) m_objectNames.push_back(object.name);
+  for (const PointLight& light : scene.pointLights) m_pointLightNames.push_back(light.name);
 }
 
 const Material& Tracer::materialOf(int object) const {

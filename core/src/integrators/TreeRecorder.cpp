@@ -123,7 +123,7 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const SceneHit* hit, EndReas
   } else {
     setFarEnd(seg, ray, end);
   }
-  m_event.text = subject + describeEnd(seg, m_tracer.objectNames());
+  m_event.text = subject + describeEnd(seg, m_tracer.objectNames(), m_tracer.pointLightNames());
   if (end == EndReason::Stopped)
     m_event.text += " (" + std::to_string(wanted) + (wanted == 1 ? " ray" : " rays") +
                     " would have been spawned)";

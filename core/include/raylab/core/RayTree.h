@@ -94,9 +94,12 @@ struct RaySegment {
 };
 
 /// How segment `s` ended, as a clause after its subject ("reflection ray #3 ..."), naming
-/// the object hit or blocking (from `objectNames`, indexed by RaySegment::object) and the
-/// children spawned: "hit 'glass ball' and spawned 2 rays (#4..#5)".
-std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames);
+/// the object hit or blocking (from `objectNames`, indexed by RaySegment::object), a shadow
+/// ray's light (an area light from `objectNames`, a point light from `pointLightNames`) and
+/// the children spawned: "hit 'glass ball' and spawned 2 rays (#4..#5)", "reached the light
+/// 'lamp' unblocked and delivers its radiance".
+std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames,
+                        const std::vector<std::string>& pointLightNames = {});
 
 /// The rays of one (pixel, sample), in the engine's processing order.
 struct RayTree {

@@ -95,6 +95,8 @@ class Tracer {
   const Material& materialOf(int object) const;
   /// The objects' names, indexed like Scene::objects (for narration).
   const std::vector<std::string>& objectNames() const { return m_objectNames; }
+  /// The point lights' names, indexed like Scene::pointLights (for narration).
+  const std::vector<std::string>& pointLightNames() const { return m_pointLightNames; }
   /// Length at which recorded escaped rays are drawn: the diagonal of the bounds of the
   /// scene's finite objects and the camera, world units (1 for an empty scene).
   double escapeLength() const { return m_escapeLength; }
@@ -107,6 +109,7 @@ class Tracer {
   std::unique_ptr<SpawnRule> m_rule;
   double m_escapeLength = 1.0;
   std::vector<std::string> m_objectNames;
+  std::vector<std::string> m_pointLightNames;
 };
 
 /**
