@@ -5,10 +5,12 @@
 #include "raylab/core/Exception.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Limits.h"
+#include "raylab/core/SceneEdit.h"
 #include "raylab/core/Text.h"
 #include "raylab/vis/Display.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -109,6 +111,22 @@ void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std
                      ->check(CLI::NonNegativeNumber);
   m_sizeOption =
       command->add_option("--size", m_sizeText, sizeHelp)->check(CLI::Validator(checkSize, "WxH"));
+  command
+      ->add_option("--set", sets,
+                   "Change a value of the scene for this run, e.g. --set max_depth=1 (a key of "
+                   "the render block) or --set /camera/aperture=0.2 (any place of the scene "
+                   "file); repeatable")
+      ->type_name("PLACE=VALUE")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            const auto eq = text.find('=');
+            return eq == std::string::npos || eq == 0
+                       ? std::string(
+                             "expected PLACE=VALUE, e.g. max_depth=1 or "
+                             "/camera/aperture=0.2")
+                       : std::string();
+          },
+          "PLACE=VALUE"));
   command->final_callback([this] { finish(); });
 }
 
@@ -119,10 +137,27 @@ void CommonOptions::finish() {
 }
 
 Scene CommonOptions::loadScene(const std::string& topLevelScene) const {
-  Scene loaded = loadSceneOrDefault(scene.empty() ? topLevelScene : scene);
+  Scene loaded = loadWithSets(topLevelScene);
   if (size) {
     loaded.camera.width = size->first;
     loaded.camera.height = size->second;
+  }
+  return loaded;
+}
+
+Scene CommonOptions::loadWithSets(const std::string& topLevelScene) const {
+  const std::string path = scene.empty() ? topLevelScene : scene;
+  Scene loaded = loadSceneOrDefault(path);
+  for (const std::string& set : sets) {
+    const auto eq = set.find('=');
+    std::string place = set.substr(0, eq);
+    if (place.front() != '/') place = "/render/" + place;
+    std::string value = set.substr(eq + 1);
+    // JSON as typed; a bare word (whitted, sah) as the string it means.
+    if (!nlohmann::json::accept(value)) value = nlohmann::json(value).dump();
+    loaded = edit::setValue(
+        loaded, place, value,
+        (path.empty() ? std::string("the built-in scene") : path) + " (--set " + set + ")");
   }
   return loaded;
 }

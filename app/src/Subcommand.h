@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -50,6 +51,10 @@ struct CommonOptions {
   std::optional<Algorithm> algorithm;
   std::optional<std::uint64_t> seed;
   std::optional<std::pair<int, int>> size;  ///< Width, height.
+  /// --set PLACE=VALUE, in order: a value of the scene file changed for this run, checked by
+  /// the loader (PLACE a JSON pointer, /camera/aperture, or a key of the render block,
+  /// max_depth; VALUE JSON, a bare word read as a string).
+  std::vector<std::string> sets;
 
   /// Adds the options to `command`. `outHelp` describes --out (required when `outRequired`);
   /// `sizeHelp` describes --size. With `withAlgorithm` false there is no --algorithm.
@@ -57,8 +62,12 @@ struct CommonOptions {
            bool outRequired = true, bool withAlgorithm = true);
 
   /// The scene (file or built-in default; the top-level --scene when --scene is absent)
-  /// with --size applied to its camera. Throws SceneIO::LoadError naming the file.
+  /// with each --set applied, then --size to its camera. Throws SceneIO::LoadError naming
+  /// the file (and the place of a --set the loader refuses).
   Scene loadScene(const std::string& topLevelScene) const;
+  /// The scene with each --set applied and nothing else (trace and animate take --size as
+  /// the picture's size, not the image's).
+  Scene loadWithSets(const std::string& topLevelScene) const;
   /// The scene's render settings with --algorithm and --seed applied.
   RenderSettings settings(const Scene& scene) const;
 

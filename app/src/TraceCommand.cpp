@@ -328,7 +328,7 @@ std::unique_ptr<vis::SceneView> RayTreeOptions::makeView(const Scene& scene,
 }
 
 Scene RayTreeOptions::loadScene(const std::string& topLevelScene) const {
-  Scene scene = loadSceneOrDefault(common.scene.empty() ? topLevelScene : common.scene);
+  Scene scene = common.loadWithSets(topLevelScene);
   if (imageSize) {
     scene.camera.width = imageSize->first;
     scene.camera.height = imageSize->second;
