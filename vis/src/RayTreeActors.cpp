@@ -82,8 +82,8 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_fronts->GetProperty()->RenderPointsAsSpheresOn();
   m_normals = makeColouredActor();
   m_normals->GetMapper()->ScalarVisibilityOff();
-  m_normals->GetProperty()->SetColor(1.0, 0.45, 0.45);
-  m_normals->GetProperty()->SetLineWidth(1.5);
+  m_normals->GetProperty()->SetColor(1.0, 0.5, 0.5);
+  m_normals->GetProperty()->SetLineWidth(2.5);
 
   // Arrow heads: small cones whose tip sits on the ray front, pointing along the ray,
   // in the ray's colour.
@@ -201,7 +201,7 @@ void RayTreeActors::rebuild() {
   setInput(m_normals, geometry.normals);
   m_normals->SetVisibility(shown && style.showNormals && geometry.normals->GetNumberOfCells() > 0);
   m_arrowGlyphs->SetInputData(geometry.arrows);
-  m_arrowGlyphs->SetScaleFactor(glyphLength * 0.6);
+  m_arrowGlyphs->SetScaleFactor(glyphLength * 0.8);
   m_arrows->SetVisibility(shown && style.showArrows && geometry.arrows->GetNumberOfPoints() > 0);
 
   // The selected segment, as far as it is revealed, thick and magenta.

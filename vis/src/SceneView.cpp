@@ -288,7 +288,8 @@ void SceneView::setScene(const Scene& scene) {
   addCameraAndLights(m_scene, renderer);
 
   // Step 4: the ray tree (kept across scene changes: re-trace and setRayTree to update).
-  m_impl->rays.glyphLength = 0.5 * cameraGlyphSize(m_scene);
+  // Normals as long as the camera glyph is wide: at half that they were ticks hard to find.
+  m_impl->rays.glyphLength = cameraGlyphSize(m_scene);
   m_impl->rays.addTo(renderer);
   m_impl->rays.markDirty();
   for (const auto& prop : m_impl->crossings) renderer->AddViewProp(prop);
