@@ -121,10 +121,27 @@ TEST(SceneEdit, 03b_AValueBeneathTransformStepsIsTheFilesValue) {
   EXPECT_NEAR(b.extent().x, 4.0, 1e-9);
   EXPECT_NEAR(b.extent().y, 2.0, 1e-9);
   EXPECT_NEAR(b.extent().z, 6.0, 1e-9);
-  // A translation in the window appends a step; the file keeps the ones it had.
+  // A move in the window right after the file's own translation adds to it (the same
+  // transform, one step shorter); the file keeps the steps before it.
   const Scene moved = edit::translateObject(bigger, 0, Vec3(0, 1, 0), kOrigin);
   EXPECT_EQ(edit::valueAt(moved, "/objects/0/transform/0/rotate/degrees", kOrigin), "90");
-  EXPECT_EQ(edit::valueAt(moved, "/objects/0/transform/2/translate", kOrigin), "[0.0,1.0,0.0]");
+  EXPECT_EQ(edit::valueAt(moved, "/objects/0/transform/1/translate", kOrigin), "[5.0,1.0,0.0]");
+  const Scene twice = edit::translateObject(moved, 0, Vec3(0.5, 1, 0), kOrigin);
+  EXPECT_EQ(edit::valueAt(twice, "/objects/0/transform/1/translate", kOrigin), "[5.5,2.0,0.0]");
+  EXPECT_THROW(edit::valueAt(twice, "/objects/0/transform/2", kOrigin), SceneIO::LoadError);
+  // Turned twice about the same axis: one turn of the sum, about the same centre.
+  const Scene turned = edit::rotateObject(twice, 0, 30.0, Vec3(0, 1, 0), kOrigin);
+  const Scene turnedTwice = edit::rotateObject(turned, 0, 15.0, Vec3(0, 1, 0), kOrigin);
+  EXPECT_EQ(edit::valueAt(turnedTwice, "/objects/0/transform/3/rotate/degrees", kOrigin), "45.0");
+  EXPECT_THROW(edit::valueAt(turnedTwice, "/objects/0/transform/5", kOrigin), SceneIO::LoadError);
+  const Scene once = edit::rotateObject(twice, 0, 45.0, Vec3(0, 1, 0), kOrigin);
+  const auto& summed = static_cast<const Box&>(*turnedTwice.objects[0].shape);
+  const auto& single = static_cast<const Box&>(*once.objects[0].shape);
+  EXPECT_NEAR(glm::length(summed.centre() - single.centre()), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(summed.axis(0) - single.axis(0)), 0.0, 1e-12);
+  // About another axis: a new turn.
+  const Scene other = edit::rotateObject(turnedTwice, 0, 10.0, Vec3(1, 0, 0), kOrigin);
+  EXPECT_EQ(edit::valueAt(other, "/objects/0/transform/6/rotate/degrees", kOrigin), "10.0");
 }
 
 TEST(SceneEdit, 04_DeleteDuplicateRenameAndTranslate) {

@@ -55,10 +55,36 @@ Point3 centreOf(const SceneObject& object) {
 }
 
 /// Appends transform steps to object `object`'s "transform" (making it when missing).
+/// Appends transform steps to object `object`'s "transform" (making it when missing). A
+/// move right after a move, or a turn about the same centre and axis right after a turn,
+/// adds to the last one instead, so that clicking Move or Rotate again and again keeps the
+/// file's list short: [translate t1] + [translate t2] = [translate t1 + t2], and
+/// [to c, rotate a by d1, back] + [to c, rotate a by d2, back] = [to c, rotate a by d1 + d2,
+/// back] (c and a exactly the same).
 void appendSteps(json& doc, int object, const std::vector<json>& steps, const std::string& origin) {
   json& entry = objectEntry(doc, object, origin);
   if (!entry.contains("transform")) entry["transform"] = json::array();
-  for (const json& step : steps) entry["transform"].push_back(step);
+  json& list = entry["transform"];
+  const std::size_t n = list.size();
+  const auto kindOf = [](const json& step) {
+    return step.is_object() && step.size() == 1 ? step.begin().key() : std::string();
+  };
+  if (steps.size() == 1 && kindOf(steps[0]) == "translate" && n >= 1 &&
+      kindOf(list[n - 1]) == "translate" && list[n - 1]["translate"].size() == 3) {
+    json& last = list[n - 1]["translate"];
+    for (std::size_t a = 0; a < 3; ++a)
+      last[a] = last[a].get<double>() + steps[0]["translate"][a].get<double>();
+    return;
+  }
+  if (steps.size() == 3 && kindOf(steps[1]) == "rotate" && n >= 3 &&
+      kindOf(list[n - 2]) == "rotate" && list[n - 3] == steps[0] && list[n - 1] == steps[2] &&
+      list[n - 2]["rotate"].contains("axis") &&
+      list[n - 2]["rotate"]["axis"] == steps[1]["rotate"]["axis"]) {
+    json& degrees = list[n - 2]["rotate"]["degrees"];
+    degrees = degrees.get<double>() + steps[1]["rotate"]["degrees"].get<double>();
+    return;
+  }
+  for (const json& step : steps) list.push_back(step);
 }
 
 /// The scene's extent: the diagonal of its finite objects' bounds (1 for none), and the
