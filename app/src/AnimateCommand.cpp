@@ -152,8 +152,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   const vis::AnimationSettings animation = o.animation();
   const int total = vis::frameCount(tree, animation);
   if (range && range->first > total - 1) {
-    std::error_code removeError;
-    if (!missing.empty()) std::filesystem::remove_all(missing, removeError);
+    removeFoldersMade(missing);
     throw AnimateError("--frames " + options.frames + ": this animation has frames 0 to " +
                        std::to_string(total - 1));
   }

@@ -55,12 +55,16 @@ std::string firstMissingFolder(const std::string& dir) {
   return missing.string();
 }
 
+void removeFoldersMade(const std::string& missing) {
+  std::error_code ec;
+  if (!missing.empty()) std::filesystem::remove_all(missing, ec);
+}
+
 void requireDisplayAfterFolder(const std::string& missing) {
   try {
     vis::requireDisplay();
   } catch (...) {
-    std::error_code ec;
-    if (!missing.empty()) std::filesystem::remove_all(missing, ec);
+    removeFoldersMade(missing);
     throw;
   }
 }

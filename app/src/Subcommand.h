@@ -32,6 +32,9 @@ void requireDisplayAfterFolder(const std::string& missing);
 /// The first of `dir` and its parents that does not exist, or "" when `dir` exists: what
 /// creating `dir` adds.
 std::string firstMissingFolder(const std::string& dir);
+/// Removes what making a folder added (`missing`, firstMissingFolder's answer; nothing when
+/// it is ""), when a command stops before it writes there.
+void removeFoldersMade(const std::string& missing);
 
 /// A subcommand of `raylab`: its CLI11 parser and what runs when it was chosen. The
 /// argument of `run` is the top-level `--scene` (so `raylab --scene F trace ...` works).

@@ -89,11 +89,7 @@ QString narrateRay(const RayTree& tree, int id, const std::vector<std::string>& 
   if (id < 0 || id >= int(tree.segments.size())) return {};
   const RaySegment& s = tree.segments[std::size_t(id)];
   // A shadow ray's light, when its name is known (core describeEnd).
-  QString light;
-  if (s.lightObject >= 0 && s.lightObject < int(objectNames.size()))
-    light = QString::fromStdString(objectNames[std::size_t(s.lightObject)]);
-  else if (s.pointLight >= 0 && s.pointLight < int(pointLightNames.size()))
-    light = QString::fromStdString(pointLightNames[std::size_t(s.pointLight)]);
+  const QString light = QString::fromStdString(lightNameOf(s, objectNames, pointLightNames));
   const QString ray =
       QCoreApplication::translate("UiWords", "%1 ray #%2").arg(rayKindWord(s.kind)).arg(id);
   const bool named = s.object >= 0 && s.object < int(objectNames.size());

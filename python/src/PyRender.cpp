@@ -4,6 +4,7 @@
 #include "Bindings.h"
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/FilePaths.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Renderer.h"
@@ -131,8 +132,7 @@ reached, the seconds, and whether it was cancelled.)");
           if (image.ndim() != 3 || image.shape(2) != 3)
             throw py::value_error("image must be an H x W x 3 array, not of shape " +
                                   py::str(py::getattr(image, "shape")).cast<std::string>());
-          const std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : path;
-          if (ext != ".png" && ext != ".PNG")
+          if (lowerExtension(path) != ".png")
             throw py::value_error(path +
                                   ": an 8-bit sRGB picture (uint8, as view_image and to_srgb "
                                   "give) is written as .png; .ppm and .pfm take linear "

@@ -32,15 +32,6 @@ std::string objectName(const TraceData& data, int object) {
                                                      : std::string();
 }
 
-/// A shadow ray's light by name (an area light's object or a point light), "" for others.
-std::string lightName(const TraceData& data, const RaySegment& s) {
-  if (s.lightObject >= 0) return objectName(data, s.lightObject);
-  const auto& lights = data.scene->pointLights;
-  return s.pointLight >= 0 && s.pointLight < int(lights.size())
-             ? lights[std::size_t(s.pointLight)].name
-             : std::string();
-}
-
 /// The segment under the keys of the JSON dump (RayTreeJson), vectors as tuples.
 py::dict segmentDict(const TraceData& data, const RaySegment& s) {
   py::dict j;
@@ -60,7 +51,7 @@ py::dict segmentDict(const TraceData& data, const RaySegment& s) {
   j["object_name"] = objectName(data, s.object);
   if (s.lightObject >= 0) j["light_object"] = s.lightObject;
   if (s.pointLight >= 0) j["point_light"] = s.pointLight;
-  if (s.lightObject >= 0 || s.pointLight >= 0) j["light_name"] = lightName(data, s);
+  if (s.lightObject >= 0 || s.pointLight >= 0) j["light_name"] = lightNameOf(s, *data.scene);
   j["normal"] = toTuple(s.normal);
   j["weight"] = toTuple(s.weight);
   j["pdf"] = s.pdf;
@@ -228,7 +219,7 @@ JSON dump (raylab trace --json) under the same names. It keeps its trace alive.)
           "point_light", [](const SegmentRef& r) { return r.get().pointLight; },
           "Shadow rays to a point light: its index among the point lights; -1 otherwise.")
       .def_property_readonly(
-          "light_name", [](const SegmentRef& r) { return lightName(*r.data, r.get()); },
+          "light_name", [](const SegmentRef& r) { return lightNameOf(r.get(), *r.data->scene); },
           "Shadow rays: the light aimed at (an area light's object name or a point light's "
           "name); '' for other rays.")
       .def_property_readonly("normal", [](const SegmentRef& r) { return r.get().normal; })

@@ -3,6 +3,7 @@
 #include "raylab/core/Lesson.h"
 #include "raylab/core/TriangleMesh.h"
 
+#include "LegendText.h"
 #include "TextFonts.h"
 
 #include <vtkCallbackCommand.h>
@@ -99,9 +100,6 @@ Vec3 bvhCulledColour() { return Vec3(0.72, 0.72, 0.76); }
 
 namespace {
 
-/// How much of the view's background shows behind the legend's words (as the ray tree's).
-constexpr double kLegendBackdropOpacity = 0.75;
-
 void layoutCallback(vtkObject* caller, unsigned long, void* clientData, void*) {
   const int* size = static_cast<vtkRenderer*>(caller)->GetSize();
   static_cast<BvhActors*>(clientData)->layoutLegend(size[0], size[1]);
@@ -115,12 +113,6 @@ BvhActors::BvhActors()
       skipped(lineActor(kSkippedWidth)) {
   for (auto& row : legend) {
     row = vtkSmartPointer<vtkTextActor>::New();
-    vtkTextProperty* text = row->GetTextProperty();
-    text->SetFontFamilyToArial();
-    text->ShadowOff();
-    text->SetJustificationToRight();
-    text->SetVerticalJustificationToBottom();
-    text->SetBackgroundOpacity(kLegendBackdropOpacity);
     row->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
     row->VisibilityOff();
   }
@@ -147,10 +139,8 @@ void BvhActors::addTo(vtkRenderer* renderer) {
 
 void BvhActors::layoutLegend(int width, int height) {
   if (width <= 0 || height <= 0) return;
-  // The ray tree legend's size (RayTreeActors::layoutLegend), in the other top corner.
-  const int font = std::clamp(int(std::lround(height / 36.0)), 10, 28);
-  const int margin = std::max(4, int(std::lround(0.02 * height)));
-  const int line = int(std::lround(1.3 * font));
+  // The ray tree legend's size, in the other top corner.
+  const auto [font, margin, line] = legendMetrics(height);
   int y = height - margin - font;
   for (const auto& row : legend) {
     row->GetTextProperty()->SetFontSize(font);
@@ -267,10 +257,10 @@ void BvhActors::build(const Scene& scene, const BvhStyle& newStyle) {
     if (i >= rows.size()) continue;
     row->SetInput(rows[i].first.c_str());
     vtkTextProperty* text = row->GetTextProperty();
-    useFontFor(text, style.language);
-    text->SetColor(rows[i].second.x, rows[i].second.y, rows[i].second.z);
+    styleLegendText(text, rows[i].second, background);
+    text->SetJustificationToRight();
     text->SetBold(i == 0);
-    text->SetBackgroundColor(background.x, background.y, background.z);
+    useFontFor(text, style.language);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "RayTreeActors.h"
 
+#include "LegendText.h"
 #include "TextFonts.h"
 #include "raylab/vis/ComparisonCaptions.h"
 
@@ -25,7 +26,7 @@ namespace {
 /// Colour of the selected segment: a magenta no colouring uses.
 constexpr double kSelectedRay[3] = {1.0, 0.2, 0.8};
 /// Colour of the legend's title and of the energy bar's labels.
-constexpr double kLegendText[3] = {0.95, 0.95, 0.95};
+const Vec3 kLegendText(0.95, 0.95, 0.95);
 
 /// An unlit actor drawing the direct RGB colours of its polydata (cell or point scalars).
 vtkSmartPointer<vtkActor> makeColouredActor() {
@@ -40,24 +41,6 @@ vtkSmartPointer<vtkActor> makeColouredActor() {
 
 void setInput(vtkActor* actor, vtkPolyData* data) {
   static_cast<vtkPolyDataMapper*>(actor->GetMapper())->SetInputData(data);
-}
-
-/// How much of the view's background shows behind the legend's words.
-constexpr double kLegendBackdropOpacity = 0.75;
-
-/// The legend's text: `colour` on a backdrop of the view's `background`, mostly opaque, so
-/// the yellow, violet and orange words stay readable where a close-up puts a grey wall
-/// behind them.
-void styleText(vtkTextProperty* text, const double colour[3], const Vec3& background) {
-  text->SetColor(colour[0], colour[1], colour[2]);
-  text->SetFontFamilyToArial();
-  text->BoldOff();
-  text->ItalicOff();
-  text->ShadowOff();
-  text->SetJustificationToLeft();
-  text->SetVerticalJustificationToBottom();
-  text->SetBackgroundColor(background.x, background.y, background.z);
-  text->SetBackgroundOpacity(kLegendBackdropOpacity);
 }
 
 void layoutCallback(vtkObject* caller, unsigned long, void* clientData, void*) {
@@ -114,11 +97,11 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
 
   // The legend: a title, then a colour bar (energy) or coloured names (kinds, depths).
   m_legendTitle = vtkSmartPointer<vtkTextActor>::New();
-  styleText(m_legendTitle->GetTextProperty(), kLegendText, m_background);
+  styleLegendText(m_legendTitle->GetTextProperty(), kLegendText, m_background);
   m_legendTitle->GetTextProperty()->BoldOn();
   for (auto& entry : m_legendEntries) {
     entry = vtkSmartPointer<vtkTextActor>::New();
-    styleText(entry->GetTextProperty(), kLegendText, m_background);
+    styleLegendText(entry->GetTextProperty(), kLegendText, m_background);
     entry->GetTextProperty()->BoldOn();
   }
   m_energyBar = vtkSmartPointer<vtkScalarBarActor>::New();
@@ -130,10 +113,10 @@ RayTreeActors::RayTreeActors(const Vec3& background) : m_background(background) 
   m_energyBar->SetTitle("");
   m_energyBar->SetLabelFormat("%g");
   m_energyBar->DrawAnnotationsOff();
-  styleText(m_energyBar->GetLabelTextProperty(), kLegendText, m_background);
+  styleLegendText(m_energyBar->GetLabelTextProperty(), kLegendText, m_background);
   for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
     m_energyWords[i] = vtkSmartPointer<vtkTextActor>::New();
-    styleText(m_energyWords[i]->GetTextProperty(), kLegendText, m_background);
+    styleLegendText(m_energyWords[i]->GetTextProperty(), kLegendText, m_background);
     m_energyWords[i]->GetTextProperty()->SetVerticalJustificationToCentered();
   }
   m_energyBar->GetLabelTextProperty()->SetVerticalJustificationToCentered();
@@ -291,10 +274,7 @@ void RayTreeActors::updateLegend() {
 
 void RayTreeActors::layoutLegend(int width, int height) {
   if (width <= 0 || height <= 0) return;
-  // Text about 1/36 of the picture's height: readable when projected, small beside the scene.
-  const int font = std::clamp(int(std::lround(height / 36.0)), 10, 28);
-  const int margin = std::max(4, int(std::lround(0.02 * height)));
-  const int line = int(std::lround(1.3 * font));
+  const auto [font, margin, line] = legendMetrics(height);
   int y = height - margin - font;
   m_legendTitle->GetTextProperty()->SetFontSize(font);
   m_legendTitle->SetDisplayPosition(margin, y);

@@ -32,11 +32,7 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
       r.material = MaterialSummary{m.name, m.type, inspect::materialParameters(m), m.isEmitter()};
     }
   }
-  // A shadow ray's light.
-  if (s.lightObject >= 0 && s.lightObject < int(scene.objects.size()))
-    r.lightName = scene.objects[std::size_t(s.lightObject)].name;
-  else if (s.pointLight >= 0 && s.pointLight < int(scene.pointLights.size()))
-    r.lightName = scene.pointLights[std::size_t(s.pointLight)].name;
+  r.lightName = lightNameOf(s, scene);
   std::vector<std::string> names;
   for (const SceneObject& o : scene.objects) names.push_back(o.name);
   std::vector<std::string> lights;

@@ -1,5 +1,7 @@
 #include "raylab/core/RayTree.h"
 
+#include "raylab/core/Scene.h"
+
 #include <iterator>
 #include <sstream>
 
@@ -63,16 +65,30 @@ std::optional<EndReason> endReasonFromJson(const std::string& json) {
   return std::nullopt;
 }
 
+std::string lightNameOf(const RaySegment& s, const std::vector<std::string>& objectNames,
+                        const std::vector<std::string>& pointLightNames) {
+  if (s.lightObject >= 0 && s.lightObject < int(objectNames.size()))
+    return objectNames[std::size_t(s.lightObject)];
+  if (s.pointLight >= 0 && s.pointLight < int(pointLightNames.size()))
+    return pointLightNames[std::size_t(s.pointLight)];
+  return {};
+}
+
+std::string lightNameOf(const RaySegment& s, const Scene& scene) {
+  if (s.lightObject >= 0 && s.lightObject < int(scene.objects.size()))
+    return scene.objects[std::size_t(s.lightObject)].name;
+  if (s.pointLight >= 0 && s.pointLight < int(scene.pointLights.size()))
+    return scene.pointLights[std::size_t(s.pointLight)].name;
+  return {};
+}
+
 std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames,
                         const std::vector<std::string>& pointLightNames) {
   const bool named = s.object >= 0 && s.object < int(objectNames.size());
   const std::string object = named ? "'" + objectNames[std::size_t(s.object)] + "'" : "";
   // A shadow ray's light, when its name is known.
-  std::string light;
-  if (s.lightObject >= 0 && s.lightObject < int(objectNames.size()))
-    light = "'" + objectNames[std::size_t(s.lightObject)] + "'";
-  else if (s.pointLight >= 0 && s.pointLight < int(pointLightNames.size()))
-    light = "'" + pointLightNames[std::size_t(s.pointLight)] + "'";
+  const std::string lightName = lightNameOf(s, objectNames, pointLightNames);
+  const std::string light = lightName.empty() ? "" : "'" + lightName + "'";
   switch (s.endReason) {
     case EndReason::Spawned: {
       std::string text = named ? "hit " + object + " and spawned " : "spawned ";

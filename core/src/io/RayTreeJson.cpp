@@ -158,12 +158,11 @@ std::string RayTreeJson::serialize(const RayTree& tree, const Scene& scene,
     j["object"] = s.object;
     j["object_name"] = named ? scene.objects[std::size_t(s.object)].name : std::string();
     // A shadow ray's light: an area light (an object) or a point light, and its name.
-    if (s.lightObject >= 0 && s.lightObject < int(scene.objects.size())) {
-      j["light_object"] = s.lightObject;
-      j["light_name"] = scene.objects[std::size_t(s.lightObject)].name;
-    } else if (s.pointLight >= 0 && s.pointLight < int(scene.pointLights.size())) {
-      j["point_light"] = s.pointLight;
-      j["light_name"] = scene.pointLights[std::size_t(s.pointLight)].name;
+    const std::string light = lightNameOf(s, scene);
+    if (!light.empty()) {
+      j[s.lightObject >= 0 ? "light_object" : "point_light"] =
+          s.lightObject >= 0 ? s.lightObject : s.pointLight;
+      j["light_name"] = light;
     }
     j["normal"] = vec(s.normal);
     if (!isZero(s.shadingNormal)) j["shading_normal"] = vec(s.shadingNormal);

@@ -9,6 +9,8 @@
 
 namespace raylab {
 
+struct Scene;
+
 /// Why a ray was spawned (the colour-by-kind legend of the ray-tree view).
 enum class RayKind { Camera, Reflection, Refraction, Diffuse, Glossy, Shadow };
 constexpr int kRayKindCount = 6;
@@ -92,6 +94,14 @@ struct RaySegment {
   /// light this ray carries (what the ray-tree view colours by and the inspector shows).
   double energy() const { return luminance(throughput * radiance); }
 };
+
+/// A shadow ray's light by name: an area light's object from `objectNames` (indexed by
+/// RaySegment::lightObject) or a point light from `pointLightNames` (RaySegment::pointLight);
+/// "" for other rays, or when the name is not among those given.
+std::string lightNameOf(const RaySegment& s, const std::vector<std::string>& objectNames,
+                        const std::vector<std::string>& pointLightNames);
+/// The same from a scene's objects and point lights.
+std::string lightNameOf(const RaySegment& s, const Scene& scene);
 
 /// How segment `s` ended, as a clause after its subject ("reflection ray #3 ..."), naming
 /// the object hit or blocking (from `objectNames`, indexed by RaySegment::object), a shadow
