@@ -744,46 +744,6 @@
         <translation>%1 条光线（#%2..#%3）</translation>
     </message>
     <message>
-        <source>Ray casting (Appel 1968)</source>
-        <translation>光线投射（Appel 1968）</translation>
-    </message>
-    <message>
-        <source>Whitted ray tracing (1979)</source>
-        <translation>Whitted 光线追踪（1979）</translation>
-    </message>
-    <message>
-        <source>Distributed ray tracing (Cook 1984)</source>
-        <translation>分布式光线追踪（Cook 1984）</translation>
-    </message>
-    <message>
-        <source>Path tracing (Kajiya 1986)</source>
-        <translation>路径追踪（Kajiya 1986）</translation>
-    </message>
-    <message>
-        <source>camera</source>
-        <translation>相机</translation>
-    </message>
-    <message>
-        <source>reflection</source>
-        <translation>反射</translation>
-    </message>
-    <message>
-        <source>refraction</source>
-        <translation>折射</translation>
-    </message>
-    <message>
-        <source>diffuse</source>
-        <translation>漫反射</translation>
-    </message>
-    <message>
-        <source>glossy</source>
-        <translation>光泽反射</translation>
-    </message>
-    <message>
-        <source>shadow</source>
-        <translation>阴影</translation>
-    </message>
-    <message>
         <source>pending</source>
         <translation>等待中</translation>
     </message>

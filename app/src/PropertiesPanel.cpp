@@ -5,6 +5,7 @@
 #include "EditPanel.h"
 #include "SceneDocument.h"
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/SceneEdit.h"
 
@@ -44,7 +45,12 @@ const std::set<std::string> kIntegerKeys = {
 const std::set<std::string> kReadOnlyKeys = {"name", "file", "matrix", "type"};
 /// Choices of the keys that take one word.
 const std::map<std::string, std::vector<const char*>> kChoices = {
-    {"algorithm", {"raycast", "whitted", "distributed", "path"}},
+    {"algorithm",
+     [] {
+       std::vector<const char*> words;
+       for (Algorithm a : kAllAlgorithms) words.push_back(algorithmInfo(a).word);
+       return words;
+     }()},
     {"fresnel", {"exact", "schlick"}},
     {"distribution", {"ggx", "beckmann"}},
     {"acceleration", {"bvh", "none"}},

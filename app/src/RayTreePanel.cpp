@@ -100,7 +100,7 @@ QWidget* RayTreePanel::buildTraceGroup() {
 
   // Step 1: which algorithm, pixel and sample.
   m_algorithm = new QComboBox;
-  for (Algorithm a : kAlgorithms)
+  for (Algorithm a : kAllAlgorithms)
     m_algorithm->addItem(algorithmLabel(a), QString::fromLatin1(toString(a)));
   m_algorithm->setToolTip(
       tr("Ray casting: camera ray, local shading, shadow rays.\n"

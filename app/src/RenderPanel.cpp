@@ -46,7 +46,7 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent), m_job(std::make_uni
   // Step 1: what to render: the algorithm and the samples per pixel.
   auto* controls = new QHBoxLayout;
   m_algorithm = new QComboBox;
-  for (Algorithm a : kAlgorithms) m_algorithm->addItem(algorithmLabel(a), int(a));
+  for (Algorithm a : kAllAlgorithms) m_algorithm->addItem(algorithmLabel(a), int(a));
   m_algorithm->setToolTip(tr("The algorithm that renders the image"));
   m_samples = new QSpinBox;
   m_samples->setRange(1, 1 << 16);

@@ -1,6 +1,7 @@
 #include "Subcommand.h"
 
 #include "SceneSource.h"
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/FilePaths.h"
@@ -104,11 +105,10 @@ void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std
   if (outRequired) outOption->required();
   command->add_option("--scene", scene, "Scene file (default: the built-in scene)");
   if (withAlgorithm) {
-    m_algorithmOption =
-        command
-            ->add_option("--algorithm,-a", m_algorithmText,
-                         "raycast, whitted, distributed or path (default: the scene's)")
-            ->check(CLI::IsMember({"raycast", "whitted", "distributed", "path"}));
+    m_algorithmOption = command
+                            ->add_option("--algorithm,-a", m_algorithmText,
+                                         algorithmWordList() + " (default: the scene's)")
+                            ->check(CLI::IsMember(algorithmWords()));
   }
   // A negative seed is a mistake, not 2^64 - 1 (issue 14).
   m_seedOption = command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)")

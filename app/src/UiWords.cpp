@@ -1,5 +1,10 @@
 #include "UiWords.h"
 
+#include "Language.h"
+
+#include "raylab/core/AlgorithmInfo.h"
+#include "raylab/core/Phrases.h"
+
 #include <QCoreApplication>
 #include <QStringList>
 
@@ -26,36 +31,16 @@ QString children(const RaySegment& s) {
 
 }  // namespace
 
+Language uiLanguage() {
+  return parseLanguage(currentLanguage().toStdString()).value_or(Language::English);
+}
+
 QString algorithmLabel(Algorithm algorithm) {
-  switch (algorithm) {
-    case Algorithm::RayCasting:
-      return QCoreApplication::translate("UiWords", "Ray casting (Appel 1968)");
-    case Algorithm::Whitted:
-      return QCoreApplication::translate("UiWords", "Whitted ray tracing (1979)");
-    case Algorithm::Distributed:
-      return QCoreApplication::translate("UiWords", "Distributed ray tracing (Cook 1984)");
-    case Algorithm::PathTracing:
-      return QCoreApplication::translate("UiWords", "Path tracing (Kajiya 1986)");
-  }
-  return QStringLiteral("?");
+  return QString::fromStdString(algorithmTitle(algorithm, uiLanguage(), AlgorithmName::Long));
 }
 
 QString rayKindWord(RayKind kind) {
-  switch (kind) {
-    case RayKind::Camera:
-      return QCoreApplication::translate("UiWords", "camera");
-    case RayKind::Reflection:
-      return QCoreApplication::translate("UiWords", "reflection");
-    case RayKind::Refraction:
-      return QCoreApplication::translate("UiWords", "refraction");
-    case RayKind::Diffuse:
-      return QCoreApplication::translate("UiWords", "diffuse");
-    case RayKind::Glossy:
-      return QCoreApplication::translate("UiWords", "glossy");
-    case RayKind::Shadow:
-      return QCoreApplication::translate("UiWords", "shadow");
-  }
-  return QStringLiteral("?");
+  return QString::fromStdString(phrase(std::string("ray_kind.") + toString(kind), uiLanguage()));
 }
 
 QString endReasonLabel(EndReason reason) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "raylab/core/AlgorithmInfo.h"
+#include "raylab/core/Language.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
@@ -17,9 +19,8 @@ namespace raylab::app {
 /// language. Core keeps its English words for files, the command line and the JSON dumps;
 /// in English these functions say exactly what core says (a test compares them).
 
-/// The algorithms in historical order, as the window lists them.
-inline constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                            Algorithm::Distributed, Algorithm::PathTracing};
+/// The window's language as core's phrase table names it (currentLanguage()).
+Language uiLanguage();
 
 /// "Path tracing (Kajiya 1986)": the algorithm's name and citation.
 QString algorithmLabel(Algorithm algorithm);

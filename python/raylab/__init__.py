@@ -88,7 +88,7 @@ for _name in dir(_raylab):
     if isinstance(_value, type) and not _name.startswith("_"):
         _value.__module__ = "raylab"  # raylab.SceneError, not raylab._raylab.SceneError
 
-ALGORITHMS = ("raycast", "whitted", "distributed", "path")
-"""The four algorithms, in historical order (the names every function takes)."""
+ALGORITHMS = _raylab.ALGORITHMS
+"""The algorithms, in historical order (the names every function takes)."""
 
 __all__ = [name for name in dir() if not name.startswith("_")]

@@ -3,6 +3,7 @@
 
 #include "Bindings.h"
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/RayTreeJson.h"
@@ -24,8 +25,7 @@ namespace raylab::python {
 
 Algorithm algorithmNamed(const std::string& name) {
   if (std::optional<Algorithm> algorithm = parseAlgorithm(name)) return *algorithm;
-  throw py::value_error("unknown algorithm '" + name +
-                        "': use raycast, whitted, distributed or path");
+  throw py::value_error("unknown algorithm '" + name + "': use " + algorithmWordList());
 }
 
 RenderSettings settingsFor(const Scene& scene, const SettingsOverrides& overrides) {
@@ -239,6 +239,9 @@ PYBIND11_MODULE(_raylab, m) {
   // Registered last, so pybind11 tries it first: every C++ message, RayLab's and the
   // standard library's, reaches Python as printable text.
   py::register_exception_translator(&translateError);
+
+  // The algorithms' words, in historical order, from core's one table (AlgorithmInfo.h).
+  m.attr("ALGORITHMS") = py::tuple(py::cast(algorithmWords()));
 
   bindGeometry(m);
   bindScene(m);

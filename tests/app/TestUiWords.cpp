@@ -16,7 +16,7 @@ TEST(UiWords, NarrationIsCoresStepTextForEveryRay) {
   const Scene scene = defaultScene();
   int checked = 0;
   std::array<int, std::size_t(EndReason::Stopped) + 1> reasons{};
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = scene.render;
     settings.algorithm = algorithm;
     const Tracer tracer(scene, settings);
@@ -43,7 +43,7 @@ TEST(UiWords, SummaryAndCaptionsAreCoresAndVis) {
   const Scene scene = defaultScene();
   std::vector<std::string> names;
   for (const SceneObject& object : scene.objects) names.push_back(object.name);
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = scene.render;
     settings.algorithm = algorithm;
     const PixelTrace trace = tracePixel(scene, settings, 90, 100, 0);

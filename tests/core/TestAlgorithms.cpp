@@ -3,6 +3,7 @@
 // algorithms where theory says they coincide, and energy conservation. Monte Carlo
 // tolerances are 5 standard errors of the estimator, measured from the samples.
 #include "TransportScenes.h"
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Plane.h"
 #include "raylab/core/Quad.h"
 #include "raylab/core/SceneIO.h"
@@ -30,9 +31,6 @@ using testing::isFiniteVec;
 using testing::makeMaterial;
 using testing::RunningStats;
 using testing::settingsFor;
-
-constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                     Algorithm::Distributed, Algorithm::PathTracing};
 
 /// Per-pixel statistics of `spp` samples of every pixel, and of the image mean.
 struct ImageStats {
@@ -119,7 +117,7 @@ TEST(Algorithms, 01_EmitterSeenDirectlyGivesItsRadianceExactly) {
   scene.camera.position = Point3(0.0, 0.0, 1.0);
   scene.camera.lookAt = Point3(0.0);
   scene.camera.width = scene.camera.height = 4;
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     for (int spp : {1, 4}) {
       const Tracer tracer(scene, settingsFor(algorithm, spp));
       for (int y = 0; y < 4; ++y)
@@ -295,7 +293,7 @@ TEST(Algorithms, 05_WhiteFurnaceNeverExceedsTheBound) {
   scene.camera.width = 12;
   scene.camera.height = 10;
 
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = settingsFor(algorithm, 64, 9);
     settings.background = Vec3(1.0);
     settings.maxDepth = 12;
@@ -349,7 +347,7 @@ TEST(Algorithms, 06_NoNanOrInfOnAHardScene) {
   // Just above the floor, looking along it: grazing incidence everywhere below the horizon.
   scene.camera.position = Point3(0.0, 0.02, 0.9);
   scene.camera.lookAt = Point3(0.0, 0.05, -3.0);
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = settingsFor(algorithm, 16, 3);
     settings.maxDepth = 8;
     settings.shadowSamples = 2;

@@ -1,5 +1,6 @@
 // The image renderer: deterministic for any thread count, progressive, cancellable, with
 // progress reports and ray counts, never a NaN in the picture.
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Limits.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneIO.h"
@@ -15,9 +16,6 @@
 
 namespace raylab {
 namespace {
-
-constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                     Algorithm::Distributed, Algorithm::PathTracing};
 
 /// A shipped scene at a small size: lessons/scenes/<name>.json.
 Scene shippedScene(const std::string& name, int width, int height) {
@@ -71,7 +69,7 @@ void expectIdentical(const FloatImage& a, const FloatImage& b) {
 TEST(Renderer, 01_OneTwoAndThreeThreadsGiveBitIdenticalImages) {
   // 37 x 21 is not a multiple of the 16-pixel tiles: edge tiles are partial.
   const Scene scene = shippedScene("materials", 37, 21);
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     SCOPED_TRACE(toString(algorithm));
     const RenderSettings settings = settingsFor(scene, algorithm, 3);
     const FloatImage one = render(scene, settings, 1);
@@ -175,7 +173,7 @@ TEST(Renderer, 05_CancelFromAnotherThreadStopsSoon) {
 TEST(Renderer, 06_NoNanOrInfReachesTheImage) {
   for (const char* name : {"materials", "smallpt", "cornell", "default"}) {
     const Scene scene = shippedScene(name, 32, 24);
-    for (Algorithm algorithm : kAlgorithms) {
+    for (Algorithm algorithm : kAllAlgorithms) {
       SCOPED_TRACE(std::string(name) + " " + toString(algorithm));
       RenderStats stats;
       const FloatImage image = render(scene, settingsFor(scene, algorithm, 2), 2, &stats);
@@ -192,7 +190,7 @@ TEST(Renderer, 06_NoNanOrInfReachesTheImage) {
 
 TEST(Renderer, 07_RayCountsAreTheSumOverAllSamples) {
   const Scene scene = shippedScene("materials", 20, 12);
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     SCOPED_TRACE(toString(algorithm));
     const RenderSettings settings = settingsFor(scene, algorithm, 3);
     RenderStats stats;

@@ -1,6 +1,7 @@
 // Textbook ray/shape cases for the double-precision shapes. Expected values are exact
 // and written beside each case.
 #include "raylab/core/Box.h"
+#include "raylab/core/MeshFactory.h"
 #include "raylab/core/Plane.h"
 #include "raylab/core/Quad.h"
 #include "raylab/core/Sphere.h"
@@ -347,6 +348,30 @@ TEST(Triangle, 05_TransformedTriangle) {
   EXPECT_TRUE(tri.intersect(ray({1.9, 0.1, 0}, {0, 0, -1})));
   EXPECT_FALSE(tri.intersect(ray({1.9, 0.3, 0}, {0, 0, -1})));  // x/2 + y/3 > 1
   EXPECT_NEAR(tri.intersect(ray({0.5, 0.5, 0}, {0, 0, -1}))->t, 3.0, 1e-15);
+}
+
+TEST(ShapeKinds, 01_EachShapeSaysWhetherItIsClosedAndFlat) {
+  // The inspector's "enters / leaves" marks ask isClosed, the light sampler's projected area
+  // and the 3D view's one-sided drawing ask isFlat: a shape answers for itself.
+  struct Expected {
+    std::unique_ptr<Shape> shape;
+    bool closed;
+    bool flat;
+  };
+  Expected cases[] = {
+      {std::make_unique<Sphere>(Point3(0.0), 1.0), true, false},
+      {std::make_unique<Box>(Point3(0.0), Vec3(2.0)), true, false},
+      {std::make_unique<Plane>(Point3(0.0), Normal3(0.0, 1.0, 0.0)), true, true},
+      {std::make_unique<Quad>(Point3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0)), false, true},
+      {std::make_unique<Triangle>(Point3(0.0), Point3(1.0, 0.0, 0.0), Point3(0.0, 1.0, 0.0)), false,
+       true},
+      {std::make_unique<TriangleMesh>(MeshFactory::makeIcosphere(Point3(0.0), 1.0, 1)), true,
+       false},
+  };
+  for (const Expected& c : cases) {
+    EXPECT_EQ(c.shape->isClosed(), c.closed) << c.shape->toString();
+    EXPECT_EQ(c.shape->isFlat(), c.flat) << c.shape->toString();
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // PLY files or computed with a crease angle; the no-leak rule of the engine; and a picture
 // of a tessellated sphere that smooth shading brings closer to the analytic sphere's.
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Bsdf.h"
 #include "raylab/core/Camera.h"
 #include "raylab/core/MeshFactory.h"
@@ -515,9 +516,6 @@ Vec3 renderCentre(const Scene& scene, Algorithm algorithm, int spp = 1) {
   for (int s = 0; s < spp; ++s) sum += tracer.trace(0, 0, s);
   return sum / double(spp);
 }
-
-const Algorithm kAllAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                    Algorithm::Distributed, Algorithm::PathTracing};
 
 TEST(SmoothTriangles, 13_NoLightLeaksThroughTheShadingNormal) {
   // A point light below the floor, in the wedge between the two surfaces: the direction to

@@ -1,6 +1,7 @@
 // The engine shared by the four algorithms: ray counts, the recorded tree and its
 // invariants, stepping, the equality of the recorded tree's estimate with Tracer::trace,
 // escaped and occluded rays as drawn, and the memory budget of recorded trees.
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Tracer.h"
 
 #include "TransportScenes.h"
@@ -24,9 +25,6 @@ using testing::addObject;
 using testing::allMaterialsScene;
 using testing::makeMaterial;
 using testing::settingsFor;
-
-constexpr Algorithm kAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                     Algorithm::Distributed, Algorithm::PathTracing};
 
 /// |a - b| <= 1e-12 relative to the larger magnitude, per channel (all radiance >= 0).
 void expectNearRelative(const Vec3& a, const Vec3& b, const std::string& what) {
@@ -109,7 +107,7 @@ TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
 TEST(Tracer, 03_TreeEstimateEqualsTraceForAllAlgorithms) {
   const Scene scene = allMaterialsScene();
   const int pixels[][2] = {{8, 6}, {2, 9}, {13, 3}, {5, 5}, {11, 10}, {0, 0}, {7, 8}};
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = settingsFor(algorithm, 4, 7);
     settings.maxDepth = 6;
     settings.shadowSamples = 2;
@@ -141,7 +139,7 @@ TEST(Tracer, 03_TreeEstimateEqualsTraceForAllAlgorithms) {
 // Structure of a recorded tree: the bookkeeping of RayTree.h holds for every segment.
 TEST(Tracer, 04_TreeStructureIsConsistent) {
   const Scene scene = allMaterialsScene();
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = settingsFor(algorithm, 2, 3);
     settings.shadowSamples = 2;
     settings.glossySamples = 3;
@@ -527,7 +525,7 @@ TEST(Tracer, 09_TraceIsDeterministic) {
 // text (the engine's narration), and the summary counts the rays of the tree.
 TEST(Tracer, 10_PixelTraceIsTheRenderersSampleWithItsNarration) {
   const Scene scene = allMaterialsScene();
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     RenderSettings settings = settingsFor(algorithm, 4, 3);
     settings.shadowSamples = 2;
     settings.glossySamples = 2;
@@ -560,7 +558,7 @@ TEST(Tracer, 11_EachRuleSaysWhetherItSamplesLensAndShutter) {
   Scene scene = allMaterialsScene();
   scene.camera.aperture = 0.2;
   scene.camera.focusDistance = 4.0;
-  for (Algorithm algorithm : kAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     const RenderSettings settings = settingsFor(algorithm, 8, 5);
     const Tracer tracer(scene, settings);
     const bool sampled = SpawnRule::create(settings)->samplesLensAndShutter();

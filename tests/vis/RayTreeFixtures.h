@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
@@ -21,9 +22,6 @@ namespace raylab::testing {
 /// 320x240: hiding its 5 shadow rays 1.8e-4 (the default 2e-4 would forgive it), colouring
 /// by kind instead of energy 2.7e-3, no tree 3.5e-3; a repeated render 0.
 constexpr double kRayTreeBaselineThreshold = 2e-5;
-
-constexpr Algorithm kTreeAlgorithms[] = {Algorithm::RayCasting, Algorithm::Whitted,
-                                         Algorithm::Distributed, Algorithm::PathTracing};
 
 /// Pixel of the materials scene (320x240) on the glass sphere, left of its centre, where
 /// Whitted refracts through the glass and the stochastic algorithms branch.

@@ -5,6 +5,7 @@
 // so the pictures test the view, not the renderer, and show no measured time.
 #include "BaselineTest.h"
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/SceneIO.h"
@@ -234,9 +235,7 @@ TEST(ComparisonView, 05_RayTreesBesideTheImagesShareOneCamera) {
   const Scene scene =
       SceneIO::load(std::string(RAYLAB_SOURCE_DIR) + "/lessons/scenes/materials.json");
   std::vector<RayTree> trees;
-  for (Algorithm algorithm :
-       {Algorithm::RayCasting, Algorithm::Whitted, Algorithm::Distributed, Algorithm::PathTracing})
-    trees.push_back(traceTree(scene, algorithm, 64, 150));
+  for (Algorithm algorithm : kAllAlgorithms) trees.push_back(traceTree(scene, algorithm, 64, 150));
   ComparisonView view(syntheticComparison(), baselineOptions());
   EXPECT_THROW(view.setRayTrees(scene, {trees[0]}, 0, 0), std::invalid_argument);
   // The same place in the 64x48 synthetic image is pixel (12, 30): it gets the mark.

@@ -22,7 +22,6 @@ namespace {
 
 using testing::expectMatchesBaseline;
 using testing::kRayTreeBaselineThreshold;
-using testing::kTreeAlgorithms;
 using testing::materialsScene;
 using testing::traceGlassPixel;
 
@@ -73,7 +72,7 @@ int pixelsNear(const SrgbImage& image, const SrgbImage& bare, const Vec3& colour
 
 TEST(RayTreeView, 01_TheTreeOfEachAlgorithm) {
   const Scene scene = materialsScene();
-  for (Algorithm algorithm : kTreeAlgorithms) {
+  for (Algorithm algorithm : kAllAlgorithms) {
     SCOPED_TRACE(toString(algorithm));
     expectMatchesBaseline(renderTree(traceGlassPixel(scene, algorithm), baselineStyle()),
                           baselineName(algorithm), kRayTreeBaselineThreshold);

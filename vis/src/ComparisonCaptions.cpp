@@ -1,5 +1,8 @@
 #include "raylab/vis/ComparisonCaptions.h"
 
+#include "raylab/core/AlgorithmInfo.h"
+#include "raylab/core/Phrases.h"
+
 #include <cstdio>
 #include <sstream>
 
@@ -13,8 +16,6 @@ std::string significant(double value, int digits) {
   std::snprintf(text, sizeof text, "%.*g", digits, value);
   return text;
 }
-
-bool chinese(Language language) { return language == Language::Chinese; }
 
 /// The path tracer's figures, or nullptr when it was not compared.
 const AlgorithmFigures* pathFigures(const ComparisonResult& result) {
@@ -44,89 +45,32 @@ std::string formatError(double rmse) {
   return text;
 }
 
-std::string algorithmName(Algorithm algorithm, Language language) {
-  const bool zh = chinese(language);
-  switch (algorithm) {
-    case Algorithm::RayCasting:
-      return zh ? "光线投射" : "Ray casting";
-    case Algorithm::Whitted:
-      return zh ? "Whitted 光线追踪" : "Whitted";
-    case Algorithm::Distributed:
-      return zh ? "分布式光线追踪" : "Distributed";
-    case Algorithm::PathTracing:
-      return zh ? "路径追踪" : "Path tracing";
-  }
-  return "?";
-}
-
-std::string algorithmCitation(Algorithm algorithm) {
-  switch (algorithm) {
-    case Algorithm::RayCasting:
-      return "Appel 1968";
-    case Algorithm::Whitted:
-      return "Whitted 1979";
-    case Algorithm::Distributed:
-      return "Cook 1984";
-    case Algorithm::PathTracing:
-      return "Kajiya 1986";
-  }
-  return "?";
-}
-
-std::string panelTitle(Algorithm algorithm, Language language) {
-  if (!chinese(language)) return algorithmTitle(algorithm);
-  // Whitted's name is already in the title: the year alone, as in English.
-  const std::string citation =
-      algorithm == Algorithm::Whitted ? std::string("1979") : algorithmCitation(algorithm);
-  return algorithmName(algorithm, language) + "（" + citation + "）";
-}
-
 std::string rayKindName(RayKind kind, Language language) {
-  if (!chinese(language)) return toString(kind);
-  switch (kind) {
-    case RayKind::Camera:
-      return "相机光线";
-    case RayKind::Reflection:
-      return "反射光线";
-    case RayKind::Refraction:
-      return "折射光线";
-    case RayKind::Diffuse:
-      return "漫反射光线";
-    case RayKind::Glossy:
-      return "光泽反射光线";
-    case RayKind::Shadow:
-      return "阴影光线";
-  }
-  return "?";
+  return phrase(std::string("ray_kind.") + toString(kind) + ".legend", language);
 }
 
 std::string budgetPhrase(const ComparisonResult& result, Language language) {
-  if (chinese(language)) {
-    if (result.compare.equalTime())
-      return "等时间：每种算法 " + formatSeconds(result.compare.secondsPerAlgorithm);
-    return "等采样数：每种算法 " + std::to_string(result.compare.samplesPerPixel) + " spp";
-  }
   if (result.compare.equalTime())
-    return "equal time: " + formatSeconds(result.compare.secondsPerAlgorithm) + " each";
-  return "equal samples: " + std::to_string(result.compare.samplesPerPixel) + " spp each";
+    return phrase("compare.budget.equal_time", language,
+                  {{"time", formatSeconds(result.compare.secondsPerAlgorithm)}});
+  return phrase("compare.budget.equal_samples", language,
+                {{"spp", std::to_string(result.compare.samplesPerPixel)}});
 }
 
 std::string referencePhrase(const ComparisonResult& result, Language language) {
   if (!result.reference.file.empty())
-    return (chinese(language) ? "参考图像 " : "the reference image ") + result.reference.file;
-  return (chinese(language) ? "路径追踪 " : "path tracing at ") +
-         std::to_string(result.reference.samplesPerPixel) + " spp";
+    return phrase("compare.reference.file", language, {{"file", result.reference.file}});
+  return phrase("compare.reference.path", language,
+                {{"spp", std::to_string(result.reference.samplesPerPixel)}});
 }
 
 std::string headerLine(const ComparisonResult& result, Language language) {
   std::ostringstream out;
-  out << (result.sceneName.empty() ? std::string(chinese(language) ? "场景" : "scene")
-                                   : result.sceneName)
-      << "  " << result.width << "x" << result.height << "  |  " << budgetPhrase(result, language);
-  if (chinese(language))
-    out << "  |  误差：与参考图像（" << referencePhrase(result, language) << "）的均方根误差";
-  else
-    out << "  |  error: RMSE of the picture against " << referencePhrase(result, language);
+  out << (result.sceneName.empty() ? phrase("compare.scene_unnamed", language) : result.sceneName)
+      << "  " << result.width << "x" << result.height << "  |  " << budgetPhrase(result, language)
+      << "  |  "
+      << phrase("compare.header.error", language,
+                {{"reference", referencePhrase(result, language)}});
   return out.str();
 }
 
@@ -146,24 +90,28 @@ int lowestErrorIndex(const ComparisonResult& result) {
 std::vector<std::string> figureLines(const ComparisonResult& result,
                                      const AlgorithmFigures& figures, bool showTimes,
                                      Language language) {
-  const bool zh = chinese(language);
   std::vector<std::string> lines;
   const RenderStats& stats = figures.stats;
-  std::string samples = std::to_string(stats.samplesPerPixel) + " spp";
-  if (result.compare.equalTime()) samples = (zh ? "达到 " : "") + samples + (zh ? "" : " reached");
-  if (showTimes) samples += (zh ? "，用时 " : " in ") + formatSeconds(stats.seconds);
+  const std::string spp = std::to_string(stats.samplesPerPixel);
+  std::string samples =
+      phrase(result.compare.equalTime() ? "compare.figures.spp_reached" : "compare.figures.spp",
+             language, {{"spp", spp}});
+  if (showTimes)
+    samples = phrase("compare.figures.in_time", language,
+                     {{"samples", samples}, {"time", formatSeconds(stats.seconds)}});
   lines.push_back(samples);
   const int lowest = lowestErrorIndex(result);
   const bool isLowest = lowest >= 0 && &result.algorithms[std::size_t(lowest)] == &figures;
-  std::string error = (zh ? "误差 " : "error ") + formatError(figures.rmse);
-  if (isLowest) error += zh ? "（最低）" : " (lowest)";
-  lines.push_back(error);
-  std::string rays = (zh ? "光线 " : "rays ") + formatCount(stats.rays.total());
-  if (showTimes && stats.seconds > 0.0) {
-    const std::string rate = formatCount(std::uint64_t(double(stats.rays.total()) / stats.seconds));
-    rays += zh ? "（" + rate + "/s）" : " (" + rate + "/s)";
-  }
-  lines.push_back(rays);
+  lines.push_back(phrase(isLowest ? "compare.figures.error_lowest" : "compare.figures.error",
+                         language, {{"error", formatError(figures.rmse)}}));
+  const std::string count = formatCount(stats.rays.total());
+  if (showTimes && stats.seconds > 0.0)
+    lines.push_back(
+        phrase("compare.figures.rays_rate", language,
+               {{"count", count},
+                {"rate", formatCount(std::uint64_t(double(stats.rays.total()) / stats.seconds))}}));
+  else
+    lines.push_back(phrase("compare.figures.rays", language, {{"count", count}}));
   for (int k = 0; k < kRayKindCount; ++k) {
     if (stats.rays.byKind[k] == 0) continue;
     lines.push_back("   " + rayKindName(static_cast<RayKind>(k), language) + " " +
@@ -173,41 +121,17 @@ std::vector<std::string> figureLines(const ComparisonResult& result,
 }
 
 std::vector<std::string> errorExplanation(const ComparisonResult& result, Language language) {
-  const bool zh = chinese(language);
-  std::vector<std::string> lines;
-  if (zh)
-    lines.push_back("误差：每幅显示图像与参考图像（" + referencePhrase(result, language) +
-                    "）逐像素比较的均方根误差（RMSE），0 表示完全相同，1 表示黑与白之差。");
-  else
-    lines.push_back(
-        "Error: the RMSE (root-mean-square error) of each picture as displayed against "
-        "the reference, " +
-        referencePhrase(result, language) + "; 0 = identical, 1 = black against white.");
+  std::vector<std::string> lines = {phrase("compare.explain.error", language,
+                                           {{"reference", referencePhrase(result, language)}})};
   const AlgorithmFigures* path = pathFigures(result);
   if (path == nullptr) {
-    lines.push_back(zh ? "光线投射、Whitted 和分布式光线追踪漏掉了部分光路（如间接光照），"
-                         "这种偏差无论采样多少都无法消除。"
-                       : "Ray casting, Whitted and distributed tracing leave out light paths "
-                         "(indirect light): an error that no number of samples removes.");
+    lines.push_back(phrase("compare.explain.no_path", language));
     return lines;
   }
   const int lowest = lowestErrorIndex(result);
   const bool pathLowest = lowest >= 0 && &result.algorithms[std::size_t(lowest)] == path;
-  if (pathLowest)
-    lines.push_back(
-        zh ? "路径追踪看起来噪点最多，误差却最低：噪声随采样数增加被平均掉；"
-             "其他算法漏掉了部分光路（间接光照、软阴影），这种偏差无论采样多少都无法消除。"
-           : "Path tracing looks the noisiest yet has the lowest error: its noise "
-             "averages away as samples grow, while the others leave out light "
-             "(indirect light, soft shadows), which no number of samples brings "
-             "back.");
-  else
-    lines.push_back(
-        zh ? "路径追踪的噪声随采样数增加被平均掉（误差约与 1/√spp 成正比）；"
-             "其他算法漏掉的光路无论采样多少都补不回来：采样数再多些，路径追踪的误差就会最低。"
-           : "Path tracing's noise averages away as samples grow (error ~ 1/sqrt(spp)); "
-             "the light the others leave out never comes back: with more samples "
-             "path tracing's error becomes the lowest.");
+  lines.push_back(phrase(
+      pathLowest ? "compare.explain.path_lowest" : "compare.explain.path_not_lowest", language));
   return lines;
 }
 

@@ -163,17 +163,8 @@ vtkSmartPointer<vtkPolyData> pixelMark(int x, int y, int height) {
 }  // namespace
 
 Rgb8 algorithmColour(Algorithm algorithm) {
-  switch (algorithm) {
-    case Algorithm::RayCasting:
-      return {230, 159, 0};
-    case Algorithm::Whitted:
-      return {0, 158, 115};
-    case Algorithm::Distributed:
-      return {0, 114, 178};
-    case Algorithm::PathTracing:
-      return {213, 94, 0};
-  }
-  return {128, 128, 128};
+  const auto& colour = algorithmInfo(algorithm).colour;
+  return {colour[0], colour[1], colour[2]};
 }
 
 std::string ComparisonViewOptions::toString() const {
@@ -357,15 +348,12 @@ void ComparisonView::Impl::build() {
     panel->title->AddViewProp(panel->titleText);
     const double ink = darkTextOn(colour) ? 0.0 : 1.0;
     std::fill(std::begin(panel->titleColour), std::end(panel->titleColour), ink);
-    panel->lines = {panelTitle(figures.algorithm, options.language)};
+    panel->lines = {algorithmTitle(figures.algorithm, options.language)};
     for (const std::string& line :
          figureLines(result, figures, options.showTimes, options.language))
       panel->lines.push_back(line);
     // Whitted's name is already the title: the year alone under it.
-    panel->titleTwoLines =
-        algorithmName(figures.algorithm, options.language) + "\n" +
-        (figures.algorithm == Algorithm::Whitted ? std::string("1979")
-                                                 : algorithmCitation(figures.algorithm));
+    panel->titleTwoLines = algorithmTitleTwoLines(figures.algorithm, options.language);
     panel->titleText->SetInput(panel->lines.front().c_str());
     panel->figuresText->SetInput(joinLines({panel->lines.begin() + 1, panel->lines.end()}).c_str());
 

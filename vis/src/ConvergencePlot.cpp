@@ -128,7 +128,7 @@ void ConvergencePlot::build() {
     m_impl->counts.push_back(int(x.size()));
     if (x.empty()) continue;
     if (figures.algorithm == Algorithm::PathTracing) path = &figures;
-    auto table = makeTable(panelTitle(figures.algorithm, m_language), x, y);
+    auto table = makeTable(algorithmTitle(figures.algorithm, m_language), x, y);
     vtkPlot* line = chart->AddPlot(vtkChart::LINE);
     line->SetInputData(table, 0, 1);
     const Rgb8 colour = algorithmColour(figures.algorithm);

@@ -273,7 +273,7 @@ void SceneView::setScene(const Scene& scene) {
         known ? m_scene.materials[static_cast<std::size_t>(object.material)] : Material{};
     auto actor = surfaceActor(geometry, material, object.shape->kind(), wall);
     // Emitters stay two-sided: a ceiling light faces the room, yet must show from above.
-    const bool oneSided = (isOpenSurface(object.shape->kind()) || wall) && !material.isEmitter();
+    const bool oneSided = (object.shape->isFlat() || wall) && !material.isEmitter();
     if (oneSided) actor->GetProperty()->BackfaceCullingOn();
     m_impl->oneSided.push_back(oneSided);
     renderer->AddActor(actor);

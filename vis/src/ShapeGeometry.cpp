@@ -182,10 +182,6 @@ vtkSmartPointer<vtkPolyData> meshGeometry(const TriangleMesh& mesh) {
 
 }  // namespace
 
-bool isOpenSurface(ShapeKind kind) {
-  return kind == ShapeKind::Plane || kind == ShapeKind::Quad || kind == ShapeKind::Triangle;
-}
-
 vtkSmartPointer<vtkPolyData> hexahedronGeometry(const std::array<Point3, 8>& corners) {
   Point3 centroid(0.0);
   for (const Point3& p : corners) centroid += p / 8.0;

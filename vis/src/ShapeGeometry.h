@@ -32,10 +32,6 @@ struct DrawingFrame {
   double planeHalfSize = 10.0;
 };
 
-/// Whether the shape is a surface without inside (plane, quad, triangle): these are
-/// oriented towards DrawingFrame::inside and drawn one-sided.
-bool isOpenSurface(ShapeKind kind);
-
 /**
  * \brief Polydata of a shape in world space, with point normals for shading.
  *

@@ -2,7 +2,7 @@
 // fonts have none).
 #pragma once
 
-#include "raylab/core/Lesson.h"
+#include "raylab/core/Language.h"
 
 #include <string>
 

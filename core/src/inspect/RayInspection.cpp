@@ -58,8 +58,7 @@ std::vector<SceneCrossing> sceneCrossings(const Scene& scene, const Point3& orig
     if (!object.shape) continue;
     // A moving object is met in its own frame: the origin moved back by its displacement.
     const Ray ray = Ray::make(origin - object.displacementAt(time), unit, 0.0, kInfinity, time);
-    const ShapeKind kind = object.shape->kind();
-    const bool closed = kind != ShapeKind::Quad && kind != ShapeKind::Triangle;
+    const bool closed = object.shape->isClosed();
     for (const Crossing& c : object.shape->intersectAll(ray)) {
       if (!(c.t > 0.0)) continue;
       all.push_back({int(i), c.t, origin + c.t * unit, c.entering, closed});

@@ -179,8 +179,7 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
     // Intensity of the emitter seen from far away in direction -wi.
     const Vec3 Le = scene.materials[std::size_t(light.material)].emission;
     const double area = light.shape->area();
-    const bool flat =
-        light.shape->kind() == ShapeKind::Quad || light.shape->kind() == ShapeKind::Triangle;
+    const bool flat = light.shape->isFlat();
     double projectedArea = 0.25 * area;
     if (flat) {
       const double cosLight = -glm::dot(light.shape->normal(centre - shift), wi);

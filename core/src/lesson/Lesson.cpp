@@ -35,7 +35,6 @@ struct Named {
   E value;
 };
 
-const Named<Language> kLanguages[] = {{"en", Language::English}, {"zh", Language::Chinese}};
 const Named<LessonView> kViews[] = {
     {"scene", LessonView::Scene},         {"image", LessonView::Image},
     {"compare", LessonView::Compare},     {"plot", LessonView::Plot},
@@ -834,8 +833,6 @@ Lesson Reader::lesson(const json& root) {
 
 }  // namespace
 
-const char* toString(Language language) { return nameOf(kLanguages, language); }
-std::optional<Language> parseLanguage(const std::string& code) { return lookup(kLanguages, code); }
 const char* toString(LessonView view) { return nameOf(kViews, view); }
 std::optional<LessonView> parseLessonView(const std::string& name) { return lookup(kViews, name); }
 const char* toString(LessonColouring colouring) { return nameOf(kColourings, colouring); }

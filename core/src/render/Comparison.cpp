@@ -102,20 +102,6 @@ bool referenceTooNoisy(const ComparisonResult& result) {
   return false;
 }
 
-std::string algorithmTitle(Algorithm algorithm) {
-  switch (algorithm) {
-    case Algorithm::RayCasting:
-      return "Ray casting (Appel 1968)";
-    case Algorithm::Whitted:
-      return "Whitted (1979)";
-    case Algorithm::Distributed:
-      return "Distributed (Cook 1984)";
-    case Algorithm::PathTracing:
-      return "Path tracing (Kajiya 1986)";
-  }
-  return "?";
-}
-
 Comparison::Comparison(const Scene& scene, const RenderSettings& settings,
                        const ComparisonSettings& compare)
     : m_scene(scene), m_settings(settings), m_compare(compare) {

@@ -1,5 +1,7 @@
 #include "raylab/core/Scene.h"
 
+#include "raylab/core/AlgorithmInfo.h"
+
 namespace raylab {
 
 SceneObject::SceneObject(const SceneObject& o)
@@ -90,23 +92,10 @@ std::string PointLight::toString() const {
          ", intensity=" + raylab::toString(intensity) + "]";
 }
 
-const char* toString(Algorithm algorithm) {
-  switch (algorithm) {
-    case Algorithm::RayCasting:
-      return "raycast";
-    case Algorithm::Whitted:
-      return "whitted";
-    case Algorithm::Distributed:
-      return "distributed";
-    case Algorithm::PathTracing:
-      return "path";
-  }
-  return "unknown";
-}
+const char* toString(Algorithm algorithm) { return algorithmInfo(algorithm).word; }
 
 std::optional<Algorithm> parseAlgorithm(const std::string& name) {
-  for (Algorithm a :
-       {Algorithm::RayCasting, Algorithm::Whitted, Algorithm::Distributed, Algorithm::PathTracing})
+  for (Algorithm a : kAllAlgorithms)
     if (name == toString(a)) return a;
   return std::nullopt;
 }

@@ -139,8 +139,8 @@ class SphereLightSampler {
 
   /// cos^2 of the largest angle from a cap's axis at which its ball's cone is sampled
   /// rather than the cap by area (kConeMinCos = 0.9: the cone keeps about 90% of its
-  /// samples). Measured on smallpt (doc/dev/perf/issue-16.md): 0.9 and "always by area" give the same
-  /// error at equal time, 0.7 and 0 (the cone wherever ref faces the cap) more.
+  /// samples). Measured on smallpt (doc/dev/perf/issue-16.md): 0.9 and "always by area" give the
+  /// same error at equal time, 0.7 and 0 (the cone wherever ref faces the cap) more.
   static constexpr double kConeMinCos2 = 0.9 * 0.9;
   const Sphere* m_sphere;
   Point3 m_centre;

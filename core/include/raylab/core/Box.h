@@ -31,6 +31,8 @@ class Box final : public Shape {
   explicit Box(const Transform& worldFromBox);
 
   ShapeKind kind() const override { return ShapeKind::Box; }
+  bool isClosed() const override { return true; }
+  bool isFlat() const override { return false; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
   std::vector<Crossing> intersectAll(const Ray& ray) const override;

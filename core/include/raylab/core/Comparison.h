@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/RenderSettings.h"
@@ -29,8 +30,7 @@ namespace raylab {
  * | threads | 0 | worker threads, 0 = all |
  */
 struct ComparisonSettings {
-  std::vector<Algorithm> algorithms = {Algorithm::RayCasting, Algorithm::Whitted,
-                                       Algorithm::Distributed, Algorithm::PathTracing};
+  std::vector<Algorithm> algorithms{kAllAlgorithms.begin(), kAllAlgorithms.end()};
   int samplesPerPixel = 4;           ///< Equal samples: spp of each; equal time: the cap.
   double secondsPerAlgorithm = 0.0;  ///< Equal-time budget per algorithm, s; 0 = equal spp.
   int referenceSamplesPerPixel = 0;  ///< Reference spp; 0 = defaultReferenceSpp().
@@ -115,9 +115,6 @@ struct ComparisonResult {
 /// reached, so that its own noise visibly adds to path tracing's error (a file reference,
 /// whose spp is unknown, never counts as too noisy).
 bool referenceTooNoisy(const ComparisonResult& result);
-
-/// Human name and citation of an algorithm: "Ray casting (Appel 1968)".
-std::string algorithmTitle(Algorithm algorithm);
 
 class ReferenceCache;
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Exception.h"
+#include "raylab/core/Language.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/Ray.h"
 #include "raylab/core/RayTree.h"
@@ -15,25 +16,6 @@
 #include <vector>
 
 namespace raylab {
-
-/// The two languages every lesson is written in.
-enum class Language {
-  English,  ///< "en"
-  Chinese,  ///< "zh": Simplified Chinese.
-};
-/// "en" or "zh".
-const char* toString(Language language);
-/// Parses "en" and "zh"; nothing for anything else.
-std::optional<Language> parseLanguage(const std::string& code);
-
-/// One text in both languages (UTF-8). Lesson files require both.
-struct LocalText {
-  std::string en;  ///< English.
-  std::string zh;  ///< Simplified Chinese.
-  /// The text in `language`.
-  const std::string& in(Language language) const { return language == Language::Chinese ? zh : en; }
-  bool empty() const { return en.empty() && zh.empty(); }
-};
 
 /// What a lesson step shows.
 enum class LessonView {

@@ -16,6 +16,8 @@ class Plane final : public Shape {
   Plane(const Point3& point, const Normal3& normal);
 
   ShapeKind kind() const override { return ShapeKind::Plane; }
+  bool isClosed() const override { return true; }
+  bool isFlat() const override { return true; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
   std::vector<Crossing> intersectAll(const Ray& ray) const override;

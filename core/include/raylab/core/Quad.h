@@ -16,6 +16,8 @@ class Quad final : public Shape {
   Quad(const Point3& corner, const Vec3& edgeU, const Vec3& edgeV);
 
   ShapeKind kind() const override { return ShapeKind::Quad; }
+  bool isClosed() const override { return false; }
+  bool isFlat() const override { return true; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
   std::vector<Crossing> intersectAll(const Ray& ray) const override;

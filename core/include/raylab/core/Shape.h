@@ -101,6 +101,12 @@ class Shape {
   virtual ~Shape() = default;
 
   virtual ShapeKind kind() const = 0;
+  /// Whether the surface bounds a region of space, so that a ray crossing it enters or leaves
+  /// a solid: sphere, box, mesh (read as closed and oriented outward), and a plane (the
+  /// half-space behind it). A quad or a triangle is an open surface.
+  virtual bool isClosed() const = 0;
+  /// Whether the surface is flat (one normal everywhere): plane, quad, triangle.
+  virtual bool isFlat() const = 0;
 
   /// Nearest hit with t in [ray.tMin, ray.tMax], or nothing.
   virtual std::optional<Hit> intersect(const Ray& ray) const = 0;

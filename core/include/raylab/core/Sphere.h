@@ -26,6 +26,8 @@ class Sphere final : public Shape {
   Sphere(const Point3& centre, double radius, int m = 24, int n = 24);
 
   ShapeKind kind() const override { return ShapeKind::Sphere; }
+  bool isClosed() const override { return true; }
+  bool isFlat() const override { return false; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
   /// surfaceAt without the surface parameters (si.uv stays (0, 0)): the same point, normal

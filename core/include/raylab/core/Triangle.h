@@ -37,6 +37,8 @@ class Triangle final : public Shape {
   Triangle(const Point3& p0, const Point3& p1, const Point3& p2);
 
   ShapeKind kind() const override { return ShapeKind::Triangle; }
+  bool isClosed() const override { return false; }
+  bool isFlat() const override { return true; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
   std::vector<Crossing> intersectAll(const Ray& ray) const override;

@@ -44,6 +44,8 @@ class TriangleMesh final : public Shape {
   ~TriangleMesh() override;
 
   ShapeKind kind() const override { return ShapeKind::TriangleMesh; }
+  bool isClosed() const override { return true; }
+  bool isFlat() const override { return false; }
   std::optional<Hit> intersect(const Ray& ray) const override;
   SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
   std::vector<Crossing> intersectAll(const Ray& ray) const override;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "raylab/core/Lesson.h"
+#include "raylab/core/Language.h"
 #include "raylab/core/RenderSettings.h"
 #include "raylab/core/Scene.h"
 #include "raylab/vis/BvhStyle.h"

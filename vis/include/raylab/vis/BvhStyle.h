@@ -1,7 +1,7 @@
 #pragma once
 
 #include "raylab/core/Bvh.h"
-#include "raylab/core/Lesson.h"
+#include "raylab/core/Language.h"
 #include "raylab/core/Ray.h"
 #include "raylab/core/Types.h"
 

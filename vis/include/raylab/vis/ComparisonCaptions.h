@@ -1,7 +1,7 @@
 #pragma once
 
 #include "raylab/core/Comparison.h"
-#include "raylab/core/Lesson.h"
+#include "raylab/core/Language.h"
 #include "raylab/core/RayTree.h"
 
 #include <cstdint>
@@ -22,14 +22,6 @@ std::string formatCount(std::uint64_t count);
 /// An error figure: three decimals ("0.150"), as the panels and the explanation show it.
 std::string formatError(double rmse);
 
-/// The algorithm's name: "Ray casting", "Whitted", "Distributed", "Path tracing";
-/// "光线投射", "Whitted 光线追踪", "分布式光线追踪", "路径追踪".
-std::string algorithmName(Algorithm algorithm, Language language = Language::English);
-/// Who published it and when: "Appel 1968", "Whitted 1979", "Cook 1984", "Kajiya 1986".
-std::string algorithmCitation(Algorithm algorithm);
-/// A panel's title: "Path tracing (Kajiya 1986)", "路径追踪（Kajiya 1986）"; in English
-/// the same as core's algorithmTitle.
-std::string panelTitle(Algorithm algorithm, Language language = Language::English);
 /// A kind of ray in the figures: "shadow"; "阴影光线".
 std::string rayKindName(RayKind kind, Language language = Language::English);
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "raylab/core/Comparison.h"
-#include "raylab/core/Lesson.h"
+#include "raylab/core/Language.h"
 #include "raylab/vis/Image.h"
 
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "raylab/core/Lesson.h"
+#include "raylab/core/Language.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Types.h"
 
