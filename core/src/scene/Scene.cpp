@@ -58,12 +58,22 @@ const char* toString(MaterialType type) {
       return "rough_conductor";
     case MaterialType::RoughDielectric:
       return "rough_dielectric";
+    case MaterialType::Plastic:
+      return "plastic";
   }
   return "unknown";
 }
 
 const char* toString(FresnelModel model) {
-  return model == FresnelModel::Schlick ? "schlick" : "exact";
+  switch (model) {
+    case FresnelModel::Schlick:
+      return "schlick";
+    case FresnelModel::None:
+      return "none";
+    case FresnelModel::Exact:
+      break;
+  }
+  return "exact";
 }
 
 const char* toString(MicrofacetModel model) {
@@ -79,6 +89,8 @@ std::string Material::toString() const {
          ", opacity=" + std::to_string(opacity) + ", ambient=" + raylab::toString(ambient) +
          ", diffuse=" + std::to_string(diffuse) + ", attenuation=" + raylab::toString(attenuation) +
          ", fresnel=" + raylab::toString(fresnel) +
+         ", rateFresnel=" + raylab::toString(rateFresnel) +
+         ", priority=" + std::to_string(priority) +
          ", distribution=" + raylab::toString(distribution) +
          ", roughness=" + std::to_string(roughness) +
          ", visibleNormals=" + (visibleNormals ? "true" : "false") +

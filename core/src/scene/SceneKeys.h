@@ -21,7 +21,8 @@ inline constexpr std::array kSceneKeys = {"raylab_scene", "name",   "materials",
 inline constexpr std::array kMaterialKeys = {
     "name",        "type",     "colour",       "emission",  "reflection_rate", "refraction_rate",
     "ior",         "exponent", "specular",     "opacity",   "ambient",         "diffuse",
-    "attenuation", "fresnel",  "distribution", "roughness", "visible_normals", "ior_outside"};
+    "attenuation", "fresnel",  "distribution", "roughness", "visible_normals", "ior_outside",
+    "priority"};
 /// One entry of "objects".
 inline constexpr std::array kObjectKeys = {"name", "material", "shape", "transform", "velocity"};
 /// One step of an object's "transform" (a step has exactly one of these keys).

@@ -39,6 +39,9 @@ namespace {
 
 using nlohmann::json;
 
+/// The largest priority of a nested volume (Material::priority): plenty for any scene.
+constexpr int kMaxPriority = 1000;
+
 /// Reads one scene document and remembers the file name for every message.
 class Reader : private JsonChecks<Reader> {
   friend class JsonChecks<Reader>;
@@ -260,9 +263,10 @@ class Reader : private JsonChecks<Reader> {
     if (j.contains("type")) {
       const std::string type = string(j["type"], p + "/type");
       bool known = false;
-      for (MaterialType t : {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Dielectric,
-                             MaterialType::Glossy, MaterialType::Phong, MaterialType::BlinnPhong,
-                             MaterialType::RoughConductor, MaterialType::RoughDielectric})
+      for (MaterialType t :
+           {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Dielectric,
+            MaterialType::Glossy, MaterialType::Phong, MaterialType::BlinnPhong,
+            MaterialType::RoughConductor, MaterialType::RoughDielectric, MaterialType::Plastic})
         if (type == toString(t)) {
           m.type = t;
           known = true;
@@ -270,7 +274,7 @@ class Reader : private JsonChecks<Reader> {
       if (!known)
         fail(p + "/type", "unknown material type \"" + type +
                               "\" (expected diffuse, mirror, dielectric, glossy, phong, "
-                              "blinn_phong, rough_conductor or rough_dielectric)");
+                              "blinn_phong, rough_conductor, rough_dielectric or plastic)");
     }
     // The classic materials reflect nothing unless told (kr = 0), unlike the mirror.
     if (m.isClassic()) m.reflectionRate = 0.0;
@@ -295,7 +299,9 @@ class Reader : private JsonChecks<Reader> {
       fail(p + "/reflection_rate", "reflection_rate must be in [0, 1]");
     if (m.refractionRate < 0.0 || m.refractionRate > 1.0)
       fail(p + "/refraction_rate", "refraction_rate must be in [0, 1]");
-    if (m.reflectionRate + m.refractionRate > 1.0)
+    // With Fresnel the rays get kr R and kt (1 - R): each rate up to 1 creates no energy.
+    if (m.reflectionRate + m.refractionRate > 1.0 &&
+        !(m.hasRates() && m.rateFresnel != FresnelModel::None))
       fail(p, "reflection_rate + refraction_rate must not exceed 1 (energy would be created)");
     if (!(m.ior > 0.0)) fail(p + "/ior", "ior (index of refraction) must be positive");
     if (!(m.iorOutside > 0.0))
@@ -306,20 +312,32 @@ class Reader : private JsonChecks<Reader> {
     return m;
   }
 
+  /// "fresnel": the rates' weighting (none, exact, schlick) of mirror, phong and blinn_phong
+  /// (Material::rateFresnel), else the reflectance of a dielectric (exact, schlick).
+  void fresnelModel(const json& v, const std::string& place, Material& m) const {
+    const std::string f = string(v, place);
+    const bool rates = m.hasRates();
+    FresnelModel model = FresnelModel::Exact;
+    if (f == "schlick")
+      model = FresnelModel::Schlick;
+    else if (f == "none" && rates)
+      model = FresnelModel::None;
+    else if (f == "none")
+      fail(place, "fresnel \"none\" is for the rates of mirror, phong and blinn_phong; a " +
+                      std::string(toString(m.type)) +
+                      " always splits its light by Fresnel (expected exact or schlick)");
+    else if (f != "exact")
+      fail(place, "unknown Fresnel model \"" + f + "\" (expected " +
+                      (rates ? "none, exact or schlick)" : "exact or schlick)"));
+    (rates ? m.rateFresnel : m.fresnel) = model;
+  }
+
   /// The parameters of the classic Phong and the microfacet materials (see Material.h).
   void classicAndRoughParameters(const json& j, const std::string& p, Material& m) const {
     if (j.contains("ambient")) m.ambient = vec3(j["ambient"], p + "/ambient");
     if (j.contains("diffuse")) m.diffuse = number(j["diffuse"], p + "/diffuse");
     if (j.contains("attenuation")) m.attenuation = vec3(j["attenuation"], p + "/attenuation");
-    if (j.contains("fresnel")) {
-      const std::string f = string(j["fresnel"], p + "/fresnel");
-      if (f == "exact")
-        m.fresnel = FresnelModel::Exact;
-      else if (f == "schlick")
-        m.fresnel = FresnelModel::Schlick;
-      else
-        fail(p + "/fresnel", "unknown Fresnel model \"" + f + "\" (expected exact or schlick)");
-    }
+    if (j.contains("fresnel")) fresnelModel(j["fresnel"], p + "/fresnel", m);
     if (j.contains("distribution")) {
       const std::string d = string(j["distribution"], p + "/distribution");
       if (d == "ggx")
@@ -331,6 +349,8 @@ class Reader : private JsonChecks<Reader> {
              "unknown microfacet distribution \"" + d + "\" (expected ggx or beckmann)");
     }
     if (j.contains("roughness")) m.roughness = number(j["roughness"], p + "/roughness");
+    if (j.contains("priority"))
+      m.priority = integerIn(j["priority"], p + "/priority", 0, kMaxPriority);
     if (j.contains("visible_normals"))
       m.visibleNormals = boolean(j["visible_normals"], p + "/visible_normals");
     for (int c = 0; c < 3; ++c) {
@@ -487,6 +507,13 @@ class Reader : private JsonChecks<Reader> {
       fail(p + "/material", "emitting material \"" + material +
                                 "\" on a plane: an area light needs a finite shape "
                                 "(use a quad)");
+    // A nested volume must have an inside (NestedMedia.h).
+    const ShapeKind kind = o.shape->kind();
+    if (scene.materials[o.material].priority > 0 &&
+        (kind == ShapeKind::Plane || kind == ShapeKind::Quad || kind == ShapeKind::Triangle))
+      fail(p + "/material",
+           "material \"" + material + "\" has a priority (a nested volume) but " + toString(kind) +
+               " has no inside: use a sphere, a box or a closed mesh, or priority 0");
     return o;
   }
 
