@@ -161,11 +161,11 @@ ojson materialToJson(const Material& m) {
   if (classic || m.ambient != defaults.ambient) j.add("ambient", toJson(m.ambient));
   if (classic || m.diffuse != defaults.diffuse) j.add("diffuse", m.diffuse);
   if (classic || m.attenuation != defaults.attenuation) j.add("attenuation", toJson(m.attenuation));
-  // One key, two fields: the rates' weighting (mirror, phong, blinn_phong), else a
-  // dielectric interface's reflectance.
-  if (m.hasRates())
-    j.add("fresnel", toString(m.rateFresnel));
-  else if (dielectric || roughGlass || plastic || m.fresnel != defaults.fresnel)
+  // One key, two fields: the rates' weighting (mirror, phong, blinn_phong; left out when
+  // none, so older files read the same), else a dielectric interface's reflectance.
+  if (m.hasRates()) {
+    if (m.rateFresnel != FresnelModel::None) j.add("fresnel", toString(m.rateFresnel));
+  } else if (dielectric || roughGlass || plastic || m.fresnel != defaults.fresnel)
     j.add("fresnel", toString(m.fresnel));
   if (rough || plastic || m.distribution != defaults.distribution)
     j.add("distribution", toString(m.distribution));
@@ -173,7 +173,7 @@ ojson materialToJson(const Material& m) {
   if (rough || plastic || m.visibleNormals != defaults.visibleNormals)
     j.add("visible_normals", m.visibleNormals);
   if (m.iorOutside != defaults.iorOutside) j.add("ior_outside", m.iorOutside);
-  if (dielectric || roughGlass || m.priority != defaults.priority) j.add("priority", m.priority);
+  if (m.priority != defaults.priority) j.add("priority", m.priority);
   return j.take();
 }
 
