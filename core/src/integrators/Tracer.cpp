@@ -106,6 +106,7 @@ bool passFalseInterfaces(const Tracer& tracer, const QueuedRay& ray, SceneHit& f
   const NestedMedia& media = tracer.media();
   crossing.real = false;
   // Each pass leaves one surface behind; a ray crosses few, the bound guards loops.
+  double left = ray.ray.tMax;  // how far the ray may still go past the last surface
   for (int pass = 0; pass < 256; ++pass) {
     if (!media.isVolume(found.object)) return true;
     const MediumCrossing c = media.cross(inside, found.object, found.si.frontFace);
@@ -115,7 +116,7 @@ bool passFalseInterfaces(const Tracer& tracer, const QueuedRay& ray, SceneHit& f
     }
     // A false interface: the medium does not change; only the list of volumes does.
     inside = c.after;
-    const double left = ray.ray.tMax - found.si.t;
+    left -= found.si.t;
     Ray next = spawnRay(found.si, ray.ray.direction, std::isfinite(left) ? left : kInfinity);
     next.time = ray.ray.time;
     if (!tracer.intersector().intersect(next, found)) return false;

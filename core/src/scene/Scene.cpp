@@ -1,5 +1,7 @@
 #include "raylab/core/Scene.h"
 
+#include "scene/SceneKeys.h"
+
 namespace raylab {
 
 SceneObject::SceneObject(const SceneObject& o)
@@ -74,6 +76,21 @@ const char* toString(FresnelModel model) {
       break;
   }
   return "exact";
+}
+
+std::string setFresnel(Material& m, const std::string& word) {
+  const bool rates = m.hasRates();
+  const std::string expected =
+      rates ? " (expected none, exact or schlick)" : " (expected exact or schlick)";
+  if (word == "none" && !rates)
+    return "fresnel \"none\" is for the rates of mirror, phong and blinn_phong; a " +
+           std::string(toString(m.type)) + " always splits its light by Fresnel" + expected;
+  if (word != "none" && word != "exact" && word != "schlick")
+    return "unknown Fresnel model \"" + word + "\"" + expected;
+  (rates ? m.rateFresnel : m.fresnel) = word == "none"      ? FresnelModel::None
+                                        : word == "schlick" ? FresnelModel::Schlick
+                                                            : FresnelModel::Exact;
+  return "";
 }
 
 const char* toString(MicrofacetModel model) {

@@ -39,9 +39,6 @@ namespace {
 
 using nlohmann::json;
 
-/// The largest priority of a nested volume (Material::priority): plenty for any scene.
-constexpr int kMaxPriority = 1000;
-
 /// Reads one scene document and remembers the file name for every message.
 class Reader : private JsonChecks<Reader> {
   friend class JsonChecks<Reader>;
@@ -312,32 +309,15 @@ class Reader : private JsonChecks<Reader> {
     return m;
   }
 
-  /// "fresnel": the rates' weighting (none, exact, schlick) of mirror, phong and blinn_phong
-  /// (Material::rateFresnel), else the reflectance of a dielectric (exact, schlick).
-  void fresnelModel(const json& v, const std::string& place, Material& m) const {
-    const std::string f = string(v, place);
-    const bool rates = m.hasRates();
-    FresnelModel model = FresnelModel::Exact;
-    if (f == "schlick")
-      model = FresnelModel::Schlick;
-    else if (f == "none" && rates)
-      model = FresnelModel::None;
-    else if (f == "none")
-      fail(place, "fresnel \"none\" is for the rates of mirror, phong and blinn_phong; a " +
-                      std::string(toString(m.type)) +
-                      " always splits its light by Fresnel (expected exact or schlick)");
-    else if (f != "exact")
-      fail(place, "unknown Fresnel model \"" + f + "\" (expected " +
-                      (rates ? "none, exact or schlick)" : "exact or schlick)"));
-    (rates ? m.rateFresnel : m.fresnel) = model;
-  }
-
   /// The parameters of the classic Phong and the microfacet materials (see Material.h).
   void classicAndRoughParameters(const json& j, const std::string& p, Material& m) const {
     if (j.contains("ambient")) m.ambient = vec3(j["ambient"], p + "/ambient");
     if (j.contains("diffuse")) m.diffuse = number(j["diffuse"], p + "/diffuse");
     if (j.contains("attenuation")) m.attenuation = vec3(j["attenuation"], p + "/attenuation");
-    if (j.contains("fresnel")) fresnelModel(j["fresnel"], p + "/fresnel", m);
+    if (j.contains("fresnel")) {
+      const std::string problem = setFresnel(m, string(j["fresnel"], p + "/fresnel"));
+      if (!problem.empty()) fail(p + "/fresnel", problem);
+    }
     if (j.contains("distribution")) {
       const std::string d = string(j["distribution"], p + "/distribution");
       if (d == "ggx")
@@ -350,7 +330,7 @@ class Reader : private JsonChecks<Reader> {
     }
     if (j.contains("roughness")) m.roughness = number(j["roughness"], p + "/roughness");
     if (j.contains("priority"))
-      m.priority = integerIn(j["priority"], p + "/priority", 0, kMaxPriority);
+      m.priority = integerIn(j["priority"], p + "/priority", 0, 1000);  // plenty of levels
     if (j.contains("visible_normals"))
       m.visibleNormals = boolean(j["visible_normals"], p + "/visible_normals");
     for (int c = 0; c < 3; ++c) {
@@ -507,13 +487,13 @@ class Reader : private JsonChecks<Reader> {
       fail(p + "/material", "emitting material \"" + material +
                                 "\" on a plane: an area light needs a finite shape "
                                 "(use a quad)");
-    // A nested volume must have an inside (NestedMedia.h).
+    // A nested volume needs an inside (NestedMedia.h): open surfaces have none.
     const ShapeKind kind = o.shape->kind();
     if (scene.materials[o.material].priority > 0 &&
-        (kind == ShapeKind::Plane || kind == ShapeKind::Quad || kind == ShapeKind::Triangle))
-      fail(p + "/material",
-           "material \"" + material + "\" has a priority (a nested volume) but " + toString(kind) +
-               " has no inside: use a sphere, a box or a closed mesh, or priority 0");
+        (kind == ShapeKind::Quad || kind == ShapeKind::Triangle))
+      fail(p + "/material", "material \"" + material + "\" has a priority (a nested volume) but " +
+                                toString(kind) +
+                                " has no inside: use a closed shape or priority 0");
     return o;
   }
 
