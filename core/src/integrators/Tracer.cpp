@@ -154,7 +154,7 @@ const Material& nestedMaterial(const Material& own, const SceneHit& hit,
  * estimate, queue the children with throughput `throughput * weight`. The same step runs
  * in Tracer::trace (images; `recorder` is null) and Stepper::step (ray trees).
  */
-template <typename Queue>
+template <bool Nested, typename Queue>
 void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
                 std::vector<QueuedRay>& children, SceneHit& found, Vec3& estimate,
                 RayCounts* counts, TreeRecorder* recorder, RayCap* cap) {
@@ -171,8 +171,8 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
   // it was zero-filled on every step); `hit` points to it when the ray hit something.
   const SceneHit* hit = nullptr;
   children.clear();
-  // Nested volumes only: the ones the ray is inside, and the crossing where it ends.
-  const bool nested = tracer.media().active() && ray.kind != RayKind::Shadow;
+  // Scenes with nested volumes only (`Nested`; the others run the step without any of
+  // this): the volumes the ray is inside, and the crossing where it ends.
   MediumStack inside = ray.media;
   MediumCrossing crossing;
   crossing.real = false;
@@ -182,7 +182,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     end = blocked ? EndReason::Occluded : EndReason::ReachedLight;
     if (!blocked) emitted = ray.shadowLe;
   } else if (!(hit = intersector.intersect(ray.ray, found) &&
-                             (!nested || passFalseInterfaces(tracer, ray, found, inside, crossing))
+                             (!Nested || passFalseInterfaces(tracer, ray, found, inside, crossing))
                          ? &found
                          : nullptr)) {
     // 2b. Nothing in the way (false interfaces of nested volumes passed): the ray leaves.
@@ -196,7 +196,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
                              tracer.settings(),
                              ray,
                              *hit,
-                             crossing.real ? nestedMaterial(own, *hit, crossing) : own,
+                             Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own,
                              sampler};
     const HitDecision decision = tracer.rule().onHit(context, children);
     emitted = decision.emitted;
@@ -213,7 +213,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     const SurfaceInteraction& si = hit->si;
     const auto leaks = [&si](const QueuedRay& c) { return !si.sidesAgree(c.ray.direction); };
     children.erase(std::remove_if(children.begin(), children.end(), leaks), children.end());
-    if (nested) carryMedia(ray, *hit, inside, crossing, children);
+    if constexpr (Nested) carryMedia(ray, *hit, inside, crossing, children);
     end = !children.empty()                    ? EndReason::Spawned
           : decision.end == EndReason::Spawned ? EndReason::Absorbed
                                                : decision.end;
@@ -239,7 +239,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
       cap->queued += children.size();
     }
   }
-  if (recorder) recorder->recordStep(ray, hit, end, emitted, children, inside);
+  if (recorder) recorder->recordStep(ray, hit, end, emitted, children, Nested ? inside : ray.media);
   queue.pop_front();  // `ray` is gone from here on
   append(queue, children);
 }
@@ -289,8 +289,14 @@ Vec3 Tracer::trace(int x, int y, int sample, RayCounts* counts, bool* capped,
   if (rayCap >= 1) queue.push_back(cameraRay(*this, x, y, sampler));
   Vec3 estimate(0.0);
   SceneHit found;
-  while (!queue.empty())
-    engineStep(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
+  // Scenes with nested volumes run the step that tracks them; the others pay nothing.
+  if (m_media.active()) {
+    while (!queue.empty())
+      engineStep<true>(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
+  } else {
+    while (!queue.empty())
+      engineStep<false>(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
+  }
   if (capped) *capped = cap.reached;
   return estimate;
 }
@@ -335,8 +341,12 @@ bool Stepper::step() {
   if (m_queue.empty()) return false;
   TreeRecorder recorder(*m_tracer, m_tree, m_event, m_budget);
   SceneHit found;
-  engineStep(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts, &recorder,
-             nullptr);
+  if (m_tracer->media().active())
+    engineStep<true>(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts,
+                     &recorder, nullptr);
+  else
+    engineStep<false>(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts,
+                      &recorder, nullptr);
   // Once the queue is empty every ray has ended: propagate energy up the tree.
   if (m_queue.empty()) m_tree.propagate();
   return true;
