@@ -51,7 +51,7 @@ struct Pair {
   double from, to;
 };
 
-TEST(NestedMedia, 01_TheSixIndexPairsOfTwoOverlappingBalls) {
+TEST(NestedVolumes, 01_TheSixIndexPairsOfTwoOverlappingBalls) {
   // Along +x: enter G at -1.5 (air 1 -> glass 1.5); W's surface at -0.5 lies inside G,
   // which keeps the overlap: false (the list becomes G, W); leave G at 0.5 into W (1.5 ->
   // 1.33); leave W at 1.5 (1.33 -> 1). Along -x: enter W at 1.5 (1 -> 1.33); enter G at
@@ -111,7 +111,7 @@ std::vector<const RaySegment*> refractionChain(const RayTree& tree) {
   }
 }
 
-TEST(NestedMedia, 02_WhittedRefractsWithThePairOfEachCrossing) {
+TEST(NestedVolumes, 02_WhittedRefractsWithThePairOfEachCrossing) {
   // The same two rays traced by Whitted's algorithm (colour 1, so a refracted ray carries
   // T = 1 - R). At normal incidence R = ((n1 - n2) / (n1 + n2))^2, so each crossing's T
   // names its pair: 1 <-> 1.5: 1 - (0.5 / 2.5)^2 = 0.96; 1.5 <-> 1.33: 1 - (0.17 /
@@ -158,7 +158,7 @@ TEST(NestedMedia, 02_WhittedRefractsWithThePairOfEachCrossing) {
   EXPECT_NEAR(chain[2]->weight.x, 0.9799407, 1e-7);  // as if from air into water
 }
 
-TEST(NestedMedia, 03_TheInspectorListsTheMediaAndThePair) {
+TEST(NestedVolumes, 03_TheInspectorListsTheMediaAndThePair) {
   // The ray inside the overlap (from -1.5 to 0.5) is inside glass and water, filled by the
   // glass; where it leaves the glass the pair is 1.5 -> 1.33.
   const Scene scene = overlappingBalls();
@@ -186,7 +186,7 @@ TEST(NestedMedia, 03_TheInspectorListsTheMediaAndThePair) {
   EXPECT_TRUE(inside.cameraMedia().contains(kWater));
 }
 
-TEST(NestedMedia, 04_ScenesReadWriteAndCheckThePriority) {
+TEST(NestedVolumes, 04_ScenesReadWriteAndCheckThePriority) {
   const std::string text = SceneIO::serialize(overlappingBalls());
   EXPECT_THAT(text, ::testing::HasSubstr("\"priority\": 2"));
   const Scene back = SceneIO::parse(text, "balls.json");
