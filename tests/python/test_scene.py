@@ -196,7 +196,8 @@ def test15_fresnel_plastic_and_priority_through_set_material():
     scene.set_material("blue", type="plastic", roughness=0.2, ior=1.5, colour=[0.1, 0.2, 0.8])
     blue = scene.materials[scene.material_names.index("blue")]
     assert blue["type"] == "plastic" and blue["roughness"] == 0.2
-    scene.set_material("red", type="dielectric", fresnel="exact", priority=2)
+    scene.set_material("red", reflection_rate=0.5, refraction_rate=0.5, type="dielectric",
+                       fresnel="exact", priority=2)
     assert scene.materials[scene.material_names.index("red")]["priority"] == 2
     with pytest.raises(raylab.SceneError, match='fresnel "none" is for the rates'):
         scene.set_material("red", fresnel="none")
