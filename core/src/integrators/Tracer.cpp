@@ -148,11 +148,24 @@ const Material& nestedMaterial(const Material& own, const SceneHit& hit,
   return adjusted;
 }
 
+/// The surface `ray` ends on, written into `found`, or null when it leaves the scene; with
+/// `Nested`, past the false interfaces of nested volumes (passFalseInterfaces).
+template <bool Nested>
+const SceneHit* nearestHit(const Tracer& tracer, const QueuedRay& ray, SceneHit& found,
+                           MediumStack& inside, MediumCrossing& crossing) {
+  if (!tracer.intersector().intersect(ray.ray, found)) return nullptr;
+  if constexpr (Nested) {
+    if (!passFalseInterfaces(tracer, ray, found, inside, crossing)) return nullptr;
+  }
+  return &found;
+}
+
 /**
  * The engine, one step: take the first ray of the queue, find where it ends, let the
  * rule spawn children, add the ray's own contribution `throughput * emitted` to the
  * estimate, queue the children with throughput `throughput * weight`. The same step runs
- * in Tracer::trace (images; `recorder` is null) and Stepper::step (ray trees).
+ * in Tracer::trace (images; `recorder` is null) and Stepper::step (ray trees). `Nested`:
+ * the scene has nested volumes (NestedMedia.h), whose lists the step keeps.
  */
 template <bool Nested, typename Queue>
 void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
@@ -171,8 +184,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
   // it was zero-filled on every step); `hit` points to it when the ray hit something.
   const SceneHit* hit = nullptr;
   children.clear();
-  // Scenes with nested volumes only (`Nested`; the others run the step without any of
-  // this): the volumes the ray is inside, and the crossing where it ends.
+  // With `Nested` only: the volumes the ray is inside, and the crossing where it ends.
   MediumStack inside = ray.media;
   MediumCrossing crossing;
   crossing.real = false;
@@ -181,10 +193,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     const bool blocked = intersector.occluded(ray.ray);
     end = blocked ? EndReason::Occluded : EndReason::ReachedLight;
     if (!blocked) emitted = ray.shadowLe;
-  } else if (!(hit = intersector.intersect(ray.ray, found) &&
-                             (!Nested || passFalseInterfaces(tracer, ray, found, inside, crossing))
-                         ? &found
-                         : nullptr)) {
+  } else if (!(hit = nearestHit<Nested>(tracer, ray, found, inside, crossing))) {
     // 2b. Nothing in the way (false interfaces of nested volumes passed): the ray leaves.
     end = EndReason::Escaped;
     emitted = tracer.rule().onEscape(ray, tracer.settings());
@@ -192,12 +201,8 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     // 2c. Ask the algorithm what the hit spawns (at a volume's surface, with the indices
     // of the media on its two sides).
     const Material& own = tracer.materialOf(hit->object);
-    const HitContext context{intersector,
-                             tracer.settings(),
-                             ray,
-                             *hit,
-                             Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own,
-                             sampler};
+    const Material& material = Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own;
+    const HitContext context{intersector, tracer.settings(), ray, *hit, material, sampler};
     const HitDecision decision = tracer.rule().onHit(context, children);
     emitted = decision.emitted;
     // A child with a non-finite or negative weight is a bug in the rule: never let it in.
