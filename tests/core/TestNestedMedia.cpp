@@ -158,6 +158,41 @@ TEST(NestedVolumes, 02_WhittedRefractsWithThePairOfEachCrossing) {
   EXPECT_NEAR(chain[2]->weight.x, 0.9799407, 1e-7);  // as if from air into water
 }
 
+TEST(NestedVolumes, 02b_ObliqueRaysBendByThePairOfEachCrossing) {
+  // Two overlapping slabs, faces normal to x: glass G (n 1.5, priority 2) on x in [-1, 0.5],
+  // water W (n 1.33, priority 1) on x in [-0.5, 1]. A ray from air at 30 degrees to x: across
+  // planes normal to x, n sin(theta) = n d.y is kept (Snell), so in each medium d.y = 0.5 /
+  // n: in G (and the overlap G fills) 1 / 3, in W 0.5 / 1.33 = 0.3759398, out in air 0.5.
+  // The first refracted ray crosses W's face at -0.5 unbent (a false interface) and ends at
+  // G's far face, x = 0.5. Without priorities it would bend there as if from air into water.
+  Scene scene;
+  Material glass = makeMaterial("glass", MaterialType::Dielectric, Vec3(1.0));
+  glass.ior = 1.5;
+  glass.priority = 2;
+  Material water = makeMaterial("water", MaterialType::Dielectric, Vec3(1.0));
+  water.ior = 1.33;
+  water.priority = 1;
+  addObject(scene, "glass slab", std::make_unique<Box>(Point3(-0.25, 0, 0), Vec3(1.5, 20, 20)),
+            addMaterial(scene, glass));
+  addObject(scene, "water slab", std::make_unique<Box>(Point3(0.25, 0, 0), Vec3(1.5, 20, 20)),
+            addMaterial(scene, water));
+  scene.camera.width = scene.camera.height = 8;
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Whitted;
+  settings.maxDepth = 8;
+  const Tracer tracer(scene, settings);
+  const Vec3 d(std::cos(radians(30.0)), std::sin(radians(30.0)), 0.0);
+  Stepper stepper(tracer, 0, 0, 0, kDefaultTreeBudget, Ray::make(Point3(-3, 0, 0), d));
+  stepper.runToEnd();
+  const std::vector<const RaySegment*> chain = refractionChain(stepper.tree());
+  ASSERT_EQ(chain.size(), 4u);
+  EXPECT_NEAR(chain[1]->direction.y, 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(chain[1]->endPoint.x, 0.5, 1e-9);
+  EXPECT_NEAR(chain[2]->direction.y, 0.5 / 1.33, 1e-12);
+  EXPECT_NEAR(chain[2]->endPoint.x, 1.0, 1e-9);
+  EXPECT_NEAR(chain[3]->direction.y, 0.5, 1e-12);
+}
+
 TEST(NestedVolumes, 03_TheInspectorListsTheMediaAndThePair) {
   // The ray inside the overlap (from -1.5 to 0.5) is inside glass and water, filled by the
   // glass; where it leaves the glass the pair is 1.5 -> 1.33.
