@@ -311,6 +311,66 @@
         <source>light</source>
         <translation>目标光源</translation>
     </message>
+    <message>
+        <source>inside</source>
+        <translation>所在介质</translation>
+    </message>
+    <message>
+        <source>indices</source>
+        <translation>折射率对</translation>
+    </message>
+    <message>
+        <source>weights kr R, kt (1 - R)</source>
+        <translation>权重 kr R、kt (1 - R)</translation>
+    </message>
+    <message>
+        <source>Schlick&apos;s Fresnel</source>
+        <translation>Schlick 近似菲涅耳</translation>
+    </message>
+    <message>
+        <source>times the tint</source>
+        <translation>再乘以色调</translation>
+    </message>
+    <message>
+        <source>coating ior</source>
+        <translation>涂层折射率</translation>
+    </message>
+    <message>
+        <source>none (air)</source>
+        <translation>无（空气）</translation>
+    </message>
+    <message>
+        <source>incidence</source>
+        <translation>入射角</translation>
+    </message>
+    <message>
+        <source>entering</source>
+        <translation>进入</translation>
+    </message>
+    <message>
+        <source>priority</source>
+        <translation>优先级</translation>
+    </message>
+    <message>
+        <source>leaving</source>
+        <translation>离开</translation>
+    </message>
+    <message>
+        <source>plastic</source>
+        <translation>塑料</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>度</translation>
+    </message>
+    <message>
+        <source>Fresnel</source>
+        <translation>菲涅耳</translation>
+    </message>
+    <message>
+        <source>base</source>
+        <translation>底层</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>
@@ -609,6 +669,10 @@
         <source>degrees</source>
         <translation>角度（度）</translation>
     </message>
+    <message>
+        <source>priority</source>
+        <translation>优先级</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>
@@ -727,6 +791,10 @@
     <message>
         <source>smooth</source>
         <translation>平滑着色</translation>
+    </message>
+    <message>
+        <source>plastic</source>
+        <translation>塑料</translation>
     </message>
 </context>
 <context>
@@ -2045,20 +2113,12 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>可见法线采样：只对观察方向可见的微表面法线进行采样（Heitz 2018；仅适用于 GGX）</translation>
     </message>
     <message>
-        <source>Fresnel reflectance: exact (the Fresnel equations) or schlick (Schlick&apos;s approximation)</source>
-        <translation>菲涅耳反射率：exact（精确，按菲涅耳公式计算）或 schlick（Schlick 近似）</translation>
-    </message>
-    <message>
         <source>Microfacet distribution: ggx (Trowbridge-Reitz, long tails) or beckmann (Gaussian slopes)</source>
         <translation>微表面分布：ggx（GGX，即 Trowbridge-Reitz 分布，拖尾较长）或 beckmann（Beckmann 分布，斜率服从高斯分布）</translation>
     </message>
     <message>
         <source>Ray offset: secondary and shadow rays start past the hit point&apos;s error bound; switched off, shadow acne appears</source>
         <translation>光线偏移：次级光线和阴影光线从交点的误差界之外出发；关闭后会出现阴影失真（shadow acne）</translation>
-    </message>
-    <message>
-        <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn&apos;s half-vector highlight), rough_conductor (microfacet metal), rough_dielectric (microfacet glass)</source>
-        <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）、phong（经典 Phong 光照模型：环境光、漫反射、镜面反射）、blinn_phong（采用 Blinn 半程向量高光的 Phong 模型）、rough_conductor（粗糙导体，微表面金属）、rough_dielectric（粗糙电介质，微表面玻璃）</translation>
     </message>
     <message>
         <source>How rays search the meshes: bvh (through their bounding volume hierarchy) or none (brute force, every triangle; the same image, slower)</source>
@@ -2087,6 +2147,18 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>The steps the scene file applies to the shape, in order: the shape&apos;s values above are the ones before them</source>
         <translation>场景文件按顺序对形状施加的变换步骤：上面的形状参数是变换之前的值</translation>
+    </message>
+    <message>
+        <source>Fresnel reflectance: exact (the Fresnel equations) or schlick (Schlick&apos;s approximation). For mirror, phong and blinn_phong: none keeps the constant reflection and refraction rates kr and kt; exact or schlick weighs the reflected ray kr R and the refracted ray kt (1 - R), R the reflectance at the hit</source>
+        <translation>菲涅耳反射率：exact（精确，按菲涅耳公式计算）或 schlick（Schlick 近似）。对 mirror、phong 和 blinn_phong：none 保持恒定的反射系数 kr 和折射系数 kt；exact 或 schlick 则让反射光线的权重为 kr R、折射光线的权重为 kt (1 - R)，R 为交点处的菲涅耳反射率</translation>
+    </message>
+    <message>
+        <source>Nested media: 0, this surface names the media on its two sides (ior, ior outside); 1 or more, the object is a volume of index ior, and where volumes overlap the one of higher priority fills the overlap (a glass lens in water: glass 2, water 1)</source>
+        <translation>嵌套介质：0 表示该表面自行给出两侧介质的折射率（折射率、外侧折射率）；1 及以上表示该物体是折射率为 ior 的介质体，几个介质体重叠时，重叠部分由优先级较高的介质占据（例如水中的玻璃透镜：玻璃 2，水 1）</translation>
+    </message>
+    <message>
+        <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn&apos;s half-vector highlight), rough_conductor (microfacet metal), rough_dielectric (microfacet glass), plastic (a rough dielectric coating over a diffuse base)</source>
+        <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）、phong（经典 Phong 光照模型：环境光、漫反射、镜面反射）、blinn_phong（采用 Blinn 半程向量高光的 Phong 模型）、rough_conductor（粗糙导体，微表面金属）、rough_dielectric（粗糙电介质，微表面玻璃）、plastic（塑料：漫反射底层上覆一层粗糙电介质涂层）</translation>
     </message>
 </context>
 <context>

@@ -39,7 +39,8 @@ using json = nlohmann::ordered_json;
 /// Keys whose numbers are whole (spin boxes without decimals).
 const std::set<std::string> kIntegerKeys = {
     "m",         "n",    "width",          "height",         "spp",
-    "max_depth", "seed", "shadow_samples", "glossy_samples", "russian_roulette_depth"};
+    "max_depth", "seed", "shadow_samples", "glossy_samples", "russian_roulette_depth",
+    "priority"};
 /// Keys shown but not edited here: names are references (objects name their material),
 /// renaming an object is the Edit panel's; a mesh's file and a matrix are set in files.
 const std::set<std::string> kReadOnlyKeys = {"name", "file", "matrix", "type"};
@@ -51,7 +52,7 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
        for (Algorithm a : kAllAlgorithms) words.push_back(algorithmInfo(a).word);
        return words;
      }()},
-    {"fresnel", {"exact", "schlick"}},
+    {"fresnel", {"none", "exact", "schlick"}},
     {"distribution", {"ggx", "beckmann"}},
     {"acceleration", {"bvh", "none"}},
     {"bvh_split", {"sah", "median"}},
@@ -59,8 +60,8 @@ const std::map<std::string, std::vector<const char*>> kChoices = {
     {"normals", {"file", "flat", "smooth"}},
 };
 const std::vector<const char*> kMaterialTypes = {
-    "diffuse", "mirror",      "dielectric",      "glossy",
-    "phong",   "blinn_phong", "rough_conductor", "rough_dielectric"};
+    "diffuse",     "mirror",          "dielectric",       "glossy", "phong",
+    "blinn_phong", "rough_conductor", "rough_dielectric", "plastic"};
 
 /// What a key means, for the keys a student may not know from their words (empty for
 /// the others: the form then names the key's place in the file).
@@ -89,7 +90,14 @@ QString tipFor(const std::string& key) {
   if (key == "fresnel")
     return PropertiesPanel::tr(
         "Fresnel reflectance: exact (the Fresnel equations) or schlick (Schlick's "
-        "approximation)");
+        "approximation). For mirror, phong and blinn_phong: none keeps the constant reflection "
+        "and refraction rates kr and kt; exact or schlick weighs the reflected ray kr R and the "
+        "refracted ray kt (1 - R), R the reflectance at the hit");
+  if (key == "priority")
+    return PropertiesPanel::tr(
+        "Nested media: 0, this surface names the media on its two sides (ior, ior outside); 1 "
+        "or more, the object is a volume of index ior, and where volumes overlap the one of "
+        "higher priority fills the overlap (a glass lens in water: glass 2, water 1)");
   if (key == "distribution")
     return PropertiesPanel::tr(
         "Microfacet distribution: ggx (Trowbridge-Reitz, long tails) or beckmann (Gaussian "
@@ -260,7 +268,7 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
            "refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic "
            "Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn's "
            "half-vector highlight), rough_conductor (microfacet metal), rough_dielectric "
-           "(microfacet glass)"));
+           "(microfacet glass), plastic (a rough dielectric coating over a diffuse base)"));
     connect(box, QOverload<int>::of(&QComboBox::activated), this,
             [this, place, box, undoText](int) {
               setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
@@ -421,6 +429,13 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
     }
     values = std::move(withOutside);
   }
+  // The rates' Fresnel weighting of a mirror or a classic material ("none"), and the
+  // nesting priority of glass (0).
+  const std::string type = material ? values.value("type", "diffuse") : "";
+  if ((type == "mirror" || type == "phong" || type == "blinn_phong") && !values.contains("fresnel"))
+    values["fresnel"] = "none";
+  if ((type == "dielectric" || type == "rough_dielectric") && !values.contains("priority"))
+    values["priority"] = 0;
   if (pointer == "/render" && !values.contains("ray_offset")) values["ray_offset"] = true;
   if (pointer == "/render" && !values.contains("acceleration")) values["acceleration"] = "bvh";
   if (pointer == "/render" && !values.contains("bvh_split")) values["bvh_split"] = "sah";

@@ -514,6 +514,52 @@ TEST_F(MainWindowTest, 14b_SwitchToARoughConductorAndSetItsRoughness) {
   EXPECT_TRUE(m_window->document().scene().render.rayOffset);
 }
 
+// Issue 37 in the properties panel: the red mirror sphere's "fresnel" shown as none although
+// the file leaves it out, set to schlick it reaches the scene; the type plastic is offered
+// and shows its coating's roughness; a dielectric shows its nesting priority (0), set to 2
+// it reaches the scene; undo brings the scene back byte for byte.
+TEST_F(MainWindowTest, 14b2_FresnelRatesPlasticAndPriority) {
+  const std::string original = SceneIO::serialize(m_window->document().scene());
+  const int sphere = m_window->document().scene().findObject("red sphere");
+  m_window->selectObject(sphere);
+  PropertiesPanel& properties = *m_window->propertiesPanel();
+  const std::size_t material =
+      std::size_t(m_window->document().scene().objects[std::size_t(sphere)].material);
+  const std::string base = "/materials/" + std::to_string(material);
+  ASSERT_EQ(m_window->document().scene().materials[material].type, MaterialType::Mirror);
+  auto* fresnel = qobject_cast<QComboBox*>(properties.field(base + "/fresnel"));
+  ASSERT_NE(fresnel, nullptr);
+  EXPECT_EQ(fresnel->currentData().toString(), QStringLiteral("none"));
+  EXPECT_FALSE(fresnel->toolTip().isEmpty());
+  fresnel->setCurrentIndex(fresnel->findData(QStringLiteral("schlick")));
+  emit fresnel->activated(fresnel->currentIndex());
+  settle();
+  EXPECT_EQ(m_window->document().scene().materials[material].rateFresnel, FresnelModel::Schlick);
+
+  auto* type = qobject_cast<QComboBox*>(properties.field(base + "/type"));
+  ASSERT_NE(type, nullptr);
+  type->setCurrentIndex(type->findData(QStringLiteral("plastic")));
+  emit type->activated(type->currentIndex());
+  settle();
+  EXPECT_EQ(m_window->document().scene().materials[material].type, MaterialType::Plastic);
+  EXPECT_NE(qobject_cast<QDoubleSpinBox*>(properties.field(base + "/roughness")), nullptr);
+
+  type = qobject_cast<QComboBox*>(properties.field(base + "/type"));
+  ASSERT_NE(type, nullptr);
+  type->setCurrentIndex(type->findData(QStringLiteral("dielectric")));
+  emit type->activated(type->currentIndex());
+  settle();
+  auto* priority = qobject_cast<QSpinBox*>(properties.field(base + "/priority"));
+  ASSERT_NE(priority, nullptr);
+  EXPECT_EQ(priority->value(), 0);
+  priority->setValue(2);
+  settle();
+  EXPECT_EQ(m_window->document().scene().materials[material].priority, 2);
+
+  for (int i = 0; i < 4; ++i) m_window->document().undoStack().undo();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+}
+
 // A mesh's shading normals are offered in the properties panel: "file" shown although the
 // file leaves it out, switched to "smooth" the crease angle appears (60), set to 30 it
 // reaches the scene, 200 is refused with the loader's message, and undo restores the file.

@@ -434,5 +434,101 @@ TEST(Bsdf, 14_GlossyRejectsDirectionsUnderTheSurface) {
   EXPECT_FALSE(bsdf::sample(m, si, wo, sampler).has_value());
 }
 
+TEST(Bsdf, 15_RatesWeighedByFresnelAtThreeAngles) {
+  // A Phong (or mirror) surface of glass, n = 1.5 seen from air (eta = 1 / 1.5), with the
+  // option "fresnel": the reflected ray gets kr R and the refracted one kt (1 - R) (The
+  // Ray Tracer Challenge, ch. 11). R by the published formulas, computed by hand:
+  //   normal incidence, both models: R0 = ((1.5 - 1) / (1.5 + 1))^2 = 0.25^2 = 0.04.
+  //   Exact (Hecht 4.34), R = (R_s + R_p) / 2 with sin t = sin i / 1.5:
+  //     45 deg: cos i = 0.7071068, cos t = sqrt(1 - 0.5 / 2.25) = 0.8819171;
+  //       R_s = ((0.7071068 - 1.5 * 0.8819171) / (0.7071068 + 1.3228757))^2 = 0.0920134,
+  //       R_p = ((1.5 * 0.7071068 - 0.8819171) / (1.0606602 + 0.8819171))^2 = 0.0084665,
+  //       R = 0.0502399.
+  //     80 deg: cos i = 0.1736482, cos t = sqrt(1 - 0.9698463 / 2.25) = 0.7542925;
+  //       R_s = ((0.1736482 - 1.1314388) / (0.1736482 + 1.1314388))^2 = 0.5385949,
+  //       R_p = ((0.2604723 - 0.7542925) / (0.2604723 + 0.7542925))^2 = 0.2368138,
+  //       R = 0.3877044.
+  //   Schlick, R = R0 + (1 - R0)(1 - cos i)^5:
+  //     45 deg: (1 - 0.7071068)^5 = 0.0021555, R = 0.04 + 0.96 * 0.0021555 = 0.0420693;
+  //     80 deg: (1 - 0.1736482)^5 = 0.3853230, R = 0.04 + 0.96 * 0.3853230 = 0.4099101.
+  struct Case {
+    FresnelModel model;
+    double degrees, R;
+  };
+  const Case cases[] = {
+      {FresnelModel::Exact, 0.0, 0.04},         {FresnelModel::Exact, 45.0, 0.0502399},
+      {FresnelModel::Exact, 80.0, 0.3877044},   {FresnelModel::Schlick, 0.0, 0.04},
+      {FresnelModel::Schlick, 45.0, 0.0420693}, {FresnelModel::Schlick, 80.0, 0.4099101}};
+  for (MaterialType type : {MaterialType::Phong, MaterialType::BlinnPhong, MaterialType::Mirror})
+    for (const Case& c : cases) {
+      SCOPED_TRACE(std::string(toString(type)) + " " + toString(c.model) + " at " +
+                   std::to_string(c.degrees));
+      Material m = material(type);
+      m.colour = Vec3(1.0);
+      m.ior = kGlass;
+      m.reflectionRate = 0.5;
+      m.refractionRate = 0.9;  // kr + kt may pass 1 with Fresnel: kr R + kt (1 - R) <= 0.9
+      m.rateFresnel = c.model;
+      // Seen from above the normal +y (entering), tilted by the angle.
+      const Vec3 wo = fromNormal(c.degrees);
+      const SpecularLobes lobes = bsdf::specularLobes(m, hitAt({0, 1, 0}, wo), wo);
+      ASSERT_EQ(lobes.count, 2);
+      EXPECT_EQ(lobes.lobe[0].kind, RayKind::Reflection);
+      EXPECT_NEAR(lobes.lobe[0].weight.x, 0.5 * c.R, 1e-7);
+      EXPECT_EQ(lobes.lobe[1].kind, RayKind::Refraction);
+      EXPECT_NEAR(lobes.lobe[1].weight.x, 0.9 * (1.0 - c.R), 1e-7);
+    }
+  // Without the option the rates stay constant; with it, total internal reflection (from
+  // inside at 60 degrees, past the critical angle 41.8) sends R = 1 of kr back and nothing
+  // of kt (without it, Whitted's rule reflects kt too).
+  Material m = material(MaterialType::Phong);
+  m.ior = kGlass;
+  m.reflectionRate = 0.3;
+  m.refractionRate = 0.6;
+  const Vec3 wo = fromNormal(80.0);
+  const SpecularLobes plain = bsdf::specularLobes(m, hitAt({0, 1, 0}, wo), wo);
+  ASSERT_EQ(plain.count, 2);
+  EXPECT_EQ(plain.lobe[0].weight, Vec3(0.3));
+  EXPECT_EQ(plain.lobe[1].weight, Vec3(0.6));
+  const Vec3 inside = -fromNormal(60.0);
+  const SpecularLobes tirPlain = bsdf::specularLobes(m, hitAt({0, 1, 0}, inside), inside);
+  ASSERT_EQ(tirPlain.count, 1);
+  EXPECT_NEAR(tirPlain.lobe[0].weight.x, 0.9, 1e-15);
+  m.rateFresnel = FresnelModel::Schlick;
+  const SpecularLobes tir = bsdf::specularLobes(m, hitAt({0, 1, 0}, inside), inside);
+  ASSERT_EQ(tir.count, 1);
+  EXPECT_EQ(tir.lobe[0].kind, RayKind::Reflection);
+  EXPECT_NEAR(tir.lobe[0].weight.x, 0.3, 1e-15);
+}
+
+TEST(Bsdf, 16_PhongSamplingCarriesTheFresnelShareOnAverage) {
+  // Path tracing picks one of a Phong material's parts; with Fresnel the picked delta ray
+  // carries R or 1 - R of its rate, so the mean weight of reflected samples equals the
+  // scaled kr R and of refracted ones kt (1 - R): scale = 1 / max(1, kd + ks + kr + kt)
+  // = 1 / 1.5 here, R = 0.0420693 at 45 degrees (Schlick, Bsdf.15), so the expected sums
+  // per sample are 0.5 / 1.5 * 0.0420693 = 0.0140231 and 0.5 / 1.5 * 0.9579307 = 0.3193102.
+  Material m = material(MaterialType::Phong);
+  m.ior = kGlass;
+  m.diffuse = 0.5;
+  m.specular = 0.0;
+  m.reflectionRate = 0.5;
+  m.refractionRate = 0.5;
+  m.rateFresnel = FresnelModel::Schlick;
+  const Vec3 wo = fromNormal(45.0);
+  const SurfaceInteraction si = hitAt({0, 1, 0}, wo);
+  Sampler rng(37, 0, 0, 0);
+  const int n = 200000;
+  double reflected = 0.0, refracted = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const auto s = bsdf::sample(m, si, wo, rng);
+    if (!s || !s->specular) continue;
+    (s->kind == RayKind::Reflection ? reflected : refracted) += s->weight.x;
+  }
+  // Each delta part is picked with probability 0.5 / 1.4 (its share of kd lum(colour) + kr
+  // + kt = 0.4 + 0.5 + 0.5) and has a fixed weight: binomial noise only (5 sigma).
+  EXPECT_NEAR(reflected / n, 0.0140231, 6e-4);
+  EXPECT_NEAR(refracted / n, 0.3193102, 6e-3);
+}
+
 }  // namespace
 }  // namespace raylab

@@ -36,7 +36,7 @@ namespace raylab {
 namespace {
 
 /// Number of chi-square tests below that must pass (the Sidak correction's m).
-constexpr int kPositiveTests = 33;
+constexpr int kPositiveTests = 36;
 /// Overall significance level of the file.
 constexpr double kSignificance = 0.01;
 /// Per-test level: 1 - (1 - 0.01)^(1/18) = 5.58e-4.
@@ -524,10 +524,10 @@ TEST(Chi2, 07_LensSampling) {
 TEST(Chi2, 08_TheCountOfTestsMatchesTheCorrection) {
   // cosine 1 + sphere 1 + phong warp 1 + glossy 9 + sphere light 1 + quad light 1 + disk 2
   // + cone warp 1 + separated sphere light 1 + microfacet normals 2 + visible normals 6
-  // + rough conductor 3 + rough dielectric 3 + separated sphere light by area 1.
-  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1 + 2 + 6 + 3 + 3 + 1);
-  // 1 - (1 - 0.01)^(1/33).
-  EXPECT_NEAR(kAlpha, 3.0451e-04, 1e-7);
+  // + rough conductor 3 + rough dielectric 3 + separated sphere light by area 1 + plastic 3.
+  EXPECT_EQ(kPositiveTests, 1 + 1 + 1 + 9 + 1 + 1 + 2 + 1 + 1 + 2 + 6 + 3 + 3 + 1 + 3);
+  // 1 - (1 - 0.01)^(1/36).
+  EXPECT_NEAR(kAlpha, 2.7914e-04, 1e-7);
 }
 
 TEST(Chi2, 09_UniformConeWarp) {
@@ -814,6 +814,27 @@ TEST(Chi2, 15_SphereLightCapByArea) {
                          }),
                          24, false),
                  "cap by area as uniform in angle");
+}
+
+TEST(Chi2, 16_PlasticSampling) {
+  // The plastic's mixture (coating normals, visible or D cos, and the cosine hemisphere)
+  // against its pdf over the whole sphere (nothing may fall below the surface): GGX at
+  // 30 degrees, Beckmann at 70, GGX with D cos sampling at 60.
+  RoughSetup cases[] = {{MaterialType::Plastic, MicrofacetModel::GGX, 0.2, 30.0},
+                        {MaterialType::Plastic, MicrofacetModel::Beckmann, 0.5, 70.0},
+                        {MaterialType::Plastic, MicrofacetModel::GGX, 0.3, 60.0, false}};
+  const char* names[] = {"plastic ggx 0.2 at 30 deg", "plastic beckmann 0.5 at 70 deg",
+                         "plastic ggx 0.3 D cos at 60 deg"};
+  for (int i = 0; i < 3; ++i) {
+    cases[i].m.colour = Vec3(0.5, 0.3, 0.2);
+    expectAccepted(roughChi2(names[i], cases[i], cases[i], 40 + i), names[i]);
+  }
+  // Negative control: samples of a dark base (more coating rays) against the density of a
+  // white one.
+  RoughSetup white = cases[0];
+  white.m.colour = Vec3(1.0);
+  expectRejected(roughChi2("NEGATIVE plastic dark base as white", cases[0], white, 43),
+                 "plastic dark base as white");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "TransportScenes.h"
 #include "raylab/core/PixelTrace.h"
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/SpawnRule.h"
 
 #include <gtest/gtest.h>
@@ -691,6 +692,55 @@ TEST(Tracer, 13_TheDefaultSceneShowsTheOriginalsDemonstrations) {
     }
   EXPECT_GE(fans, 1) << "no sphere pixel reflects onto the cube's glossy fan";
   EXPECT_GE(refractedThenDiffuse, 2) << "no refracted ray scatters diffusely";
+}
+
+TEST(Tracer, 14_WhittedWeighsAPhongGlassBallsRaysByFresnel) {
+  // A Phong glass ball (n 1.5, kr = kt = 0.5) at the origin, radius 1, and a ray along -z
+  // at height sin 45 deg: it meets the ball at (0, 0.7071068, 0.7071068) at 45 degrees of
+  // incidence. With "fresnel": "exact" the reflected child weighs kr R = 0.5 * 0.0502399 =
+  // 0.0251200 and the refracted one kt (1 - R) = 0.5 * 0.9497601 = 0.4748800; with
+  // "schlick" 0.5 * 0.0420693 = 0.0210346 and 0.5 * 0.9579307 = 0.4789654 (R by hand in
+  // Bsdf.15); with "none" 0.5 and 0.5. The inspector's weight line says why.
+  struct Case {
+    FresnelModel model;
+    double reflected, refracted;
+    const char* note;
+  };
+  const Case cases[] = {
+      {FresnelModel::Exact, 0.0251200, 0.4748800,
+       "kr R = 0.5 x 0.05024 = 0.02512 (Fresnel, incidence 45 degrees)"},
+      {FresnelModel::Schlick, 0.0210346, 0.4789654,
+       "kr R = 0.5 x 0.04207 = 0.02103 (Schlick's Fresnel, incidence 45 degrees)"},
+      {FresnelModel::None, 0.5, 0.5, ""}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(toString(c.model));
+    Scene scene;
+    Material glass = makeMaterial("phong glass", MaterialType::Phong, Vec3(1.0));
+    glass.reflectionRate = 0.5;
+    glass.refractionRate = 0.5;
+    glass.ior = 1.5;
+    glass.rateFresnel = c.model;
+    addObject(scene, "ball", std::make_unique<Sphere>(Point3(0.0), 1.0), addMaterial(scene, glass));
+    scene.camera.width = scene.camera.height = 8;
+    RenderSettings settings = scene.render;
+    settings.algorithm = Algorithm::Whitted;
+    const Tracer tracer(scene, settings);
+    const double h = std::sqrt(0.5);
+    Stepper stepper(tracer, 0, 0, 0, kDefaultTreeBudget,
+                    Ray::make(Point3(0, h, 5), Vec3(0, 0, -1)));
+    stepper.runToEnd();
+    const RayTree& tree = stepper.tree();
+    const RaySegment& root = tree.segments[0];
+    ASSERT_TRUE(root.hit);
+    ASSERT_EQ(root.childCount, 2);
+    const RaySegment& r = tree.segments[std::size_t(root.firstChild)];
+    const RaySegment& t = tree.segments[std::size_t(root.firstChild + 1)];
+    EXPECT_EQ(r.kind, RayKind::Reflection);
+    EXPECT_EQ(t.kind, RayKind::Refraction);
+    EXPECT_NEAR(r.weight.x, c.reflected, 1e-7);
+    EXPECT_NEAR(t.weight.x, c.refracted, 1e-7);
+    EXPECT_EQ(RayInspector::inspect(scene, tree, r.id, false).weightNote, c.note);
+  }
 }
 
 }  // namespace

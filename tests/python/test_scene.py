@@ -182,3 +182,25 @@ def test14_terminal_escape_bytes_in_a_message_are_escaped():
     message = str(error.value)
     assert 'duplicate object "\\x1b[31mred\\x07"' in message
     assert "\x1b" not in message and "\x07" not in message
+
+
+def test15_fresnel_plastic_and_priority_through_set_material():
+    # Issue 37: the rates' Fresnel option, the plastic material and the nesting priority
+    # are a material's values like any other, checked by the loader's rules.
+    scene = raylab.default_scene()
+    scene.set_material("red", fresnel="schlick", reflection_rate=1.0, refraction_rate=1.0)
+    red = scene.materials[scene.material_names.index("red")]
+    assert red["fresnel"] == "schlick"
+    with pytest.raises(raylab.SceneError, match="reflection_rate \\+ refraction_rate"):
+        scene.set_material("red", fresnel="none")
+    scene.set_material("blue", type="plastic", roughness=0.2, ior=1.5, colour=[0.1, 0.2, 0.8])
+    blue = scene.materials[scene.material_names.index("blue")]
+    assert blue["type"] == "plastic" and blue["roughness"] == 0.2
+    scene.set_material("red", reflection_rate=0.5, refraction_rate=0.5, type="dielectric",
+                       fresnel="exact", priority=2)
+    assert scene.materials[scene.material_names.index("red")]["priority"] == 2
+    with pytest.raises(raylab.SceneError, match='fresnel "none" is for the rates'):
+        scene.set_material("red", fresnel="none")
+    scene.set_camera(width=16, height=12)
+    image = raylab.render(scene, algorithm="path", spp=1)
+    assert image.shape[:2] == (12, 16)

@@ -27,6 +27,14 @@ std::string number(double x, int digits) {
   return buffer;
 }
 
+/// How a Mirror's or a classic material's two rays are weighted: ", weights kr R, kt (1 - R)
+/// (Schlick's Fresnel)" with Fresnel, nothing with the constant rates.
+std::string rateWeights(const Material& m) {
+  if (m.rateFresnel == FresnelModel::None) return "";
+  return m.rateFresnel == FresnelModel::Schlick ? ", weights kr R, kt (1 - R) (Schlick's Fresnel)"
+                                                : ", weights kr R, kt (1 - R) (Fresnel)";
+}
+
 std::string materialParameters(const Material& m) {
   std::string text;
   switch (m.type) {
@@ -35,7 +43,8 @@ std::string materialParameters(const Material& m) {
       break;
     case MaterialType::Mirror:
       text = "tint " + vec(m.colour) + ", reflection rate " + number(m.reflectionRate) +
-             ", refraction rate " + number(m.refractionRate) + ", ior " + number(m.ior);
+             ", refraction rate " + number(m.refractionRate) + ", ior " + number(m.ior) +
+             rateWeights(m);
       break;
     case MaterialType::Dielectric:
       text = "tint " + vec(m.colour) + ", ior " + number(m.ior) +
@@ -50,7 +59,7 @@ std::string materialParameters(const Material& m) {
       text = "colour " + vec(m.colour) + ", ambient " + vec(m.ambient) + ", kd " +
              number(m.diffuse) + ", ks " + number(m.specular) + ", shininess " +
              number(m.exponent) + ", kr " + number(m.reflectionRate) + ", kt " +
-             number(m.refractionRate) + ", attenuation " + vec(m.attenuation);
+             number(m.refractionRate) + ", attenuation " + vec(m.attenuation) + rateWeights(m);
       break;
     case MaterialType::RoughConductor:
       text = "F0 " + vec(m.colour) + ", " + toString(m.distribution) + " roughness " +
@@ -60,7 +69,13 @@ std::string materialParameters(const Material& m) {
       text = "tint " + vec(m.colour) + ", ior " + number(m.ior) + ", " + toString(m.distribution) +
              " roughness " + number(m.roughness) + " (" + toString(m.fresnel) + " Fresnel)";
       break;
+    case MaterialType::Plastic:
+      text = "base " + vec(m.colour) + ", coating ior " + number(m.ior) + ", " +
+             toString(m.distribution) + " roughness " + number(m.roughness) + " (" +
+             toString(m.fresnel) + " Fresnel)";
+      break;
   }
+  if (m.priority > 0) text += ", priority " + std::to_string(m.priority);
   if (m.isEmitter()) text += ", emits " + vec(m.emission);
   return text;
 }
@@ -154,8 +169,12 @@ std::string RayInspection::rayText() const {
     line(out, "hit", segment.endReason == EndReason::Pending ? "not traced yet" : "nothing");
   }
 
+  // The nested volumes it is in, and the indices where it meets one.
+  if (!media.empty()) line(out, "inside", media);
+  if (!indices.empty()) line(out, "indices", indices);
+
   // What it carried.
-  line(out, "weight", vec(segment.weight));
+  line(out, "weight", vec(segment.weight) + (weightNote.empty() ? "" : " = " + weightNote));
   line(out, "pdf", segment.pdf > 0.0 ? number(segment.pdf, 4) + " per sr" : "none (deterministic)");
   line(out, "throughput", vec(segment.throughput));
   line(out, "emitted", vec(segment.emitted));

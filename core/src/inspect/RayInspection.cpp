@@ -1,5 +1,6 @@
 // One recorded ray read against its scene (RayInspector::inspect).
 #include "inspect/InspectorFormat.h"
+#include "raylab/core/Fresnel.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Shape.h"
 
@@ -7,6 +8,38 @@
 #include <cmath>
 
 namespace raylab {
+
+namespace {
+
+/// Why a Reflection / Refraction child of a Fresnel-weighted Mirror, Phong or BlinnPhong hit
+/// has its weight: "kr R = 0.5 x 0.04 = 0.02 (Fresnel, incidence 0 degrees)"; "" otherwise.
+std::string rateWeightNote(const Scene& scene, const RayTree& tree, const RaySegment& s) {
+  if (s.parent < 0 || (s.kind != RayKind::Reflection && s.kind != RayKind::Refraction)) return "";
+  const RaySegment& p = tree.segments[std::size_t(s.parent)];
+  if (!p.hit || p.object < 0 || p.object >= int(scene.objects.size())) return "";
+  const int material = scene.objects[std::size_t(p.object)].material;
+  if (material < 0 || material >= int(scene.materials.size())) return "";
+  const Material& m = scene.materials[std::size_t(material)];
+  if (!m.hasRates() || m.rateFresnel == FresnelModel::None) return "";
+  // The incidence at the parent's hit, on the side it came from.
+  const Normal3 n = isZero(p.shadingNormal) ? p.normal : p.shadingNormal;
+  const double cosI = std::abs(glm::dot(p.direction, n));
+  const bool entering = glm::dot(p.direction, p.normal) < 0.0;
+  const double eta = entering ? 1.0 / m.relativeIor() : m.relativeIor();
+  const double R = fresnel::reflectance(m.rateFresnel, cosI, eta);
+  const bool reflected = s.kind == RayKind::Reflection;
+  const double rate = reflected ? m.reflectionRate : m.refractionRate;
+  const double share = reflected ? R : 1.0 - R;
+  const std::string degrees =
+      inspect::number(std::acos(std::min(1.0, cosI)) * 180.0 / kPi, 4) + " degrees";
+  return std::string(reflected ? "kr R = " : "kt (1 - R) = ") + inspect::number(rate, 4) + " x " +
+         inspect::number(share, 4) + " = " + inspect::number(rate * share, 4) +
+         (m.type == MaterialType::Mirror ? " times the tint" : "") +
+         (m.rateFresnel == FresnelModel::Schlick ? " (Schlick's Fresnel" : " (Fresnel") +
+         ", incidence " + degrees + ")";
+}
+
+}  // namespace
 
 RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int id,
                                     bool withOracle) {
@@ -38,6 +71,22 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
   std::vector<std::string> lights;
   for (const PointLight& light : scene.pointLights) lights.push_back(light.name);
   r.ended = describeEnd(s, names, lights);
+
+  r.weightNote = rateWeightNote(scene, tree, s);
+
+  // Nested volumes: the ones it is inside, and the index pair where it meets one.
+  const NestedMedia media(scene);
+  if (media.active() && s.kind != RayKind::Shadow) {
+    r.media = media.describe(scene, s.media);
+    if (s.hit && media.isVolume(s.object)) {
+      const SceneObject& o = scene.objects[std::size_t(s.object)];
+      const bool entering = glm::dot(s.direction, s.normal) < 0.0;
+      const MediumCrossing c = media.cross(s.media, s.object, entering);
+      r.indices = inspect::number(c.etaIncident, 4) + " -> " +
+                  inspect::number(c.etaTransmitted, 4) +
+                  (entering ? " (entering '" : " (leaving '") + o.name + "')";
+    }
+  }
 
   // Check the hit against the exact oracle.
   if (withOracle && s.hit && s.object >= 0 && s.object < int(scene.objects.size()) &&

@@ -1,5 +1,6 @@
 #include "integrators/LocalShading.h"
 
+#include "materials/PlasticBsdf.h"
 #include "raylab/core/Bsdf.h"
 #include "raylab/core/ClassicShading.h"
 #include "raylab/core/RayOffset.h"
@@ -15,12 +16,15 @@ namespace {
 constexpr double kShadowShortening = 1e-6;
 
 /// The local model at the hit of `context` for light from wi: a rough material's f cos
-/// (bsdf::eval; nothing for Lobes::DiffuseOnly, as its glossy rays see the lights), else
-/// classicShading.
+/// (bsdf::eval; nothing for Lobes::DiffuseOnly, as its glossy rays see the lights), a
+/// plastic's (its base alone for Lobes::DiffuseOnly), else classicShading.
 Vec3 localFactor(const HitContext& context, const Vec3& wi, Lobes lobes) {
   const Vec3 wo = -context.ray.ray.direction;
   if (context.material.isRough())
     return lobes == Lobes::All ? bsdf::eval(context.material, context.hit.si, wo, wi) : Vec3(0.0);
+  if (context.material.isPlastic())
+    return lobes == Lobes::All ? bsdf::eval(context.material, context.hit.si, wo, wi)
+                               : bsdf::plastic::evalBase(context.material, context.hit.si, wo, wi);
   return classicShading(context.material, context.hit.si.facingShadingNormal(), wo, wi, lobes);
 }
 
@@ -37,7 +41,7 @@ Vec3 attenuated(const Material& m, const Vec3& I, double scale, double distance2
 Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
                     Lobes lobes) {
   const double cosThetaI = glm::dot(n, wi);
-  if (cosThetaI <= 0.0 || m.isSpecular() || m.isRough()) return Vec3(0.0);
+  if (cosThetaI <= 0.0 || m.isSpecular() || m.isRough() || m.isPlastic()) return Vec3(0.0);
   // The classic Phong or Blinn-Phong model: kd colour (N.L) + ks highlight, no 1 / pi.
   if (m.isClassic())
     return lobes == Lobes::All ? classic::lightFactor(m, n, wo, wi)
@@ -202,6 +206,18 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
 void addClassicLightRays(const HitContext& context, std::vector<QueuedRay>& children) {
   addPointLightRays(context, Lobes::All, children);
   addCentreLightRays(context, Lobes::All, children);
+}
+
+void addCoatingRays(const HitContext& context, int count, std::vector<QueuedRay>& children) {
+  const Vec3 wo = -context.ray.ray.direction;
+  const double invN = 1.0 / double(count);
+  for (int k = 0; k < count; ++k) {
+    // A microfacet normal of the coating, then the mirror direction about it.
+    const std::optional<BsdfSample> bs =
+        bsdf::plastic::sampleCoating(context.material, context.hit.si, wo, context.sampler);
+    if (!bs) continue;
+    childRay(children.emplace_back(), context, bs->wi, bs->kind, bs->weight * invN, bs->pdf);
+  }
 }
 
 EndReason addSpecularChildren(const HitContext& context, std::vector<QueuedRay>& children) {

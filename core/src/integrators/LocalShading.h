@@ -29,8 +29,8 @@ enum class Lobes {
  * Glossy: ks = specular, n = exponent; with Lobes::All it equals bsdf::eval. Phong and
  * BlinnPhong: the textbook model classic::lightFactor, kd colour (N.L) + ks (R.V)^n or
  * ks (N.H)^n, with no 1 / pi (Lobes::DiffuseOnly: the kd term only). Mirror, Dielectric
- * and the rough materials: 0 (the shadow-ray helpers below use bsdf::eval for the rough
- * ones).
+ * and the microfacet materials (rough ones, Plastic): 0 (the shadow-ray helpers below use
+ * bsdf::eval for them; for Plastic with Lobes::DiffuseOnly its base alone).
  * `n` is the unit normal facing wo; wo, wi unit, world space. 0 when wi is below n.
  */
 Vec3 classicShading(const Material& m, const Normal3& n, const Vec3& wo, const Vec3& wi,
@@ -87,6 +87,11 @@ void addCentreLightRays(const HitContext& context, Lobes lobes, std::vector<Queu
 /// The classic local shading of ray casting and Whitted at a Diffuse or Glossy hit:
 /// addPointLightRays and addCentreLightRays with both lobes. Deterministic.
 void addClassicLightRays(const HitContext& context, std::vector<QueuedRay>& children);
+
+/// Appends `count` rays drawn from the coating of a Plastic hit (a microfacet normal, then
+/// the mirror direction; Glossy rays), weight f_coating cos / (pdf N) each: distributed
+/// tracing's glossy rays of a plastic, whose base is lit by shadow rays.
+void addCoatingRays(const HitContext& context, int count, std::vector<QueuedRay>& children);
 
 /// Whitted's recursion at a Mirror or Dielectric hit, and the kr / kt rays of a Phong or
 /// BlinnPhong hit (also distributed tracing's): one

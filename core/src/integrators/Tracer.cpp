@@ -2,9 +2,11 @@
 
 #include "integrators/TreeRecorder.h"
 #include "raylab/core/Check.h"
+#include "raylab/core/RayOffset.h"
 #include "raylab/core/SpawnRule.h"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <optional>
 
@@ -74,6 +76,7 @@ QueuedRay cameraRay(const Tracer& tracer, int x, int y, Sampler& sampler) {
   QueuedRay q;
   q.ray = tracer.camera().generateRay(film, sampled ? lens : Vec2(0.5), sampled ? time : 0.0);
   q.kind = RayKind::Camera;
+  q.media = tracer.cameraMedia();
   return q;
 }
 
@@ -94,13 +97,77 @@ void append(std::deque<QueuedRay>& queue, std::vector<QueuedRay>& children) {
   children.clear();
 }
 
+/// Nested volumes (NestedMedia.h): from the hit in `found`, goes straight on through every
+/// false interface, updating `inside` (the volumes the ray is in, starting from its own).
+/// Returns whether a surface remains hit (then in `found`); `crossing` is that surface's
+/// crossing when it bounds a volume (crossing.real), else left with real = false.
+bool passFalseInterfaces(const Tracer& tracer, const QueuedRay& ray, SceneHit& found,
+                         MediumStack& inside, MediumCrossing& crossing) {
+  const NestedMedia& media = tracer.media();
+  crossing.real = false;
+  // Each pass leaves one surface behind; a ray crosses few, the bound guards loops.
+  double left = ray.ray.tMax;  // how far the ray may still go past the last surface
+  for (int pass = 0; pass < 256; ++pass) {
+    if (!media.isVolume(found.object)) return true;
+    const MediumCrossing c = media.cross(inside, found.object, found.si.frontFace);
+    if (c.real) {
+      crossing = c;
+      return true;
+    }
+    // A false interface: the medium does not change; only the list of volumes does.
+    inside = c.after;
+    left -= found.si.t;
+    Ray next = spawnRay(found.si, ray.ray.direction, std::isfinite(left) ? left : kInfinity);
+    next.time = ray.ray.time;
+    if (!tracer.intersector().intersect(next, found)) return false;
+  }
+  return true;
+}
+
+/// The children of a ray that ends on a surface inside `inside` carry that list, changed
+/// by `crossing` for those that pass through the surface of the volume hit.
+void carryMedia(const QueuedRay& ray, const SceneHit& hit, const MediumStack& inside,
+                const MediumCrossing& crossing, std::vector<QueuedRay>& children) {
+  const double side = glm::dot(ray.ray.direction, hit.si.n);
+  for (QueuedRay& child : children) {
+    const bool through = crossing.real && child.kind != RayKind::Shadow &&
+                         (glm::dot(child.ray.direction, hit.si.n) > 0.0) == (side > 0.0);
+    child.media = through ? crossing.after : inside;
+  }
+}
+
+/// The material the rules see at a hit on a nested volume: the object's own, with the
+/// index pair of the crossing as its ior (inside of the surface) and iorOutside.
+const Material& nestedMaterial(const Material& own, const SceneHit& hit,
+                               const MediumCrossing& crossing) {
+  thread_local Material adjusted;
+  adjusted = own;  // reuses the name's storage: no allocation once warmed up
+  const bool entering = hit.si.frontFace;
+  adjusted.iorOutside = entering ? crossing.etaIncident : crossing.etaTransmitted;
+  adjusted.ior = entering ? crossing.etaTransmitted : crossing.etaIncident;
+  return adjusted;
+}
+
+/// The surface `ray` ends on, written into `found`, or null when it leaves the scene; with
+/// `Nested`, past the false interfaces of nested volumes (passFalseInterfaces).
+template <bool Nested>
+const SceneHit* nearestHit(const Tracer& tracer, const QueuedRay& ray, SceneHit& found,
+                           MediumStack& inside, MediumCrossing& crossing) {
+  if (!tracer.intersector().intersect(ray.ray, found)) return nullptr;
+  if constexpr (Nested) {
+    if (!passFalseInterfaces(tracer, ray, found, inside, crossing)) return nullptr;
+  }
+  return &found;
+}
+
 /**
  * The engine, one step: take the first ray of the queue, find where it ends, let the
  * rule spawn children, add the ray's own contribution `throughput * emitted` to the
  * estimate, queue the children with throughput `throughput * weight`. The same step runs
- * in Tracer::trace (images; `recorder` is null) and Stepper::step (ray trees).
+ * in Tracer::trace (images; `recorder` is null) and Stepper::step (ray trees). `Nested`:
+ * the scene has nested volumes (NestedMedia.h), whose lists the step keeps.
  */
-template <typename Queue>
+template <bool Nested, typename Queue>
 void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
                 std::vector<QueuedRay>& children, SceneHit& found, Vec3& estimate,
                 RayCounts* counts, TreeRecorder* recorder, RayCap* cap) {
@@ -117,19 +184,25 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
   // it was zero-filled on every step); `hit` points to it when the ray hit something.
   const SceneHit* hit = nullptr;
   children.clear();
+  // With `Nested` only: the volumes the ray is inside, and the crossing where it ends.
+  MediumStack inside = ray.media;
+  MediumCrossing crossing;
+  crossing.real = false;
   if (ray.kind == RayKind::Shadow) {
     // 2a. A shadow ray only asks whether anything blocks its way to the light.
     const bool blocked = intersector.occluded(ray.ray);
     end = blocked ? EndReason::Occluded : EndReason::ReachedLight;
     if (!blocked) emitted = ray.shadowLe;
-  } else if (!(hit = intersector.intersect(ray.ray, found) ? &found : nullptr)) {
-    // 2b. Nothing in the way: the ray leaves the scene.
+  } else if (!(hit = nearestHit<Nested>(tracer, ray, found, inside, crossing))) {
+    // 2b. Nothing in the way (false interfaces of nested volumes passed): the ray leaves.
     end = EndReason::Escaped;
     emitted = tracer.rule().onEscape(ray, tracer.settings());
   } else {
-    // 2c. Ask the algorithm what the hit spawns.
-    const HitContext context{
-        intersector, tracer.settings(), ray, *hit, tracer.materialOf(hit->object), sampler};
+    // 2c. Ask the algorithm what the hit spawns (at a volume's surface, with the indices
+    // of the media on its two sides).
+    const Material& own = tracer.materialOf(hit->object);
+    const Material& material = Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own;
+    const HitContext context{intersector, tracer.settings(), ray, *hit, material, sampler};
     const HitDecision decision = tracer.rule().onHit(context, children);
     emitted = decision.emitted;
     // A child with a non-finite or negative weight is a bug in the rule: never let it in.
@@ -145,6 +218,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     const SurfaceInteraction& si = hit->si;
     const auto leaks = [&si](const QueuedRay& c) { return !si.sidesAgree(c.ray.direction); };
     children.erase(std::remove_if(children.begin(), children.end(), leaks), children.end());
+    if constexpr (Nested) carryMedia(ray, *hit, inside, crossing, children);
     end = !children.empty()                    ? EndReason::Spawned
           : decision.end == EndReason::Spawned ? EndReason::Absorbed
                                                : decision.end;
@@ -170,7 +244,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
       cap->queued += children.size();
     }
   }
-  if (recorder) recorder->recordStep(ray, hit, end, emitted, children);
+  if (recorder) recorder->recordStep(ray, hit, end, emitted, children, Nested ? inside : ray.media);
   queue.pop_front();  // `ray` is gone from here on
   append(queue, children);
 }
@@ -195,6 +269,9 @@ Tracer::Tracer(const Scene& scene, const RenderSettings& settings)
   m_escapeLength = diagonal > 0.0 ? diagonal : 1.0;
   for (const SceneObject& object : scene.objects) m_objectNames.push_back(object.name);
   for (const PointLight& light : scene.pointLights) m_pointLightNames.push_back(light.name);
+  // Nested volumes, and those the camera starts inside (a camera under water).
+  m_media = NestedMedia(scene);
+  if (m_media.active()) m_cameraMedia = m_media.volumesAt(scene, scene.camera.position);
 }
 
 const Material& Tracer::materialOf(int object) const {
@@ -217,8 +294,14 @@ Vec3 Tracer::trace(int x, int y, int sample, RayCounts* counts, bool* capped,
   if (rayCap >= 1) queue.push_back(cameraRay(*this, x, y, sampler));
   Vec3 estimate(0.0);
   SceneHit found;
-  while (!queue.empty())
-    engineStep(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
+  // Scenes with nested volumes run the step that tracks them; the others pay nothing.
+  if (m_media.active()) {
+    while (!queue.empty())
+      engineStep<true>(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
+  } else {
+    while (!queue.empty())
+      engineStep<false>(*this, queue, sampler, children, found, estimate, counts, nullptr, &cap);
+  }
   if (capped) *capped = cap.reached;
   return estimate;
 }
@@ -252,6 +335,8 @@ void Stepper::reset() {
   // drawn, so its children draw the same numbers as the pixel's own would.
   QueuedRay camera = cameraRay(*m_tracer, m_x, m_y, m_sampler);
   if (m_root) camera.ray = *m_root;
+  if (m_root && m_tracer->media().active())
+    camera.media = m_tracer->media().volumesAt(m_tracer->scene(), m_root->origin);
   TreeRecorder(*m_tracer, m_tree, m_event, m_budget).recordCamera(camera, m_root.has_value());
   // A budget below one segment traces nothing: the work is bounded by the budget too.
   if (camera.id >= 0) m_queue.push_back(camera);
@@ -261,8 +346,12 @@ bool Stepper::step() {
   if (m_queue.empty()) return false;
   TreeRecorder recorder(*m_tracer, m_tree, m_event, m_budget);
   SceneHit found;
-  engineStep(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts, &recorder,
-             nullptr);
+  if (m_tracer->media().active())
+    engineStep<true>(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts,
+                     &recorder, nullptr);
+  else
+    engineStep<false>(*m_tracer, m_queue, m_sampler, m_children, found, m_estimate, &m_counts,
+                      &recorder, nullptr);
   // Once the queue is empty every ray has ended: propagate energy up the tree.
   if (m_queue.empty()) m_tree.propagate();
   return true;

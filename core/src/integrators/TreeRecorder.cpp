@@ -49,6 +49,7 @@ void TreeRecorder::startSegment(const QueuedRay& ray) {
   seg.throughput = ray.throughput;
   seg.lightObject = ray.lightObject;
   seg.pointLight = ray.pointLight;
+  seg.media = ray.media;
 }
 
 void TreeRecorder::recordCamera(QueuedRay& camera, bool chosen) {
@@ -82,7 +83,8 @@ void TreeRecorder::setFarEnd(RaySegment& seg, const QueuedRay& ray, EndReason en
 }
 
 void TreeRecorder::recordStep(const QueuedRay& ray, const SceneHit* hit, EndReason end,
-                              const Vec3& emitted, std::vector<QueuedRay>& children) {
+                              const Vec3& emitted, std::vector<QueuedRay>& children,
+                              const MediumStack& media) {
   // Number the children: consecutive ids after everything recorded so far. Children that
   // do not fit in the budget are not traced at all: the ray ends Stopped.
   const std::size_t wanted = children.size();
@@ -110,6 +112,7 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const SceneHit* hit, EndReas
   RaySegment& seg = m_tree.segments[std::size_t(ray.id)];
   seg.emitted = emitted;
   seg.endReason = end;
+  seg.media = media;
   if (firstId >= 0) {
     seg.firstChild = firstId;
     seg.childCount = int(children.size());

@@ -29,9 +29,9 @@ class TreeRecorder {
   void recordCamera(QueuedRay& camera, bool chosen = false);
   /// Records how `ray` ended (hit, end reason, what it found) and numbers its `children`
   /// (ids, parent links and their segments), before the engine queues them; tells the
-  /// step in the event's sentence.
+  /// step in the event's sentence. `media`: the nested volumes the ray is inside at its end.
   void recordStep(const QueuedRay& ray, const SceneHit* hit, EndReason end, const Vec3& emitted,
-                  std::vector<QueuedRay>& children);
+                  std::vector<QueuedRay>& children, const MediumStack& media);
 
  private:
   /// Ids for `count` new segments, or -1 when they would exceed the budget (recording

@@ -16,6 +16,7 @@
 // never created" a simple per-bounce bound.
 #include "raylab/core/Bsdf.h"
 
+#include "materials/PlasticBsdf.h"
 #include "materials/RoughBsdf.h"
 #include "raylab/core/ClassicShading.h"
 #include "raylab/core/Fresnel.h"
@@ -78,6 +79,17 @@ struct ClassicParts {
   double pDiffuse = 0.0, pLobe = 0.0, pReflect = 0.0, pTransmit = 0.0;  ///< Sum to 1.
   double total = 0.0;  ///< Sum of the parts' energies before normalising (0: black).
 };
+
+/// The factors of the rates kr and kt at a hit: (1, 1) without Fresnel (Material::rateFresnel
+/// None); else (R, 1 - R) for the reflectance R at cos theta = cosThetaI and eta = eta_i /
+/// eta_t, (1, 0) on total internal reflection (The Ray Tracer Challenge, ch. 11: the
+/// reflected colour times R, the refracted colour times 1 - R). Without Fresnel the
+/// refracted share of a totally reflected ray goes to the reflection instead (Whitted).
+Vec2 rateFresnelWeights(const Material& m, double cosThetaI, double eta) {
+  if (m.rateFresnel == FresnelModel::None) return Vec2(1.0, 1.0);
+  const double r = fresnel::reflectance(m.rateFresnel, cosThetaI, eta);
+  return Vec2(r, 1.0 - r);
+}
 
 ClassicParts classicParts(const Material& m) {
   ClassicParts c;
@@ -150,10 +162,15 @@ std::optional<BsdfSample> classicSample(const Material& m, const SurfaceInteract
   // The delta parts: weight = part / probability = total, white.
   if (uPick >= c.pDiffuse + c.pLobe) {
     const bool transmit = uPick >= c.pDiffuse + c.pLobe + c.pReflect;
+    const double eta = si.frontFace ? 1.0 / m.relativeIor() : m.relativeIor();
     std::optional<Vec3> wt;
-    if (transmit) wt = refract(wo, nf, si.frontFace ? 1.0 / m.relativeIor() : m.relativeIor());
+    if (transmit) wt = refract(wo, nf, eta);
+    // With Fresnel the picked ray carries R or 1 - R of its rate (rateFresnelWeights).
+    const Vec2 rt = rateFresnelWeights(m, glm::dot(wo, nf), eta);
+    const double share = transmit ? rt.y : rt.x;
+    if (!(share > 0.0)) return std::nullopt;
     // On total internal reflection the transmitted share is reflected, as in Whitted.
-    return specularLobe(wt ? *wt : reflect(wo, nf), Vec3(c.total),
+    return specularLobe(wt ? *wt : reflect(wo, nf), Vec3(c.total * share),
                         wt ? RayKind::Refraction : RayKind::Reflection);
   }
   BsdfSample s;
@@ -217,6 +234,8 @@ Vec3 eval(const Material& m, const SurfaceInteraction& si, const Vec3& wo, const
     case MaterialType::RoughConductor:
     case MaterialType::RoughDielectric:
       return rough::eval(m, si, wo, wi);
+    case MaterialType::Plastic:
+      return plastic::eval(m, si, wo, wi);
     case MaterialType::Mirror:
     case MaterialType::Dielectric:
       return Vec3(0.0);
@@ -237,6 +256,8 @@ double pdf(const Material& m, const SurfaceInteraction& si, const Vec3& wo, cons
     case MaterialType::RoughConductor:
     case MaterialType::RoughDielectric:
       return rough::pdf(m, si, wo, wi);
+    case MaterialType::Plastic:
+      return plastic::pdf(m, si, wo, wi);
     case MaterialType::Mirror:
     case MaterialType::Dielectric:
       return 0.0;
@@ -255,15 +276,15 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
 
   // Split the energy between the two lobes.
   Vec3 reflected, refracted;
-  if (m.type == MaterialType::Mirror) {
-    // The original course program's rates; on total internal reflection the refracted
-    // share is reflected.
-    reflected = m.reflectionRate * m.colour;
-    refracted = m.refractionRate * m.colour;
-  } else if (m.isClassic()) {
-    // Whitted's kr and kt, white (the colour belongs to the local model).
-    reflected = Vec3(std::max(0.0, m.reflectionRate));
-    refracted = Vec3(std::max(0.0, m.refractionRate));
+  if (m.hasRates()) {
+    // The original course program's rates (Mirror, tinted) or Whitted's kr and kt (Phong,
+    // BlinnPhong: white, the colour belongs to the local model), weighted R and 1 - R
+    // when the material asks for Fresnel; on total internal reflection the refracted share
+    // is reflected (without Fresnel) or zero (R = 1 with it).
+    const Vec2 rt = rateFresnelWeights(m, glm::dot(wo, nf), eta);
+    const Vec3 tint = m.type == MaterialType::Mirror ? m.colour : Vec3(1.0);
+    reflected = std::max(0.0, m.reflectionRate) * rt.x * tint;
+    refracted = std::max(0.0, m.refractionRate) * rt.y * tint;
   } else {
     // Fresnel (exact or Schlick's): R reflected, T = 1 - R transmitted (R = 1 past the
     // critical angle).
@@ -334,6 +355,9 @@ std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si
     case MaterialType::RoughConductor:
     case MaterialType::RoughDielectric:
       out = rough::sample(m, si, wo, sampler);
+      return out;
+    case MaterialType::Plastic:
+      out = plastic::sample(m, si, wo, sampler);
       return out;
     case MaterialType::Mirror:
     case MaterialType::Dielectric: {

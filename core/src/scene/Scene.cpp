@@ -1,6 +1,7 @@
 #include "raylab/core/Scene.h"
 
 #include "raylab/core/AlgorithmInfo.h"
+#include "scene/SceneKeys.h"
 
 namespace raylab {
 
@@ -60,12 +61,37 @@ const char* toString(MaterialType type) {
       return "rough_conductor";
     case MaterialType::RoughDielectric:
       return "rough_dielectric";
+    case MaterialType::Plastic:
+      return "plastic";
   }
   return "unknown";
 }
 
 const char* toString(FresnelModel model) {
-  return model == FresnelModel::Schlick ? "schlick" : "exact";
+  switch (model) {
+    case FresnelModel::Schlick:
+      return "schlick";
+    case FresnelModel::None:
+      return "none";
+    case FresnelModel::Exact:
+      break;
+  }
+  return "exact";
+}
+
+std::string setFresnel(Material& m, const std::string& word) {
+  const bool rates = m.hasRates();
+  const std::string expected =
+      rates ? " (expected none, exact or schlick)" : " (expected exact or schlick)";
+  if (word == "none" && !rates)
+    return "fresnel \"none\" is for the rates of mirror, phong and blinn_phong; a " +
+           std::string(toString(m.type)) + " always splits its light by Fresnel" + expected;
+  if (word != "none" && word != "exact" && word != "schlick")
+    return "unknown Fresnel model \"" + word + "\"" + expected;
+  (rates ? m.rateFresnel : m.fresnel) = word == "none"      ? FresnelModel::None
+                                        : word == "schlick" ? FresnelModel::Schlick
+                                                            : FresnelModel::Exact;
+  return "";
 }
 
 const char* toString(MicrofacetModel model) {
@@ -81,6 +107,8 @@ std::string Material::toString() const {
          ", opacity=" + std::to_string(opacity) + ", ambient=" + raylab::toString(ambient) +
          ", diffuse=" + std::to_string(diffuse) + ", attenuation=" + raylab::toString(attenuation) +
          ", fresnel=" + raylab::toString(fresnel) +
+         ", rateFresnel=" + raylab::toString(rateFresnel) +
+         ", priority=" + std::to_string(priority) +
          ", distribution=" + raylab::toString(distribution) +
          ", roughness=" + std::to_string(roughness) +
          ", visibleNormals=" + (visibleNormals ? "true" : "false") +

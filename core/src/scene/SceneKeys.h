@@ -1,6 +1,9 @@
 #pragma once
 
+#include "raylab/core/Material.h"
+
 #include <array>
+#include <string>
 
 namespace raylab {
 
@@ -21,7 +24,13 @@ inline constexpr std::array kSceneKeys = {"raylab_scene", "name",   "materials",
 inline constexpr std::array kMaterialKeys = {
     "name",        "type",     "colour",       "emission",  "reflection_rate", "refraction_rate",
     "ior",         "exponent", "specular",     "opacity",   "ambient",         "diffuse",
-    "attenuation", "fresnel",  "distribution", "roughness", "visible_normals", "ior_outside"};
+    "attenuation", "fresnel",  "distribution", "roughness", "visible_normals", "ior_outside",
+    "priority"};
+/// Sets a material's "fresnel" from its word: none, exact or schlick weighing the rates of a
+/// mirror, phong or blinn_phong (Material::rateFresnel), exact or schlick a dielectric's
+/// reflectance (Material::fresnel). Returns "" or, for a word its type does not take, the
+/// problem (Scene.cpp).
+std::string setFresnel(Material& m, const std::string& word);
 /// One entry of "objects".
 inline constexpr std::array kObjectKeys = {"name", "material", "shape", "transform", "velocity"};
 /// One step of an object's "transform" (a step has exactly one of these keys).

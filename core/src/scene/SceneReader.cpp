@@ -260,9 +260,10 @@ class Reader : private JsonChecks<Reader> {
     if (j.contains("type")) {
       const std::string type = string(j["type"], p + "/type");
       bool known = false;
-      for (MaterialType t : {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Dielectric,
-                             MaterialType::Glossy, MaterialType::Phong, MaterialType::BlinnPhong,
-                             MaterialType::RoughConductor, MaterialType::RoughDielectric})
+      for (MaterialType t :
+           {MaterialType::Diffuse, MaterialType::Mirror, MaterialType::Dielectric,
+            MaterialType::Glossy, MaterialType::Phong, MaterialType::BlinnPhong,
+            MaterialType::RoughConductor, MaterialType::RoughDielectric, MaterialType::Plastic})
         if (type == toString(t)) {
           m.type = t;
           known = true;
@@ -270,7 +271,7 @@ class Reader : private JsonChecks<Reader> {
       if (!known)
         fail(p + "/type", "unknown material type \"" + type +
                               "\" (expected diffuse, mirror, dielectric, glossy, phong, "
-                              "blinn_phong, rough_conductor or rough_dielectric)");
+                              "blinn_phong, rough_conductor, rough_dielectric or plastic)");
     }
     // The classic materials reflect nothing unless told (kr = 0), unlike the mirror.
     if (m.isClassic()) m.reflectionRate = 0.0;
@@ -295,7 +296,9 @@ class Reader : private JsonChecks<Reader> {
       fail(p + "/reflection_rate", "reflection_rate must be in [0, 1]");
     if (m.refractionRate < 0.0 || m.refractionRate > 1.0)
       fail(p + "/refraction_rate", "refraction_rate must be in [0, 1]");
-    if (m.reflectionRate + m.refractionRate > 1.0)
+    // With Fresnel the rays get kr R and kt (1 - R): each rate up to 1 creates no energy.
+    if (m.reflectionRate + m.refractionRate > 1.0 &&
+        !(m.hasRates() && m.rateFresnel != FresnelModel::None))
       fail(p, "reflection_rate + refraction_rate must not exceed 1 (energy would be created)");
     if (!(m.ior > 0.0)) fail(p + "/ior", "ior (index of refraction) must be positive");
     if (!(m.iorOutside > 0.0))
@@ -312,13 +315,8 @@ class Reader : private JsonChecks<Reader> {
     if (j.contains("diffuse")) m.diffuse = number(j["diffuse"], p + "/diffuse");
     if (j.contains("attenuation")) m.attenuation = vec3(j["attenuation"], p + "/attenuation");
     if (j.contains("fresnel")) {
-      const std::string f = string(j["fresnel"], p + "/fresnel");
-      if (f == "exact")
-        m.fresnel = FresnelModel::Exact;
-      else if (f == "schlick")
-        m.fresnel = FresnelModel::Schlick;
-      else
-        fail(p + "/fresnel", "unknown Fresnel model \"" + f + "\" (expected exact or schlick)");
+      const std::string problem = setFresnel(m, string(j["fresnel"], p + "/fresnel"));
+      if (!problem.empty()) fail(p + "/fresnel", problem);
     }
     if (j.contains("distribution")) {
       const std::string d = string(j["distribution"], p + "/distribution");
@@ -331,6 +329,8 @@ class Reader : private JsonChecks<Reader> {
              "unknown microfacet distribution \"" + d + "\" (expected ggx or beckmann)");
     }
     if (j.contains("roughness")) m.roughness = number(j["roughness"], p + "/roughness");
+    if (j.contains("priority"))
+      m.priority = integerIn(j["priority"], p + "/priority", 0, 1000);  // plenty of levels
     if (j.contains("visible_normals"))
       m.visibleNormals = boolean(j["visible_normals"], p + "/visible_normals");
     for (int c = 0; c < 3; ++c) {
@@ -487,6 +487,11 @@ class Reader : private JsonChecks<Reader> {
       fail(p + "/material", "emitting material \"" + material +
                                 "\" on a plane: an area light needs a finite shape "
                                 "(use a quad)");
+    // A nested volume needs an inside (NestedMedia.h): open surfaces have none.
+    if (scene.materials[o.material].priority > 0 && !o.shape->isClosed())
+      fail(p + "/material", "material \"" + material + "\" has a priority (a nested volume) but " +
+                                toString(o.shape->kind()) +
+                                " has no inside: use a closed shape or priority 0");
     return o;
   }
 

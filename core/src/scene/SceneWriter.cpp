@@ -142,6 +142,7 @@ ojson materialToJson(const Material& m) {
   const bool classic = m.isClassic();
   const bool rough = m.isRough();
   const bool roughGlass = m.type == MaterialType::RoughDielectric;
+  const bool plastic = m.isPlastic();
   ObjectWriter j(kMaterialKeys);
   j.add("name", m.name)
       .add("type", toString(m.type))
@@ -151,7 +152,7 @@ ojson materialToJson(const Material& m) {
     j.add("reflection_rate", m.reflectionRate);
   if (mirror || classic || m.refractionRate != defaults.refractionRate)
     j.add("refraction_rate", m.refractionRate);
-  if (mirror || dielectric || roughGlass || (classic && m.refractionRate > 0.0) ||
+  if (mirror || dielectric || roughGlass || plastic || (classic && m.refractionRate > 0.0) ||
       m.ior != defaults.ior)
     j.add("ior", m.ior);
   if (glossy || classic || m.exponent != defaults.exponent) j.add("exponent", m.exponent);
@@ -160,14 +161,19 @@ ojson materialToJson(const Material& m) {
   if (classic || m.ambient != defaults.ambient) j.add("ambient", toJson(m.ambient));
   if (classic || m.diffuse != defaults.diffuse) j.add("diffuse", m.diffuse);
   if (classic || m.attenuation != defaults.attenuation) j.add("attenuation", toJson(m.attenuation));
-  if (dielectric || roughGlass || m.fresnel != defaults.fresnel)
+  // One key, two fields: the rates' weighting (mirror, phong, blinn_phong; left out when
+  // none, so older files read the same), else a dielectric interface's reflectance.
+  if (m.hasRates()) {
+    if (m.rateFresnel != FresnelModel::None) j.add("fresnel", toString(m.rateFresnel));
+  } else if (dielectric || roughGlass || plastic || m.fresnel != defaults.fresnel)
     j.add("fresnel", toString(m.fresnel));
-  if (rough || m.distribution != defaults.distribution)
+  if (rough || plastic || m.distribution != defaults.distribution)
     j.add("distribution", toString(m.distribution));
-  if (rough || m.roughness != defaults.roughness) j.add("roughness", m.roughness);
-  if (rough || m.visibleNormals != defaults.visibleNormals)
+  if (rough || plastic || m.roughness != defaults.roughness) j.add("roughness", m.roughness);
+  if (rough || plastic || m.visibleNormals != defaults.visibleNormals)
     j.add("visible_normals", m.visibleNormals);
   if (m.iorOutside != defaults.iorOutside) j.add("ior_outside", m.iorOutside);
+  if (m.priority != defaults.priority) j.add("priority", m.priority);
   return j.take();
 }
 

@@ -24,6 +24,9 @@ enum class MaterialType {
                     ///< D G F / (4 cos_o cos_i), Schlick's F with F0 = colour.
   RoughDielectric,  ///< Microfacet glass (Walter et al. 2007): rough reflection and
                     ///< transmission weighted by the Fresnel reflectance.
+  Plastic,          ///< A dielectric microfacet coating (roughness, ior) over a Lambertian
+                    ///< base (colour): Mitsuba's roughplastic in the coupled form of Kelemen
+                    ///< and Szirmay-Kalos 2001 (details in materials/PlasticBsdf.h).
 };
 const char* toString(MaterialType type);
 
@@ -31,6 +34,7 @@ const char* toString(MaterialType type);
 enum class FresnelModel {
   Exact,    ///< The Fresnel equations for unpolarised light, (R_s + R_p) / 2.
   Schlick,  ///< Schlick's approximation F0 + (1 - F0) (1 - cos)^5 (Schlick 1994).
+  None,     ///< No Fresnel: the constant rates kr, kt (Mirror, Phong, BlinnPhong only).
 };
 const char* toString(FresnelModel model);
 
@@ -71,12 +75,24 @@ struct Material {
                                     ///< as 1 / (c + l d + q d^2) for [c, l, q] (OpenGL's
                                     ///< rule); [0, 0, 1] is the physical 1 / d^2, [1, 0, 0]
                                     ///< no falloff.
-  FresnelModel fresnel = FresnelModel::Exact;  ///< Dielectric, RoughDielectric: reflectance.
+  FresnelModel fresnel = FresnelModel::Exact;     ///< Dielectric, RoughDielectric, Plastic:
+                                                  ///< the reflectance (never None).
+  FresnelModel rateFresnel = FresnelModel::None;  ///< Mirror, Phong, BlinnPhong: None keeps
+                                                  ///< the constant kr and kt; Exact or
+                                                  ///< Schlick weigh the reflected ray kr R and
+                                                  ///< the refracted one kt (1 - R), R the
+                                                  ///< Fresnel reflectance at the hit (The Ray
+                                                  ///< Tracer Challenge, ch. 11). Scene key
+                                                  ///< "fresnel", as the dielectrics'.
   MicrofacetModel distribution = MicrofacetModel::GGX;  ///< Rough materials: D and G.
   double roughness = 0.3;      ///< Rough materials: alpha, the distribution's width (> 0;
                                ///< about the RMS slope of the microfacets).
   bool visibleNormals = true;  ///< Rough materials: sample the normals the viewer sees
                                ///< (Heitz 2018; GGX only) instead of D(h) cos(theta_h).
+  int priority = 0;  ///< Nested dielectrics (Schmidt and Budge 2002): 0, the surface names
+                     ///< the media on both its sides (ior, iorOutside); >= 1, the object is
+                     ///< a volume of index `ior`, and where volumes overlap the one of
+                     ///< higher priority fills the overlap (NestedMedia.h).
 
   /// eta_inside / eta_outside, the relative index refraction at this surface uses.
   double relativeIor() const { return ior / iorOutside; }
@@ -91,6 +107,10 @@ struct Material {
   bool isRough() const {
     return type == MaterialType::RoughConductor || type == MaterialType::RoughDielectric;
   }
+  /// Plastic: a microfacet coating over a diffuse base.
+  bool isPlastic() const { return type == MaterialType::Plastic; }
+  /// The materials whose kr / kt mix the option rateFresnel weighs: Mirror, Phong, BlinnPhong.
+  bool hasRates() const { return type == MaterialType::Mirror || isClassic(); }
   std::string toString() const;
 };
 

@@ -55,9 +55,15 @@ struct RayInspection {
   std::string lightName;   ///< Shadow rays: the light aimed at (an area light's object or a
                            ///< point light), empty for other rays.
   std::optional<MaterialSummary> material;  ///< The object's material, when it hit one.
-  double energy = 0.0;  ///< RaySegment::energy: its share of the pixel (the energy the
-                        ///< ray-tree view colours by).
-  std::string ended;    ///< Why it ended, as a sentence (describeEnd).
+  double energy = 0.0;     ///< RaySegment::energy: its share of the pixel (the energy the
+                           ///< ray-tree view colours by).
+  std::string ended;       ///< Why it ended, as a sentence (describeEnd).
+  std::string media;       ///< Scenes with nested volumes: the ones it is inside at its end
+                           ///< (NestedMedia::describe); empty otherwise.
+  std::string indices;     ///< A hit on a nested volume: "1.33 -> 1.5"; empty otherwise.
+  std::string weightNote;  ///< A reflected or refracted ray of a material whose rates are
+                           ///< Fresnel-weighted: "kr R = 0.5 x 0.04 = 0.02 (Schlick's
+                           ///< Fresnel, incidence 0 degrees)"; empty otherwise.
   std::optional<OracleCheck> oracle;  ///< The exact check, when it hit an object.
 
   /// Multi-line text for the window's panel and the command line: one "label  value"

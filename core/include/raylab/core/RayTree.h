@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/NestedMedia.h"
 #include "raylab/core/Types.h"
 
 #include <cstddef>
@@ -89,6 +90,8 @@ struct RaySegment {
                            ///< when Occluded, endPoint is where the blocker was hit.
   int lightObject = -1;    ///< Shadow rays to an area light: that light's object index.
   int pointLight = -1;     ///< Shadow rays to a point light: its index in Scene::pointLights.
+  MediumStack media;       ///< Nested volumes the ray is inside where it ends, false
+                           ///< interfaces it went through counted (NestedMedia.h).
 
   /// The ray's energy: the luminance of `throughput * radiance`, the share of the pixel's
   /// light this ray carries (what the ray-tree view colours by and the inspector shows).

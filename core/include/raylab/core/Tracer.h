@@ -2,6 +2,7 @@
 
 #include "raylab/core/Camera.h"
 #include "raylab/core/Limits.h"
+#include "raylab/core/NestedMedia.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RenderSettings.h"
 #include "raylab/core/Sampler.h"
@@ -40,6 +41,8 @@ struct QueuedRay {
   Vec3 shadowLe{0.0};    ///< Shadow rays: radiance delivered when unoccluded.
   int lightObject = -1;  ///< Shadow rays to an area light: its object (Scene::objects).
   int pointLight = -1;   ///< Shadow rays to a point light: its index (Scene::pointLights).
+  MediumStack media;     ///< Nested volumes it travels inside (NestedMedia.h; empty unless the
+                         ///< scene has some).
 };
 
 /// What the last step of the engine did, for the front end's narration.
@@ -100,6 +103,9 @@ class Tracer {
   /// Length at which recorded escaped rays are drawn: the diagonal of the bounds of the
   /// scene's finite objects and the camera, world units (1 for an empty scene).
   double escapeLength() const { return m_escapeLength; }
+  /// The scene's nested volumes (NestedMedia.h), and the ones the camera is inside.
+  const NestedMedia& media() const { return m_media; }
+  const MediumStack& cameraMedia() const { return m_cameraMedia; }
 
  private:
   friend class Stepper;
@@ -108,6 +114,8 @@ class Tracer {
   Camera m_camera;
   std::unique_ptr<SpawnRule> m_rule;
   double m_escapeLength = 1.0;
+  NestedMedia m_media;
+  MediumStack m_cameraMedia;
   std::vector<std::string> m_objectNames;
   std::vector<std::string> m_pointLightNames;
 };

@@ -60,7 +60,7 @@ HitDecision DistributedRule::onHit(const HitContext& context,
   // Point lights as in Whitted; soft shadows: several shadow rays per area light (glossy
   // and rough rays see the lights themselves, so those lobes are left out here).
   shading::addPointLightRays(context, shading::Lobes::All, children);
-  const shading::Lobes areaLobes = m.type == MaterialType::Glossy || m.isRough()
+  const shading::Lobes areaLobes = m.type == MaterialType::Glossy || m.isRough() || m.isPlastic()
                                        ? shading::Lobes::DiffuseOnly
                                        : shading::Lobes::All;
   shading::addAreaLightRays(context, context.settings.shadowSamples, areaLobes, children);
@@ -75,6 +75,14 @@ HitDecision DistributedRule::onHit(const HitContext& context,
   if (m.isRough()) {
     if (!atMaxDepth && context.settings.glossySamples > 0)
       addRoughRays(context, context.settings.glossySamples, children);
+    if (children.empty() && atMaxDepth) return {Vec3(0.0), EndReason::MaxDepth};
+    return {Vec3(0.0), EndReason::Spawned};
+  }
+
+  // Plastic: several rays drawn from its coating (its base has the shadow rays).
+  if (m.isPlastic()) {
+    if (!atMaxDepth && context.settings.glossySamples > 0)
+      shading::addCoatingRays(context, context.settings.glossySamples, children);
     if (children.empty() && atMaxDepth) return {Vec3(0.0), EndReason::MaxDepth};
     return {Vec3(0.0), EndReason::Spawned};
   }

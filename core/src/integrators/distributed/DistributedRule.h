@@ -28,6 +28,10 @@ namespace raylab {
  * - RoughConductor / RoughDielectric: `glossySamples` rays drawn from the microfacet
  *   model (bsdf::sample, weight f cos / (pdf N)); they find the area lights themselves,
  *   point lights get a shadow ray weighted by bsdf::eval.
+ * - Plastic: `glossySamples` rays drawn from its coating (Glossy children,
+ *   shading::addCoatingRays, weight f_coating cos / (pdf N)), which find the area lights'
+ *   highlight themselves; shadow rays to area lights carry its diffuse base only, a point
+ *   light's shadow ray the whole material (bsdf::eval).
  *
  * There is no diffuse interreflection: light reaches a diffuse surface only through
  * shadow rays (classic distributed ray tracing; path tracing adds indirect light).

@@ -21,8 +21,9 @@ namespace raylab {
  * - Phong and BlinnPhong (the textbook Whitted material): ambient * colour, the classic
  *   model per light (ClassicShading.h), and a Reflection child weighted kr and a Refraction
  *   child weighted kt (total internal reflection reflects kt too), below maxDepth;
- * - RoughConductor and RoughDielectric: local shading only, their microfacet highlight
- *   (bsdf::eval) from each light; distributed and path tracing follow their rough lobes.
+ * - RoughConductor, RoughDielectric and Plastic: local shading only, the whole microfacet
+ *   model (bsdf::eval: a plastic's coating and base) from each light; distributed and path
+ *   tracing follow their rough lobes.
  *
  * Parameters (RenderSettings): maxDepth (default 5; the camera ray has depth 0),
  * samplesPerPixel (jittered film positions when > 1, lens centre, time 0), seed, background.
