@@ -2030,10 +2030,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>重做刚刚撤销的编辑</translation>
     </message>
     <message>
-        <source>Predict first: the image appears once you have answered.</source>
-        <translation>先预测：作答之后，图像才会出现。</translation>
-    </message>
-    <message>
         <source>Cannot use this value</source>
         <translation>无法使用这个数值</translation>
     </message>

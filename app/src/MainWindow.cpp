@@ -567,9 +567,10 @@ void MainWindow::showLessonStep(int index) {
     rays.clearTrace();
     m_view->clearSampleCloud();
     if (step.view == LessonView::Image) {
-      m_renderPanel->imageView()->clear(
-          tr("Predict first: the image appears once you have answered."));
-      showImageTab(m_renderPanel);
+      // The image waits too: a render the scene change restarted is stopped, and the tabs
+      // are hidden until the answer (a cancelled render still delivers its passes).
+      m_renderPanel->cancel();
+      m_imageTabs->hide();
     }
   }
 
