@@ -115,48 +115,10 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_needs);
 
   // Step 3: the question, with its answer box.
-  m_question = new QGroupBox(tr("Question"));
-  auto* question = new QVBoxLayout(m_question);
-  m_prompt = wrapping(1.2);
-  question->addWidget(m_prompt);
-  m_choicesLayout = new QVBoxLayout;
-  question->addLayout(m_choicesLayout);
-  m_choices = new QButtonGroup(this);
-  m_number = new QLineEdit;
-  m_number->setValidator(new QDoubleValidator(m_number));
-  m_number->setPlaceholderText(tr("Your answer (a number)"));
-  question->addWidget(m_number);
-  m_predictNote = wrapping(1.0);
-  m_predictNote->setStyleSheet(QStringLiteral("color: #2a5d8a"));
-  m_predictNote->setText(tr("Predict first: the view shows the answer once you have answered."));
-  question->addWidget(m_predictNote);
-  auto* answerButtons = new QHBoxLayout;
-  m_check = new QPushButton(tr("Check my answer"));
-  m_check->setToolTip(tr("Say whether the answer is right (Enter)"));
-  m_showAnswer = new QPushButton(tr("Show answer"));
-  m_showAnswer->setToolTip(tr("Show the answer and why, without another try"));
-  answerButtons->addWidget(m_check);
-  answerButtons->addWidget(m_showAnswer);
-  answerButtons->addStretch(1);
-  question->addLayout(answerButtons);
-  m_verdict = wrapping(1.2, true);
-  m_explanation = wrapping(1.1);
-  question->addWidget(m_verdict);
-  question->addWidget(m_explanation);
-  layout->addWidget(m_question);
+  layout->addWidget(buildQuestion());
 
   // Step 3b: a value the student changes, and its effect shown on request.
-  m_try = new QGroupBox(tr("Change a value"));
-  auto* tryLayout = new QHBoxLayout(m_try);
-  m_tryLabel = wrapping(1.1);
-  m_tryBox = new QDoubleSpinBox;
-  m_tryBox->setToolTip(tr("The value to try; then show its effect"));
-  m_tryApply = new QPushButton(tr("Show the effect"));
-  m_tryApply->setToolTip(tr("Trace and render the step's scene with this value"));
-  tryLayout->addWidget(m_tryLabel, 1);
-  tryLayout->addWidget(m_tryBox);
-  tryLayout->addWidget(m_tryApply);
-  layout->addWidget(m_try);
+  layout->addWidget(buildTryValue());
 
   // Step 4: the teacher's notes, on demand.
   m_notesButton = new QToolButton;
@@ -190,6 +152,40 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   connect(m_notesButton, &QToolButton::toggled, m_notes, &QWidget::setVisible);
   connect(m_languageBox, qOverload<int>(&QComboBox::activated), this,
           [this] { setLanguage(Language(m_languageBox->currentData().toInt())); });
+  setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
+  applyFontScales();
+}
+
+QWidget* LessonPanel::buildQuestion() {
+  m_question = new QGroupBox(tr("Question"));
+  auto* question = new QVBoxLayout(m_question);
+  m_prompt = wrapping(1.2);
+  question->addWidget(m_prompt);
+  m_choicesLayout = new QVBoxLayout;
+  question->addLayout(m_choicesLayout);
+  m_choices = new QButtonGroup(this);
+  m_number = new QLineEdit;
+  m_number->setValidator(new QDoubleValidator(m_number));
+  m_number->setPlaceholderText(tr("Your answer (a number)"));
+  question->addWidget(m_number);
+  m_predictNote = wrapping(1.0);
+  m_predictNote->setStyleSheet(QStringLiteral("color: #2a5d8a"));
+  m_predictNote->setText(tr("Predict first: the view shows the answer once you have answered."));
+  question->addWidget(m_predictNote);
+  auto* answerButtons = new QHBoxLayout;
+  m_check = new QPushButton(tr("Check my answer"));
+  m_check->setToolTip(tr("Say whether the answer is right (Enter)"));
+  m_showAnswer = new QPushButton(tr("Show answer"));
+  m_showAnswer->setToolTip(tr("Show the answer and why, without another try"));
+  answerButtons->addWidget(m_check);
+  answerButtons->addWidget(m_showAnswer);
+  answerButtons->addStretch(1);
+  question->addLayout(answerButtons);
+  m_verdict = wrapping(1.2, true);
+  m_explanation = wrapping(1.1);
+  question->addWidget(m_verdict);
+  question->addWidget(m_explanation);
+  // Enter checks, as the button does.
   connect(m_check, &QPushButton::clicked, this, [this] { submit(); });
   connect(m_showAnswer, &QPushButton::clicked, this, [this] { showAnswer(); });
   connect(m_number, &QLineEdit::returnPressed, this, [this] { submit(); });
@@ -198,10 +194,23 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
     enter->setContext(Qt::WidgetWithChildrenShortcut);
     connect(enter, &QShortcut::activated, this, [this] { submit(); });
   }
+  return m_question;
+}
+
+QWidget* LessonPanel::buildTryValue() {
+  m_try = new QGroupBox(tr("Change a value"));
+  auto* tryLayout = new QHBoxLayout(m_try);
+  m_tryLabel = wrapping(1.1);
+  m_tryBox = new QDoubleSpinBox;
+  m_tryBox->setToolTip(tr("The value to try; then show its effect"));
+  m_tryApply = new QPushButton(tr("Show the effect"));
+  m_tryApply->setToolTip(tr("Trace and render the step's scene with this value"));
+  tryLayout->addWidget(m_tryLabel, 1);
+  tryLayout->addWidget(m_tryBox);
+  tryLayout->addWidget(m_tryApply);
   connect(m_tryApply, &QPushButton::clicked, this,
           [this] { emit tryValueApplied(m_tryBox->value()); });
-  setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
-  applyFontScales();
+  return m_try;
 }
 
 void LessonPanel::applyFontScales() {

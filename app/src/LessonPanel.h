@@ -126,6 +126,10 @@ class LessonPanel : public QWidget {
   void changeEvent(QEvent* event) override;
 
  private:
+  /// The question's box: prompt, choices or number, Check / Show answer, verdict, why.
+  QWidget* buildQuestion();
+  /// The "change a value" box: what the value is, its spin box, Show the effect.
+  QWidget* buildTryValue();
   /// The larger fonts of the title, text and question, relative to the panel's font.
   void applyFontScales();
   void showQuestion(const LessonStep& step);
