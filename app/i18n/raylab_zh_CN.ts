@@ -1367,10 +1367,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>检查答案</translation>
     </message>
     <message>
-        <source>Say whether the answer is right, and why</source>
-        <translation>判断答案是否正确，并给出解释</translation>
-    </message>
-    <message>
         <source>Teacher&apos;s notes</source>
         <translation>教师备注</translation>
     </message>
@@ -1425,6 +1421,50 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>✗ Not quite: the answer is %1.</source>
         <translation>✗ 不太对：正确答案是 %1。</translation>
+    </message>
+    <message>
+        <source>Predict first: the view shows the answer once you have answered.</source>
+        <translation>先预测：作答之后，视图才会显示答案。</translation>
+    </message>
+    <message>
+        <source>Say whether the answer is right (Enter)</source>
+        <translation>判断答案是否正确（回车键）</translation>
+    </message>
+    <message>
+        <source>Show answer</source>
+        <translation>显示答案</translation>
+    </message>
+    <message>
+        <source>Show the answer and why, without another try</source>
+        <translation>不再尝试，直接显示答案及解释</translation>
+    </message>
+    <message>
+        <source>Change a value</source>
+        <translation>改一个参数</translation>
+    </message>
+    <message>
+        <source>The value to try; then show its effect</source>
+        <translation>要尝试的数值；然后显示它的效果</translation>
+    </message>
+    <message>
+        <source>Show the effect</source>
+        <translation>显示效果</translation>
+    </message>
+    <message>
+        <source>Trace and render the step&apos;s scene with this value</source>
+        <translation>用这个数值追踪并渲染本步骤的场景</translation>
+    </message>
+    <message>
+        <source>The answer is %1.</source>
+        <translation>答案是 %1。</translation>
+    </message>
+    <message>
+        <source>%1 (now %2; the task: %3)</source>
+        <translation>%1（当前 %2；任务：%3）</translation>
+    </message>
+    <message>
+        <source>✗ Not yet: try again.</source>
+        <translation>✗ 还不对，再试一次。</translation>
     </message>
 </context>
 <context>
@@ -2016,6 +2056,10 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>Do again the edit just taken back</source>
         <translation>重做刚刚撤销的编辑</translation>
+    </message>
+    <message>
+        <source>Cannot use this value</source>
+        <translation>无法使用这个数值</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "LessonCommand.h"
 
+#include "LessonHandout.h"
+
 #include "CompareCommand.h"
 #include "ExitCodes.h"
 
@@ -53,6 +55,7 @@ struct LessonOptions {
   std::string size;  ///< --size WxH: picture size (image views: the largest render).
   bool list = false;
   bool check = false;
+  bool student = false;  ///< --student: the handout without answers and teacher's notes.
   int maxSpp = 0;  ///< --max-spp N: most spp of image, comparison and plot steps (0: defaults).
 };
 
@@ -113,15 +116,6 @@ int runList(const LessonOptions& o) {
   return failed ? kExitRuntimeError : kExitOk;
 }
 
-/// A number of a question, for the handout and for --check's messages.
-std::string formatNumber(double value) {
-  // 15 significant digits: an answer is printed as its author typed it (98304000, not
-  // 9.8304e+07 as six digits would give).
-  std::ostringstream out;
-  out << std::setprecision(15) << value;
-  return out.str();
-}
-
 int runCheck(const LessonOptions& o) {
   // LessonIO::load validates everything; its LoadError reaches main() as exit code 1.
   const std::string path = resolveLesson(o);
@@ -133,23 +127,19 @@ int runCheck(const LessonOptions& o) {
     const LessonStep& step = lesson.steps[i];
     if (!step.question || !step.question->check) continue;
     const LessonQuestion& q = *step.question;
-    const std::string where = path + ": step " + std::to_string(i + 1) + " (\"" + step.title.en +
-                              "\"): " + toString(q.check->quantity);
-    double value = 0.0;
+    const std::string where =
+        path + ": step " + std::to_string(i + 1) + " (\"" + step.title.en + "\"): ";
     try {
-      value = computeCheck(step, *q.check);
+      // Numbers and what a ray reaches alike, computed by core (answerProblem).
+      const std::optional<std::string> problem = answerProblem(step);
+      ++computed;
+      if (!problem) continue;
+      std::cerr << "raylab: error: " << where << *problem << std::endl;
     } catch (const Exception& e) {
-      std::cerr << "raylab: error: " << where << ": " << e.what() << std::endl;
-      ++wrong;
-      continue;
+      std::cerr << "raylab: error: " << where << toString(q.check->quantity) << ": " << e.what()
+                << std::endl;
     }
-    ++computed;
-    if (!(std::abs(value - q.answer) <= q.tolerance)) {
-      std::cerr << "raylab: error: " << where << ": the answer is " << formatNumber(q.answer)
-                << (q.tolerance > 0 ? " (± " + formatNumber(q.tolerance) + ")" : std::string())
-                << " but the program computes " << formatNumber(value) << std::endl;
-      ++wrong;
-    }
+    ++wrong;
   }
   if (wrong > 0) return kExitRuntimeError;
   const int steps = static_cast<int>(lesson.steps.size());
@@ -174,40 +164,6 @@ constexpr double kCompareSeconds = 0.25;                ///< Equal time: per alg
 constexpr int kPlotMaxSpp = 16;                         ///< The plot's last pass.
 constexpr int kCompareReferenceSpp = 128;  ///< Reference of the comparison (16 x its spp).
 constexpr int kPlotReferenceSpp = 256;     ///< Reference of the plot (16 x its last pass).
-
-/// The handout's words that are not in the lesson file.
-struct HandoutWords {
-  const char* step;
-  const char* question;
-  const char* answers;
-  const char* answer;
-  const char* numberAnswer;
-  const char* notes;
-  const char* inspector;
-  const char* missing;
-  const char* crossings;
-};
-const HandoutWords& wordsIn(Language language) {
-  static const HandoutWords en{"Step",
-                               "Question",
-                               "Teacher's answers",
-                               "Answer",
-                               "Answer with a number.",
-                               "Teacher's notes",
-                               "The selected ray in the inspector",
-                               "This step needs a feature still to come",
-                               "Every surface the ray crosses"};
-  static const HandoutWords zh{"第",
-                               "问题",
-                               "教师答案",
-                               "答案",
-                               "请填写一个数值。",
-                               "教师备注",
-                               "检查器中选中的光线",
-                               "本步骤需要一个尚未实现的功能",
-                               "光线穿过的所有表面"};
-  return language == Language::Chinese ? zh : en;
-}
 
 /// `size` shrunk (keeping its aspect ratio) to fit inside `cap`; never grown.
 std::pair<int, int> fitInside(std::pair<int, int> size, std::pair<int, int> cap) {
@@ -266,12 +222,8 @@ std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Lang
 }
 
 /// What one step's picture is, and what the handout says beside it.
-struct StepPicture {
+struct StepPicture : PictureWords {
   SrgbImage image;
-  std::string inspectorText;  ///< Inspector view: the selected ray's lines.
-  std::string note;           ///< A missing feature, said in the handout.
-  std::string crossingsText;  ///< all_hits: the crossings marked, one line each.
-  std::string caption;        ///< What the picture shows beyond the text (BVH boxes, speed).
 };
 
 /// The 3D view of the step's scene, with its pixel's tree when it has one (and the
@@ -442,7 +394,7 @@ StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size, int ma
 StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<int, int>>& size,
                         Language language, int maxSpp) {
   const auto picture = size.value_or(kDefaultPicture);
-  const HandoutWords& words = wordsIn(language);
+  const HandoutWords& words = handoutWords(language);
   const std::vector<std::string>& missing = step.needs;
   if (!missing.empty()) {
     StepPicture result = scenePicture(step, picture, false, language);
@@ -472,66 +424,6 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
 /// "01", "02", ...
 std::string twoDigits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
-/// The handout's section of step `index` (0-based).
-std::string stepSection(const Lesson& lesson, std::size_t index, const StepPicture& picture,
-                        const std::string& png, Language language) {
-  const LessonStep& step = lesson.steps[index];
-  const HandoutWords& words = wordsIn(language);
-  const bool zh = language == Language::Chinese;
-  std::string md = "## " + std::string(words.step) + " " + std::to_string(index + 1) +
-                   (zh ? " 步：" : ". ") + step.title.in(language) + "\n\n";
-  md += step.text.in(language) + "\n\n";
-  md += "![" + step.title.in(language) + "](" + png + ")\n\n";
-  if (!picture.caption.empty()) md += "*" + picture.caption + "*\n\n";
-  if (!picture.note.empty()) md += "> " + picture.note + "\n\n";
-  if (!picture.crossingsText.empty())
-    md += "**" + std::string(words.crossings) + "**\n\n```\n" + picture.crossingsText + "```\n\n";
-  if (!picture.inspectorText.empty())
-    md += "**" + std::string(words.inspector) + "**\n\n```\n" + picture.inspectorText +
-          (picture.inspectorText.back() == '\n' ? "" : "\n") + "```\n\n";
-  if (step.question) {
-    const LessonQuestion& q = *step.question;
-    md += "**" + std::string(words.question) + (zh ? "：**" : ":** ") + q.prompt.in(language) +
-          "\n\n";
-    if (q.type == LessonQuestion::Type::Choice) {
-      for (std::size_t i = 0; i < q.choices.size(); ++i)
-        md += std::string(1, char('A' + i)) + ". " + q.choices[i].in(language) + "\n";
-      md += "\n";
-    } else {
-      md += std::string("*") + words.numberAnswer + "*\n\n";
-    }
-  }
-  return md;
-}
-
-/// The answers and teacher's notes of every step, at the end of the handout.
-std::string answersSection(const Lesson& lesson, Language language) {
-  const HandoutWords& words = wordsIn(language);
-  const bool zh = language == Language::Chinese;
-  std::string md = "## " + std::string(words.answers) + "\n\n";
-  for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
-    const LessonStep& step = lesson.steps[i];
-    if (!step.question && step.teacherNotes.empty()) continue;
-    md += "### " + std::string(words.step) + " " + std::to_string(i + 1) + (zh ? " 步：" : ". ") +
-          step.title.in(language) + "\n\n";
-    if (step.question) {
-      const LessonQuestion& q = *step.question;
-      md += "**" + std::string(words.answer) + (zh ? "：**" : ":** ");
-      if (q.type == LessonQuestion::Type::Choice)
-        md += std::string(1, char('A' + q.answerIndex)) + ". " +
-              q.choices.at(q.answerIndex).in(language);
-      else
-        md += formatNumber(q.answer) +
-              (q.tolerance > 0 ? " (± " + formatNumber(q.tolerance) + ")" : std::string());
-      md += "\n\n" + q.explanation.in(language) + "\n\n";
-    }
-    if (!step.teacherNotes.empty())
-      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") + step.teacherNotes.in(language) +
-            "\n\n";
-  }
-  return md;
-}
-
 /// Creates `dir` and checks that a file can be written in it; throws naming it otherwise.
 void prepareFolder(const std::string& dir) {
   namespace fs = std::filesystem;
@@ -557,7 +449,7 @@ int runRender(const LessonOptions& o) {
   requireDisplayAfterFolder(missing);
   std::optional<std::pair<int, int>> size;  // (assigned, not ?:, which GCC 12 misreads)
   if (!o.size.empty()) size = parseSize(o.size);
-  std::string md = "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n";
+  std::string md = handoutHead(lesson, language, o.student);
   int pictures = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
     const StepPicture picture = stepPicture(lesson.steps[i], size, language, o.maxSpp);
@@ -566,9 +458,10 @@ int runRender(const LessonOptions& o) {
     vis::writePng(picture.image, file);
     ++pictures;
     std::cout << file << std::endl;
-    md += stepSection(lesson, i, picture, png, language);
+    md += handoutStep(lesson, i, picture, png, language, o.student);
   }
-  md += answersSection(lesson, language);
+  // The student's handout ends with the last step: no key, no notes.
+  if (!o.student) md += handoutAnswers(lesson, language);
   const std::string handout = (fs::path(o.out) / "lesson.md").string();
   writeTextFile(handout, md);
   const int steps = static_cast<int>(lesson.steps.size());
@@ -589,8 +482,10 @@ Subcommand addLessonCommand(CLI::App& cli) {
       "  raylab lesson --list --lang zh\n"
       "  raylab lesson lessons/04-whitted.json --check\n"
       "  raylab lesson 04-whitted --out handout-04 --lang zh\n"
+      "  raylab lesson 04-whitted --out handout-04-student --student\n"
       "--out DIR writes DIR/step-01.png, ... (one picture per step) and DIR/lesson.md, a\n"
       "handout with each step's text, picture and question, and the answers at the end.\n"
+      "--student leaves out the answers, the explanations and the teacher's notes.\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.\n"
       "Exit codes: 0 ok, 1 a lesson does not load (the message names the file, the step\n"
       "            and the place), --check computes another answer than the file's, or DIR\n"
@@ -607,6 +502,9 @@ Subcommand addLessonCommand(CLI::App& cli) {
   CLI::Option* out =
       command->add_option("--out", options->out,
                           "Render every step of FILE to DIR/step-NN.png and write DIR/lesson.md");
+  CLI::Option* student = command->add_flag(
+      "--student", options->student,
+      "With --out: the student's handout (no answers, explanations, teacher's notes, plan)");
   CLI::Option* size =
       command
           ->add_option("--size", options->size,
@@ -628,6 +526,7 @@ Subcommand addLessonCommand(CLI::App& cli) {
   check->needs(file)->excludes(out);
   out->needs(file);
   size->needs(out);
+  student->needs(out);
   maxSpp->needs(out);
   command->callback([options]() {
     if (!options->list && !options->check && options->out.empty()) {

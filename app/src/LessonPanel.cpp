@@ -7,6 +7,7 @@
 
 #include <QButtonGroup>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QDoubleValidator>
 #include <QEvent>
 #include <QFontDatabase>
@@ -19,6 +20,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QScrollArea>
+#include <QShortcut>
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -113,25 +115,10 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   layout->addWidget(m_needs);
 
   // Step 3: the question, with its answer box.
-  m_question = new QGroupBox(tr("Question"));
-  auto* question = new QVBoxLayout(m_question);
-  m_prompt = wrapping(1.2);
-  question->addWidget(m_prompt);
-  m_choicesLayout = new QVBoxLayout;
-  question->addLayout(m_choicesLayout);
-  m_choices = new QButtonGroup(this);
-  m_number = new QLineEdit;
-  m_number->setValidator(new QDoubleValidator(m_number));
-  m_number->setPlaceholderText(tr("Your answer (a number)"));
-  question->addWidget(m_number);
-  m_check = new QPushButton(tr("Check my answer"));
-  m_check->setToolTip(tr("Say whether the answer is right, and why"));
-  question->addWidget(m_check);
-  m_verdict = wrapping(1.2, true);
-  m_explanation = wrapping(1.1);
-  question->addWidget(m_verdict);
-  question->addWidget(m_explanation);
-  layout->addWidget(m_question);
+  layout->addWidget(buildQuestion());
+
+  // Step 3b: a value the student changes, and its effect shown on request.
+  layout->addWidget(buildTryValue());
 
   // Step 4: the teacher's notes, on demand.
   m_notesButton = new QToolButton;
@@ -165,23 +152,65 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   connect(m_notesButton, &QToolButton::toggled, m_notes, &QWidget::setVisible);
   connect(m_languageBox, qOverload<int>(&QComboBox::activated), this,
           [this] { setLanguage(Language(m_languageBox->currentData().toInt())); });
-  connect(m_check, &QPushButton::clicked, this, [this] {
-    if (m_step < 0) return;
-    const auto& q = m_lesson->steps[std::size_t(m_step)].question;
-    if (!q) return;
-    if (q->type == LessonQuestion::Type::Choice) {
-      if (m_choices->checkedId() >= 0) answerChoice(m_choices->checkedId());
-    } else {
-      bool ok = false;
-      const double value = QLocale::c().toDouble(m_number->text().trimmed(), &ok);
-      if (ok)
-        answerNumber(value);
-      else
-        showVerdict(false, QString());
-    }
-  });
   setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
   applyFontScales();
+}
+
+QWidget* LessonPanel::buildQuestion() {
+  m_question = new QGroupBox(tr("Question"));
+  auto* question = new QVBoxLayout(m_question);
+  m_prompt = wrapping(1.2);
+  question->addWidget(m_prompt);
+  m_choicesLayout = new QVBoxLayout;
+  question->addLayout(m_choicesLayout);
+  m_choices = new QButtonGroup(this);
+  m_number = new QLineEdit;
+  m_number->setValidator(new QDoubleValidator(m_number));
+  m_number->setPlaceholderText(tr("Your answer (a number)"));
+  question->addWidget(m_number);
+  m_predictNote = wrapping(1.0);
+  m_predictNote->setStyleSheet(QStringLiteral("color: #2a5d8a"));
+  m_predictNote->setText(tr("Predict first: the view shows the answer once you have answered."));
+  question->addWidget(m_predictNote);
+  auto* answerButtons = new QHBoxLayout;
+  m_check = new QPushButton(tr("Check my answer"));
+  m_check->setToolTip(tr("Say whether the answer is right (Enter)"));
+  m_showAnswer = new QPushButton(tr("Show answer"));
+  m_showAnswer->setToolTip(tr("Show the answer and why, without another try"));
+  answerButtons->addWidget(m_check);
+  answerButtons->addWidget(m_showAnswer);
+  answerButtons->addStretch(1);
+  question->addLayout(answerButtons);
+  m_verdict = wrapping(1.2, true);
+  m_explanation = wrapping(1.1);
+  question->addWidget(m_verdict);
+  question->addWidget(m_explanation);
+  // Enter checks, as the button does.
+  connect(m_check, &QPushButton::clicked, this, [this] { submit(); });
+  connect(m_showAnswer, &QPushButton::clicked, this, [this] { showAnswer(); });
+  connect(m_number, &QLineEdit::returnPressed, this, [this] { submit(); });
+  for (const int key : {int(Qt::Key_Return), int(Qt::Key_Enter)}) {
+    auto* enter = new QShortcut(QKeySequence(key), m_question);
+    enter->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(enter, &QShortcut::activated, this, [this] { submit(); });
+  }
+  return m_question;
+}
+
+QWidget* LessonPanel::buildTryValue() {
+  m_try = new QGroupBox(tr("Change a value"));
+  auto* tryLayout = new QHBoxLayout(m_try);
+  m_tryLabel = wrapping(1.1);
+  m_tryBox = new QDoubleSpinBox;
+  m_tryBox->setToolTip(tr("The value to try; then show its effect"));
+  m_tryApply = new QPushButton(tr("Show the effect"));
+  m_tryApply->setToolTip(tr("Trace and render the step's scene with this value"));
+  tryLayout->addWidget(m_tryLabel, 1);
+  tryLayout->addWidget(m_tryBox);
+  tryLayout->addWidget(m_tryApply);
+  connect(m_tryApply, &QPushButton::clicked, this,
+          [this] { emit tryValueApplied(m_tryBox->value()); });
+  return m_try;
 }
 
 void LessonPanel::applyFontScales() {
@@ -215,6 +244,10 @@ void LessonPanel::setLanguage(Language language) {
 void LessonPanel::showStep(int index) {
   if (!m_lesson || m_lesson->steps.empty()) return;
   m_step = std::clamp(index, 0, int(m_lesson->steps.size()) - 1);
+  m_tries = 0;
+  m_final = false;
+  m_outcome = Outcome::Shown;
+  m_chosen = -1;
   refresh();
   emit stepChanged(m_step);
 }
@@ -239,6 +272,7 @@ void LessonPanel::refresh() {
     m_needs->hide();
     m_caption->hide();
     m_question->hide();
+    m_try->hide();
     m_notesButton->hide();
     m_notes->hide();
     return;
@@ -258,6 +292,7 @@ void LessonPanel::refresh() {
   m_caption->setText(caption);
   m_caption->setVisible(!caption.isEmpty());
   showQuestion(step);
+  showTryValue(step);
   const bool notes = !step.teacherNotes.empty();
   m_notesButton->setVisible(notes);
   m_notes->setText(text(step.teacherNotes, m_language));
@@ -302,7 +337,7 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   }
   m_verdict->clear();
   m_explanation->clear();
-  m_number->clear();
+  if (!m_final) m_number->clear();  // a final answer stays, with its verdict
   if (!step.question) {
     m_question->hide();
     return;
@@ -312,7 +347,12 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   m_prompt->setText(text(q.prompt, m_language));
   const bool choice = q.type == LessonQuestion::Type::Choice;
   m_number->setVisible(!choice);
-  for (std::size_t i = 0; choice && i < q.choices.size(); ++i) {
+  m_predictNote->setVisible(q.predict && !m_final);
+  m_showAnswer->setVisible(!m_final);
+  // The choices in the order the lesson fixes for the step (the handout's); each button's
+  // id is the choice's index in the file.
+  for (std::size_t k = 0; choice && k < q.choices.size(); ++k) {
+    const std::size_t i = k < q.shownOrder.size() ? std::size_t(q.shownOrder[k]) : k;
     auto* row = new QWidget;
     auto* rowLayout = new QHBoxLayout(row);
     rowLayout->setContentsMargins(0, 0, 0, 0);
@@ -326,6 +366,110 @@ void LessonPanel::showQuestion(const LessonStep& step) {
     m_choices->addButton(b, int(i));
     m_choicesLayout->addWidget(row);
   }
+  // Shown again (the language switched, the view revealed what it hid): the final verdict
+  // stays, in the lesson's language.
+  if (m_final) showOutcome();
+}
+
+void LessonPanel::showOutcome() {
+  const LessonQuestion& q = *m_lesson->steps[std::size_t(m_step)].question;
+  if (QAbstractButton* b = m_choices->button(m_chosen)) b->setChecked(true);
+  const QString expected = expectedAnswer();
+  m_verdict->setStyleSheet(m_outcome == Outcome::Right   ? QStringLiteral("color: #1b7a1b")
+                           : m_outcome == Outcome::Wrong ? QStringLiteral("color: #b00020")
+                                                         : QStringLiteral("color: #2a5d8a"));
+  m_verdict->setText(m_outcome == Outcome::Right ? tr("✓ Right.")
+                     : m_outcome == Outcome::Wrong
+                         ? tr("✗ Not quite: the answer is %1.").arg(expected)
+                         : tr("The answer is %1.").arg(expected));
+  m_explanation->setText(text(q.explanation, m_language));
+  m_predictNote->hide();
+  m_showAnswer->hide();
+}
+
+void LessonPanel::finish(Outcome outcome) {
+  const bool was = m_final;
+  m_final = true;
+  m_outcome = outcome;
+  showOutcome();
+  if (!was) {
+    m_tryApply->setEnabled(true);
+    emit answerRevealed();
+  }
+}
+
+void LessonPanel::showTryValue(const LessonStep& step) {
+  m_try->setVisible(bool(step.tryValue));
+  if (!step.tryValue) return;
+  const LessonTryValue& t = *step.tryValue;
+  m_tryLabel->setText(tr("%1 (now %2; the task: %3)")
+                          .arg(text(t.label, m_language), QString::number(t.original, 'g', 6),
+                               QString::number(t.value, 'g', 6)));
+  const QSignalBlocker block(m_tryBox);
+  m_tryBox->setDecimals(t.decimals);
+  m_tryBox->setRange(t.min, t.max);
+  m_tryBox->setSingleStep(t.step);
+  if (m_tryBox->property("raylabStep").toInt() != m_step ||
+      m_tryBox->property("raylabLesson").toString() != QString::fromStdString(m_lesson->id)) {
+    m_tryBox->setValue(t.original);
+    m_tryBox->setProperty("raylabStep", m_step);
+    m_tryBox->setProperty("raylabLesson", QString::fromStdString(m_lesson->id));
+  }
+  // A prediction first: the effect is shown once the answer is final.
+  m_tryApply->setEnabled(!waitingForPrediction());
+}
+
+bool LessonPanel::waitingForPrediction() const {
+  if (!m_lesson || m_step < 0) return false;
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  return q && q->predict && !m_final;
+}
+
+QStringList LessonPanel::shownChoices() const {
+  QStringList list;
+  if (!m_lesson || m_step < 0) return list;
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  if (!q || q->type != LessonQuestion::Type::Choice) return list;
+  for (const int i : q->shownOrder) list << text(q->choices[std::size_t(i)], m_language);
+  return list;
+}
+
+bool LessonPanel::answerShown(int position) {
+  if (!m_lesson || m_step < 0) return false;
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  if (!q || position < 0 || position >= int(q->shownOrder.size())) return false;
+  return answerChoice(q->shownOrder[std::size_t(position)]);
+}
+
+void LessonPanel::submit() {
+  if (!m_lesson || m_step < 0) return;
+  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
+  if (!q) return;
+  if (q->type == LessonQuestion::Type::Choice) {
+    if (m_choices->checkedId() >= 0) answerChoice(m_choices->checkedId());
+    return;
+  }
+  bool ok = false;
+  const double value = QLocale::c().toDouble(m_number->text().trimmed(), &ok);
+  if (ok)
+    answerNumber(value);
+  else
+    showVerdict(false, QString());
+}
+
+QString LessonPanel::expectedAnswer() const {
+  const LessonQuestion& q = *m_lesson->steps[std::size_t(m_step)].question;
+  if (q.type == LessonQuestion::Type::Choice)
+    return QStringLiteral("%1. %2")
+        .arg(QChar('A' + q.shownAnswer()))
+        .arg(text(q.choices[std::size_t(q.answerIndex)], m_language));
+  return q.tolerance > 0.0 ? tr("%1 (± %2)").arg(number(q.answer), number(q.tolerance))
+                           : number(q.answer);
+}
+
+void LessonPanel::showAnswer() {
+  if (!m_lesson || m_step < 0 || !m_lesson->steps[std::size_t(m_step)].question) return;
+  finish(m_final ? m_outcome : Outcome::Shown);
 }
 
 bool LessonPanel::answerChoice(int index) {
@@ -334,8 +478,9 @@ bool LessonPanel::answerChoice(int index) {
   if (!q || q->type != LessonQuestion::Type::Choice || index < 0 || index >= int(q->choices.size()))
     return false;
   if (QAbstractButton* b = m_choices->button(index)) b->setChecked(true);
+  m_chosen = index;
   const bool right = index == q->answerIndex;
-  showVerdict(right, text(q->choices[std::size_t(q->answerIndex)], m_language));
+  showVerdict(right, expectedAnswer());
   return right;
 }
 
@@ -345,27 +490,29 @@ bool LessonPanel::answerNumber(double value) {
   if (!q || q->type != LessonQuestion::Type::Number) return false;
   m_number->setText(number(value));
   const bool right = std::isfinite(value) && std::abs(value - q->answer) <= q->tolerance;
-  showVerdict(right, q->tolerance > 0.0
-                         ? tr("%1 (± %2)").arg(number(q->answer), number(q->tolerance))
-                         : number(q->answer));
+  showVerdict(right, expectedAnswer());
   return right;
 }
 
 void LessonPanel::showVerdict(bool right, const QString& expected) {
-  const auto& q = m_lesson->steps[std::size_t(m_step)].question;
   if (expected.isEmpty()) {
     m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
     m_verdict->setText(tr("Please write a number, such as 0.25."));
     m_explanation->clear();
     return;
   }
-  m_verdict->setStyleSheet(right ? QStringLiteral("color: #1b7a1b")
-                                 : QStringLiteral("color: #b00020"));
-  m_verdict->setText(right ? tr("✓ Right.") : tr("✗ Not quite: the answer is %1.").arg(expected));
-  m_explanation->setText(text(q->explanation, m_language));
+  if (!right && !m_final && ++m_tries < 2) {
+    // A first wrong answer gives nothing away.
+    m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
+    m_verdict->setText(tr("✗ Not yet: try again."));
+    m_explanation->clear();
+    return;
+  }
+  finish(right ? Outcome::Right : Outcome::Wrong);
 }
 
 QString LessonPanel::verdict() const { return m_verdict->text(); }
+QString LessonPanel::explanation() const { return m_explanation->text(); }
 QString LessonPanel::titleText() const { return m_title->text(); }
 QString LessonPanel::bodyText() const { return m_text->text(); }
 

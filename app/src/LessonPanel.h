@@ -10,6 +10,7 @@
 
 class QButtonGroup;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -21,9 +22,15 @@ namespace raylab::app {
 
 /**
  * \brief The lesson panel: a step's title and text in a large font, Back / Next, the
- * step's question with an answer box that says right or wrong and explains, the teacher's
- * notes on demand, and the lesson's language (English or Chinese, by default the window's,
- * switchable within the lesson).
+ * step's question with an answer box, the teacher's notes on demand, and the lesson's
+ * language (English or Chinese, by default the window's, switchable within the lesson).
+ *
+ * The question's choices are shown in the lesson's order for the step (LessonQuestion::
+ * shownOrder, as in the handout). A first wrong answer only says "try again"; the answer and
+ * its explanation come with a right answer, a second wrong one or "Show answer" (Enter
+ * checks). A "predict" question's step keeps its tree or image hidden until then: the
+ * panel emits answerFinal and the window shows them. A step with a "try_value" has a spin
+ * box for the value and "Show the effect" (emits tryValueApplied).
  *
  * The panel shows words only; when the step changes it emits stepChanged, and the window
  * sets its 3D view, image, filters and animation for the step (MainWindow::showLessonStep).
@@ -68,8 +75,33 @@ class LessonPanel : public QWidget {
   bool answerChoice(int index);
   /// Answers a number question; true when within the tolerance.
   bool answerNumber(double value);
-  /// The verdict shown ("Right." / "Not quite: …"), empty before answering.
+  /// The verdict shown ("Right." / "Not yet: try again." / "Not quite: …"), empty before
+  /// answering.
   QString verdict() const;
+  /// The explanation shown (empty until the answer is final).
+  QString explanation() const;
+  /// The choices' words in the order shown (empty for a number question).
+  QStringList shownChoices() const;
+  /// Answers with the choice shown at `position` (0-based); true when right.
+  bool answerShown(int position);
+  /// Checks what is entered (the choice ticked, the number typed), as the button and Enter do.
+  void submit();
+  /// Shows the answer and the explanation without another try ("Show answer").
+  void showAnswer();
+  /// True once the step's answer is final (right, the second try, or shown).
+  bool answerFinal() const { return m_final; }
+  /// True while the step's view waits for the student's prediction (a "predict" question
+  /// not yet answered finally).
+  bool waitingForPrediction() const;
+  QPushButton* checkButton() const { return m_check; }
+  QPushButton* showAnswerButton() const { return m_showAnswer; }
+  QLineEdit* numberBox() const { return m_number; }
+  /// @}
+
+  /// \name Change a value (a step's "try_value")
+  /// @{
+  QDoubleSpinBox* tryValueBox() const { return m_tryBox; }
+  QPushButton* tryValueButton() const { return m_tryApply; }
   /// @}
 
   /// The texts shown, for tests.
@@ -84,15 +116,33 @@ class LessonPanel : public QWidget {
   void stepChanged(int index);
   /// The lesson's language changed.
   void languageChanged();
+  /// The answer of the step's question is now final (shown): a "predict" step's view may
+  /// now show what the question was about.
+  void answerRevealed();
+  /// The student asks to see the effect of `value` at the step's try_value place.
+  void tryValueApplied(double value);
 
  protected:
   void changeEvent(QEvent* event) override;
 
  private:
+  /// The question's box: prompt, choices or number, Check / Show answer, verdict, why.
+  QWidget* buildQuestion();
+  /// The "change a value" box: what the value is, its spin box, Show the effect.
+  QWidget* buildTryValue();
   /// The larger fonts of the title, text and question, relative to the panel's font.
   void applyFontScales();
   void showQuestion(const LessonStep& step);
+  /// How the step's question was settled, once final.
+  enum class Outcome { Right, Wrong, Shown };
   void showVerdict(bool right, const QString& expected);
+  /// The final verdict and the explanation, as `outcome` settled them; emits answerRevealed
+  /// the first time.
+  void finish(Outcome outcome);
+  void showOutcome();
+  void showTryValue(const LessonStep& step);
+  /// The right answer in words ("C. …", "3 (± 0.5)").
+  QString expectedAnswer() const;
   void refresh();
 
   std::shared_ptr<const Lesson> m_lesson;
@@ -115,6 +165,16 @@ class LessonPanel : public QWidget {
   QButtonGroup* m_choices = nullptr;
   QLineEdit* m_number = nullptr;
   QPushButton* m_check = nullptr;
+  QPushButton* m_showAnswer = nullptr;
+  QLabel* m_predictNote = nullptr;
+  int m_tries = 0;       ///< Wrong answers given to the step's question.
+  bool m_final = false;  ///< The answer is shown (right, second try, or asked for).
+  Outcome m_outcome = Outcome::Shown;
+  int m_chosen = -1;  ///< The choice last ticked (its index in the file).
+  QWidget* m_try = nullptr;
+  QLabel* m_tryLabel = nullptr;
+  QDoubleSpinBox* m_tryBox = nullptr;
+  QPushButton* m_tryApply = nullptr;
   QLabel* m_verdict = nullptr;
   QLabel* m_explanation = nullptr;
   QToolButton* m_notesButton = nullptr;

@@ -210,6 +210,10 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
   tabifyDockWidget(inspector, m_lessonDock);
   m_lessonDock->hide();
   connect(m_lessonPanel, &LessonPanel::stepChanged, this, [this](int i) { showLessonStep(i); });
+  // A prediction answered: the step's tree or image (or the tried value's effect) appears.
+  connect(m_lessonPanel, &LessonPanel::answerRevealed, this, [this] { revealLessonStep(); });
+  connect(m_lessonPanel, &LessonPanel::tryValueApplied, this,
+          [this](double value) { tryLessonValue(value); });
   m_leftDocks = {objects, edit, properties};
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
   // The rendered image marks the pixel whose tree is shown.
@@ -554,6 +558,68 @@ void MainWindow::showLessonStep(int index) {
   rays.orderBox()->setCurrentIndex(rays.orderBox()->findData(int(vis::RevealOrder::Depth)));
   rays.setBundle(step.bundle);
   rays.allHitsBox()->setChecked(step.allHits);
+  // Step 2b: a prediction first; the tree and the image wait for the answer
+  // (revealLessonStep). A step whose value the student changes shows its scene as it is.
+  const bool hidden = m_lessonPanel->waitingForPrediction() && !step.tryValue;
+  if (!hidden) showLessonResult(step);
+  if (hidden) {
+    rays.setRootRay(std::nullopt);
+    rays.clearTrace();
+    m_view->clearSampleCloud();
+    if (step.view == LessonView::Image) {
+      // The image waits too: a render the scene change restarted is stopped, and the tabs
+      // are hidden until the answer (a cancelled render still delivers its passes).
+      m_renderPanel->cancel();
+      m_imageTabs->hide();
+    }
+  }
+
+  // Step 3: a mesh's BVH boxes (lesson 8), said in words in the lesson panel.
+  vis::BvhStyle bvh = vis::lessonBvhStyle(step);
+  bvh.language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
+  if (bvh.shown() && !hidden)
+    m_view->setBvh(bvh);
+  else
+    m_view->clearBvh();
+  m_lessonPanel->setBvhView(hidden ? vis::BvhStyle{} : bvh, m_view->bvhSummary());
+  if (step.view != LessonView::Inspector || hidden) m_lessonPanel->setRayText({});
+  m_lessonDock->raise();
+  render();
+}
+
+void MainWindow::revealLessonStep() {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  const int index = m_lessonPanel->step();
+  if (!lesson || index < 0) return;
+  const LessonStep& step = lesson->steps[std::size_t(index)];
+  // A tried value's step shows the task's value now; any other step what it hid.
+  if (step.tryValue) {
+    m_lessonPanel->tryValueBox()->setValue(step.tryValue->value);
+    tryLessonValue(step.tryValue->value);
+    return;
+  }
+  if (step.question && step.question->predict) showLessonStep(index);
+}
+
+void MainWindow::tryLessonValue(double value) {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  const int index = m_lessonPanel->step();
+  if (!lesson || index < 0 || !lesson->steps[std::size_t(index)].tryValue) return;
+  LessonStep tried = lesson->steps[std::size_t(index)];
+  try {
+    tried.scene = std::make_shared<const Scene>(tried.tryValue->with(*tried.scene, value));
+  } catch (const Exception& e) {
+    showError(tr("Cannot use this value"), QString::fromStdString(e.what()));
+    return;
+  }
+  // The tried scene replaces the step's in the 3D view; the camera stays where it is.
+  m_document->adopt(*tried.scene, {});
+  showLessonResult(tried);
+  render();
+}
+
+void MainWindow::showLessonResult(const LessonStep& step) {
+  RayTreePanel& rays = *m_rayPanel;
   if (step.traces()) {
     if (step.pixelX) rays.setPixel(*step.pixelX, *step.pixelY);
     rays.setRootRay(step.ray);  // after the pixel, which goes back to its own camera ray
@@ -580,15 +646,6 @@ void MainWindow::showLessonStep(int index) {
   else
     m_view->clearSampleCloud();
 
-  // Step 3: a mesh's BVH boxes (lesson 8), said in words in the lesson panel.
-  vis::BvhStyle bvh = vis::lessonBvhStyle(step);
-  bvh.language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
-  if (bvh.shown())
-    m_view->setBvh(bvh);
-  else
-    m_view->clearBvh();
-  m_lessonPanel->setBvhView(bvh, m_view->bvhSummary());
-
   // Step 4: the image or the comparison beside the 3D view, for the steps that show it. The
   // Image tab takes the step's algorithm on every step, so Render there renders the step's.
   m_renderPanel->setAlgorithm(step.algorithm);
@@ -611,9 +668,6 @@ void MainWindow::showLessonStep(int index) {
     showImageTab(m_renderPanel);
     m_renderPanel->render();
   }
-  if (step.view != LessonView::Inspector) m_lessonPanel->setRayText({});
-  m_lessonDock->raise();
-  render();
 }
 
 bool MainWindow::lessonShowsInspector() const {

@@ -19,6 +19,10 @@ class QSplitter;
 class QTabWidget;
 class QVTKOpenGLNativeWidget;
 
+namespace raylab {
+struct LessonStep;
+}
+
 namespace raylab::vis {
 class SceneView;
 }
@@ -137,6 +141,12 @@ class MainWindow : public QMainWindow {
   /// the open lesson: its scene, algorithm, pixel, reveal, colours, filters, camera view,
   /// selected ray, rendered image.
   void showLessonStep(int index);
+  /// Shows what the open step's "predict" question hid, once its answer is final (for a
+  /// "try_value" step: the task's value tried).
+  void revealLessonStep();
+  /// Shows the open step's scene with its try_value place set to `value`: the tree and the
+  /// image as the step shows them (a refused value: a dialog, nothing changed).
+  void tryLessonValue(double value);
   /// True while the lesson panel shows an inspector step (it then shows the selected ray).
   bool lessonShowsInspector() const;
   LessonPanel* lessonPanel() const { return m_lessonPanel; }
@@ -201,6 +211,8 @@ class MainWindow : public QMainWindow {
   void updateRecentMenu();
   /// The Lessons menu: each lesson's title in the window's language, then the step keys.
   void fillLessonsMenu();
+  /// The step's tree, samples, comparison or image (what a prediction waits for).
+  void showLessonResult(const LessonStep& step);
   /// A dialog (not blocking the event loop) with `text`; kept for lastError().
   void showError(const QString& title, const QString& text);
   /// Adds a shape, a mesh or a point light through `edit` and selects it.

@@ -15,8 +15,13 @@
 #include "raylab/core/RayTreeJson.h"
 
 #include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QMenuBar>
+#include <QProcess>
+#include <QPushButton>
 #include <QTabWidget>
 
 #include <gmock/gmock.h>
@@ -108,6 +113,7 @@ TEST_F(WindowLessonTest, 04_QuestionsSayRightOrWrongAndExplain) {
   EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✗"))) << panel.verdict().toStdString();
   EXPECT_TRUE(panel.answerNumber(q.answer + 0.5 * q.tolerance));
   EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✓"))) << panel.verdict().toStdString();
+  EXPECT_EQ(panel.explanation().toStdString(), q.explanation.en);
 
   const int choice = firstStep(lesson, [](const LessonStep& st) {
     return st.question && st.question->type == LessonQuestion::Type::Choice;
@@ -116,9 +122,11 @@ TEST_F(WindowLessonTest, 04_QuestionsSayRightOrWrongAndExplain) {
   const LessonQuestion& c = *lesson.steps[std::size_t(choice)].question;
   const int wrong = c.answerIndex == 0 ? 1 : 0;
   EXPECT_FALSE(panel.answerChoice(wrong));
+  EXPECT_FALSE(panel.answerChoice(wrong));
   EXPECT_TRUE(
       panel.verdict().contains(QString::fromStdString(c.choices[std::size_t(c.answerIndex)].en)))
-      << "the verdict names the right answer: " << panel.verdict().toStdString();
+      << "after the second try the verdict names the right answer: "
+      << panel.verdict().toStdString();
   EXPECT_TRUE(panel.answerChoice(c.answerIndex));
 }
 
@@ -349,5 +357,159 @@ TEST_F(WindowLessonTest, 12_AComparisonStepWithAPixelShowsItsFourTrees) {
   EXPECT_GE(comparison.tracedPixel().first, 0);
   for (const RayTree& tree : comparison.trees()) EXPECT_FALSE(tree.segments.empty());
 }
+/// The lesson whose file name starts with `prefix` ("04-").
+QString lessonFile(const char* prefix) {
+  return QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/") +
+         QDir(QStringLiteral(RAYLAB_SOURCE_DIR "/lessons"))
+             .entryList({QString::fromLatin1(prefix) + QStringLiteral("*.json")})
+             .value(0);
+}
+
+TEST_F(WindowLessonTest, 13_AFirstWrongAnswerSaysTryAgainAndGivesNothingAway) {
+  const QString file = lessonFile("02-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int choice = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->type == LessonQuestion::Type::Choice &&
+           st.question->choices.size() > 2;
+  });
+  panel.showStep(choice);
+  const LessonQuestion& c = *lesson.steps[std::size_t(choice)].question;
+  const QString right = QString::fromStdString(c.choices[std::size_t(c.answerIndex)].en);
+  const int wrong = (c.answerIndex + 1) % int(c.choices.size());
+  // The first wrong answer: try again, neither the answer nor the explanation shown.
+  EXPECT_FALSE(panel.answerChoice(wrong));
+  EXPECT_EQ(panel.verdict(), QStringLiteral("✗ Not yet: try again."));
+  EXPECT_FALSE(panel.verdict().contains(right));
+  EXPECT_TRUE(panel.explanation().isEmpty());
+  EXPECT_FALSE(panel.answerFinal());
+  EXPECT_TRUE(panel.showAnswerButton()->isVisibleTo(&panel));
+  // "Show answer": the answer, at its shown letter, and why.
+  panel.showAnswerButton()->click();
+  EXPECT_TRUE(panel.answerFinal());
+  const QString letter = QString(QChar('A' + c.shownAnswer()));
+  EXPECT_EQ(panel.verdict(), QStringLiteral("The answer is %1. %2.").arg(letter, right));
+  EXPECT_EQ(panel.explanation().toStdString(), c.explanation.en);
+
+  // A number question answered with Enter: wrong twice, then the answer is given.
+  const int number = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->type == LessonQuestion::Type::Number && !st.tryValue;
+  });
+  panel.showStep(number);
+  settle();
+  const LessonQuestion& q = *lesson.steps[std::size_t(number)].question;
+  QLineEdit* box = panel.numberBox();
+  box->setText(QString::number(q.answer + 100.0));
+  QTest::keyClick(box, Qt::Key_Return);
+  EXPECT_EQ(panel.verdict(), QStringLiteral("✗ Not yet: try again."));
+  box->setText(QString::number(q.answer + 200.0));
+  QTest::keyClick(box, Qt::Key_Return);
+  EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✗ Not quite: the answer is")))
+      << panel.verdict().toStdString();
+  EXPECT_EQ(panel.explanation().toStdString(), q.explanation.en);
+}
+
+TEST_F(WindowLessonTest, 14_APredictionKeepsTheTreeHiddenUntilAnswered) {
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->predict && !st.tryValue &&
+           st.question->type == LessonQuestion::Type::Number && st.view == LessonView::Scene;
+  });
+  panel.showStep(s);
+  settle();
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  EXPECT_TRUE(panel.waitingForPrediction());
+  EXPECT_TRUE(rays.tree().segments.empty()) << "the tree waits for the prediction";
+  const LessonStep& step = lesson.steps[std::size_t(s)];
+  // Answered (here right at once): the step's tree appears, as the CLI traces it.
+  EXPECT_TRUE(panel.answerNumber(step.question->answer));
+  settle();
+  EXPECT_FALSE(panel.waitingForPrediction());
+  const PixelTrace expected =
+      tracePixel(*step.scene, step.settings(), *step.pixelX, *step.pixelY, step.sample);
+  EXPECT_EQ(rays.tree().segments.size(), expected.tree.segments.size());
+  EXPECT_EQ(double(rays.tree().segments.size()), step.question->answer);
+}
+
+TEST_F(WindowLessonTest, 15_AChangedValueShowsItsEffectAfterThePrediction) {
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) { return bool(st.tryValue); });
+  panel.showStep(s);
+  settle();
+  const LessonStep& step = lesson.steps[std::size_t(s)];
+  const LessonTryValue& t = *step.tryValue;
+  QDoubleSpinBox* box = panel.tryValueBox();
+  EXPECT_TRUE(box->isVisibleTo(&panel));
+  EXPECT_EQ(box->value(), t.original);
+  EXPECT_FALSE(panel.tryValueButton()->isEnabled()) << "a prediction first";
+  // Before: the step's own scene and tree.
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  const auto before = rays.tree().segments.size();
+  EXPECT_EQ(before, step.trace().tree.segments.size());
+  // The answer shown: the task's value is set, and the tree is the tried scene's.
+  panel.showAnswerButton()->click();
+  settle();
+  EXPECT_EQ(box->value(), t.value);
+  EXPECT_TRUE(panel.tryValueButton()->isEnabled());
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), SceneIO::serialize(*t.triedScene));
+  EXPECT_EQ(double(rays.tree().segments.size()), step.question->answer);
+  EXPECT_NE(rays.tree().segments.size(), before);
+  // Any other value in range, by the spin box and the button.
+  box->setValue(t.original);
+  panel.tryValueButton()->click();
+  settle();
+  EXPECT_EQ(rays.tree().segments.size(), before);
+}
+
+TEST_F(WindowLessonTest, 16_TheChoicesAreShownInTheHandoutsOrder) {
+  // The teacher's handout of lesson 2 (small pictures, one sample: only its words count).
+  const QString file = lessonFile("02-");
+  const QString out = QDir::temp().filePath(QStringLiteral("raylab-window-handout-order"));
+  QProcess lesson;
+  lesson.start(
+      QStringLiteral(RAYLAB_EXE),
+      {QStringLiteral("lesson"), file, QStringLiteral("--out"), out, QStringLiteral("--size"),
+       QStringLiteral("160x120"), QStringLiteral("--max-spp"), QStringLiteral("1")});
+  ASSERT_TRUE(lesson.waitForFinished(300000));
+  ASSERT_EQ(lesson.exitCode(), 0) << lesson.readAllStandardError().toStdString();
+  QFile md(out + QStringLiteral("/lesson.md"));
+  ASSERT_TRUE(md.open(QIODevice::ReadOnly));
+  const QString handout = QString::fromUtf8(md.readAll());
+
+  ASSERT_TRUE(m_window->openLesson(file));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson loaded = LessonIO::load(file.toStdString());
+  int checked = 0;
+  for (std::size_t i = 0; i < loaded.steps.size(); ++i) {
+    const auto& q = loaded.steps[i].question;
+    if (!q || q->type != LessonQuestion::Type::Choice) continue;
+    panel.showStep(int(i));
+    // The window's choices, lettered in their order, are the handout's lines.
+    const QStringList shown = panel.shownChoices();
+    ASSERT_EQ(shown.size(), int(q->choices.size()));
+    QString lines;
+    for (int k = 0; k < shown.size(); ++k)
+      lines += QString(QChar('A' + k)) + QStringLiteral(". ") + shown[k] + QLatin1Char('\n');
+    EXPECT_TRUE(handout.contains(lines)) << "step " << i + 1 << ":\n" << lines.toStdString();
+    // The key follows the order shown.
+    const QString key =
+        QStringLiteral("**Answer:** %1. %2")
+            .arg(QChar('A' + q->shownAnswer()))
+            .arg(QString::fromStdString(q->choices[std::size_t(q->answerIndex)].en));
+    EXPECT_TRUE(handout.contains(key)) << key.toStdString();
+    EXPECT_EQ(shown[q->shownAnswer()].toStdString(), q->choices[std::size_t(q->answerIndex)].en);
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+  QDir(out).removeRecursively();
+}
+
 }  // namespace
 }  // namespace raylab::app

@@ -10,6 +10,7 @@
 #include "raylab/core/Renderer.h"
 #include "raylab/core/Sampler.h"
 #include "raylab/core/Sampling.h"
+#include "raylab/core/SceneEdit.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Tracer.h"
@@ -60,7 +61,8 @@ const Named<LessonCheck::Quantity> kQuantities[] = {
     {"camera_rays", LessonCheck::Quantity::CameraRays},
     {"bvh_nodes", LessonCheck::Quantity::BvhNodes},
     {"bvh_boxes_entered", LessonCheck::Quantity::BvhBoxesEntered},
-    {"bvh_triangle_tests", LessonCheck::Quantity::BvhTriangleTests}};
+    {"bvh_triangle_tests", LessonCheck::Quantity::BvhTriangleTests},
+    {"ray_target", LessonCheck::Quantity::RayTarget}};
 const Named<Algorithm> kAlgorithms[] = {{"raycast", Algorithm::RayCasting},
                                         {"whitted", Algorithm::Whitted},
                                         {"distributed", Algorithm::Distributed},
@@ -175,8 +177,10 @@ class Reader : private JsonChecks<Reader> {
 
  private:
   std::string m_origin;
-  std::string m_baseDir;  ///< Folder of the lesson file: the scene path is relative to it.
-  std::string m_step;     ///< "step 3 (\"Title\"): " while reading a step, else empty.
+  std::string m_baseDir;        ///< Folder of the lesson file: the scene path is relative to it.
+  std::string m_step;           ///< "step 3 (\"Title\"): " while reading a step, else empty.
+  std::size_t m_stepIndex = 0;  ///< The step read (0-based): it fixes its choices' order.
+  std::string m_lessonId;
   std::string m_scenePath;
   json m_sceneDoc;  ///< The scene file's JSON: scene changes edit copies of it.
   std::shared_ptr<const Scene> m_scene;
@@ -256,6 +260,12 @@ class Reader : private JsonChecks<Reader> {
   json& namedEntry(json& doc, const char* list, const char* what, const json& name,
                    const std::string& path, std::size_t& index) const;
   LessonQuestion question(const json& j, const std::string& path, const LessonStep& step) const;
+  void choices(const json& j, const std::string& path, LessonQuestion& q) const;
+  LessonTryValue tryValue(const json& j, const std::string& path, const LessonStep& step) const;
+  /// A scene-file pointer whose list entries may be named ("/materials/glass/ior"), with
+  /// the names replaced by their indices ("/materials/2/ior").
+  std::string scenePlace(const std::string& place, const std::string& path) const;
+  std::vector<LocalText> texts(const json& j, const std::string& path) const;
   LessonCheck check(const json& j, const std::string& path, const LessonStep& step) const;
   /// A mesh object named by `name` (null: the scene's first mesh), as an index.
   int meshObject(const json& name, const std::string& path, const Scene& scene) const;
@@ -545,6 +555,9 @@ LessonCheck Reader::check(const json& j, const std::string& path, const LessonSt
     case Q::BvhTriangleTests:
       onlyKeys(j, path, {"quantity", "pixel", "sample", "object"});
       break;
+    case Q::RayTarget:
+      onlyKeys(j, path, {"quantity", "algorithm", "pixel", "sample", "ray"});
+      break;
   }
   LessonCheck c;
   c.quantity = *quantity;
@@ -583,35 +596,139 @@ LessonQuestion Reader::question(const json& j, const std::string& path,
   const std::string type = string(member(j, path, "type"), path + "/type");
   LessonQuestion q;
   if (type == "choice") {
-    onlyKeys(j, path, {"type", "prompt", "choices", "answer", "explanation"});
+    onlyKeys(j, path,
+             {"type", "prompt", "choices", "answer", "explanation", "predict", "shuffle", "check"});
     q.type = LessonQuestion::Type::Choice;
   } else if (type == "number") {
-    onlyKeys(j, path, {"type", "prompt", "answer", "tolerance", "check", "explanation"});
+    onlyKeys(j, path, {"type", "prompt", "answer", "tolerance", "check", "explanation", "predict"});
     q.type = LessonQuestion::Type::Number;
   } else {
     fail(path + "/type", "unknown question type \"" + type + "\" (expected choice or number)");
   }
   q.prompt = text(member(j, path, "prompt"), path + "/prompt");
   q.explanation = text(member(j, path, "explanation"), path + "/explanation");
-  const json& answer = member(j, path, "answer");
+  if (j.contains("predict")) q.predict = boolean(j["predict"], path + "/predict");
+  if (q.predict && !step.traces() && step.view != LessonView::Image && !step.tryValue)
+    fail(path + "/predict",
+         "a prediction is asked before the step shows its tree, image or tried value: this "
+         "step has none to hide (give it a pixel, an image view or a try_value)");
+  const bool targetCheck = j.contains("check") && j["check"].is_object() &&
+                           j["check"].value("quantity", "") == "ray_target";
+  if (j.contains("check")) q.check = check(j["check"], path + "/check", step);
   if (q.type == LessonQuestion::Type::Choice) {
-    const json& choices = member(j, path, "choices");
-    if (!choices.is_array() || choices.size() < 2)
-      fail(path + "/choices", "a choice question has a list of at least two choices");
-    for (std::size_t i = 0; i < choices.size(); ++i)
-      q.choices.push_back(text(choices[i], path + "/choices/" + std::to_string(i), false));
-    q.answerIndex = integer(answer, path + "/answer");
-    const int n = static_cast<int>(q.choices.size());
-    if (q.answerIndex < 0 || q.answerIndex >= n)
-      fail(path + "/answer", "answer " + std::to_string(q.answerIndex) + " is not one of the " +
-                                 std::to_string(n) + " choices (0.." + std::to_string(n - 1) + ")");
+    if (j.contains("check") && !targetCheck)
+      fail(path + "/check/quantity",
+           "a choice question's answer is checked by \"ray_target\" (what a ray reaches); "
+           "numbers are checked in number questions");
+    choices(j, path, q);
     return q;
   }
-  q.answer = number(answer, path + "/answer");
+  if (targetCheck)
+    fail(path + "/check/quantity",
+         "\"ray_target\" names what a ray reaches: it checks a choice "
+         "question, not a number");
+  q.answer = number(member(j, path, "answer"), path + "/answer");
   if (j.contains("tolerance")) q.tolerance = number(j["tolerance"], path + "/tolerance");
   if (q.tolerance < 0.0) fail(path + "/tolerance", "tolerance must not be negative");
-  if (j.contains("check")) q.check = check(j["check"], path + "/check", step);
   return q;
+}
+
+void Reader::choices(const json& j, const std::string& path, LessonQuestion& q) const {
+  const json& choices = member(j, path, "choices");
+  if (!choices.is_array() || choices.size() < 2)
+    fail(path + "/choices", "a choice question has a list of at least two choices");
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    const std::string cp = path + "/choices/" + std::to_string(i);
+    json words = choices[i];
+    // A choice of a ray_target question names what it stands for: {"en", "zh", "value"}.
+    if (words.is_object() && words.contains("value")) {
+      if (!q.check) fail(cp + "/value", "a choice's \"value\" belongs to a ray_target check");
+      q.choiceValues.push_back(string(words["value"], cp + "/value"));
+      words.erase("value");
+    } else if (q.check) {
+      fail(cp,
+           "every choice of a ray_target question names its \"value\" (an object's or a "
+           "light's name, or \"nothing\")");
+    }
+    q.choices.push_back(text(words, cp, false));
+  }
+  q.answerIndex = integer(member(j, path, "answer"), path + "/answer");
+  const int n = static_cast<int>(q.choices.size());
+  if (q.answerIndex < 0 || q.answerIndex >= n)
+    fail(path + "/answer", "answer " + std::to_string(q.answerIndex) + " is not one of the " +
+                               std::to_string(n) + " choices (0.." + std::to_string(n - 1) + ")");
+  const bool shuffle = j.contains("shuffle") ? boolean(j["shuffle"], path + "/shuffle") : true;
+  q.shownOrder = choiceOrder(m_lessonId, m_stepIndex, q.choices.size());
+  if (!shuffle) std::sort(q.shownOrder.begin(), q.shownOrder.end());
+}
+
+std::string Reader::scenePlace(const std::string& place, const std::string& path) const {
+  if (place.empty() || place[0] != '/')
+    fail(path, "a place is a JSON pointer into the scene file, e.g. \"/materials/glass/ior\"");
+  const std::size_t second = place.find('/', 1);
+  const std::string list =
+      place.substr(1, second == std::string::npos ? std::string::npos : second - 1);
+  if (second == std::string::npos ||
+      (list != "materials" && list != "objects" && list != "point_lights"))
+    return place;
+  const std::size_t third = place.find('/', second + 1);
+  const std::string name =
+      place.substr(second + 1, third == std::string::npos ? std::string::npos : third - second - 1);
+  if (!name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c));
+      }))
+    return place;
+  json doc = m_sceneDoc;
+  std::size_t index = 0;
+  const char* what = list == "materials" ? "material"
+                     : list == "objects" ? "object"
+                                         : "point light";
+  namedEntry(doc, list.c_str(), what, json(name), path, index);
+  return "/" + list + "/" + std::to_string(index) +
+         (third == std::string::npos ? std::string() : place.substr(third));
+}
+
+LessonTryValue Reader::tryValue(const json& j, const std::string& path,
+                                const LessonStep& step) const {
+  onlyKeys(j, path, {"place", "label", "value", "min", "max", "step"});
+  LessonTryValue t;
+  t.sceneFile = m_scenePath;
+  t.label = text(member(j, path, "label"), path + "/label");
+  t.place = scenePlace(string(member(j, path, "place"), path + "/place"), path + "/place");
+  t.value = number(member(j, path, "value"), path + "/value");
+  t.min = number(member(j, path, "min"), path + "/min");
+  t.max = number(member(j, path, "max"), path + "/max");
+  if (!(t.min < t.max)) fail(path + "/max", "max must be above min");
+  if (t.value < t.min || t.value > t.max)
+    fail(path + "/value", "the value tried lies outside [min, max]");
+  t.step = j.contains("step") ? number(j["step"], path + "/step") : (t.max - t.min) / 100.0;
+  if (!(t.step > 0.0)) fail(path + "/step", "step must be positive");
+  t.decimals = std::clamp(int(std::ceil(-std::log10(t.step) - 1e-9)), 0, 6);
+  // The value the scene has, and the scene with the value tried (the loader's own rules).
+  json original;
+  try {
+    original = json::parse(edit::valueAt(*step.scene, t.place, m_scenePath));
+  } catch (const Exception& e) {
+    fail(path + "/place", e.what());
+  }
+  if (!original.is_number())
+    fail(path + "/place",
+         "the scene's value at " + t.place + " is " + excerpt(original) + ", not a number");
+  t.original = original.get<double>();
+  try {
+    t.triedScene = std::make_shared<const Scene>(t.with(*step.scene, t.value));
+  } catch (const Exception& e) {
+    fail(path + "/value", e.what());
+  }
+  return t;
+}
+
+std::vector<LocalText> Reader::texts(const json& j, const std::string& path) const {
+  if (!j.is_array() || j.empty()) fail(path, "expected a list of {\"en\", \"zh\"} texts");
+  std::vector<LocalText> list;
+  for (std::size_t i = 0; i < j.size(); ++i)
+    list.push_back(text(j[i], path + "/" + std::to_string(i)));
+  return list;
 }
 
 LessonStep Reader::step(const json& j, const std::string& path, const Display& defaults) {
@@ -619,14 +736,20 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   LessonStep s;
   s.title = text(member(j, path, "title"), path + "/title");
   m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
-  onlyKeys(j, path,
-           {"title",    "text",          "view",     "algorithm",     "pixel",      "sample",
-            "reveal",   "colour",        "filters",  "camera_view",   "select_ray", "samples",
-            "measure",  "scene_changes", "question", "teacher_notes", "requires",   "bundle",
-            "all_hits", "bvh",           "ray",      "exactness"});
+  onlyKeys(j, path, {"title",         "text",      "view",      "algorithm",     "pixel",
+                     "sample",        "reveal",    "colour",    "filters",       "camera_view",
+                     "select_ray",    "samples",   "measure",   "scene_changes", "question",
+                     "teacher_notes", "requires",  "bundle",    "all_hits",      "bvh",
+                     "ray",           "exactness", "try_value", "minutes",       "recap"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
+  if (j.contains("minutes")) {
+    s.minutes = number(j["minutes"], path + "/minutes");
+    if (!(s.minutes > 0.0 && s.minutes <= 60.0))
+      fail(path + "/minutes", "a step's minutes are more than 0 and at most 60");
+  }
+  if (j.contains("recap")) s.recap = boolean(j["recap"], path + "/recap");
   if (j.contains("requires")) {
     const json& r = j["requires"];
     const json list = r.is_array() ? r : json::array({r});
@@ -757,6 +880,13 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
     fail(path + (j.contains("camera_view") ? "/camera_view" : ""),
          "the close_up view looks at the step's BVH mesh: it needs a \"bvh\" block");
 
+  if (j.contains("try_value")) {
+    if (j.contains("scene_changes"))
+      fail(path + "/try_value",
+           "a try_value step starts from the lesson's scene (no scene_changes), so that the "
+           "handout's command line (--set PLACE=VALUE) shows what the window shows");
+    s.tryValue = tryValue(j["try_value"], path + "/try_value", s);
+  }
   if (j.contains("question")) s.question = question(j["question"], path + "/question", s);
   return s;
 }
@@ -779,7 +909,9 @@ LocalText Reader::title(const json& root) {
 
 Lesson Reader::lesson(const json& root) {
   version(root);
-  onlyKeys(root, "", {"raylab_lesson", "id", "title", "summary", "scene", "defaults", "steps"});
+  onlyKeys(root, "",
+           {"raylab_lesson", "id", "title", "summary", "scene", "defaults", "steps", "objectives",
+            "misconceptions"});
   Lesson lesson;
   lesson.file = m_origin;
   lesson.id = string(member(root, "", "id"), "/id");
@@ -787,8 +919,12 @@ Lesson Reader::lesson(const json& root) {
         return std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' || ch == '_';
       }))
     fail("/id", "an id is letters, digits, '-' and '_' (e.g. \"04-whitted\")");
+  m_lessonId = lesson.id;
   lesson.title = text(member(root, "", "title"), "/title");
   lesson.summary = text(member(root, "", "summary"), "/summary");
+  if (root.contains("objectives")) lesson.objectives = texts(root["objectives"], "/objectives");
+  if (root.contains("misconceptions"))
+    lesson.misconceptions = texts(root["misconceptions"], "/misconceptions");
 
   // The scene: relative to the lesson file, loaded (and so validated) by SceneIO.
   const std::string scene = string(member(root, "", "scene"), "/scene");
@@ -825,6 +961,7 @@ Lesson Reader::lesson(const json& root) {
   if (!steps.is_array() || steps.empty()) fail("/steps", "expected a list of steps");
   for (std::size_t i = 0; i < steps.size(); ++i) {
     m_step = "step " + std::to_string(i + 1) + ": ";
+    m_stepIndex = i;
     lesson.steps.push_back(step(steps[i], "/steps/" + std::to_string(i), defaults));
   }
   m_step.clear();
@@ -842,7 +979,8 @@ const char* toString(LessonSamples::Sampler sampler) { return nameOf(kSamplers, 
 const char* toString(LessonCheck::Quantity quantity) { return nameOf(kQuantities, quantity); }
 
 double computeCheck(const LessonStep& step, const LessonCheck& c) {
-  const Scene& scene = *step.scene;
+  // A "change a value" step asks about its scene with the value tried.
+  const Scene& scene = step.tryValue ? *step.tryValue->triedScene : *step.scene;
   RenderSettings settings = scene.render;
   settings.algorithm = c.algorithm;
   using Q = LessonCheck::Quantity;

@@ -108,6 +108,9 @@ struct LessonCheck {
     BvhBoxesEntered,    ///< "bvh_boxes_entered": boxes of that BVH the camera ray of the
                         ///< pixel's sample enters (Bvh::traceVisits on the mesh alone).
     BvhTriangleTests,   ///< "bvh_triangle_tests": ray/triangle tests that search makes.
+    RayTarget,          ///< "ray_target" (choice questions): what ray `ray` of the tree
+                        ///< reaches, by name (computeTarget); compared with the choices'
+                        ///< "value".
   };
   Quantity quantity = Quantity::TreeRays;
   Algorithm algorithm = Algorithm::PathTracing;  ///< Default: the step's algorithm.
@@ -140,17 +143,59 @@ struct LessonBvh {
   bool visits = false;  ///< Only the boxes the step pixel's camera ray meets.
 };
 
+/**
+ * \brief The order the `count` choices of a multiple-choice question are shown in, the same
+ * in the window and in the handout: a permutation fixed by the lesson's id and the step's
+ * index (0-based), so that the right answer sits at no favoured place. Element k is the
+ * index in the file of the choice shown k-th.
+ */
+std::vector<int> choiceOrder(const std::string& lessonId, std::size_t stepIndex, std::size_t count);
+
 /// A question for the student: multiple choice, or a number with a tolerance.
 struct LessonQuestion {
   enum class Type { Choice, Number };
   Type type = Type::Choice;
   LocalText prompt;
-  std::vector<LocalText> choices;    ///< Choice: at least two.
-  int answerIndex = 0;               ///< Choice: index into choices.
+  std::vector<LocalText> choices;    ///< Choice: at least two, in the file's order.
+  int answerIndex = 0;               ///< Choice: index into choices (the file's order).
   double answer = 0.0;               ///< Number: the right answer.
   double tolerance = 0.0;            ///< Number: accepted |given - answer|, >= 0.
-  std::optional<LessonCheck> check;  ///< Number: how the answer is computed.
+  std::optional<LessonCheck> check;  ///< How the answer is computed (number; choice: ray_target).
   LocalText explanation;             ///< Why, shown after answering.
+  /// "predict": asked before the step's view shows what it is about (the tree, the image,
+  /// the effect of a tried value); the window shows it once the answer is final.
+  bool predict = false;
+  /// Choice: the order the choices are shown in (choiceOrder; "shuffle": false keeps the
+  /// file's order, for choices that are a scale). Element k: the file index shown k-th.
+  std::vector<int> shownOrder;
+  /// Choice with a ray_target check: each choice's "value", the name it stands for.
+  std::vector<std::string> choiceValues;
+
+  /// Choice: the place (0-based) the right answer is shown at.
+  int shownAnswer() const;
+};
+
+/**
+ * \brief A value the student changes in a "change a value and predict" step: a number at a
+ * place of the scene file (as `--set PLACE=VALUE` and SceneEdit's setValue name it), set to
+ * `value` by the task, anywhere in [min, max] by the student in the window.
+ */
+struct LessonTryValue {
+  std::string place;   ///< JSON pointer into the scene file ("/materials/2/ior"), names resolved.
+  LocalText label;     ///< What the value is, for the spin box and the handout.
+  double value = 0.0;  ///< The value the task asks to set.
+  double original = 0.0;        ///< The value in the step's scene.
+  double min = 0.0, max = 1.0;  ///< The range the window's spin box allows.
+  double step = 0.1;            ///< The spin box's step.
+  int decimals = 2;             ///< Decimals the spin box shows.
+  std::string sceneFile;        ///< The scene's file (messages; meshes are found beside it).
+  /// The step's scene with `value` set: what the step's question is about and its check is
+  /// computed on.
+  std::shared_ptr<const Scene> triedScene;
+
+  /// The step scene `scene` with the value at `place` set to `v` (SceneEdit::setValue);
+  /// throws SceneIO::LoadError when the scene refuses it.
+  Scene with(const Scene& scene, double v) const;
 };
 
 /// One step of a lesson: what to show, what to read, what to ask.
@@ -191,7 +236,11 @@ struct LessonStep {
   /// The step's scene changes as written (compact JSON, one per change), for captions.
   std::vector<std::string> sceneChanges;
   std::optional<LessonQuestion> question;
+  /// "try_value": the value the student changes in a "change a value and predict" step.
+  std::optional<LessonTryValue> tryValue;
   LocalText teacherNotes;          ///< Optional; empty when absent.
+  double minutes = 0.0;            ///< "minutes": class time planned for the step (0: none).
+  bool recap = false;              ///< "recap": the lesson's closing summary.
   std::vector<std::string> needs;  ///< "requires": features the step needs that RayLab lacks.
   /// The step's scene: the lesson's scene with this step's changes applied (shared with
   /// the lesson when the step changes nothing). Never null in a loaded lesson.
@@ -219,7 +268,11 @@ struct Lesson {
   std::string scenePath;  ///< The scene file: "scene" joined to the lesson file's folder.
   std::shared_ptr<const Scene> scene;  ///< The scene as loaded, before any step's changes.
   std::vector<LessonStep> steps;
+  std::vector<LocalText> objectives;      ///< "objectives": what a student can do after it.
+  std::vector<LocalText> misconceptions;  ///< "misconceptions": what to watch for in class.
 
+  /// Class time planned: the sum of the steps' minutes.
+  double minutes() const;
   /// The scene of step `index` (0-based) with its changes applied.
   const Scene& sceneOfStep(std::size_t index) const { return *steps.at(index).scene; }
   /// Number of steps with a question.
@@ -234,6 +287,14 @@ struct Lesson {
 /// object is not a mesh, its ray is not in the tree or hits nothing, the tree reached its
 /// budget).
 double computeCheck(const LessonStep& step, const LessonCheck& check);
+/// What ray `check.ray` of the check's tree reaches, by name: a shadow ray that reached its
+/// light, that light's name; a ray ending on a surface (a shadow ray blocked), that
+/// object's name; a ray that escaped, "nothing". Throws Exception as computeCheck.
+std::string computeTarget(const LessonStep& step, const LessonCheck& check);
+/// The problem with the stated answer of `step`'s question against what the program
+/// computes (its check), e.g. "tree_rays: the answer is 4 but the program computes 3";
+/// nothing when it matches or the question has no check. Throws Exception as computeCheck.
+std::optional<std::string> answerProblem(const LessonStep& step);
 
 /**
  * \brief Reads lesson files: versioned JSON naming a scene in lessons/scenes/ and a list
@@ -247,6 +308,8 @@ double computeCheck(const LessonStep& step, const LessonCheck& check);
  *       "title":   {"en": "Whitted ray tracing", "zh": "Whitted 光线追踪"},
  *       "summary": {"en": "...", "zh": "..."},
  *       "scene": "scenes/whitted.json",
+ *       "objectives": [{"en": "Compute refraction with Snell's law.", "zh": "..."}],
+ *       "misconceptions": [{"en": "\"Glass casts no shadow.\" ...", "zh": "..."}],
  *       "defaults": {"view": "scene", "algorithm": "whitted", "pixel": [160, 120]},
  *       "steps": [
  *         {"title": {"en": "Snell's law", "zh": "斯涅尔定律"},
@@ -264,8 +327,14 @@ double computeCheck(const LessonStep& step, const LessonCheck& check);
  *                       "check": {"quantity": "tree_rays", "algorithm": "whitted",
  *                                 "pixel": [120, 96]},
  *                       "explanation": {"en": "...", "zh": "..."}},
- *          "teacher_notes": {"en": "...", "zh": "..."},
- *          "requires": "schlick-fresnel"}
+ *          "teacher_notes": {"en": "...", "zh": "..."}, "minutes": 3,
+ *          "requires": "schlick-fresnel"},
+ *         {"title": ..., "text": ..., "view": "scene", "pixel": [99, 120],
+ *          "try_value": {"place": "/render/max_depth", "label": {"en": "maximum depth",
+ *                        "zh": "最大深度"}, "value": 2, "min": 0, "max": 10, "step": 1},
+ *          "question": {"type": "number", "predict": true, "prompt": ..., "answer": 9,
+ *                       "check": {"quantity": "tree_rays"}, "explanation": ...}},
+ *         {"title": ..., "text": ..., "recap": true, "minutes": 3, ...}
  *       ]
  *     }
  *
@@ -317,12 +386,30 @@ double computeCheck(const LessonStep& step, const LessonCheck& check);
  *   "set" is a JSON merge patch (RFC 7386): nested objects merge, null removes a key.
  * - question: "type" choice (choices [{en, zh}, ...], "answer" = index) or number
  *   ("answer", "tolerance" >= 0, optional "check"); "prompt" and "explanation" {en, zh}.
+ *   "predict": true asks it before the step shows its tree, image or tried value (the
+ *   step needs a pixel or a ray, an image view or a try_value); the window shows them once
+ *   the answer is final (right, the second try, or "Show answer"). A choice question's
+ *   choices are shown in choiceOrder's order ("shuffle": false: the file's order); it may
+ *   have a check of quantity "ray_target" ({"ray": n}, "algorithm", "pixel", "sample"), and
+ *   then every choice names the object, the light or "nothing" it stands for in "value"
+ *   ({"en", "zh", "value"}); the keyed choice's value must be what ray n reaches.
  *   check: {"quantity": tree_rays | tree_depth | estimate_luminance | pixel_luminance |
  *   ray_length | camera_rays | bvh_nodes | bvh_boxes_entered | bvh_triangle_tests,
  *   "algorithm", "pixel", "sample" (default: the step's), "kind", "end" (tree_rays:
  *   escaped, hit_light, max_depth, russian_roulette, absorbed, occluded, reached_light,
  *   spawned), "ray" (ray_length), "spp" (pixel_luminance), "object" (bvh_*: a mesh
  *   object's name; default the step's bvh object, else the first mesh)}.
+ * - try_value (a "change a value and predict" step; no scene_changes on the same step, so
+ *   that the handout's command line shows the same): {"place": a JSON pointer into the
+ *   scene file, whose "materials", "objects" and "point_lights" entries may be named
+ *   ("/materials/glass/ior") and must hold a number; "label" {en, zh}; "value": the value
+ *   the task asks for, in ["min", "max"]; "step" > 0 (default (max - min) / 100)}. The
+ *   scene with the value set is checked by SceneIO's rules; the step's question and its
+ *   check are about it.
+ * - The teacher's kit: lesson keys "objectives" and "misconceptions" (non-empty lists of
+ *   {en, zh}); step keys "minutes" (in (0, 60]), "teacher_notes" {en, zh} and "recap": true
+ *   (the closing summary). `raylab lesson --out DIR --student` leaves out every answer,
+ *   explanation, note, the plan and the misconceptions.
  * - Unknown keys are errors everywhere (a misspelt key would otherwise be ignored).
  *
  * Every error throws LoadError naming the file, the step (1-based number and English
