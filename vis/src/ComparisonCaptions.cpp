@@ -120,9 +120,10 @@ std::string referencePhrase(const ComparisonResult& result, Language language) {
 
 std::string headerLine(const ComparisonResult& result, Language language) {
   std::ostringstream out;
-  out << (result.sceneName.empty() ? std::string(chinese(language) ? "场景" : "scene")
-                                   : result.sceneName)
-      << "  " << result.width << "x" << result.height << "  |  " << budgetPhrase(result, language);
+  const std::string& name =
+      chinese(language) && !result.sceneNameZh.empty() ? result.sceneNameZh : result.sceneName;
+  out << (name.empty() ? std::string(chinese(language) ? "场景" : "scene") : name) << "  "
+      << result.width << "x" << result.height << "  |  " << budgetPhrase(result, language);
   if (chinese(language))
     out << "  |  误差：与参考图像（" << referencePhrase(result, language) << "）的均方根误差";
   else
