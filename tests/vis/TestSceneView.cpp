@@ -272,10 +272,15 @@ TEST(SceneView, 10_CloseUpOnRayLooksSquareAtTheBend) {
   EXPECT_NEAR(glm::length(view.focalPoint - in.endPoint), 0.0, 1e-12);
   EXPECT_NEAR(glm::dot(view.direction(), in.direction), 0.0, 1e-9);
   EXPECT_NEAR(glm::dot(view.direction(), out.direction), 0.0, 1e-9);
-  EXPECT_GT(glm::dot(view.eye - view.focalPoint, scene.camera.position - view.focalPoint), 0.0);
-  // Close: nearer the hit than the scene camera is, and the camera ray's own close-up (its
-  // hit, the plane of it and its first child) looks at the same point.
-  EXPECT_LT(glm::length(view.eye - in.endPoint), glm::length(scene.camera.position - in.endPoint));
+  // From the side the scene camera looks from (the camera itself lies in the plane).
+  EXPECT_NEAR(glm::dot(view.direction(), scene.camera.position - in.endPoint), 0.0, 1e-9);
+  EXPECT_GT(glm::dot(view.eye - view.focalPoint, scene.camera.position - scene.camera.lookAt), 0.0);
+  // Close: the sphere around the object's bounds fills 80% of the picture's height, and the
+  // camera ray's own close-up (its hit, the plane of it and its first child) looks at the
+  // same point.
+  const double radius =
+      0.5 * glm::length(scene.objects[std::size_t(in.object)].shape->bounds().extent());
+  EXPECT_NEAR(glm::length(view.eye - in.endPoint) * std::sin(0.8 * radians(15.0)), radius, 1e-9);
   EXPECT_NEAR(glm::length(closeUpOnRay(scene, tree, 0, 1.0).focalPoint - in.endPoint), 0.0, 1e-12);
   // No hit to look at: the default view.
   EXPECT_EQ(closeUpOnRay(scene, tree, 999, 1.0).eye, defaultViewCamera(scene, 1.0).eye);

@@ -259,7 +259,9 @@ ViewCamera closeUpOnRay(const Scene& scene, const RayTree& tree, int id, double 
   if (!(glm::length(across) > 1e-9)) across = glm::cross(in->direction, scene.camera.up);
   if (!(glm::length(across) > 1e-9)) return closeUpView(scene, in->object, aspect);
   across = glm::normalize(across);
-  if (glm::dot(across, scene.camera.position - point) < 0.0) across = -across;
+  // From the side the scene camera looks from (its own rays lie in the plane, so its
+  // position cannot choose).
+  if (glm::dot(across, scene.camera.position - scene.camera.lookAt) < 0.0) across = -across;
   // Up: the world's up, square to the view; the incoming ray where they are parallel.
   Vec3 up = scene.camera.up - glm::dot(scene.camera.up, across) * across;
   if (!(glm::length(up) > 1e-9)) up = in->direction;
