@@ -374,7 +374,11 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int ma
   }
   Renderer renderer(scene, settings);
   const FloatImage image = renderer.render();
-  result.image = vis::enlargedToFit(imageio::toSrgb(image), cap.first, cap.second);
+  result.image = imageio::toSrgb(image);
+  // A tiny render (a quarter of the picture or less: lesson 5's stair steps at 80x60) is
+  // shown enlarged, each pixel a block; a merely smaller one (lesson 8's, to save time) not.
+  if (4 * result.image.width <= cap.first && 4 * result.image.height <= cap.second)
+    result.image = vis::enlargedToFit(result.image, cap.first, cap.second);
   // How the meshes were searched, and how fast (lesson 8 measures it live).
   const bool meshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const auto& o) {
     return o.shape->kind() == ShapeKind::TriangleMesh;
