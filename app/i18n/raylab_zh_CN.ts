@@ -609,6 +609,14 @@
         <source>degrees</source>
         <translation>角度（度）</translation>
     </message>
+    <message>
+        <source>display name</source>
+        <translation>显示名称</translation>
+    </message>
+    <message>
+        <source>zh</source>
+        <translation>中文</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>

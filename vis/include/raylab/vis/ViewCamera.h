@@ -86,9 +86,10 @@ ViewCamera closeUpView(const Scene& scene, int index, double aspect);
  * (for the camera ray, its own hit), looked at square to the plane of the incoming ray and
  * the outgoing one (for a camera ray, its first child; without one, the normal), so both
  * rays and the normal there lie in the picture and their angles can be read (Snell's law,
- * total internal reflection). Seen from the scene camera's side of that plane; the sphere
- * around the object hit there fills about 80% of the picture. Without such a hit (an
- * escaped camera ray, an id out of range), the default view.
+ * total internal reflection). Seen from the side of that plane the scene camera looks from
+ * (its own rays lie in the plane); the sphere around the object hit there fills about 80% of
+ * the picture. Without such a hit (an escaped camera ray, an id out of range), the default
+ * view.
  */
 ViewCamera closeUpOnRay(const Scene& scene, const RayTree& tree, int id, double aspect);
 
