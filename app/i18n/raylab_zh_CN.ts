@@ -673,6 +673,14 @@
         <source>priority</source>
         <translation>优先级</translation>
     </message>
+    <message>
+        <source>display name</source>
+        <translation>显示名称</translation>
+    </message>
+    <message>
+        <source>zh</source>
+        <translation>中文</translation>
+    </message>
 </context>
 <context>
     <name>SceneValues</name>

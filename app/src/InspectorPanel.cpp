@@ -1,6 +1,7 @@
 #include "InspectorPanel.h"
 
 #include "InspectorWords.h"
+#include "Language.h"
 #include "UiWords.h"
 
 #include "raylab/core/RayInspector.h"
@@ -89,8 +90,9 @@ void InspectorPanel::showSegment(int id) {
     return;
   }
   const bool exact = m_exact->isChecked();
-  const RayInspection inspection =
-      RayInspector::inspect(m_view.scene(), m_view.rayTree(), id, exact);
+  // The objects and materials by the names the reader sees (Chinese display names in zh).
+  const RayInspection inspection = RayInspector::inspect(
+      sceneAsShown(m_view.scene(), currentLanguage() == kChinese), m_view.rayTree(), id, exact);
   const QString values = inspectorText(
       inspection.rayText() + (exact ? "\n" + inspection.oracleText() : ""), m_view.rayTree(), id,
       objectNamesOf(m_view.scene()), pointLightNamesOf(m_view.scene()));

@@ -18,6 +18,7 @@
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/ConvergencePlot.h"
 #include "raylab/vis/Display.h"
+#include "raylab/vis/Image.h"
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/SceneView.h"
@@ -231,8 +232,13 @@ struct StepPicture : PictureWords {
 StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool inspector,
                          Language language) {
   const Scene& scene = *step.scene;
+  // The names the reader sees (Chinese display names in a zh handout), for words only.
+  const Scene shown = sceneAsShown(scene, language == Language::Chinese);
   vis::SceneView view(scene);
   StepPicture result;
+  const double aspect = double(size.first) / size.second;
+  const bool hitCloseUp = step.cameraView == LessonCameraView::CloseUp && !step.bvh;
+  std::optional<vis::ViewCamera> closeUp;
   if (step.traces()) {
     // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
     // together.
@@ -242,19 +248,21 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
                                          : step.trace().tree;
     vis::RayTreeStyle style = styleOf(step);
     style.language = language;
+    style.showNormals = hitCloseUp;
     view.setRayTree(tree, style);
+    if (hitCloseUp) closeUp = vis::closeUpOnRay(scene, tree, step.selectRay.value_or(0), aspect);
     if (const auto frame = revealOf(step, tree)) view.setReveal(*frame);
     const int id = inspector ? step.selectRay.value_or(0) : 0;
     if (inspector) {
       view.setSelectedSegment(id);
-      result.inspectorText = inspectorLines(scene, tree, id, language, step.exactness);
+      result.inspectorText = inspectorLines(shown, tree, id, language, step.exactness);
     }
     if (step.allHits) {
       const RaySegment& ray = tree.segments.at(std::size_t(id));
       const std::vector<SceneCrossing> crossings =
           sceneCrossings(scene, ray.origin, ray.direction, ray.time);
       view.setCrossings(crossings, ray.origin, ray.direction);
-      result.crossingsText = crossingsText(scene, crossings, language == Language::Chinese);
+      result.crossingsText = crossingsText(shown, crossings, language == Language::Chinese);
     }
   }
   // A mesh's BVH boxes (lesson 8), said in words under the picture.
@@ -262,11 +270,12 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
   bvh.language = language;
   if (bvh.shown()) {
     view.setBvh(bvh);
-    result.caption = vis::bvhCaption(scene, bvh, view.bvhSummary(), language,
+    result.caption = vis::bvhCaption(shown, bvh, view.bvhSummary(), language,
                                      step.pixelX.value_or(-1), step.pixelY.value_or(-1));
   }
-  const double aspect = double(size.first) / size.second;
-  if (step.cameraView == LessonCameraView::Camera)
+  if (closeUp)
+    view.setViewCamera(*closeUp);
+  else if (step.cameraView == LessonCameraView::Camera)
     view.setViewCamera(vis::behindCameraView(scene, aspect));
   else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
     view.setViewCamera(vis::closeUpView(scene, step.bvh->object, aspect));
@@ -277,10 +286,11 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool 
 }
 
 /// The samples view: the sampler's directions as a point cloud over the surface.
-StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size) {
+StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size, Language language) {
   vis::SceneView view(*step.scene);
   const LessonSamples samples = step.samples.value_or(LessonSamples{});
-  view.setSampleCloud(samples.directions(), samples.sampler == LessonSamples::Sampler::Sphere);
+  view.setSampleCloud(samples.directions(), samples.sampler == LessonSamples::Sampler::Sphere,
+                      vis::sampleAxisLabel(samples.sampler, language), language);
   StepPicture result;
   result.image = view.renderOffscreen(size.first, size.second);
   return result;
@@ -317,6 +327,10 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int ma
   Renderer renderer(scene, settings);
   const FloatImage image = renderer.render();
   result.image = imageio::toSrgb(image);
+  // A tiny render (a quarter of the picture or less: lesson 5's stair steps at 80x60) is
+  // shown enlarged, each pixel a block; a merely smaller one (lesson 8's, to save time) not.
+  if (4 * result.image.width <= cap.first && 4 * result.image.height <= cap.second)
+    result.image = vis::enlargedToFit(result.image, cap.first, cap.second);
   // How the meshes were searched, and how fast (lesson 8 measures it live).
   const bool meshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const auto& o) {
     return o.shape->kind() == ShapeKind::TriangleMesh;
@@ -415,7 +429,7 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
     case LessonView::Inspector:
       return scenePicture(step, picture, true, language);
     case LessonView::Samples:
-      return samplesPicture(step, picture);
+      return samplesPicture(step, picture, language);
     default:
       return scenePicture(step, picture, false, language);
   }

@@ -620,11 +620,21 @@ void MainWindow::tryLessonValue(double value) {
 
 void MainWindow::showLessonResult(const LessonStep& step) {
   RayTreePanel& rays = *m_rayPanel;
+  const Language lessonLanguage =
+      currentLanguage() == kChinese ? Language::Chinese : Language::English;
+  const bool hitCloseUp = step.cameraView == LessonCameraView::CloseUp && !step.bvh;
+  rays.normalsBox()->setChecked(hitCloseUp);
   if (step.traces()) {
     if (step.pixelX) rays.setPixel(*step.pixelX, *step.pixelY);
     rays.setRootRay(step.ray);  // after the pixel, which goes back to its own camera ray
     rays.setSample(step.sample);
     rays.trace();
+    if (hitCloseUp) {  // the hit where the selected ray bends, once it is traced
+      const int id = step.selectRay.value_or(0);
+      frameView([this, tree = rays.tree(), id](double aspect) {
+        return vis::closeUpOnRay(m_view->scene(), tree, id, aspect);
+      });
+    }
     const int perStep = rays.animation().framesPerStep;
     if (step.reveal.by == LessonReveal::By::Frame)
       rays.setFrame(step.reveal.value);
@@ -641,8 +651,9 @@ void MainWindow::showLessonResult(const LessonStep& step) {
 
   // A sampler's directions replace the scene in the 3D view (and leave with the step).
   if (step.view == LessonView::Samples && step.samples)
-    m_view->setSampleCloud(step.samples->directions(),
-                           step.samples->sampler == LessonSamples::Sampler::Sphere);
+    m_view->setSampleCloud(
+        step.samples->directions(), step.samples->sampler == LessonSamples::Sampler::Sphere,
+        vis::sampleAxisLabel(step.samples->sampler, lessonLanguage), lessonLanguage);
   else
     m_view->clearSampleCloud();
 
@@ -903,8 +914,10 @@ void MainWindow::fillObjectList() {
   {
     const QSignalBlocker block(m_objectList);
     m_objectList->clear();
+    const bool chinese = currentLanguage() == kChinese;
     for (const SceneObject& object : scene.objects) {
-      auto* item = new QListWidgetItem(QString::fromStdString(object.name), m_objectList);
+      auto* item =
+          new QListWidgetItem(QString::fromStdString(object.shownName(chinese)), m_objectList);
       item->setToolTip(forPeople(object.shape ? object.shape->toString() : ""));
     }
   }

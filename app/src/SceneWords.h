@@ -25,6 +25,7 @@ inline constexpr const char* kSceneKeyWords[] = {
     QT_TRANSLATE_NOOP("SceneKeys", "crease angle"),
     QT_TRANSLATE_NOOP("SceneKeys", "degrees"),
     QT_TRANSLATE_NOOP("SceneKeys", "diffuse"),
+    QT_TRANSLATE_NOOP("SceneKeys", "display name"),
     QT_TRANSLATE_NOOP("SceneKeys", "distribution"),
     QT_TRANSLATE_NOOP("SceneKeys", "emission"),
     QT_TRANSLATE_NOOP("SceneKeys", "exponent"),
@@ -82,6 +83,7 @@ inline constexpr const char* kSceneKeyWords[] = {
     QT_TRANSLATE_NOOP("SceneKeys", "vertices"),
     QT_TRANSLATE_NOOP("SceneKeys", "visible normals"),
     QT_TRANSLATE_NOOP("SceneKeys", "width"),
+    QT_TRANSLATE_NOOP("SceneKeys", "zh"),
 };
 
 /// Every value the panel offers in a list, for lupdate.

@@ -193,7 +193,8 @@ QString traceSummary(const PixelTrace& trace) {
 
 std::vector<std::string> objectNamesOf(const Scene& scene) {
   std::vector<std::string> names;
-  for (const SceneObject& object : scene.objects) names.push_back(object.name);
+  const bool chinese = currentLanguage() == kChinese;
+  for (const SceneObject& object : scene.objects) names.push_back(object.shownName(chinese));
   return names;
 }
 

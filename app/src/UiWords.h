@@ -48,7 +48,8 @@ QString traceSummary(const PixelTrace& trace);
 QString stepCaption(const PixelTrace& trace, const vis::AnimationSettings& settings, int frame,
                     const std::vector<std::string>& objectNames,
                     const std::vector<std::string>& pointLightNames = {});
-/// The names of the scene's objects and of its point lights, as narrateRay takes them.
+/// The names of the scene's objects and of its point lights, as narrateRay takes them: the
+/// objects' Chinese display names while the window speaks Chinese (SceneObject::shownName).
 std::vector<std::string> objectNamesOf(const Scene& scene);
 std::vector<std::string> pointLightNamesOf(const Scene& scene);
 

@@ -5,7 +5,8 @@
 #   -DLANG=<en|zh>         the handout's language
 # Holds when DIR has one step-NN.png per step (and no more) and DIR/lesson.md holds the
 # lesson's title, every step's title and the answers heading, in that language; for a
-# lesson with BVH steps also the captions of the BVH view and of the measured speed.
+# lesson with BVH steps also the captions of the BVH view and of the measured speed; a
+# Chinese handout names no object or material of the scene in English.
 foreach(var LESSON DIR LANG)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "CheckLessonHandout.cmake needs -D${var}=...")
@@ -67,6 +68,26 @@ if(LESSON MATCHES "06-path-tracing")
   else()
     list(APPEND expected "Rendered at 4 samples per pixel (capped by --max-spp); the step asks for 16")
   endif()
+endif()
+# A Chinese handout names the scene's objects and materials by their Chinese display names
+# ("display_name": {"zh": ...}), never by the English names the file uses.
+if(LANG STREQUAL "zh")
+  string(JSON scene_file GET "${json}" scene)
+  get_filename_component(lesson_dir "${LESSON}" DIRECTORY)
+  file(READ "${lesson_dir}/${scene_file}" scene_json)
+  foreach(list objects materials)
+    string(JSON n LENGTH "${scene_json}" ${list})
+    math(EXPR n "${n} - 1")
+    foreach(i RANGE ${n})
+      string(JSON name GET "${scene_json}" ${list} ${i} name)
+      foreach(quoted "“${name}”" "'${name}'")
+        string(FIND "${handout}" "${quoted}" at)
+        if(NOT at EQUAL -1)
+          message(FATAL_ERROR "${DIR}/lesson.md names ${quoted} in English, not by its display name")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
 endif()
 # The inspector's lines are in the handout's language ("Ray #3: ..." / "光线 #3：...").
 if(LANG STREQUAL "zh")

@@ -231,7 +231,8 @@ TEST_F(WindowLessonTest, 10_AChosenRayStepTracesItAndShowsTheOracle) {
   RayTreePanel& rays = *m_window->rayTreePanel();
   InspectorPanel& inspector = *m_window->inspectorPanel();
   const Lesson lesson = LessonIO::load(two.toStdString());
-  const int tangent = firstStep(lesson, [](const LessonStep& st) { return bool(st.ray); });
+  const int tangent =
+      firstStep(lesson, [](const LessonStep& st) { return st.ray && st.exactness; });
   const LessonStep& step = lesson.steps[std::size_t(tangent)];
   panel.showStep(tangent);
   settle();

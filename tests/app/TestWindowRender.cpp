@@ -18,6 +18,7 @@
 #include <QAbstractSpinBox>
 #include <QGroupBox>
 #include <QLabel>
+#include <QListWidget>
 #include <QProgressBar>
 #include <QRegularExpression>
 #include <QScrollArea>
@@ -352,6 +353,28 @@ TEST_F(WindowRenderTest, 09_TheChineseWindowHasNoEnglishSentenceLeft) {
   english.removeDuplicates();
   EXPECT_TRUE(english.isEmpty()) << "texts without a Chinese translation:\n  "
                                  << english.join(QStringLiteral("\n  ")).toStdString();
+  installLanguage(kEnglish);
+}
+
+TEST_F(WindowRenderTest, 09b_TheChineseWindowNamesObjectsByTheirChineseNames) {
+  // The object list and the inspector show the scene's Chinese display names.
+  ASSERT_TRUE(installLanguage(kChinese)) << "the translation (.qm) was not found";
+  const Scene scene = defaultScene();
+  MainWindow window(scene);
+  window.show();
+  QListWidget* list = window.objectList();
+  ASSERT_EQ(list->count(), int(scene.objects.size()));
+  for (int i = 0; i < list->count(); ++i)
+    EXPECT_EQ(list->item(i)->text().toStdString(), scene.objects[std::size_t(i)].nameZh);
+  EXPECT_EQ(list->item(scene.findObject("red sphere"))->text(), QStringLiteral("红色球体"));
+  window.rayTreePanel()->setPixel(95, 95);  // the red sphere
+  window.rayTreePanel()->trace();
+  settle();
+  window.rayTreePanel()->selectSegment(0);
+  const QString text = window.inspectorPanel()->text();
+  EXPECT_TRUE(text.contains(QStringLiteral("红色球体"))) << text.toStdString();
+  EXPECT_TRUE(text.contains(QStringLiteral("红色半反半透"))) << text.toStdString();
+  EXPECT_FALSE(text.contains(QStringLiteral("red sphere"))) << text.toStdString();
   installLanguage(kEnglish);
 }
 

@@ -456,9 +456,9 @@ TEST(Lesson, 06_EveryShippedLessonLoads) {
     Lesson lesson;
     ASSERT_NO_THROW(lesson = LessonIO::load(file));
     // Issue 12: each lesson has 8 to 15 steps and at least 3 questions; issue 32 adds a
-    // "change a value" step and a recap to each.
+    // "change a value" step and a recap to each, and to lesson 6 MIS on and off.
     EXPECT_GE(lesson.steps.size(), 8u);
-    EXPECT_LE(lesson.steps.size(), 17u);
+    EXPECT_LE(lesson.steps.size(), 18u);
     EXPECT_GE(lesson.questionCount(), 3);
     // The id is the file's name, so lists and files agree.
     EXPECT_EQ(lesson.id, fs::path(file).stem().string());
@@ -608,6 +608,55 @@ TEST(Lesson, 11_BundleAndAllHitsNeedAPixel) {
   l["steps"][1].erase("reveal");
   l["steps"][1]["bundle"] = 4;
   EXPECT_THAT(loadError(l), HasSubstr("at /steps/1/bundle: bundle needs a pixel"));
+}
+
+// "close_up" without a BVH mesh looks at the hit of the step's traced ray (lesson 4's
+// refraction and total internal reflection), so it needs a pixel or a chosen ray.
+TEST(Lesson, 11b_CloseUpNeedsABvhMeshOrATracedRay) {
+  json l = baseLesson();
+  l["steps"][1]["camera_view"] = "close_up";
+  const Lesson lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  EXPECT_EQ(lesson.steps[1].cameraView, LessonCameraView::CloseUp);
+  EXPECT_FALSE(lesson.steps[1].bvh);
+
+  l["defaults"].erase("pixel");
+  l["steps"][1].erase("select_ray");
+  l["steps"][1].erase("reveal");
+  EXPECT_THAT(loadError(l), HasSubstr("at /steps/1/camera_view: the close_up view looks at the "
+                                      "step's BVH mesh or at the hit of its traced ray: it needs "
+                                      "a \"bvh\" block, a \"pixel\" or a \"ray\""));
+  l["steps"][1]["ray"] = {{"origin", {0, 1, 5}}, {"direction", {0, 0, -1}}};
+  EXPECT_EQ(LessonIO::parse(l.dump(), fixtureOrigin()).steps[1].cameraView,
+            LessonCameraView::CloseUp);
+}
+
+// A step may name a scene file of its own (lesson 6's glossy plates under four lights): its
+// scene changes edit that scene, and the steps after it go back to the lesson's scene.
+TEST(Lesson, 11c_AStepMayShowAnotherScene) {
+  const std::string dir = fixtureDir();
+  std::ofstream(dir + "/other.json") << R"({
+    "raylab_scene": 2, "name": "other",
+    "materials": [{"name": "white"}, {"name": "lamp", "emission": [5, 5, 5]}],
+    "objects": [{"name": "plate", "material": "white",
+                 "shape": {"type": "quad", "corner": [-1, 0, 1], "u": [2, 0, 0], "v": [0, 0, -2]}},
+                {"name": "bulb", "material": "lamp",
+                 "shape": {"type": "sphere", "centre": [0, 2, 0], "radius": 0.5}}],
+    "camera": {"position": [0, 1, 4], "look_at": [0, 0, 0], "width": 320, "height": 200}})";
+  json l = baseLesson();
+  l["steps"][0]["scene"] = "other.json";
+  l["steps"][0]["scene_changes"] = {{{"render", {{"multiple_importance", false}}}}};
+  const Lesson lesson = LessonIO::parse(l.dump(), fixtureOrigin());
+  EXPECT_EQ(lesson.steps[0].scene->name, "other");
+  EXPECT_EQ(lesson.steps[0].scene->camera.height, 200);
+  EXPECT_FALSE(lesson.steps[0].settings().multipleImportance);
+  EXPECT_EQ(lesson.steps[1].scene->name, "lesson test");
+  EXPECT_EQ(lesson.scene->name, "lesson test");
+
+  l["steps"][0]["scene"] = "missing.json";
+  EXPECT_THAT(loadError(l), HasSubstr("at /steps/0/scene: scene file \"missing.json\" not found"));
+  l["steps"][0]["scene"] = "other.json";
+  l["steps"][0]["scene_changes"] = {{{"object", "ball"}, {"remove", true}}};  // not in other.json
+  EXPECT_THAT(loadError(l), HasSubstr("at /steps/0/scene_changes/0"));
 }
 
 // A chosen "ray" is traced in place of the pixel's camera ray: the tree's root is that

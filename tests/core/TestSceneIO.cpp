@@ -873,5 +873,78 @@ TEST(ShippedScenes, 04_NearClipShapeRoundTripsAndBadShapesAreRefused) {
   }
 }
 
+TEST(ShippedScenes, 05_ChineseDisplayNamesLoadSaveAndAreChecked) {
+  const std::string file = R"({
+  "raylab_scene": 2, "name": "Glass", "display_name": {"zh": "玻璃"},
+  "materials": [{"name": "glass", "display_name": {"zh": "玻璃"}, "type": "dielectric"},
+                {"name": "wall"}],
+  "objects": [{"name": "glass ball", "display_name": {"zh": "玻璃球"}, "material": "glass",
+               "shape": {"type": "sphere", "centre": [0, 0, 0], "radius": 1}},
+              {"name": "floor", "material": "wall",
+               "shape": {"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0]}}]})";
+  const Scene s = SceneIO::parse(file, "names.json");
+  EXPECT_EQ(s.nameZh, "玻璃");
+  EXPECT_EQ(s.materials[0].nameZh, "玻璃");
+  EXPECT_EQ(s.objects[0].nameZh, "玻璃球");
+  // Shown in Chinese where there is one, the English name elsewhere; the name stays.
+  EXPECT_EQ(s.objects[0].shownName(true), "玻璃球");
+  EXPECT_EQ(s.objects[0].shownName(false), "glass ball");
+  EXPECT_EQ(s.objects[1].shownName(true), "floor");
+  EXPECT_EQ(s.findObject("glass ball"), 0);
+  const Scene shown = sceneAsShown(s, true);
+  EXPECT_EQ(shown.name, "玻璃");
+  EXPECT_EQ(shown.objects[0].name, "玻璃球");
+  EXPECT_EQ(shown.materials[0].name, "玻璃");
+  EXPECT_EQ(shown.objects[1].name, "floor");
+  EXPECT_EQ(sceneAsShown(s, false).objects[0].name, "glass ball");
+  // Saved and read again (a copied object keeps it too).
+  const std::string text = SceneIO::serialize(s);
+  EXPECT_THAT(text, HasSubstr("\"zh\": \"玻璃球\""));
+  const Scene back = SceneIO::parse(text, "again.json");
+  EXPECT_EQ(back.nameZh, "玻璃");
+  EXPECT_EQ(back.materials[0].nameZh, "玻璃");
+  EXPECT_EQ(SceneObject(back.objects[0]).nameZh, "玻璃球");
+  EXPECT_EQ(SceneIO::serialize(back), text);
+  // Every shipped scene names all its objects and materials in Chinese.
+  for (const auto& path : shippedScenes()) {
+    SCOPED_TRACE(path.string());
+    const Scene shipped = SceneIO::load(path.string());
+    EXPECT_FALSE(shipped.nameZh.empty());
+    for (const Material& m : shipped.materials) EXPECT_FALSE(m.nameZh.empty()) << m.name;
+    for (const SceneObject& o : shipped.objects) EXPECT_FALSE(o.nameZh.empty()) << o.name;
+  }
+  // A bad display name: the file, the place and the problem.
+  const auto objectWith = [](const std::string& displayName) {
+    return R"({"raylab_scene": 2, "materials": [{"name": "m"}], "objects": [{"name": "b",
+        "display_name": )" +
+           displayName + R"(, "material": "m",
+        "shape": {"type": "sphere", "centre": [0, 0, 0], "radius": 1}}]})";
+  };
+  const ErrorCase cases[] = {
+      {"not an object", objectWith(R"("玻璃球")"),
+       "/objects/0/display_name: expected the names in other languages"},
+      {"unknown language", objectWith(R"({"zh": "玻璃球", "fr": "boule"})"),
+       "/objects/0/display_name"},
+      {"no zh", objectWith("{}"), "/objects/0/display_name"},
+      {"not Chinese", objectWith(R"({"zh": "glass ball"})"),
+       "/objects/0/display_name/zh: \"glass ball\" has no Chinese character"},
+      {"not a string", objectWith(R"({"zh": 3})"), "/objects/0/display_name/zh"},
+      {"on a material",
+       R"({"raylab_scene": 2, "materials": [{"name": "m", "display_name": {"zh": ""}}],
+           "objects": []})",
+       "/materials/0/display_name/zh: \"\" has no Chinese character"},
+  };
+  for (const ErrorCase& c : cases) {
+    SCOPED_TRACE(c.name);
+    try {
+      SceneIO::parse(c.text, "names.json");
+      FAIL() << "accepted";
+    } catch (const SceneIO::LoadError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("names.json"));
+      EXPECT_THAT(e.what(), HasSubstr(c.expected));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace raylab

@@ -156,5 +156,23 @@ TEST(ViewCamera, 06_ProjectionPutsTheFocalPointInTheMiddle) {
   EXPECT_FALSE(projectToImage(view, {0.0, 0.0, 11.0}, 300, 200).has_value());
 }
 
+// A small render enlarged for a handout: each pixel a k x k block, k the largest whole
+// factor that fits; a picture that does not fit twice stays as it is.
+TEST(SrgbImage, 07_EnlargedToFitShowsEachPixelAsABlock) {
+  SrgbImage small(80, 60);
+  small.set(0, 0, {255, 0, 0});
+  small.set(79, 59, {0, 0, 255});
+  const SrgbImage big = enlargedToFit(small, 320, 240);
+  ASSERT_EQ(big.width, 320);
+  ASSERT_EQ(big.height, 240);
+  EXPECT_EQ(big.at(3, 3), (Rgb8{255, 0, 0}));
+  EXPECT_EQ(big.at(4, 0), (Rgb8{0, 0, 0}));
+  EXPECT_EQ(big.at(316, 236), (Rgb8{0, 0, 255}));
+  EXPECT_EQ(big.at(315, 235), (Rgb8{0, 0, 0}));
+  EXPECT_EQ(enlargedToFit(small, 300, 400).width, 240);  // factor 3: 300 / 80
+  EXPECT_EQ(enlargedToFit(small, 159, 240).rgb, small.rgb);
+  EXPECT_TRUE(enlargedToFit(SrgbImage(), 320, 240).empty());
+}
+
 }  // namespace
 }  // namespace raylab::vis

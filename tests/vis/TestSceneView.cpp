@@ -4,6 +4,7 @@
 #include "ImageChecks.h"
 
 #include "raylab/core/Lesson.h"
+#include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Sphere.h"
@@ -251,6 +252,57 @@ TEST(SceneView, 09_CrossingsMarkEnteringAndLeaving) {
   view.clearCrossings();
   EXPECT_EQ(view.crossingCount(), 0);
   EXPECT_EQ(view.renderOffscreen(kSize, kSize).rgb, before.rgb);
+}
+
+// The close-up a lesson puts on a bend (lesson 4's refraction): it looks at the hit where
+// the refracted ray starts, square to the plane of the incoming and the refracted ray, so
+// both (and the normal) lie in the picture, and the object hit fills most of it.
+TEST(SceneView, 10_CloseUpOnRayLooksSquareAtTheBend) {
+  const Scene scene = defaultScene();
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Whitted;
+  const RayTree tree = tracePixel(scene, settings, 95, 95, 0).tree;  // the red sphere
+  int refracted = -1;
+  for (const RaySegment& s : tree.segments)
+    if (s.kind == RayKind::Refraction && s.parent == 0) refracted = s.id;
+  ASSERT_GE(refracted, 0);
+  const RaySegment& in = tree.segments[0];
+  const RaySegment& out = tree.segments[std::size_t(refracted)];
+  const ViewCamera view = closeUpOnRay(scene, tree, refracted, 4.0 / 3.0);
+  EXPECT_NEAR(glm::length(view.focalPoint - in.endPoint), 0.0, 1e-12);
+  EXPECT_NEAR(glm::dot(view.direction(), in.direction), 0.0, 1e-9);
+  EXPECT_NEAR(glm::dot(view.direction(), out.direction), 0.0, 1e-9);
+  // From the side the scene camera looks from (the camera itself lies in the plane).
+  EXPECT_NEAR(glm::dot(view.direction(), scene.camera.position - in.endPoint), 0.0, 1e-9);
+  EXPECT_GT(glm::dot(view.eye - view.focalPoint, scene.camera.position - scene.camera.lookAt), 0.0);
+  // Close: the sphere around the object's bounds fills 80% of the picture's height, and the
+  // camera ray's own close-up (its hit, the plane of it and its first child) looks at the
+  // same point.
+  const double radius =
+      0.5 * glm::length(scene.objects[std::size_t(in.object)].shape->bounds().extent());
+  EXPECT_NEAR(glm::length(view.eye - in.endPoint) * std::sin(0.8 * radians(15.0)), radius, 1e-9);
+  EXPECT_NEAR(glm::length(closeUpOnRay(scene, tree, 0, 1.0).focalPoint - in.endPoint), 0.0, 1e-12);
+  // No hit to look at: the default view.
+  EXPECT_EQ(closeUpOnRay(scene, tree, 999, 1.0).eye, defaultViewCamera(scene, 1.0).eye);
+}
+
+// The sample cloud's axis is named: the normal, or for the Phong lobe the mirror direction.
+TEST(SceneView, 11_SampleCloudNamesItsAxis) {
+  EXPECT_EQ(sampleAxisLabel(LessonSamples::Sampler::Cosine, Language::English), "normal");
+  EXPECT_EQ(sampleAxisLabel(LessonSamples::Sampler::Phong, Language::English), "mirror direction");
+  EXPECT_EQ(sampleAxisLabel(LessonSamples::Sampler::Phong, Language::Chinese), "镜面反射方向");
+  EXPECT_EQ(sampleAxisLabel(LessonSamples::Sampler::Uniform, Language::Chinese), "法线");
+  SceneView view(defaultScene());
+  LessonSamples samples;
+  view.setSampleCloud(samples.directions());
+  const SrgbImage bare = view.renderOffscreen(kSize, kSize);
+  view.setSampleCloud(samples.directions(), false, "mirror direction");
+  const SrgbImage named = view.renderOffscreen(kSize, kSize);
+  // The words are drawn in the arrow's yellow, above the dome.
+  int more = 0;
+  for (int y = 0; y < kSize / 2; ++y)
+    for (int x = 0; x < kSize; ++x) more += isYellow(named.at(x, y)) && !isYellow(bare.at(x, y));
+  EXPECT_GT(more, 20);
 }
 
 TEST(SceneView, 07_MatchesBaseline) {

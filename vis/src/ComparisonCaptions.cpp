@@ -66,9 +66,11 @@ std::string referencePhrase(const ComparisonResult& result, Language language) {
 
 std::string headerLine(const ComparisonResult& result, Language language) {
   std::ostringstream out;
-  out << (result.sceneName.empty() ? phrase("compare.scene_unnamed", language) : result.sceneName)
-      << "  " << result.width << "x" << result.height << "  |  " << budgetPhrase(result, language)
-      << "  |  "
+  const std::string& name = language == Language::Chinese && !result.sceneNameZh.empty()
+                                ? result.sceneNameZh
+                                : result.sceneName;
+  out << (name.empty() ? phrase("compare.scene_unnamed", language) : name) << "  " << result.width
+      << "x" << result.height << "  |  " << budgetPhrase(result, language) << "  |  "
       << phrase("compare.header.error", language,
                 {{"reference", referencePhrase(result, language)}});
   return out.str();

@@ -197,7 +197,9 @@ void ConvergencePlot::build() {
     left->SetUnscaledRange(yMin / 1.5, yMax * 1.5);
   }
   std::string title = zh ? "收敛曲线" : "Convergence";
-  if (!m_result.sceneName.empty()) title += (zh ? "：" : ": ") + m_result.sceneName;
+  const std::string& name =
+      zh && !m_result.sceneNameZh.empty() ? m_result.sceneNameZh : m_result.sceneName;
+  if (!name.empty()) title += (zh ? "：" : ": ") + name;
   title += (zh ? "（" : " (") + std::to_string(m_result.width) + "x" +
            std::to_string(m_result.height) + (zh ? "，" : ", ") +
            (m_result.compare.equalTime() ? (zh ? "等时间" : "equal time")

@@ -67,4 +67,14 @@ SrgbImage detail::grabWindow(vtkRenderWindow* window, int width, int height) {
   return image;
 }
 
+SrgbImage enlargedToFit(const SrgbImage& image, int maxWidth, int maxHeight) {
+  if (image.empty()) return image;
+  const int k = std::max(1, std::min(maxWidth / image.width, maxHeight / image.height));
+  if (k == 1) return image;
+  SrgbImage big(image.width * k, image.height * k);
+  for (int y = 0; y < big.height; ++y)
+    for (int x = 0; x < big.width; ++x) big.set(x, y, image.at(x / k, y / k));
+  return big;
+}
+
 }  // namespace raylab::vis

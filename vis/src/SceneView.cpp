@@ -345,8 +345,9 @@ void SceneView::seeThroughCrossed() {
 
 int SceneView::crossingCount() const { return m_impl->crossingCount; }
 
-void SceneView::setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere) {
-  m_impl->cloud = sampleCloudProps(directions, fullSphere);
+void SceneView::setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere,
+                               const std::string& axisLabel, Language language) {
+  m_impl->cloud = sampleCloudProps(directions, fullSphere, axisLabel, language);
   showOnlyCloud();
 }
 
@@ -359,6 +360,12 @@ void SceneView::clearSampleCloud() {
 }
 
 bool SceneView::showsSampleCloud() const { return !m_impl->cloud.empty(); }
+
+std::string sampleAxisLabel(LessonSamples::Sampler sampler, Language language) {
+  const bool zh = language == Language::Chinese;
+  if (sampler == LessonSamples::Sampler::Phong) return zh ? "镜面反射方向" : "mirror direction";
+  return zh ? "法线" : "normal";
+}
 
 void SceneView::setCaption(const std::string& text, Language language) {
   if (m_impl->caption) m_impl->renderer->RemoveViewProp(m_impl->caption);

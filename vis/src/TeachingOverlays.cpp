@@ -1,7 +1,10 @@
 #include "TeachingOverlays.h"
 
+#include "TextFonts.h"
+
 #include <vtkActor.h>
 #include <vtkArrowSource.h>
+#include <vtkBillboardTextActor3D.h>
 #include <vtkCellArray.h>
 #include <vtkDiskSource.h>
 #include <vtkLineSource.h>
@@ -11,6 +14,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkSphereSource.h>
+#include <vtkTextProperty.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 
@@ -70,7 +74,9 @@ std::vector<vtkSmartPointer<vtkProp>> crossingProps(const std::vector<SceneCross
 }
 
 std::vector<vtkSmartPointer<vtkProp>> sampleCloudProps(const std::vector<Vec3>& directions,
-                                                       bool fullSphere) {
+                                                       bool fullSphere,
+                                                       const std::string& axisLabel,
+                                                       Language language) {
   std::vector<vtkSmartPointer<vtkProp>> props;
 
   // The surface: a grey disk in the z = 0 plane, seen from above at an angle.
@@ -114,6 +120,19 @@ std::vector<vtkSmartPointer<vtkProp>> sampleCloudProps(const std::vector<Vec3>& 
   turned->Update();
   constexpr double kNormal[3] = {0.95, 0.85, 0.2};
   props.push_back(actorOf(turned->GetOutput(), kNormal));
+  // Its name at the tip: the normal, or the mirror direction a Phong lobe is drawn about.
+  if (!axisLabel.empty()) {
+    auto label = vtkSmartPointer<vtkBillboardTextActor3D>::New();
+    label->SetInput(axisLabel.c_str());
+    label->SetPosition(0.06, 0.0, 1.32);
+    vtkTextProperty* text = label->GetTextProperty();
+    useFontFor(text, language);
+    text->SetFontSize(22);
+    text->SetColor(kNormal[0], kNormal[1], kNormal[2]);
+    text->SetJustificationToLeft();
+    text->SetVerticalJustificationToBottom();
+    props.push_back(label);
+  }
 
   // The directions: one point each on the unit sphere.
   vtkNew<vtkPoints> points;

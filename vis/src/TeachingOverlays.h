@@ -1,11 +1,13 @@
 #pragma once
 
+#include "raylab/core/Lesson.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Types.h"
 
 #include <vtkProp.h>
 #include <vtkSmartPointer.h>
 
+#include <string>
 #include <vector>
 
 /// \file TeachingOverlays.h
@@ -28,9 +30,12 @@ std::vector<vtkSmartPointer<vtkProp>> crossingProps(const std::vector<SceneCross
                                                     double markRadius);
 
 /// Unit directions drawn as points on the unit hemisphere over a grey disk (the surface),
-/// with the normal (+z) as an arrow; `fullSphere` draws the whole sphere's outline.
+/// with the normal (+z) as an arrow, named `axisLabel` in `language` at its tip (nothing
+/// when empty); `fullSphere` draws the whole sphere's outline.
 /// Local z is drawn as z: look with view-up (0, 0, 1) (sampleCloudCamera).
 std::vector<vtkSmartPointer<vtkProp>> sampleCloudProps(const std::vector<Vec3>& directions,
-                                                       bool fullSphere);
+                                                       bool fullSphere,
+                                                       const std::string& axisLabel = {},
+                                                       Language language = Language::English);
 
 }  // namespace raylab::vis

@@ -241,6 +241,44 @@ ViewCamera closeUpView(const Scene& scene, int index, double aspect) {
   return view;
 }
 
+ViewCamera closeUpOnRay(const Scene& scene, const RayTree& tree, int id, double aspect) {
+  if (id < 0 || id >= static_cast<int>(tree.segments.size()))
+    return defaultViewCamera(scene, aspect);
+  // The hit: where ray `id` starts, or for the camera ray where it ends.
+  const RaySegment& ray = tree.segments[static_cast<std::size_t>(id)];
+  const RaySegment* in =
+      ray.parent >= 0 ? &tree.segments[static_cast<std::size_t>(ray.parent)] : &ray;
+  const RaySegment* out = ray.parent >= 0 ? &ray : nullptr;
+  if (!out && ray.firstChild >= 0) out = &tree.segments[static_cast<std::size_t>(ray.firstChild)];
+  if (!in->hit || in->object < 0 || in->object >= static_cast<int>(scene.objects.size()))
+    return defaultViewCamera(scene, aspect);
+  const Point3 point = in->endPoint;
+  // Square to the plane of the incoming and the outgoing ray (or the normal).
+  Vec3 across = glm::cross(in->direction, out ? out->direction : Vec3(in->normal));
+  if (!(glm::length(across) > 1e-9)) across = glm::cross(in->direction, Vec3(in->normal));
+  if (!(glm::length(across) > 1e-9)) across = glm::cross(in->direction, scene.camera.up);
+  if (!(glm::length(across) > 1e-9)) return closeUpView(scene, in->object, aspect);
+  across = glm::normalize(across);
+  // From the side the scene camera looks from (its own rays lie in the plane, so its
+  // position cannot choose).
+  if (glm::dot(across, scene.camera.position - scene.camera.lookAt) < 0.0) across = -across;
+  // Up: the world's up, square to the view; the incoming ray where they are parallel.
+  Vec3 up = scene.camera.up - glm::dot(scene.camera.up, across) * across;
+  if (!(glm::length(up) > 1e-9)) up = in->direction;
+  const Bounds3 box = scene.objects[static_cast<std::size_t>(in->object)].shape->bounds();
+  const Vec3 extent = box.extent();
+  double radius = 0.5 * glm::length(extent);
+  if (box.empty() || !std::isfinite(radius) || !(radius > 0.0)) radius = 1.0;
+  ViewCamera view;
+  view.viewAngle = 30.0;
+  const double halfV = radians(view.viewAngle) / 2.0;
+  const double halfNarrow = aspect >= 1.0 ? halfV : std::atan(std::tan(halfV) * aspect);
+  view.eye = point + radius / std::sin(0.8 * halfNarrow) * across;
+  view.focalPoint = point;
+  view.up = glm::normalize(up);
+  return view;
+}
+
 ViewCamera behindCameraView(const Scene& scene, double aspect) {
   const CameraSpec& camera = scene.camera;
   const Vec3 toTarget = camera.lookAt - camera.position;

@@ -24,6 +24,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <sstream>
+#include <tuple>
 
 namespace raylab {
 
@@ -184,6 +185,10 @@ class Reader : private JsonChecks<Reader> {
   std::string m_scenePath;
   json m_sceneDoc;  ///< The scene file's JSON: scene changes edit copies of it.
   std::shared_ptr<const Scene> m_scene;
+
+  /// Loads scene file `scene` (relative to the lesson file) as the scene that follows:
+  /// the lesson's, or one step's own ("scene" at `place`).
+  void loadScene(const std::string& scene, const std::string& place);
 
   [[noreturn]] void fail(const std::string& path, const std::string& what) const {
     throw LessonIO::LoadError(m_origin + ": " + m_step + "at " + (path.empty() ? "/" : path) +
@@ -736,11 +741,12 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   LessonStep s;
   s.title = text(member(j, path, "title"), path + "/title");
   m_step.insert(m_step.size() - 2, " (\"" + s.title.en + "\")");
-  onlyKeys(j, path, {"title",         "text",      "view",      "algorithm",     "pixel",
-                     "sample",        "reveal",    "colour",    "filters",       "camera_view",
-                     "select_ray",    "samples",   "measure",   "scene_changes", "question",
-                     "teacher_notes", "requires",  "bundle",    "all_hits",      "bvh",
-                     "ray",           "exactness", "try_value", "minutes",       "recap"});
+  onlyKeys(j, path,
+           {"title",    "text",          "view",     "algorithm",     "pixel",      "sample",
+            "reveal",   "colour",        "filters",  "camera_view",   "select_ray", "samples",
+            "measure",  "scene_changes", "question", "teacher_notes", "requires",   "bundle",
+            "all_hits", "bvh",           "ray",      "exactness",     "try_value",  "minutes",
+            "recap",    "scene"});
   s.text = text(member(j, path, "text"), path + "/text");
   if (j.contains("teacher_notes"))
     s.teacherNotes = text(j["teacher_notes"], path + "/teacher_notes");
@@ -760,10 +766,14 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
     }
   }
 
-  // The scene first: pixels and samples are checked against the step's own scene.
+  // The scene first: pixels and samples are checked against the step's own scene (its own
+  // file, when it names one, with its changes).
+  const auto lessonScene = std::make_tuple(m_scene, m_sceneDoc, m_scenePath);
+  if (j.contains("scene")) loadScene(string(j["scene"], path + "/scene"), path + "/scene");
   s.scene = j.contains("scene_changes")
                 ? changedScene(j["scene_changes"], path + "/scene_changes", s.sceneChanges)
                 : m_scene;
+  std::tie(m_scene, m_sceneDoc, m_scenePath) = lessonScene;
   const Scene& scene = *s.scene;
 
   const Display d = display(j, path).over(defaults);
@@ -876,9 +886,10 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
                               std::string(toString(s.view)) + "\")");
     s.bvh = bvh(j["bvh"], path + "/bvh", s);
   }
-  if (s.cameraView == LessonCameraView::CloseUp && !s.bvh)
+  if (s.cameraView == LessonCameraView::CloseUp && !s.bvh && !s.traces())
     fail(path + (j.contains("camera_view") ? "/camera_view" : ""),
-         "the close_up view looks at the step's BVH mesh: it needs a \"bvh\" block");
+         "the close_up view looks at the step's BVH mesh or at the hit of its traced ray: it "
+         "needs a \"bvh\" block, a \"pixel\" or a \"ray\"");
 
   if (j.contains("try_value")) {
     if (j.contains("scene_changes"))
@@ -889,6 +900,26 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
   }
   if (j.contains("question")) s.question = question(j["question"], path + "/question", s);
   return s;
+}
+
+void Reader::loadScene(const std::string& scene, const std::string& place) {
+  if (scene.empty()) fail(place, "the scene file name is empty");
+  const std::filesystem::path scenePath(scene);
+  m_scenePath = (scenePath.is_absolute() ? scenePath : std::filesystem::path(m_baseDir) / scenePath)
+                    .lexically_normal()
+                    .string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(m_scenePath, ec))
+    fail(place, "scene file \"" + scene + "\" not found (looked for " + m_scenePath + ")");
+  std::ifstream in(m_scenePath, std::ios::binary);
+  std::ostringstream sceneText;
+  sceneText << in.rdbuf();
+  try {
+    m_scene = std::make_shared<const Scene>(SceneIO::parse(sceneText.str(), m_scenePath));
+  } catch (const SceneIO::LoadError& e) {
+    fail(place, std::string("the scene does not load: ") + e.what());
+  }
+  m_sceneDoc = json::parse(sceneText.str());
 }
 
 void Reader::version(const json& root) {
@@ -927,24 +958,7 @@ Lesson Reader::lesson(const json& root) {
     lesson.misconceptions = texts(root["misconceptions"], "/misconceptions");
 
   // The scene: relative to the lesson file, loaded (and so validated) by SceneIO.
-  const std::string scene = string(member(root, "", "scene"), "/scene");
-  if (scene.empty()) fail("/scene", "the scene file name is empty");
-  const std::filesystem::path scenePath(scene);
-  m_scenePath = (scenePath.is_absolute() ? scenePath : std::filesystem::path(m_baseDir) / scenePath)
-                    .lexically_normal()
-                    .string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(m_scenePath, ec))
-    fail("/scene", "scene file \"" + scene + "\" not found (looked for " + m_scenePath + ")");
-  std::ifstream in(m_scenePath, std::ios::binary);
-  std::ostringstream sceneText;
-  sceneText << in.rdbuf();
-  try {
-    m_scene = std::make_shared<const Scene>(SceneIO::parse(sceneText.str(), m_scenePath));
-  } catch (const SceneIO::LoadError& e) {
-    fail("/scene", std::string("the scene does not load: ") + e.what());
-  }
-  m_sceneDoc = json::parse(sceneText.str());
+  loadScene(string(member(root, "", "scene"), "/scene"), "/scene");
   lesson.scenePath = m_scenePath;
   lesson.scene = m_scene;
 

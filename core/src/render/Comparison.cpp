@@ -212,6 +212,7 @@ ComparisonReference Comparison::renderReference(const std::function<void(double,
 ComparisonResult Comparison::run() {
   ComparisonResult result;
   result.sceneName = m_scene.name;
+  result.sceneNameZh = m_scene.nameZh;
   result.width = m_scene.camera.width;
   result.height = m_scene.camera.height;
   result.settings = m_settings;

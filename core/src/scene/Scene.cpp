@@ -7,6 +7,7 @@ namespace raylab {
 
 SceneObject::SceneObject(const SceneObject& o)
     : name(o.name),
+      nameZh(o.nameZh),
       shape(o.shape ? o.shape->clone() : nullptr),
       material(o.material),
       velocity(o.velocity),
@@ -197,6 +198,18 @@ std::vector<std::string> sceneWarnings(const Scene& scene) {
         "the scene has no light (no point light, no emissive material, no ambient term, "
         "a black background): the image is black"};
   return {};
+}
+
+Scene sceneAsShown(const Scene& scene, bool chinese) {
+  Scene shown = scene;
+  if (!chinese) return shown;
+  if (!shown.nameZh.empty()) shown.name = shown.nameZh;
+  for (Material& m : shown.materials) m.name = m.shownName(true);
+  for (SceneObject& o : shown.objects) {
+    o.name = o.shownName(true);
+    o.fileForm = nullptr;  // no longer the file's entry
+  }
+  return shown;
 }
 
 }  // namespace raylab

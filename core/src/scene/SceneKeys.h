@@ -18,21 +18,40 @@ namespace raylab {
  */
 
 /// The document itself.
-inline constexpr std::array kSceneKeys = {"raylab_scene", "name",   "materials", "objects",
-                                          "point_lights", "camera", "render"};
+inline constexpr std::array kSceneKeys = {"raylab_scene", "name",    "display_name",
+                                          "materials",    "objects", "point_lights",
+                                          "camera",       "render"};
 /// One entry of "materials".
-inline constexpr std::array kMaterialKeys = {
-    "name",        "type",     "colour",       "emission",  "reflection_rate", "refraction_rate",
-    "ior",         "exponent", "specular",     "opacity",   "ambient",         "diffuse",
-    "attenuation", "fresnel",  "distribution", "roughness", "visible_normals", "ior_outside",
-    "priority"};
+inline constexpr std::array kMaterialKeys = {"name",
+                                             "display_name",
+                                             "type",
+                                             "colour",
+                                             "emission",
+                                             "reflection_rate",
+                                             "refraction_rate",
+                                             "ior",
+                                             "exponent",
+                                             "specular",
+                                             "opacity",
+                                             "ambient",
+                                             "diffuse",
+                                             "attenuation",
+                                             "fresnel",
+                                             "distribution",
+                                             "roughness",
+                                             "visible_normals",
+                                             "ior_outside",
+                                             "priority"};
 /// Sets a material's "fresnel" from its word: none, exact or schlick weighing the rates of a
 /// mirror, phong or blinn_phong (Material::rateFresnel), exact or schlick a dielectric's
 /// reflectance (Material::fresnel). Returns "" or, for a word its type does not take, the
 /// problem (Scene.cpp).
 std::string setFresnel(Material& m, const std::string& word);
 /// One entry of "objects".
-inline constexpr std::array kObjectKeys = {"name", "material", "shape", "transform", "velocity"};
+inline constexpr std::array kObjectKeys = {"name",  "display_name", "material",
+                                           "shape", "transform",    "velocity"};
+/// A "display_name": the name in other languages than the file's English one.
+inline constexpr std::array kDisplayNameKeys = {"zh"};
 /// One step of an object's "transform" (a step has exactly one of these keys).
 inline constexpr std::array kTransformStepKeys = {"translate", "scale", "rotate", "matrix"};
 /// One entry of "point_lights".

@@ -253,10 +253,30 @@ class Reader : private JsonChecks<Reader> {
     return m;
   }
 
+  /// The "display_name" of the scene, a material or an object: {"zh": "玻璃球"}, a
+  /// Chinese name (at least one Chinese character); "" when there is none.
+  std::string displayName(const json& j, const std::string& p) const {
+    if (!j.contains("display_name")) return {};
+    const std::string dp = p + "/display_name";
+    const json& names = j["display_name"];
+    if (!names.is_object())
+      fail(dp, "expected the names in other languages, e.g. {\"zh\": \"玻璃球\"}");
+    onlyKeys(names, dp, kDisplayNameKeys);
+    const std::string zh = string(member(names, dp, "zh"), dp + "/zh");
+    // A Chinese character: U+3400..U+9FFF, a three-byte UTF-8 sequence led by 0xE3..0xE9.
+    const bool chinese = std::any_of(zh.begin(), zh.end(), [](char c) {
+      const auto byte = static_cast<unsigned char>(c);
+      return byte >= 0xE3 && byte <= 0xE9;
+    });
+    if (!chinese) fail(dp + "/zh", "\"" + zh + "\" has no Chinese character");
+    return zh;
+  }
+
   Material material(const json& j, const std::string& p) const {
     onlyKeys(j, p, kMaterialKeys);
     Material m;
     m.name = string(member(j, p, "name"), p + "/name");
+    m.nameZh = displayName(j, p);
     if (j.contains("type")) {
       const std::string type = string(j["type"], p + "/type");
       bool known = false;
@@ -458,6 +478,7 @@ class Reader : private JsonChecks<Reader> {
     onlyKeys(j, p, kObjectKeys);
     SceneObject o;
     o.name = string(member(j, p, "name"), p + "/name");
+    o.nameZh = displayName(j, p);
     if (!m_objectNames.insert(o.name).second)
       fail(p + "/name", "duplicate object \"" + o.name + "\"");
     const std::string material = string(member(j, p, "material"), p + "/material");
@@ -525,6 +546,7 @@ class Reader : private JsonChecks<Reader> {
     onlyKeys(root, "", kSceneKeys);
     Scene scene;
     scene.name = root.contains("name") ? string(root["name"], "/name") : "untitled";
+    scene.nameZh = displayName(root, "");
 
     // Materials first: objects refer to them by name.
     const json& materials = member(root, "", "materials");

@@ -58,6 +58,11 @@ class ObjectWriter {
 
 ojson toJson(const Vec3& v) { return ojson::array({v.x, v.y, v.z}); }
 
+/// A "display_name": {"zh": ...}.
+ojson displayNameJson(const std::string& zh) {
+  return ObjectWriter(kDisplayNameKeys).add("zh", zh).take();
+}
+
 ojson toJson(const Mat4& m) {
   ojson rows = ojson::array();
   for (int r = 0; r < 4; ++r) rows.push_back(ojson::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
@@ -144,8 +149,9 @@ ojson materialToJson(const Material& m) {
   const bool roughGlass = m.type == MaterialType::RoughDielectric;
   const bool plastic = m.isPlastic();
   ObjectWriter j(kMaterialKeys);
-  j.add("name", m.name)
-      .add("type", toString(m.type))
+  j.add("name", m.name);
+  if (!m.nameZh.empty()) j.add("display_name", displayNameJson(m.nameZh));
+  j.add("type", toString(m.type))
       .add("colour", toJson(m.colour))
       .add("emission", toJson(m.emission));
   if (mirror || classic || m.reflectionRate != defaults.reflectionRate)
@@ -216,9 +222,9 @@ ojson bakedObject(const SceneObject& o, const Scene& scene, const std::string& s
     shape = shapeToJson(*o.shape, transform);
   }
   ObjectWriter object(kObjectKeys);
-  object.add("name", o.name)
-      .add("material", scene.materials[o.material].name)
-      .add("shape", std::move(shape));
+  object.add("name", o.name);
+  if (!o.nameZh.empty()) object.add("display_name", displayNameJson(o.nameZh));
+  object.add("material", scene.materials[o.material].name).add("shape", std::move(shape));
   if (!transform.is_null()) object.add("transform", std::move(transform));
   if (o.velocity != Vec3(0.0)) object.add("velocity", toJson(o.velocity));
   return object.take();
@@ -314,17 +320,16 @@ std::string SceneIO::serialize(const Scene& scene, const std::string& sceneDir) 
   for (const SceneObject& o : scene.objects) objects.push_back(objectToJson(o, scene, sceneDir));
   ojson pointLights = ojson::array();
   for (const PointLight& l : scene.pointLights) pointLights.push_back(pointLightToJson(l));
-  const ojson root = ObjectWriter(kSceneKeys)
-                         .add("raylab_scene", kVersion)
-                         .add("name", scene.name)
-                         .add("materials", std::move(materials))
-                         .add("objects", std::move(objects))
-                         .add("point_lights", std::move(pointLights))
-                         .add("camera", cameraToJson(scene.camera))
-                         .add("render", renderToJson(scene.render))
-                         .take();
+  ObjectWriter root(kSceneKeys);
+  root.add("raylab_scene", kVersion).add("name", scene.name);
+  if (!scene.nameZh.empty()) root.add("display_name", displayNameJson(scene.nameZh));
+  root.add("materials", std::move(materials))
+      .add("objects", std::move(objects))
+      .add("point_lights", std::move(pointLights))
+      .add("camera", cameraToJson(scene.camera))
+      .add("render", renderToJson(scene.render));
   // nlohmann prints doubles with enough digits to round-trip exactly.
-  return prettyJson(root) + "\n";
+  return prettyJson(root.take()) + "\n";
 }
 
 void SceneIO::save(const Scene& scene, const std::string& path) {

@@ -99,6 +99,7 @@ struct ComparisonReference {
 /// Everything a comparison measured: what ComparisonView draws and the JSON reports.
 struct ComparisonResult {
   std::string sceneName;       ///< Scene::name.
+  std::string sceneNameZh;     ///< Scene::nameZh, its Chinese title (empty: sceneName).
   int width = 0, height = 0;   ///< Image size, pixels.
   RenderSettings settings;     ///< Shared settings (algorithm field unused).
   ComparisonSettings compare;  ///< Mode and budgets.

@@ -42,7 +42,9 @@ const char* toString(LessonColouring colouring);
 enum class LessonCameraView {
   Default,  ///< "default": from outside the scene.
   Camera,   ///< "camera": from just behind the scene's camera.
-  CloseUp,  ///< "close_up": close to the mesh of the step's "bvh" block, from the camera's side.
+  CloseUp,  ///< "close_up": close to the mesh of the step's "bvh" block, from the camera's side;
+            ///< without one, close to the hit where the selected ray (default: the camera
+            ///< ray) bends, square to the plane of its rays (vis::closeUpOnRay).
 };
 const char* toString(LessonCameraView view);
 
@@ -352,8 +354,9 @@ std::optional<std::string> answerProblem(const LessonStep& step);
  *   exact oracle's check of the selected ray beside its values; sample in [0, spp); reveal
  *   {"frame": n} or {"depth": d}; colour: energy | kind | depth; filters (kinds from
  *   camera, reflection, refraction, diffuse, glossy, shadow; max_depth; reaching_light;
- *   min_energy); camera_view: default | camera | close_up (close to the step's bvh mesh,
- *   steps with "bvh" only); select_ray: a segment id of the pixel's
+ *   min_energy); camera_view: default | camera | close_up (close to the step's bvh mesh;
+ *   without "bvh", close to the hit where the selected ray bends, square to the plane of
+ *   the rays there, normals drawn; needs a pixel or a ray); select_ray: a segment id of the pixel's
  *   tree (checked by tracing it); samples (view "samples" only): {"sampler": cosine |
  *   uniform | sphere | phong, "count": n, "exponent": e (phong)}; measure (views compare
  *   and plot only): samples | time, what the comparison holds equal and the plot's x axis
@@ -372,6 +375,9 @@ std::optional<std::string> answerProblem(const LessonStep& step);
  *   "none"}}; teacher_notes {en, zh};
  *   requires: a feature name or a list of them (the step needs something RayLab does not
  *   have yet; the loader accepts it and Lesson::requiredFeatures lists it).
+ * - scene (a step key): another scene file, relative to the lesson file, that this step
+ *   shows instead of the lesson's (lesson 6's glossy plates under lights of four sizes); its
+ *   scene_changes edit that scene, and the next step is back on the lesson's scene.
  * - scene_changes: edits for this step only, applied in order to a copy of the scene
  *   file's JSON and validated by SceneIO's own rules, in the scene format's key names:
  *       {"material": NAME, "set": {...}}           merge into the material (not "name")

@@ -49,7 +49,14 @@ const char* toString(MicrofacetModel model);
 /// light that emits `emission` (radiance, W sr^-1 m^-2) equally in all directions from
 /// its front side (the original course program's light cube).
 struct Material {
-  std::string name;                           ///< Unique name, referenced by objects.
+  std::string name;  ///< Unique name, referenced by objects.
+  /// "display_name": {"zh": ...}: the name a Chinese reader sees (window, handouts,
+  /// captions); empty: `name`. The file, scene_changes and scripts use `name`.
+  std::string nameZh;
+  /// The name shown to a reader: nameZh when `chinese` and set, else name.
+  const std::string& shownName(bool chinese) const {
+    return chinese && !nameZh.empty() ? nameZh : name;
+  }
   MaterialType type = MaterialType::Diffuse;  ///< Scattering model.
   Vec3 colour{0.8};                           ///< Albedo / specular tint, linear RGB in [0, 1].
   Vec3 emission{0.0};                         ///< Emitted radiance, linear RGB (lights only).

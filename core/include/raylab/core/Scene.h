@@ -21,7 +21,8 @@ const char* toString(MeshNormals normals);
 
 /// A named shape with a material.
 struct SceneObject {
-  std::string name;              ///< Unique name, shown in the object list.
+  std::string name;    ///< Unique name, shown in the object list.
+  std::string nameZh;  ///< "display_name": {"zh": ...}, the Chinese reader's name; empty: name.
   std::unique_ptr<Shape> shape;  ///< Geometry, world space.
   int material = 0;              ///< Index into Scene::materials.
   Vec3 velocity{0.0};            ///< Linear motion over the shutter interval: at ray time
@@ -58,6 +59,10 @@ struct SceneObject {
   /// units. The one rule of motion: a ray at time tau meets the object where it rests when
   /// the ray's origin is moved back by this much.
   Vec3 displacementAt(double time) const { return time * velocity; }
+  /// The name shown to a reader: nameZh when `chinese` and set, else name.
+  const std::string& shownName(bool chinese) const {
+    return chinese && !nameZh.empty() ? nameZh : name;
+  }
 
   SceneObject() = default;
   SceneObject(std::string objectName, std::unique_ptr<Shape> objectShape, int materialIndex)
@@ -108,7 +113,8 @@ struct PointLight {
 
 /// Everything that makes a scene: named objects, materials, lights, camera, settings.
 struct Scene {
-  std::string name;                 ///< Title shown in the window.
+  std::string name;    ///< Title shown in the window.
+  std::string nameZh;  ///< "display_name": {"zh": ...}, the Chinese title; empty: name.
   std::vector<Material> materials;  ///< Referenced by index from objects.
   std::vector<SceneObject> objects;
   std::vector<PointLight> pointLights;  ///< Area lights are objects with emissive materials.
@@ -138,5 +144,10 @@ Scene defaultScene();
 /// (no point light, emissive material, ambient term or background: the image is black).
 /// Such a scene is valid (a teacher may start from it), so these are warnings, not errors.
 std::vector<std::string> sceneWarnings(const Scene& scene);
+
+/// A copy of `scene` whose own, object and material names are the ones a reader sees
+/// (shownName): the Chinese display names when `chinese`, else the scene's own. For words
+/// only (the inspector's lines, captions, handouts), never for finding things by name.
+Scene sceneAsShown(const Scene& scene, bool chinese);
 
 }  // namespace raylab

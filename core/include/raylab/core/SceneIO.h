@@ -70,9 +70,12 @@ namespace raylab {
  * smallpt starts its rays (Ray(cam.o + d * 140, d.norm()) with d normalised first).
  * The render block's "ray_offset" (default true) false starts secondary rays on the
  * computed hit point, to show shadow acne. "velocity" is the object's motion over the shutter
- * interval (motion blur). Everything but "raylab_scene", "materials" and "objects" is optional and
- * defaults to the values of Material, CameraSpec and RenderSettings; unknown keys are errors (a
- * misspelt key would otherwise be ignored).
+ * interval (motion blur). The scene, a material or an object may carry a "display_name":
+ * {"zh": "玻璃球"}, the name a Chinese reader sees in the window (object list, inspector),
+ * handouts and captions (it must hold a Chinese character; "zh" is its only key); files,
+ * lesson scene_changes and scripts keep using "name". Everything but "raylab_scene", "materials"
+ * and "objects" is optional and defaults to the values of Material, CameraSpec and RenderSettings;
+ * unknown keys are errors (a misspelt key would otherwise be ignored).
  *
  * Versions: version 2 added material types and parameters, point lights, velocity,
  * meshes, the thin-lens camera, the camera's near clip and the render block. Version 1

@@ -33,4 +33,10 @@ constexpr int kCompareChannelTolerance = 20;
  */
 double compareImages(const SrgbImage& a, const SrgbImage& b);
 
+/// `image` enlarged by the largest whole factor that keeps it within maxWidth x maxHeight,
+/// each pixel a square block of its colour (nearest neighbour, no smoothing), so a small
+/// render shows its pixels (lesson 5's stair steps); unchanged when no factor of 2 or more
+/// fits.
+SrgbImage enlargedToFit(const SrgbImage& image, int maxWidth, int maxHeight);
+
 }  // namespace raylab::vis

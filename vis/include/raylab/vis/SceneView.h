@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/Lesson.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
@@ -125,8 +126,11 @@ class SceneView {
   int crossingCount() const;
   /// Shows only a sampler's unit directions (LessonSamples::directions) as a point cloud
   /// over a disk (the surface, normal +z drawn up), instead of the scene, seen from the
-  /// side; `fullSphere` outlines the whole sphere. clearSampleCloud brings the scene back.
-  void setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere = false);
+  /// side; `fullSphere` outlines the whole sphere; `axisLabel` names the axis the
+  /// directions are drawn about (sampleAxisLabel), in `language`. clearSampleCloud brings
+  /// the scene back.
+  void setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere = false,
+                      const std::string& axisLabel = {}, Language language = Language::English);
   void clearSampleCloud();
   bool showsSampleCloud() const;
   /// A line of text along the bottom of the picture, on a dark band (the bounce
@@ -187,5 +191,10 @@ class SceneView {
   Scene m_scene;
   int m_highlighted = -1;
 };
+
+/// The name of the axis a sampler's directions are drawn about, in `language`: the surface
+/// normal, or for the Phong lobe the mirror direction (its disk is then square to the
+/// mirror direction, not the surface).
+std::string sampleAxisLabel(LessonSamples::Sampler sampler, Language language);
 
 }  // namespace raylab::vis

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Bounds3.h"
+#include "raylab/core/RayTree.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
 
@@ -80,5 +81,16 @@ ViewCamera behindCameraView(const Scene& scene, double aspect);
 /// around them fills about 80% of the picture's height or width, whichever is smaller.
 /// For an unbounded object (a plane), the default view.
 ViewCamera closeUpView(const Scene& scene, int index, double aspect);
+/**
+ * \brief A close view of the hit where ray `id` of `tree` bends: the point it starts from
+ * (for the camera ray, its own hit), looked at square to the plane of the incoming ray and
+ * the outgoing one (for a camera ray, its first child; without one, the normal), so both
+ * rays and the normal there lie in the picture and their angles can be read (Snell's law,
+ * total internal reflection). Seen from the side of that plane the scene camera looks from
+ * (its own rays lie in the plane); the sphere around the object hit there fills about 80% of
+ * the picture. Without such a hit (an escaped camera ray, an id out of range), the default
+ * view.
+ */
+ViewCamera closeUpOnRay(const Scene& scene, const RayTree& tree, int id, double aspect);
 
 }  // namespace raylab::vis
