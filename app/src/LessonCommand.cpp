@@ -4,6 +4,7 @@
 #include "ExitCodes.h"
 
 #include "raylab/core/AtomicFile.h"
+#include "raylab/core/AtomicFolder.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/Image.h"
@@ -11,6 +12,7 @@
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
+#include "raylab/core/Text.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/BvhCaptions.h"
 #include "raylab/vis/ComparisonView.h"
@@ -91,18 +93,22 @@ int runList(const LessonOptions& o) {
   for (const std::string& path : LessonIO::list(o.dir)) {
     try {
       lessons.push_back(LessonIO::load(path));
-    } catch (const LessonIO::LoadError& e) {
-      // List the others; the broken one is reported and makes the exit code 1.
-      std::cerr << "raylab: error: " << e.what() << "\n";
+    } catch (const std::exception& e) {
+      // List the others; the broken one is reported and makes the exit code 1 (whatever it
+      // throws: one stranger's file never aborts the listing, issue 38).
+      std::cerr << "raylab: error: " << printable(e.what()) << "\n";
       ++failed;
     }
   }
   std::size_t idWidth = 0;
-  for (const Lesson& lesson : lessons) idWidth = std::max(idWidth, lesson.id.size());
+  // Ids and titles come from the files: printed with their control characters escaped, so
+  // a lesson cannot clear the screen or write the clipboard (issue 38).
+  for (const Lesson& lesson : lessons) idWidth = std::max(idWidth, printable(lesson.id).size());
   for (const Lesson& lesson : lessons) {
     const int steps = static_cast<int>(lesson.steps.size());
-    std::cout << lesson.id << std::string(idWidth - lesson.id.size() + 2, ' ')
-              << lesson.title.in(language) << "  ("
+    const std::string id = printable(lesson.id);
+    std::cout << id << std::string(idWidth - id.size() + 2, ' ')
+              << printable(lesson.title.in(language)) << "  ("
               << (zh ? std::to_string(steps) + " 步"
                      : std::to_string(steps) + (steps == 1 ? " step" : " steps"))
               << ")\n";
@@ -133,13 +139,13 @@ int runCheck(const LessonOptions& o) {
     const LessonStep& step = lesson.steps[i];
     if (!step.question || !step.question->check) continue;
     const LessonQuestion& q = *step.question;
-    const std::string where = path + ": step " + std::to_string(i + 1) + " (\"" + step.title.en +
-                              "\"): " + toString(q.check->quantity);
+    const std::string where = printable(path + ": step " + std::to_string(i + 1) + " (\"" +
+                                        step.title.en + "\"): " + toString(q.check->quantity));
     double value = 0.0;
     try {
       value = computeCheck(step, *q.check);
     } catch (const Exception& e) {
-      std::cerr << "raylab: error: " << where << ": " << e.what() << std::endl;
+      std::cerr << "raylab: error: " << where << ": " << printable(e.what()) << std::endl;
       ++wrong;
       continue;
     }
@@ -479,23 +485,31 @@ std::string stepSection(const Lesson& lesson, std::size_t index, const StepPictu
   const HandoutWords& words = wordsIn(language);
   const bool zh = language == Language::Chinese;
   std::string md = "## " + std::string(words.step) + " " + std::to_string(index + 1) +
-                   (zh ? " 步：" : ". ") + step.title.in(language) + "\n\n";
-  md += step.text.in(language) + "\n\n";
-  md += "![" + step.title.in(language) + "](" + png + ")\n\n";
-  if (!picture.caption.empty()) md += "*" + picture.caption + "*\n\n";
-  if (!picture.note.empty()) md += "> " + picture.note + "\n\n";
-  if (!picture.crossingsText.empty())
-    md += "**" + std::string(words.crossings) + "**\n\n```\n" + picture.crossingsText + "```\n\n";
-  if (!picture.inspectorText.empty())
-    md += "**" + std::string(words.inspector) + "**\n\n```\n" + picture.inspectorText +
-          (picture.inspectorText.back() == '\n' ? "" : "\n") + "```\n\n";
+                   (zh ? " 步：" : ". ") + markdownText(step.title.in(language), true) + "\n\n";
+  // Every text from the lesson file goes through markdownText: a stranger's lesson cannot
+  // put raw HTML, links or headings into the handout (issue 38).
+  md += markdownText(step.text.in(language)) + "\n\n";
+  md += "![" + markdownText(step.title.in(language), true) + "](" + png + ")\n\n";
+  if (!picture.caption.empty()) md += "*" + markdownText(picture.caption, true) + "*\n\n";
+  if (!picture.note.empty()) md += "> " + markdownText(picture.note, true) + "\n\n";
+  if (!picture.crossingsText.empty()) {
+    const std::string fence = markdownFence(picture.crossingsText);
+    md += "**" + std::string(words.crossings) + "**\n\n" + fence + "\n" + picture.crossingsText +
+          fence + "\n\n";
+  }
+  if (!picture.inspectorText.empty()) {
+    const std::string fence = markdownFence(picture.inspectorText);
+    md += "**" + std::string(words.inspector) + "**\n\n" + fence + "\n" + picture.inspectorText +
+          (picture.inspectorText.back() == '\n' ? "" : "\n") + fence + "\n\n";
+  }
   if (step.question) {
     const LessonQuestion& q = *step.question;
-    md += "**" + std::string(words.question) + (zh ? "：**" : ":** ") + q.prompt.in(language) +
-          "\n\n";
+    md += "**" + std::string(words.question) + (zh ? "：**" : ":** ") +
+          markdownText(q.prompt.in(language)) + "\n\n";
     if (q.type == LessonQuestion::Type::Choice) {
       for (std::size_t i = 0; i < q.choices.size(); ++i)
-        md += std::string(1, char('A' + i)) + ". " + q.choices[i].in(language) + "\n";
+        md += std::string(1, char('A' + i)) + ". " + markdownText(q.choices[i].in(language), true) +
+              "\n";
       md += "\n";
     } else {
       md += std::string("*") + words.numberAnswer + "*\n\n";
@@ -513,37 +527,31 @@ std::string answersSection(const Lesson& lesson, Language language) {
     const LessonStep& step = lesson.steps[i];
     if (!step.question && step.teacherNotes.empty()) continue;
     md += "### " + std::string(words.step) + " " + std::to_string(i + 1) + (zh ? " 步：" : ". ") +
-          step.title.in(language) + "\n\n";
+          markdownText(step.title.in(language), true) + "\n\n";
     if (step.question) {
       const LessonQuestion& q = *step.question;
       md += "**" + std::string(words.answer) + (zh ? "：**" : ":** ");
       if (q.type == LessonQuestion::Type::Choice)
         md += std::string(1, char('A' + q.answerIndex)) + ". " +
-              q.choices.at(q.answerIndex).in(language);
+              markdownText(q.choices.at(q.answerIndex).in(language), true);
       else
         md += formatNumber(q.answer) +
               (q.tolerance > 0 ? " (± " + formatNumber(q.tolerance) + ")" : std::string());
-      md += "\n\n" + q.explanation.in(language) + "\n\n";
+      md += "\n\n" + markdownText(q.explanation.in(language)) + "\n\n";
     }
     if (!step.teacherNotes.empty())
-      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") + step.teacherNotes.in(language) +
-            "\n\n";
+      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") +
+            markdownText(step.teacherNotes.in(language)) + "\n\n";
   }
   return md;
 }
 
-/// Creates `dir` and checks that a file can be written in it; throws naming it otherwise.
-void prepareFolder(const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir, ec))
-    throw OutputError(dir + ": cannot create the output folder" +
-                      (ec ? " (" + ec.message() + ")" : std::string(" (not a folder)")));
-  const std::string probe = (fs::path(dir) / ".raylab-write-check").string();
-  if (const auto problem = writeFileAtomically(probe, ""))
-    throw OutputError(dir + ": cannot write in the output folder (" + *problem + ")");
-  fs::remove(probe, ec);
+/// Whether `name` is a file `lesson --out` writes (step-NN.png, lesson.md): the only files
+/// an earlier handout folder may hold, as the new handout replaces it whole.
+bool handoutFile(const std::string& name) {
+  const bool step = name.rfind("step-", 0) == 0 && name.size() > 9 &&
+                    name.compare(name.size() - 4, 4, ".png") == 0;
+  return step || name == "lesson.md";
 }
 
 int runRender(const LessonOptions& o) {
@@ -552,25 +560,34 @@ int runRender(const LessonOptions& o) {
   const Lesson lesson = LessonIO::load(path);
   const Language language = *parseLanguage(o.lang);
   // The folder's problems first, then the display's (without one, nothing stays behind).
+  // The handout is written into a new folder beside DIR and swapped in when whole: an
+  // error, a full disk or Ctrl-C leave the earlier handout as it was (issue 38).
   const std::string missing = firstMissingFolder(o.out);
-  prepareFolder(o.out);
+  std::optional<AtomicFolder> folder;
+  try {
+    folder.emplace(o.out, handoutFile);
+  } catch (const AtomicFolder::Error& e) {
+    removeFoldersMade(missing);
+    throw OutputError(e.what());
+  }
   requireDisplayAfterFolder(missing);
   std::optional<std::pair<int, int>> size;  // (assigned, not ?:, which GCC 12 misreads)
   if (!o.size.empty()) size = parseSize(o.size);
-  std::string md = "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n";
+  std::string md = "# " + markdownText(lesson.title.in(language), true) + "\n\n" +
+                   markdownText(lesson.summary.in(language)) + "\n\n";
   int pictures = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
     const StepPicture picture = stepPicture(lesson.steps[i], size, language, o.maxSpp);
     const std::string png = "step-" + twoDigits(i + 1) + ".png";
-    const std::string file = (fs::path(o.out) / png).string();
-    vis::writePng(picture.image, file);
+    vis::writePng(picture.image, folder->file(png));
     ++pictures;
-    std::cout << file << std::endl;
+    std::cout << printable((fs::path(o.out) / png).string()) << std::endl;
     md += stepSection(lesson, i, picture, png, language);
   }
   md += answersSection(lesson, language);
-  const std::string handout = (fs::path(o.out) / "lesson.md").string();
-  writeTextFile(handout, md);
+  writeTextFile(folder->file("lesson.md"), md);
+  folder->commit();
+  const std::string handout = printable((fs::path(o.out) / "lesson.md").string());
   const int steps = static_cast<int>(lesson.steps.size());
   std::cout << handout << "\n"
             << steps << (steps == 1 ? " step, " : " steps, ") << pictures

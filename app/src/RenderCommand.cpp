@@ -4,6 +4,7 @@
 #include "SceneSource.h"
 
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/vis/ImageIO.h"
 
@@ -113,7 +114,7 @@ Subcommand addRenderCommand(CLI::App& cli) {
   command->add_option("--spp", options->spp, "Samples per pixel (default: the scene's)")
       ->check(CLI::Range(1, 1 << 20));
   command->add_option("--threads", options->threads, "Worker threads, 0 = all")
-      ->check(CLI::Range(0, 1024))
+      ->check(CLI::Range(0, limits::kMaxThreads))
       ->capture_default_str();
   command->add_flag("--no-nee", options->noNee,
                     "Path tracing without next-event estimation (smallpt's estimator: light is "

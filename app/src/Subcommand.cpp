@@ -158,7 +158,9 @@ Scene CommonOptions::loadWithSets(const std::string& topLevelScene) const {
     if (place.front() != '/') place = "/render/" + place;
     std::string value = set.substr(eq + 1);
     // JSON as typed; a bare word (whitted, sah) as the string it means.
-    if (!nlohmann::json::accept(value)) value = nlohmann::json(value).dump();
+    // (Bytes that are not UTF-8 become U+FFFD: dump() would throw on them, issue 38.)
+    if (!nlohmann::json::accept(value))
+      value = nlohmann::json(value).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     loaded = edit::setValue(
         loaded, place, value,
         (path.empty() ? std::string("the built-in scene") : path) + " (--set " + set + ")");

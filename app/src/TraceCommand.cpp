@@ -92,7 +92,7 @@ int writeTrees(const TraceOptions& options, const Scene& scene, const RenderSett
   }
   std::size_t rays = 0;
   for (const PixelTrace& t : traced.traces) rays += t.tree.segments.size();
-  std::cout << o.common.out << "\n" << json << "\n";
+  std::cout << printable(o.common.out) << "\n" << printable(json) << "\n";
   std::cout << what << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
             << rays << " rays" << std::endl;
   if (traced.truncated) std::cerr << "raylab: warning: " << traced.message << std::endl;
@@ -219,18 +219,21 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     std::remove(json.c_str());
     throw;
   }
-  std::cout << o.common.out << "\n" << json << "\n";
+  std::cout << printable(o.common.out) << "\n" << printable(json) << "\n";
   if (root)
     std::cout << "chosen ray from " << toString(root->origin) << " along "
               << toString(root->direction);
   else
     std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample;
   std::cout << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
-            << trace.summary() << std::endl;
-  if (options.allHits) std::cout << "every surface the camera ray crosses:\n" << crossings;
+            << printable(trace.summary()) << std::endl;
+  // Object, material and light names come from the file: printed with their control
+  // characters escaped (issue 38).
+  if (options.allHits)
+    std::cout << "every surface the camera ray crosses:\n" << printable(crossings);
   if (options.inspect >= 0)
-    std::cout << RayInspector::inspect(scene, tree, options.inspect).toString();
-  if (tree.truncated) std::cerr << "raylab: warning: " << tree.message << std::endl;
+    std::cout << printable(RayInspector::inspect(scene, tree, options.inspect).toString());
+  if (tree.truncated) std::cerr << "raylab: warning: " << printable(tree.message) << std::endl;
   return kExitOk;
 }
 

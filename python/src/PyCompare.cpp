@@ -5,6 +5,7 @@
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 
 #include <pybind11/stl.h>
 
@@ -84,6 +85,9 @@ void bindCompare(py::module_& m) {
          std::optional<std::vector<std::string>> algorithms, const py::object& reference,
          int referenceSpp, int threads, std::optional<std::uint64_t> seed,
          std::optional<int> maxDepth, const py::object& progress, const py::object& dtype) {
+        checkRange("spp", spp, 1, limits::kMaxSamplesPerPixel);
+        checkRange("reference_spp", referenceSpp, 0, limits::kMaxSamplesPerPixel);
+        checkRange("threads", threads, 0, limits::kMaxThreads);
         const std::shared_ptr<const Scene> scene = handle.scene;
         const RenderSettings settings = settingsFor(
             *scene, {std::nullopt, std::nullopt, seed, maxDepth, std::nullopt, std::nullopt});

@@ -128,8 +128,9 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     emitted = tracer.rule().onEscape(ray, tracer.settings());
   } else {
     // 2c. Ask the algorithm what the hit spawns.
+    const bool spawns = !(cap && cap->reached) && !(recorder && recorder->full());
     const HitContext context{
-        intersector, tracer.settings(), ray, *hit, tracer.materialOf(hit->object), sampler};
+        intersector, tracer.settings(), ray, *hit, tracer.materialOf(hit->object), sampler, spawns};
     const HitDecision decision = tracer.rule().onHit(context, children);
     emitted = decision.emitted;
     // A child with a non-finite or negative weight is a bug in the rule: never let it in.

@@ -2,6 +2,7 @@
 
 #include "raylab/core/Plane.h"
 #include "raylab/core/SceneIO.h"
+#include "raylab/core/Text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -126,7 +127,7 @@ Scene setValue(const Scene& scene, const std::string& pointer, const std::string
   try {
     parsed = json::parse(value);
   } catch (const json::parse_error&) {
-    refuse(origin, pointer, "'" + value.substr(0, 80) + "' is not a JSON value");
+    refuse(origin, pointer, "'" + utf8Prefix(value, 80) + "' is not a JSON value");
   }
   json::json_pointer where;
   try {
