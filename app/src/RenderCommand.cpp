@@ -45,6 +45,10 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
               << " applies to path tracing only; " << toString(settings.algorithm) << " ignores it"
               << std::endl;
 
+  // The output's folder before the work: a missing one failed only after the whole
+  // render (issue 38).
+  checkWritable(out);
+
   // Step 2: render, reporting each pass.
   Renderer renderer(scene, settings);
   renderer.setThreads(options.threads);

@@ -111,8 +111,19 @@ void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std
             ->check(CLI::IsMember({"raycast", "whitted", "distributed", "path"}));
   }
   // A negative seed is a mistake, not 2^64 - 1 (issue 14).
-  m_seedOption = command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)")
-                     ->check(CLI::NonNegativeNumber);
+  // Digits only, and at most 2^64 - 1: a larger one was clamped silently, and CLI11's own
+  // message quoted a 300-digit number back (issue 38).
+  m_seedOption =
+      command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)")
+          ->check(CLI::Validator(
+              [](const std::string& text) {
+                const bool digits = !text.empty() && text.size() <= 20 &&
+                                    text.find_first_not_of("0123456789") == std::string::npos;
+                if (digits && (text.size() < 20 || text <= "18446744073709551615"))
+                  return std::string();
+                return std::string("expected a whole number from 0 to 18446744073709551615");
+              },
+              "SEED"));
   m_sizeOption =
       command->add_option("--size", m_sizeText, sizeHelp)->check(CLI::Validator(checkSize, "WxH"));
   command

@@ -245,7 +245,7 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
   common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
   CLI::Option* pixelOption = command->add_option(
       "--pixel", pixel, "Pixel X Y (or X,Y) of the scene camera's image to trace (y down)");
-  pixelOption->delimiter(',')->type_name("X Y");
+  pixelOption->delimiter(',')->type_name("X Y")->check(CLI::NonNegativeNumber);
   if (pixelRequired) pixelOption->required();
   command->add_option("--sample", sample, "Which sample of the pixel (its random numbers)")
       ->check(CLI::Range(0, 1 << 24))

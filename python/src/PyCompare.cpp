@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cmath>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -108,7 +109,12 @@ void bindCompare(py::module_& m) {
           const std::string file = reference.cast<std::string>();
           comparison.setReference(imageio::readPfm(file), file);
         } else if (!reference.is_none()) {
-          comparison.setReference(arrayToImage(reference, "reference"), "array");
+          FloatImage image = arrayToImage(reference, "reference");
+          // A NaN or infinite reference gave finite error figures (issue 38).
+          for (const glm::vec3& p : image.pixels)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+              throw py::value_error("reference must hold finite numbers (it holds NaN or inf)");
+          comparison.setReference(std::move(image), "array");
         }
 
         // Progress: the comparison's thread queues its reports here for this thread.

@@ -10,6 +10,7 @@
 #include "raylab/core/Image.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Limits.h"
+#include "raylab/core/MeshIO.h"
 #include "raylab/core/ReferenceCache.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/SceneIO.h"
@@ -361,7 +362,7 @@ TEST(StrangerFiles, 10_AForgedReferenceIsDetected) {
   std::string bytes = readFile(f.cache.imagePath(f.key));
   bytes[bytes.size() - 1] ^= 1;
   writeFile(f.cache.imagePath(f.key), bytes);
-  EXPECT_THAT(f.load().problem, HasSubstr("do not match the SHA-256"));
+  EXPECT_THAT(f.load().problem, HasSubstr("do not match the hash (SHA-256)"));
   EXPECT_EQ(f.key.size(), 64u);  // a SHA-256 in hex
 }
 
@@ -453,6 +454,38 @@ TEST(StrangerFiles, 13_LessonTextInAHandoutShowsAndDoesNothingElse) {
   EXPECT_EQ(markdownFence("name ```` end"), "`````");
   // Finding 15: what a terminal shows of a file's string has its controls escaped.
   EXPECT_EQ(printableText("\x1b]52;c;aGk=\x07title"), "\\x1b]52;c;aGk=\\x07title");
+}
+
+TEST(StrangerFiles, 14_MeshFacesAreCountedBeforeCgalRepairsThem) {
+  // Finding 8: one face listing the same few vertices over and over was quadratic in CGAL's
+  // repair (300,000 corners: 19-43 s); faces of 4,096 corners took a second each to check.
+  const fs::path dir = testDir();
+  // 9,000 corners: past the face limit, which used to apply only after the repair.
+  std::string repeated = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+  for (int i = 0; i < 3000; ++i) repeated += " 1 2 3";
+  writeFile(dir / "repeated.obj", repeated + "\n");
+  EXPECT_THAT(errorOf([&] { MeshIO::load((dir / "repeated.obj").string()); }),
+              HasSubstr("repeated.obj: cannot triangulate a face of 9000 corners: RayLab "
+                        "triangulates faces of at most 4096 corners"));
+  // 3,000 corners, within it: the repeated vertex is named, before the repair.
+  repeated = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+  for (int i = 0; i < 1000; ++i) repeated += " 1 2 3";
+  writeFile(dir / "repeated.obj", repeated + "\n");
+  EXPECT_THAT(errorOf([&] { MeshIO::load((dir / "repeated.obj").string()); }),
+              HasSubstr("repeated.obj: face 1 names vertex 1 twice; a polygonal face must be a "
+                        "simple polygon"));
+  std::string big;
+  for (int i = 0; i < 4096; ++i)
+    big += "v " + std::to_string(std::cos(i * 2 * M_PI / 4096)) + " " +
+           std::to_string(std::sin(i * 2 * M_PI / 4096)) + " 0\n";
+  for (int f = 0; f < 5; ++f) {  // 5 x 4096^2 > 2^26
+    big += "f";
+    for (int i = 0; i < 4096; ++i) big += " " + std::to_string(i + 1);
+    big += "\n";
+  }
+  writeFile(dir / "big.obj", big);
+  EXPECT_THAT(errorOf([&] { MeshIO::load((dir / "big.obj").string()); }),
+              HasSubstr("big.obj: the polygonal faces are too large together to check (at face 5"));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 namespace raylab {
@@ -44,12 +45,39 @@ class TrackedTemporary {
   std::atomic<const char*>* m_slot = nullptr;
 };
 
-/// A line for stderr when a fatal signal ends the program now (setInterruptNote).
+/// A line for stderr, and a folder of files to remove, when a fatal signal ends the program
+/// now (setInterruptNote).
 std::atomic<const char*> g_interruptNote{nullptr};
+std::atomic<const char*> g_interruptFolder{nullptr};
+
+/// Removes the files of `folder`, then the folder, with system calls only (a signal
+/// handler may call no library function that allocates or locks): its entries are read
+/// with getdents64 and unlinked one by one.
+void removeFolderInHandler(const char* folder) {
+  const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(8) char buffer[4096];
+  for (;;) {
+    const long n = ::syscall(SYS_getdents64, fd, buffer, sizeof buffer);
+    if (n <= 0) break;
+    for (long at = 0; at < n;) {
+      // struct linux_dirent64: inode (8), offset (8), record length (2), type (1), name.
+      unsigned short length = 0;
+      std::memcpy(&length, buffer + at + 16, sizeof length);
+      const char* name = buffer + at + 19;
+      if (!(name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0'))))
+        ::unlinkat(fd, name, 0);
+      at += length;
+    }
+  }
+  ::close(fd);
+  ::rmdir(folder);
+}
 
 void removeTemporariesAndDie(int signal) {
   for (auto& slot : g_temporaries)
     if (const char* path = slot.load()) ::unlink(path);  // async-signal-safe
+  if (const char* folder = g_interruptFolder.load()) removeFolderInHandler(folder);
   if (const char* note = g_interruptNote.load())
     if (::write(STDERR_FILENO, note, std::strlen(note)) < 0) {
     }
@@ -80,14 +108,12 @@ std::optional<std::string> writeTarget(const std::string& path, std::optional<mo
     target = resolved.string();
   }
   if (::stat(target.c_str(), &st) == 0) {
-    if (!S_ISREG(st.st_mode)) {
-      problem = std::string(S_ISDIR(st.st_mode) ? "it is a folder"
-                                                : "it is not a regular file "
-                                                  "(a FIFO or a device?)") +
-                "; it was not replaced";
+    // (A folder is left to rename, which says "Is a directory".)
+    if (!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+      problem = "it is not a regular file (a FIFO or a device?); it was not replaced";
       return std::nullopt;
     }
-    mode = st.st_mode & 07777;
+    if (S_ISREG(st.st_mode)) mode = st.st_mode & 07777;
   }
   return target;
 }
@@ -107,7 +133,10 @@ int createTemporary(const std::string& base, std::string& temp) {
 
 }  // namespace
 
-void setInterruptNote(const char* note) { g_interruptNote.store(note); }
+void setInterruptNote(const char* note, const char* folder) {
+  g_interruptFolder.store(folder);
+  g_interruptNote.store(note);
+}
 
 std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes) {
   std::optional<mode_t> mode;

@@ -85,7 +85,7 @@ AtomicFolder::AtomicFolder(std::string target, std::function<bool(const std::str
   }
   if (m_path.empty()) throw Error(m_target + ": cannot create a folder beside it");
   m_note = "raylab: interrupted: " + m_target + " was not changed\n";
-  setInterruptNote(m_note.c_str());
+  setInterruptNote(m_note.c_str(), m_path.c_str());
 }
 
 AtomicFolder::~AtomicFolder() {

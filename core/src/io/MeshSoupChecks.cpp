@@ -16,9 +16,9 @@ std::optional<std::string> checkFaces(const std::vector<std::vector<std::size_t>
     const std::vector<std::size_t>& face = polygons[f];
     const std::string which = "face " + std::to_string(f + 1);
     if (face.size() > limits::kMaxFaceCorners)
-      return which + " has " + std::to_string(face.size()) +
-             " corners; RayLab reads faces of at most " + std::to_string(limits::kMaxFaceCorners) +
-             " corners";
+      return "cannot triangulate a face of " + std::to_string(face.size()) +
+             " corners: RayLab triangulates faces of at most " +
+             std::to_string(limits::kMaxFaceCorners) + " corners";
     corners += face.size();
     if (corners > limits::kMaxMeshCorners)
       return "the faces have more than " + std::to_string(limits::kMaxMeshCorners) +

@@ -284,7 +284,7 @@ ReferenceCache::Lookup ReferenceCache::load(const Scene& scene,
   const std::optional<std::string> bytes = readCacheFile(imageFile, kMaxPfmBytes, problem);
   if (!bytes) return ignore(imageFile, problem.empty() ? "missing" : problem);
   if (imageSeal(k, referenceSettings, *bytes) != seal)
-    return ignore(imageFile, "its bytes do not match the SHA-256 its sidecar recorded");
+    return ignore(imageFile, "its bytes do not match the hash (SHA-256) its sidecar recorded");
   FloatImage image;
   try {
     image = imageio::decodePfm(*bytes, imageFile);

@@ -11,6 +11,7 @@
 #include "raylab/core/Triangle.h"
 
 #include "io/JsonChecks.h"
+#include "io/MeshCache.h"
 #include "io/PrettyJson.h"
 #include "scene/ObjectForm.h"
 #include "scene/SceneKeys.h"
@@ -135,7 +136,7 @@ class Reader : private JsonChecks<Reader> {
         if (!std::filesystem::is_regular_file(source, ec))
           fail(path + "/file", "mesh file \"" + file + "\" not found (looked for " + source + ")");
         try {
-          auto mesh = std::make_unique<TriangleMesh>(MeshIO::load(source));
+          auto mesh = std::make_unique<TriangleMesh>(meshcache::load(source));
           if (object.meshNormals == MeshNormals::Flat) mesh->clearNormals();
           if (object.meshNormals == MeshNormals::Smooth)
             mesh->computeCreaseNormals(radians(object.creaseAngle));

@@ -32,8 +32,9 @@ std::optional<std::string> cannotWrite(const std::string& path);
 void removeTemporaryFilesOnSignals();
 
 /// A line those handlers write to stderr before the signal ends the process (e.g.
-/// "raylab: interrupted: DIR was not changed"), or nullptr for none. The text must live
-/// as long as it is set (AtomicFolder sets and clears it).
-void setInterruptNote(const char* note);
+/// "raylab: interrupted: DIR was not changed"), and a folder whose files (not subfolders)
+/// they remove, then the folder; nullptr for none. Both texts must live as long as they are
+/// set (AtomicFolder sets and clears them).
+void setInterruptNote(const char* note, const char* folder = nullptr);
 
 }  // namespace raylab

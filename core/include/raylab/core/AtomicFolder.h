@@ -13,10 +13,10 @@ namespace raylab {
  * one in one step (Linux's renameat2 with RENAME_EXCHANGE), then removes the old.
  *
  * Until commit() the target is untouched: an error, a full disk, Ctrl-C or kill -9 leave
- * the old folder as it was. The new folder is removed when the object dies uncommitted;
- * one left by a killed process (its name holds the process id) is removed by the next
- * AtomicFolder beside the same target. A fatal signal (SIGINT, SIGTERM, SIGHUP) writes
- * "raylab: interrupted: TARGET was not changed" (setInterruptNote).
+ * the old folder as it was. The new folder is removed when the object dies uncommitted,
+ * and by the handlers of SIGINT, SIGTERM and SIGHUP (removeTemporaryFilesOnSignals), which
+ * also write "raylab: interrupted: TARGET was not changed"; one left by kill -9 (its name
+ * holds the process id) is removed by the next AtomicFolder beside the same target.
  *
  * The old folder is replaced whole, so it may only hold files the command writes
  * (`ours`): a folder holding anything else (a user's own files) is refused rather than
