@@ -155,8 +155,8 @@ int runCommandLine(int argc, char** argv) {
   } catch (const std::logic_error& e) {
     // A value CLI11's conversion cannot hold (--no-captions=<a huge number> threw
     // out_of_range, exit 3, issue 38): a usage error.
-    std::cerr << "raylab: " << printable(e.what()) << " (a value on the command line is out of "
-              << "range)\n";
+    std::cerr << "raylab: a value on the command line is out of range (" << printable(e.what())
+              << ")\nRun with --help for more information.\n";
     return kExitUsage;
   }
 

@@ -245,7 +245,14 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
   common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
   CLI::Option* pixelOption = command->add_option(
       "--pixel", pixel, "Pixel X Y (or X,Y) of the scene camera's image to trace (y down)");
-  pixelOption->delimiter(',')->type_name("X Y")->check(CLI::NonNegativeNumber);
+  // Each a whole number from 0: "-1 -1" was read as no pixel given (issue 38).
+  pixelOption->delimiter(',')->type_name("X Y")->check(CLI::Validator(
+      [](const std::string& text) {
+        const bool digits = !text.empty() && text.size() <= 9 &&
+                            text.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? std::string() : std::string("expected a pixel: whole numbers from 0");
+      },
+      "X Y"));
   if (pixelRequired) pixelOption->required();
   command->add_option("--sample", sample, "Which sample of the pixel (its random numbers)")
       ->check(CLI::Range(0, 1 << 24))

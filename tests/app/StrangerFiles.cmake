@@ -49,3 +49,27 @@ if(RAYLAB_ENABLE_RENDERING_TESTS)
     LABELS "app;lessons;render" TIMEOUT 300
     PASS_REGULAR_EXPRESSION "SIGKILL: the old handout intact, nothing left behind after the next run")
 endif()
+# 17: the smaller ones. A seed past 2^64 - 1 was clamped silently (and -1's message quoted a
+# 300-digit number); --pixel -1 -1 said "--pixel X Y is required"; a huge flag value
+# exited 3; a missing output folder was found only after the whole render; a lesson's
+# scene that is a folder was "not found".
+raylab_add_cli_test(app.Stranger.HugeSeedIsAUsageError CODE 2
+  STDERR "--seed: expected a whole number from 0 to 18446744073709551615\n" LABELS app
+  COMMAND ${raylab_exe} render --seed 99999999999999999999999 --size 16x16
+          --out ${out}/app_stranger_seed.ppm)
+raylab_add_cli_test(app.Stranger.NegativePixelIsAUsageError CODE 2
+  STDERR "--pixel: expected a pixel: whole numbers from 0\n" LABELS app
+  COMMAND ${raylab_exe} trace --pixel -1 -1 --out ${out}/app_stranger_pixel.png)
+raylab_add_cli_test(app.Stranger.HugeFlagValueIsAUsageError CODE 2
+  STDERR "raylab: a value on the command line is out of range" LABELS app
+  COMMAND ${raylab_exe} animate --pixel 5 5 --no-captions=99999999999999999999999999
+          --out ${out}/app_stranger_flag)
+raylab_add_cli_test(app.Stranger.AMissingOutputFolderIsFoundBeforeTheRender CODE 1
+  STDERR "raylab: error: [^\n]*/no-such-folder/x\\.ppm: cannot write: folder [^\n]* does not exist"
+  LABELS app
+  COMMAND ${raylab_exe} render --size 4096x4096 --spp 1048576
+          --out ${out}/no-such-folder/x.ppm)
+raylab_add_cli_test(app.Stranger.ALessonSceneThatIsAFolderIsNamed CODE 1
+  STDERR "raylab: error: [^\n]*folder-scene-lesson\\.json: at /scene: the scene does not load: [^\n]*list: cannot read scene file: not a regular file"
+  LABELS app lessons
+  COMMAND ${raylab_exe} lesson ${stranger}/folder-scene-lesson.json --check)
