@@ -73,3 +73,13 @@ raylab_add_cli_test(app.Stranger.ALessonSceneThatIsAFolderIsNamed CODE 1
   STDERR "raylab: error: [^\n]*folder-scene-lesson\\.json: at /scene: the scene does not load: [^\n]*list: cannot read scene file: not a regular file"
   LABELS app lessons
   COMMAND ${raylab_exe} lesson ${stranger}/folder-scene-lesson.json --check)
+# 13: animate into a folder of an earlier run's frames: the folder is replaced whole, so
+# the frames there (and what ffmpeg's glob sees) are this run's only (the earlier run left
+# 6 frames, this one writes 3).
+if(RAYLAB_ENABLE_RENDERING_TESTS)
+  raylab_add_cli_test(app.Stranger.AnimateReplacesAnEarlierRunsFrames CODE 0
+    STDOUT "(^|\n)3\n$" LABELS app render
+    COMMAND ${RAYLAB_WITH_DISPLAY} sh -c
+            "d=$0 r=$1 && rm -rf \"$d\" && \"$r\" animate --pixel 5 5 --size 32x24 --frames 0:5 --out \"$d\" > /dev/null && \"$r\" animate --pixel 5 5 --size 32x24 --frames 0:2 --out \"$d\" > /dev/null && set -- \"$d\"/* && echo $#"
+            ${out}/app_stranger_frames ${raylab_exe})
+endif()
