@@ -495,6 +495,17 @@ TEST(StrangerFiles, 14_MeshFacesAreCountedBeforeCgalRepairsThem) {
     big += "\n";
   }
   writeFile(dir / "big.obj", big);
+  // An ASCII STL's triangles are counted before CGAL reads it whole (4.5M took 2.4 GB).
+  {
+    std::ofstream stl(dir / "many.stl", std::ios::binary);
+    stl << "solid many\n";
+    const std::string facet = "facet\n";
+    for (std::size_t i = 0; i <= limits::kMaxMeshTriangles; ++i) stl << facet;
+  }
+  EXPECT_THAT(errorOf([&] { MeshIO::load((dir / "many.stl").string()); }),
+              HasSubstr("many.stl: cannot parse STL file: the ASCII STL file has more than "
+                        "4000000 triangles"));
+  fs::remove(dir / "many.stl");
   EXPECT_THAT(errorOf([&] { MeshIO::load((dir / "big.obj").string()); }),
               HasSubstr("big.obj: the polygonal faces are too large together to check (at face 5"));
 }
