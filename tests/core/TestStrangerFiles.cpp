@@ -13,6 +13,7 @@
 #include "raylab/core/MeshIO.h"
 #include "raylab/core/ReferenceCache.h"
 #include "raylab/core/Renderer.h"
+#include "raylab/core/SceneEdit.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Text.h"
@@ -508,6 +509,18 @@ TEST(StrangerFiles, 14_MeshFacesAreCountedBeforeCgalRepairsThem) {
   fs::remove(dir / "many.stl");
   EXPECT_THAT(errorOf([&] { MeshIO::load((dir / "big.obj").string()); }),
               HasSubstr("big.obj: the polygonal faces are too large together to check (at face 5"));
+}
+
+TEST(StrangerFiles, 15_ASetPlaceThatIsNotUtf8IsRefused) {
+  // Found by the new FuzzSet target: `--set` with a place holding a byte that is not UTF-8
+  // added that key to the scene's JSON, whose writer then threw (exit 3).
+  const Scene scene = SceneIO::parse(kScene, "s.json");
+  EXPECT_THAT(
+      errorOf([&] { edit::setValue(scene, "/render/oooooooa(\xf1_epmth", "63", "s.json"); }),
+      HasSubstr("not a place in a scene file"));
+  EXPECT_THAT(errorOf([&] { edit::setValue(scene, "/render/\x1b[2J", "1", "s.json"); }),
+              HasSubstr("/render/\\x1b[2J"));
+  EXPECT_EQ(edit::setValue(scene, "/render/max_depth", "3", "s.json").render.maxDepth, 3);
 }
 
 }  // namespace
