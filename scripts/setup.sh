@@ -18,6 +18,7 @@ packages=(
   fonts-noto-cjk fonts-dejavu-core                    # fonts: Chinese text and the UI's Latin
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev     # CGAL exact kernels
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev  # maths, scene files, CLI, threads
+  libssl-dev                                          # SHA-256 of the reference cache
   libgtest-dev libgmock-dev libbenchmark-dev          # tests and benchmarks
   clang-format                                        # the style check in the test suite
   clang libclang-rt-14-dev llvm                       # the ASan + fuzz stage (libFuzzer)

@@ -8,7 +8,7 @@
 # - the raylab executable (its command line, without the window) and its CLI tests that
 #   need no display (`app.*` but the labels render, python and lessons);
 # - the libFuzzer targets of tests/fuzz (scene, lesson and ray-tree readers, the OBJ, OFF,
-#   PLY and STL readers) on the same instrumented library, each fuzzed for
+#   PLY and STL readers, the reference cache and --set) on the same instrumented library, each fuzzed for
 #   RAYLAB_FUZZ_SECONDS (30 by default) from its seeds (CTest label `fuzz`).
 # A subset, so the whole of scripts/test.sh stays well under 30 minutes on 2 cores: the
 # full `asan` preset (VTK views, the window, Python) takes about 10 minutes more to build.
@@ -20,7 +20,7 @@ cd "$here"
 build=build/asan-fuzz
 # raylab_asan_tests: every test program whose tests carry the label `asan`.
 targets=(raylab_asan_tests raylab raylab_check_render raylab_check_picture
-         FuzzScene FuzzLesson FuzzRayTree Fuzzobj Fuzzoff Fuzzply Fuzzstl)
+         FuzzScene FuzzLesson FuzzRayTree FuzzCache FuzzSet Fuzzobj Fuzzoff Fuzzply Fuzzstl)
 
 # The asan preset's cache variables, without what the subset does not build, and -O1 -g1
 # instead of RelWithDebInfo's -O2 -g: the sanitizers find the same, the build is cheaper

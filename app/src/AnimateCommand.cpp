@@ -6,6 +6,7 @@
 #include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
 
+#include "raylab/core/AtomicFolder.h"
 #include "raylab/core/Exception.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/Display.h"
@@ -23,9 +24,11 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace raylab::app {
 
@@ -109,6 +112,30 @@ std::string shellQuote(const std::string& text) {
   return quoted + "'";
 }
 
+/// Encodes dir/frame_*.png to `video` with ffmpeg: into a new file beside it (same
+/// extension: ffmpeg picks the format by it), renamed over `video` only when ffmpeg
+/// succeeds, so a failed encoding leaves an earlier video as it was.
+void encodeVideo(const std::string& ffmpeg, const std::filesystem::path& dir, int fps,
+                 const std::string& video, const std::string& framesFolder) {
+  namespace fs = std::filesystem;
+  const fs::path target(video);
+  const fs::path temp =
+      target.parent_path() / ("." + target.stem().string() + ".raylab-new-" +
+                              std::to_string(::getpid()) + target.extension().string());
+  const std::string command =
+      shellQuote(ffmpeg) + " -y -loglevel error -framerate " + std::to_string(fps) +
+      " -pattern_type glob -i " + shellQuote((dir / "frame_*.png").string()) +
+      " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p " + shellQuote(temp.string());
+  const int status = std::system(command.c_str());
+  std::error_code ec;
+  if (status != 0 || !fs::exists(temp, ec) || std::rename(temp.c_str(), video.c_str()) != 0) {
+    fs::remove(temp, ec);
+    throw AnimateError(video + ": ffmpeg failed (exit status " +
+                       std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+                       "); the video was not changed; the PNG frames are in " + framesFolder);
+  }
+}
+
 int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) {
   // Step 1: scene, pixel, frames and encoder, all checked before any work.
   const RayTreeOptions& o = options.tree;
@@ -139,13 +166,21 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
 
   // Step 2: the folder for the frames (its problems first), then the tree, its view and the
   // frames to write (once they can be drawn).
+  // The frames go into a new folder beside --out, swapped in when all are written: an
+  // error or Ctrl-C leave an earlier run's frames as they were, and the video sees only
+  // this run's frames (issue 38).
   const std::filesystem::path dir(o.common.out);
   const std::string missing = firstMissingFolder(o.common.out);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw AnimateError(o.common.out + ": cannot create the folder for the frames (" +
-                       (ec ? ec.message() : std::string("a file of that name exists")) + ")");
+  std::optional<AtomicFolder> folder;
+  try {
+    folder.emplace(o.common.out, [](const std::string& name) {
+      return name.rfind("frame_", 0) == 0 && name.size() > 10 &&
+             name.compare(name.size() - 4, 4, ".png") == 0;
+    });
+  } catch (const AtomicFolder::Error& e) {
+    removeFoldersMade(missing);
+    throw AnimateError(e.what());
+  }
   requireDisplayAfterFolder(missing);
   const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
   const RayTree& tree = trace.tree;
@@ -167,7 +202,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   const auto frameFile = [&](int frame) {
     std::ostringstream name;
     name << "frame_" << std::setfill('0') << std::setw(digits) << frame << ".png";
-    return (dir / name.str()).string();
+    return folder->file(name.str());
   };
 
   // Step 3: render frame after frame into the same view.
@@ -184,18 +219,15 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
                     std::to_string(i + 1) + "/" + std::to_string(frames.size()) + " frames");
   }
 
-  // Step 4: the video, when asked for.
-  if (!ffmpeg.empty()) {
-    const std::string command =
-        shellQuote(ffmpeg) + " -y -loglevel error -framerate " + std::to_string(options.fps) +
-        " -pattern_type glob -i " + shellQuote((dir / "frame_*.png").string()) +
-        " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p " + shellQuote(options.video);
-    const int status = std::system(command.c_str());
-    if (status != 0 || !std::filesystem::exists(options.video))
-      throw AnimateError(options.video + ": ffmpeg failed (exit status " +
-                         std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
-                         "); the PNG frames are in " + o.common.out);
+  try {
+    folder->commit();
+  } catch (const AtomicFolder::Error& e) {
+    throw AnimateError(e.what());
   }
+
+  // Step 4: the video, when asked for: encoded from the folder, which holds this run's
+  // frames only, into a new file renamed over the video when ffmpeg succeeds.
+  if (!ffmpeg.empty()) encodeVideo(ffmpeg, dir, options.fps, options.video, o.common.out);
 
   std::cout << o.common.out << "\n";
   if (!options.video.empty()) std::cout << options.video << "\n";

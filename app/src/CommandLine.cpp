@@ -19,6 +19,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <stdexcept>
 #include <vector>
 
 namespace raylab::app {
@@ -151,6 +152,12 @@ int runCommandLine(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version come here too, with CLI11's success code.
     return cli.exit(e) == 0 ? kExitOk : kExitUsage;
+  } catch (const std::logic_error& e) {
+    // A value CLI11's conversion cannot hold (--no-captions=<a huge number> threw
+    // out_of_range, exit 3, issue 38): a usage error.
+    std::cerr << "raylab: a value on the command line is out of range (" << printable(e.what())
+              << ")\nRun with --help for more information.\n";
+    return kExitUsage;
   }
 
   for (const Subcommand& subcommand : subcommands) {

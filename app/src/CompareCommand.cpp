@@ -6,6 +6,7 @@
 #include "raylab/core/Exception.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/ReferenceCache.h"
 #include "raylab/vis/ComparisonCaptions.h"
@@ -148,7 +149,7 @@ void ReferenceOptions::add(CLI::App* command, const std::string& pictureDefault)
                       "Folder of the reference cache (default: $RAYLAB_CACHE_DIR, else "
                       "$XDG_CACHE_HOME/raylab/references, else ~/.cache/raylab/references)");
   command->add_option("--threads", threads, "Worker threads, 0 = all")
-      ->check(CLI::Range(0, 1024))
+      ->check(CLI::Range(0, limits::kMaxThreads))
       ->capture_default_str();
   command->add_option("--picture", picture, "Size WIDTHxHEIGHT of the picture written")
       ->check(CLI::Validator(checkSize, "WxH"))

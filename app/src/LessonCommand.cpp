@@ -6,6 +6,7 @@
 #include "ExitCodes.h"
 
 #include "raylab/core/AtomicFile.h"
+#include "raylab/core/AtomicFolder.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/Image.h"
@@ -13,6 +14,7 @@
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
+#include "raylab/core/Text.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/BvhCaptions.h"
 #include "raylab/vis/ComparisonView.h"
@@ -95,18 +97,22 @@ int runList(const LessonOptions& o) {
   for (const std::string& path : LessonIO::list(o.dir)) {
     try {
       lessons.push_back(LessonIO::load(path));
-    } catch (const LessonIO::LoadError& e) {
-      // List the others; the broken one is reported and makes the exit code 1.
-      std::cerr << "raylab: error: " << e.what() << "\n";
+    } catch (const std::exception& e) {
+      // List the others; the broken one is reported and makes the exit code 1 (whatever it
+      // throws: one stranger's file never aborts the listing, issue 38).
+      std::cerr << "raylab: error: " << printable(e.what()) << "\n";
       ++failed;
     }
   }
   std::size_t idWidth = 0;
-  for (const Lesson& lesson : lessons) idWidth = std::max(idWidth, lesson.id.size());
+  // Ids and titles come from the files: printed with their control characters escaped, so
+  // a lesson cannot clear the screen or write the clipboard (issue 38).
+  for (const Lesson& lesson : lessons) idWidth = std::max(idWidth, printable(lesson.id).size());
   for (const Lesson& lesson : lessons) {
     const int steps = static_cast<int>(lesson.steps.size());
-    std::cout << lesson.id << std::string(idWidth - lesson.id.size() + 2, ' ')
-              << lesson.title.in(language) << "  ("
+    const std::string id = printable(lesson.id);
+    std::cout << id << std::string(idWidth - id.size() + 2, ' ')
+              << printable(lesson.title.in(language)) << "  ("
               << (zh ? std::to_string(steps) + " 步"
                      : std::to_string(steps) + (steps == 1 ? " step" : " steps"))
               << ")\n";
@@ -129,7 +135,7 @@ int runCheck(const LessonOptions& o) {
     if (!step.question || !step.question->check) continue;
     const LessonQuestion& q = *step.question;
     const std::string where =
-        path + ": step " + std::to_string(i + 1) + " (\"" + step.title.en + "\"): ";
+        printable(path + ": step " + std::to_string(i + 1) + " (\"" + step.title.en + "\"): ");
     try {
       // Numbers and what a ray reaches alike, computed by core (answerProblem).
       const std::optional<std::string> problem = answerProblem(step);
@@ -137,8 +143,8 @@ int runCheck(const LessonOptions& o) {
       if (!problem) continue;
       std::cerr << "raylab: error: " << where << *problem << std::endl;
     } catch (const Exception& e) {
-      std::cerr << "raylab: error: " << where << toString(q.check->quantity) << ": " << e.what()
-                << std::endl;
+      std::cerr << "raylab: error: " << where << toString(q.check->quantity) << ": "
+                << printable(e.what()) << std::endl;
     }
     ++wrong;
   }
@@ -438,28 +444,22 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
 /// "01", "02", ...
 std::string twoDigits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
-/// Creates `dir` and checks that a file can be written in it; throws naming it otherwise.
-void prepareFolder(const std::string& dir) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir, ec))
-    throw OutputError(dir + ": cannot create the output folder" +
-                      (ec ? " (" + ec.message() + ")" : std::string(" (not a folder)")));
-  const std::string probe = (fs::path(dir) / ".raylab-write-check").string();
-  if (const auto problem = writeFileAtomically(probe, ""))
-    throw OutputError(dir + ": cannot write in the output folder (" + *problem + ")");
-  fs::remove(probe, ec);
-}
-
 int runRender(const LessonOptions& o) {
   namespace fs = std::filesystem;
   const std::string path = resolveLesson(o);
   const Lesson lesson = LessonIO::load(path);
   const Language language = *parseLanguage(o.lang);
   // The folder's problems first, then the display's (without one, nothing stays behind).
+  // The handout is written into a new folder beside DIR and swapped in when whole: an
+  // error, a full disk or Ctrl-C leave the earlier handout as it was (issue 38).
   const std::string missing = firstMissingFolder(o.out);
-  prepareFolder(o.out);
+  std::optional<AtomicFolder> folder;
+  try {
+    folder.emplace(o.out, handoutFile);
+  } catch (const AtomicFolder::Error& e) {
+    removeFoldersMade(missing);
+    throw OutputError(e.what());
+  }
   requireDisplayAfterFolder(missing);
   std::optional<std::pair<int, int>> size;  // (assigned, not ?:, which GCC 12 misreads)
   if (!o.size.empty()) size = parseSize(o.size);
@@ -468,16 +468,16 @@ int runRender(const LessonOptions& o) {
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
     const StepPicture picture = stepPicture(lesson.steps[i], size, language, o.maxSpp);
     const std::string png = "step-" + twoDigits(i + 1) + ".png";
-    const std::string file = (fs::path(o.out) / png).string();
-    vis::writePng(picture.image, file);
+    vis::writePng(picture.image, folder->file(png));
     ++pictures;
-    std::cout << file << std::endl;
+    std::cout << printable((fs::path(o.out) / png).string()) << std::endl;
     md += handoutStep(lesson, i, picture, png, language, o.student);
   }
   // The student's handout ends with the last step: no key, no notes.
   if (!o.student) md += handoutAnswers(lesson, language);
-  const std::string handout = (fs::path(o.out) / "lesson.md").string();
-  writeTextFile(handout, md);
+  writeTextFile(folder->file("lesson.md"), md);
+  folder->commit();
+  const std::string handout = printable((fs::path(o.out) / "lesson.md").string());
   const int steps = static_cast<int>(lesson.steps.size());
   std::cout << handout << "\n"
             << steps << (steps == 1 ? " step, " : " steps, ") << pictures

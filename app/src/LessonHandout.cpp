@@ -2,6 +2,8 @@
 // teacher (the key, notes, plan) or the student (--student: none of them).
 #include "LessonHandout.h"
 
+#include "raylab/core/Text.h"
+
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -45,10 +47,12 @@ std::string tryValueSection(const Lesson& lesson, const LessonStep& step, Langua
   const HandoutWords& words = handoutWords(language);
   const bool zh = language == Language::Chinese;
   const LessonTryValue& t = *step.tryValue;
+  const std::string command = tryCommand(lesson, step);
+  const std::string fence = markdownFence(command);
   return "**" + std::string(words.tryValue) + (zh ? "：** " : ":** ") +
-         fill(words.tryTask, (zh ? "" : "the ") + t.label.in(language), formatNumber(t.original),
-              formatNumber(t.value)) +
-         "\n\n```\n" + tryCommand(lesson, step) + "\n```\n\n";
+         fill(words.tryTask, (zh ? "" : "the ") + markdownText(t.label.in(language), true),
+              formatNumber(t.original), formatNumber(t.value)) +
+         "\n\n" + fence + "\n" + command + "\n" + fence + "\n\n";
 }
 
 /// The question of a step: its prompt, and its choices in the order the lesson fixes
@@ -56,12 +60,12 @@ std::string tryValueSection(const Lesson& lesson, const LessonStep& step, Langua
 std::string questionSection(const LessonQuestion& q, Language language) {
   const HandoutWords& words = handoutWords(language);
   const bool zh = language == Language::Chinese;
-  std::string md =
-      "**" + std::string(words.question) + (zh ? "：**" : ":** ") + q.prompt.in(language) + "\n\n";
+  std::string md = "**" + std::string(words.question) + (zh ? "：**" : ":** ") +
+                   markdownText(q.prompt.in(language)) + "\n\n";
   if (q.type == LessonQuestion::Type::Choice) {
     for (std::size_t k = 0; k < q.shownOrder.size(); ++k)
       md += std::string(1, char('A' + k)) + ". " +
-            q.choices[std::size_t(q.shownOrder[k])].in(language) + "\n";
+            markdownText(q.choices[std::size_t(q.shownOrder[k])].in(language), true) + "\n";
     md += "\n";
   } else {
     md += std::string("*") + words.numberAnswer + "*\n\n";
@@ -84,7 +88,8 @@ std::string kitSection(const Lesson& lesson, Language language, bool student) {
   std::string md;
   if (!lesson.objectives.empty()) {
     md += "**" + std::string(words.objectives) + (zh ? "：**\n\n" : ":**\n\n");
-    for (const LocalText& o : lesson.objectives) md += "- " + o.in(language) + "\n";
+    for (const LocalText& o : lesson.objectives)
+      md += "- " + markdownText(o.in(language), true) + "\n";
     md += "\n";
   }
   if (student) return md;
@@ -93,7 +98,8 @@ std::string kitSection(const Lesson& lesson, Language language, bool student) {
           " " + words.minutes + "\n\n";
   if (!lesson.misconceptions.empty()) {
     md += "**" + std::string(words.misconceptions) + (zh ? "：**\n\n" : ":**\n\n");
-    for (const LocalText& m : lesson.misconceptions) md += "- " + m.in(language) + "\n";
+    for (const LocalText& m : lesson.misconceptions)
+      md += "- " + markdownText(m.in(language), true) + "\n";
     md += "\n";
   }
   return md;
@@ -146,8 +152,10 @@ const HandoutWords& handoutWords(Language language) {
 }
 
 std::string handoutHead(const Lesson& lesson, Language language, bool student) {
-  return "# " + lesson.title.in(language) + "\n\n" + lesson.summary.in(language) + "\n\n" +
-         kitSection(lesson, language, student);
+  // Every text from the lesson file goes through markdownText: a stranger's lesson cannot put
+  // raw HTML, links or headings into the handout (issue 38).
+  return "# " + markdownText(lesson.title.in(language), true) + "\n\n" +
+         markdownText(lesson.summary.in(language)) + "\n\n" + kitSection(lesson, language, student);
 }
 
 /// The handout's section of step `index` (0-based). A "predict" question comes before the
@@ -158,21 +166,26 @@ std::string handoutStep(const Lesson& lesson, std::size_t index, const PictureWo
   const HandoutWords& words = handoutWords(language);
   const bool zh = language == Language::Chinese;
   std::string md = "## " + std::string(words.step) + " " + std::to_string(index + 1) +
-                   (zh ? " 步：" : ". ") + step.title.in(language) +
+                   (zh ? " 步：" : ". ") + markdownText(step.title.in(language), true) +
                    minutesNote(step, language, student) + "\n\n";
-  md += step.text.in(language) + "\n\n";
+  md += markdownText(step.text.in(language)) + "\n\n";
   if (step.tryValue) md += tryValueSection(lesson, step, language);
   const bool predict = step.question && step.question->predict;
   if (predict)
     md += "> " + std::string(words.predict) + "\n\n" + questionSection(*step.question, language);
-  md += "![" + step.title.in(language) + "](" + png + ")\n\n";
-  if (!picture.caption.empty()) md += "*" + picture.caption + "*\n\n";
-  if (!picture.note.empty()) md += "> " + picture.note + "\n\n";
-  if (!picture.crossingsText.empty())
-    md += "**" + std::string(words.crossings) + "**\n\n```\n" + picture.crossingsText + "```\n\n";
-  if (!picture.inspectorText.empty())
-    md += "**" + std::string(words.inspector) + "**\n\n```\n" + picture.inspectorText +
-          (picture.inspectorText.back() == '\n' ? "" : "\n") + "```\n\n";
+  md += "![" + markdownText(step.title.in(language), true) + "](" + png + ")\n\n";
+  if (!picture.caption.empty()) md += "*" + markdownText(picture.caption, true) + "*\n\n";
+  if (!picture.note.empty()) md += "> " + markdownText(picture.note, true) + "\n\n";
+  if (!picture.crossingsText.empty()) {
+    const std::string fence = markdownFence(picture.crossingsText);
+    md += "**" + std::string(words.crossings) + "**\n\n" + fence + "\n" + picture.crossingsText +
+          fence + "\n\n";
+  }
+  if (!picture.inspectorText.empty()) {
+    const std::string fence = markdownFence(picture.inspectorText);
+    md += "**" + std::string(words.inspector) + "**\n\n" + fence + "\n" + picture.inspectorText +
+          (picture.inspectorText.back() == '\n' ? "" : "\n") + fence + "\n\n";
+  }
   if (step.question && !predict) md += questionSection(*step.question, language);
   return md;
 }
@@ -186,21 +199,21 @@ std::string handoutAnswers(const Lesson& lesson, Language language) {
     const LessonStep& step = lesson.steps[i];
     if (!step.question && step.teacherNotes.empty()) continue;
     md += "### " + std::string(words.step) + " " + std::to_string(i + 1) + (zh ? " 步：" : ". ") +
-          step.title.in(language) + "\n\n";
+          markdownText(step.title.in(language), true) + "\n\n";
     if (step.question) {
       const LessonQuestion& q = *step.question;
       md += "**" + std::string(words.answer) + (zh ? "：**" : ":** ");
       if (q.type == LessonQuestion::Type::Choice)
         md += std::string(1, char('A' + q.shownAnswer())) + ". " +
-              q.choices.at(q.answerIndex).in(language);
+              markdownText(q.choices.at(q.answerIndex).in(language), true);
       else
         md += formatNumber(q.answer) +
               (q.tolerance > 0 ? " (± " + formatNumber(q.tolerance) + ")" : std::string());
-      md += "\n\n" + q.explanation.in(language) + "\n\n";
+      md += "\n\n" + markdownText(q.explanation.in(language)) + "\n\n";
     }
     if (!step.teacherNotes.empty())
-      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") + step.teacherNotes.in(language) +
-            "\n\n";
+      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") +
+            markdownText(step.teacherNotes.in(language)) + "\n\n";
   }
   return md;
 }

@@ -451,7 +451,7 @@ QStringList MainWindow::lessonFiles() const {
       for (const std::string& path : LessonIO::list(dir.toStdString()))
         files << QString::fromStdString(path);
       return files;
-    } catch (const Exception&) {
+    } catch (const std::exception&) {
       // An unreadable folder: try the next.
     }
   }
@@ -470,7 +470,7 @@ void MainWindow::fillLessonsMenu() {
       try {
         const LocalText title = LessonIO::readTitle(path.toStdString());
         titles.insert(path, {QString::fromStdString(title.en), QString::fromStdString(title.zh)});
-      } catch (const Exception&) {
+      } catch (const std::exception&) {
         titles.insert(path,
                       {QFileInfo(path).completeBaseName(), QFileInfo(path).completeBaseName()});
       }
@@ -504,10 +504,13 @@ void MainWindow::fillLessonsMenu() {
 }
 
 bool MainWindow::openLesson(const QString& path, bool ask) {
+  // Ask about unsaved edits before reading a stranger's file: whatever the file holds, the
+  // edits are saved or dropped by the user's choice first (issue 38).
+  if (ask && !maybeSave()) return false;
   std::shared_ptr<const Lesson> lesson;
   try {
     lesson = std::make_shared<const Lesson>(LessonIO::load(path.toStdString()));
-  } catch (const Exception& e) {
+  } catch (const std::exception& e) {
     showError(tr("Cannot open the lesson"), QString::fromStdString(e.what()));
     return false;
   }
@@ -515,7 +518,6 @@ bool MainWindow::openLesson(const QString& path, bool ask) {
     showError(tr("Cannot open the lesson"), tr("%1: the lesson has no steps").arg(path));
     return false;
   }
-  if (ask && !maybeSave()) return false;
   m_lessonDock->show();
   m_lessonDock->raise();
   m_lessonPanel->setLesson(lesson);  // shows step 1 (stepChanged)
@@ -1091,7 +1093,7 @@ bool MainWindow::openFile(const QString& path, bool ask) {
   if (ask && !maybeSave()) return false;
   try {
     m_document->open(path);
-  } catch (const Exception& e) {
+  } catch (const std::exception& e) {
     showError(tr("Cannot open the scene"), QString::fromStdString(e.what()));
     return false;
   }
@@ -1140,7 +1142,7 @@ void MainWindow::revert() {
     return;
   try {
     m_document->revert();
-  } catch (const Exception& e) {
+  } catch (const std::exception& e) {
     showError(tr("Cannot read the scene again"), QString::fromStdString(e.what()));
   }
 }
@@ -1155,7 +1157,7 @@ void MainWindow::startUp() {
     m_document->open(last);
     rememberFile(last);
     statusBar()->showMessage(tr("Opened %1, the scene open last time").arg(last));
-  } catch (const Exception& e) {
+  } catch (const std::exception& e) {
     statusBar()->showMessage(
         tr("The built-in default scene: the scene open last time could not be read (%1)")
             .arg(QString::fromStdString(e.what())));

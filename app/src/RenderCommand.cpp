@@ -4,6 +4,7 @@
 #include "SceneSource.h"
 
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/vis/ImageIO.h"
 
@@ -43,6 +44,10 @@ int runRender(const RenderOptions& options, const std::string& topLevelScene) {
     std::cerr << "raylab: warning: " << (options.noNee ? "--no-nee" : "--no-mis")
               << " applies to path tracing only; " << toString(settings.algorithm) << " ignores it"
               << std::endl;
+
+  // The output's folder before the work: a missing one failed only after the whole
+  // render (issue 38).
+  checkWritable(out);
 
   // Step 2: render, reporting each pass.
   Renderer renderer(scene, settings);
@@ -113,7 +118,7 @@ Subcommand addRenderCommand(CLI::App& cli) {
   command->add_option("--spp", options->spp, "Samples per pixel (default: the scene's)")
       ->check(CLI::Range(1, 1 << 20));
   command->add_option("--threads", options->threads, "Worker threads, 0 = all")
-      ->check(CLI::Range(0, 1024))
+      ->check(CLI::Range(0, limits::kMaxThreads))
       ->capture_default_str();
   command->add_flag("--no-nee", options->noNee,
                     "Path tracing without next-event estimation (smallpt's estimator: light is "

@@ -111,8 +111,19 @@ void CommonOptions::add(CLI::App* command, const std::string& outHelp, const std
                             ->check(CLI::IsMember(algorithmWords()));
   }
   // A negative seed is a mistake, not 2^64 - 1 (issue 14).
-  m_seedOption = command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)")
-                     ->check(CLI::NonNegativeNumber);
+  // Digits only, and at most 2^64 - 1: a larger one was clamped silently, and CLI11's own
+  // message quoted a 300-digit number back (issue 38).
+  m_seedOption =
+      command->add_option("--seed", m_seedValue, "Random seed (default: the scene's)")
+          ->check(CLI::Validator(
+              [](const std::string& text) {
+                const bool digits = !text.empty() && text.size() <= 20 &&
+                                    text.find_first_not_of("0123456789") == std::string::npos;
+                if (digits && (text.size() < 20 || text <= "18446744073709551615"))
+                  return std::string();
+                return std::string("expected a whole number from 0 to 18446744073709551615");
+              },
+              "SEED"));
   m_sizeOption =
       command->add_option("--size", m_sizeText, sizeHelp)->check(CLI::Validator(checkSize, "WxH"));
   command
@@ -158,7 +169,9 @@ Scene CommonOptions::loadWithSets(const std::string& topLevelScene) const {
     if (place.front() != '/') place = "/render/" + place;
     std::string value = set.substr(eq + 1);
     // JSON as typed; a bare word (whitted, sah) as the string it means.
-    if (!nlohmann::json::accept(value)) value = nlohmann::json(value).dump();
+    // (Bytes that are not UTF-8 become U+FFFD: dump() would throw on them, issue 38.)
+    if (!nlohmann::json::accept(value))
+      value = nlohmann::json(value).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
     loaded = edit::setValue(
         loaded, place, value,
         (path.empty() ? std::string("the built-in scene") : path) + " (--set " + set + ")");

@@ -92,7 +92,7 @@ int writeTrees(const TraceOptions& options, const Scene& scene, const RenderSett
   }
   std::size_t rays = 0;
   for (const PixelTrace& t : traced.traces) rays += t.tree.segments.size();
-  std::cout << o.common.out << "\n" << json << "\n";
+  std::cout << printable(o.common.out) << "\n" << printable(json) << "\n";
   std::cout << what << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
             << rays << " rays" << std::endl;
   if (traced.truncated) std::cerr << "raylab: warning: " << traced.message << std::endl;
@@ -219,18 +219,21 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     std::remove(json.c_str());
     throw;
   }
-  std::cout << o.common.out << "\n" << json << "\n";
+  std::cout << printable(o.common.out) << "\n" << printable(json) << "\n";
   if (root)
     std::cout << "chosen ray from " << toString(root->origin) << " along "
               << toString(root->direction);
   else
     std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample;
   std::cout << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
-            << trace.summary() << std::endl;
-  if (options.allHits) std::cout << "every surface the camera ray crosses:\n" << crossings;
+            << printable(trace.summary()) << std::endl;
+  // Object, material and light names come from the file: printed with their control
+  // characters escaped (issue 38).
+  if (options.allHits)
+    std::cout << "every surface the camera ray crosses:\n" << printable(crossings);
   if (options.inspect >= 0)
-    std::cout << RayInspector::inspect(scene, tree, options.inspect).toString();
-  if (tree.truncated) std::cerr << "raylab: warning: " << tree.message << std::endl;
+    std::cout << printable(RayInspector::inspect(scene, tree, options.inspect).toString());
+  if (tree.truncated) std::cerr << "raylab: warning: " << printable(tree.message) << std::endl;
   return kExitOk;
 }
 
@@ -242,7 +245,14 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
   common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
   CLI::Option* pixelOption = command->add_option(
       "--pixel", pixel, "Pixel X Y (or X,Y) of the scene camera's image to trace (y down)");
-  pixelOption->delimiter(',')->type_name("X Y");
+  // Each a whole number from 0: "-1 -1" was read as no pixel given (issue 38).
+  pixelOption->delimiter(',')->type_name("X Y")->check(CLI::Validator(
+      [](const std::string& text) {
+        const bool digits = !text.empty() && text.size() <= 9 &&
+                            text.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? std::string() : std::string("expected a pixel: whole numbers from 0");
+      },
+      "X Y"));
   if (pixelRequired) pixelOption->required();
   command->add_option("--sample", sample, "Which sample of the pixel (its random numbers)")
       ->check(CLI::Range(0, 1 << 24))

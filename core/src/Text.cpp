@@ -1,7 +1,9 @@
-// printableText: see Text.h.
+// printableText, utf8Prefix, markdownText, markdownFence: see Text.h.
 #include "raylab/core/Text.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <string_view>
 
 namespace raylab {
 
@@ -56,6 +58,57 @@ std::string printableText(const std::string& text) {
     }
   }
   return out;
+}
+
+std::string utf8Prefix(const std::string& text, std::size_t maxBytes) {
+  if (text.size() <= maxBytes) return text;
+  std::size_t end = 0;
+  for (std::size_t i = 0; i < maxBytes;) {
+    const std::size_t length = std::max<std::size_t>(utf8Length(text, i), 1);
+    if (i + length > maxBytes) break;
+    i += length;
+    end = i;
+  }
+  return text.substr(0, end);
+}
+
+std::string markdownText(const std::string& text, bool oneLine) {
+  std::string out;
+  std::size_t lineStart = 0;  // where the current line begins in `out`
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n' || c == '\r') {
+      if (oneLine) {
+        out += ' ';
+      } else {
+        out += '\n';
+        lineStart = out.size();
+      }
+      continue;
+    }
+    // The first character after a line's indentation: escape what would make a heading,
+    // a quote, a list, a rule, a table or a link definition of the line.
+    const bool first =
+        out.find_first_not_of(" \t", lineStart) == std::string::npos && c != ' ' && c != '\t';
+    if (first && std::string_view("#>-=+*_|[!~`").find(c) != std::string_view::npos) out += '\\';
+    if (c == '<') {
+      out += "&lt;";
+    } else if (c == '(' && !out.empty() && out.back() == ']') {
+      out += "\\(";  // "](" would open a link's destination
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string markdownFence(const std::string& text) {
+  std::size_t longest = 0, run = 0;
+  for (const char c : text) {
+    run = c == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  return std::string(std::max<std::size_t>(3, longest + 1), '`');
 }
 
 }  // namespace raylab

@@ -82,6 +82,9 @@ struct SettingsOverrides {
   std::optional<bool> nextEventEstimation;
   std::optional<bool> multipleImportance;
 };
+/// ValueError "NAME must be in LOWEST..HIGHEST, not VALUE" when value is outside (counts
+/// from Python are checked against Limits.h before any work, issue 38).
+void checkRange(const char* name, long long value, long long lowest, long long highest);
 /// The scene's settings with `overrides` applied; an unknown algorithm or a non-positive
 /// spp raises ValueError naming the value.
 RenderSettings settingsFor(const Scene& scene, const SettingsOverrides& overrides);

@@ -6,6 +6,7 @@
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Exception.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Shape.h"
@@ -28,19 +29,22 @@ Algorithm algorithmNamed(const std::string& name) {
   throw py::value_error("unknown algorithm '" + name + "': use " + algorithmWordList());
 }
 
+void checkRange(const char* name, long long value, long long lowest, long long highest) {
+  if (value < lowest || value > highest)
+    throw py::value_error(std::string(name) + " must be in " + std::to_string(lowest) + ".." +
+                          std::to_string(highest) + ", not " + std::to_string(value));
+}
+
 RenderSettings settingsFor(const Scene& scene, const SettingsOverrides& overrides) {
   RenderSettings settings = scene.render;
   if (overrides.algorithm) settings.algorithm = algorithmNamed(*overrides.algorithm);
   if (overrides.spp) {
-    if (*overrides.spp < 1)
-      throw py::value_error("spp must be at least 1, not " + std::to_string(*overrides.spp));
+    checkRange("spp", *overrides.spp, 1, limits::kMaxSamplesPerPixel);
     settings.samplesPerPixel = *overrides.spp;
   }
   if (overrides.seed) settings.seed = *overrides.seed;
   if (overrides.maxDepth) {
-    if (*overrides.maxDepth < 0)
-      throw py::value_error("max_depth must be at least 0, not " +
-                            std::to_string(*overrides.maxDepth));
+    checkRange("max_depth", *overrides.maxDepth, 0, limits::kMaxDepth);
     settings.maxDepth = *overrides.maxDepth;
   }
   if (overrides.nextEventEstimation) settings.nextEventEstimation = *overrides.nextEventEstimation;

@@ -5,10 +5,12 @@
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 
 #include <pybind11/stl.h>
 
 #include <atomic>
+#include <cmath>
 #include <mutex>
 #include <optional>
 #include <vector>
@@ -84,6 +86,9 @@ void bindCompare(py::module_& m) {
          std::optional<std::vector<std::string>> algorithms, const py::object& reference,
          int referenceSpp, int threads, std::optional<std::uint64_t> seed,
          std::optional<int> maxDepth, const py::object& progress, const py::object& dtype) {
+        checkRange("spp", spp, 1, limits::kMaxSamplesPerPixel);
+        checkRange("reference_spp", referenceSpp, 0, limits::kMaxSamplesPerPixel);
+        checkRange("threads", threads, 0, limits::kMaxThreads);
         const std::shared_ptr<const Scene> scene = handle.scene;
         const RenderSettings settings = settingsFor(
             *scene, {std::nullopt, std::nullopt, seed, maxDepth, std::nullopt, std::nullopt});
@@ -104,7 +109,12 @@ void bindCompare(py::module_& m) {
           const std::string file = reference.cast<std::string>();
           comparison.setReference(imageio::readPfm(file), file);
         } else if (!reference.is_none()) {
-          comparison.setReference(arrayToImage(reference, "reference"), "array");
+          FloatImage image = arrayToImage(reference, "reference");
+          // A NaN or infinite reference gave finite error figures (issue 38).
+          for (const glm::vec3& p : image.pixels)
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+              throw py::value_error("reference must hold finite numbers (it holds NaN or inf)");
+          comparison.setReference(std::move(image), "array");
         }
 
         // Progress: the comparison's thread queues its reports here for this thread.

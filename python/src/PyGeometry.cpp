@@ -15,8 +15,11 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace raylab::python {
@@ -34,23 +37,60 @@ Mat4 toMat4(const DoubleArray& rows) {
   return m;
 }
 
+/// A ray's point or vector with finite components; ValueError naming it otherwise (the
+/// exact oracle cannot take NaN or an infinity, issue 38).
+const Vec3& requireFinite(const Vec3& v, const char* what) {
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    throw py::value_error(std::string(what) + " must be finite, got " + toString(v));
+  return v;
+}
+
+/// A ray parameter that is a number (an infinite t_max is no bound); ValueError for NaN.
+double requireNotNan(double t, const char* what) {
+  if (std::isnan(t)) throw py::value_error(std::string(what) + " must be a number, not NaN");
+  return t;
+}
+
 }  // namespace
 
 void bindGeometry(py::module_& m) {
   py::class_<Ray>(m, "Ray", "A half-line origin + t direction, t in [t_min, t_max] (world space).")
       .def(py::init([](const Point3& origin, const Vec3& direction, double tMin, double tMax,
                        double time) {
-             if (glm::length(direction) == 0.0) throw py::value_error("direction must not be zero");
-             return Ray::make(origin, direction, tMin, tMax, time);
+             requireFinite(origin, "origin");
+             requireFinite(direction, "direction");
+             requireNotNan(tMin, "t_min");
+             requireNotNan(tMax, "t_max");
+             requireNotNan(time, "time");
+             // Divided by its largest component first: a direction of 1e300 has an infinite
+             // length and one of 1e-320 a zero one.
+             const double big =
+                 std::max({std::abs(direction.x), std::abs(direction.y), std::abs(direction.z)});
+             if (big == 0.0) throw py::value_error("direction must not be zero");
+             return Ray::make(origin, direction / big, tMin, tMax, time);
            }),
            py::arg("origin"), py::arg("direction"), py::arg("t_min") = 0.0,
            py::arg("t_max") = kInfinity, py::arg("time") = 0.0,
            "The direction is normalised (Ray::make).")
-      .def_readwrite("origin", &Ray::origin)
-      .def_readwrite("direction", &Ray::direction)
-      .def_readwrite("t_min", &Ray::tMin)
-      .def_readwrite("t_max", &Ray::tMax)
-      .def_readwrite("time", &Ray::time)
+      .def_property(
+          "origin", [](const Ray& r) { return r.origin; },
+          [](Ray& r, const Point3& p) { r.origin = requireFinite(p, "origin"); })
+      .def_property(
+          "direction", [](const Ray& r) { return r.direction; },
+          [](Ray& r, const Vec3& d) {
+            requireFinite(d, "direction");
+            if (glm::length(d) == 0.0) throw py::value_error("direction must not be zero");
+            r.direction = d;
+          })
+      .def_property(
+          "t_min", [](const Ray& r) { return r.tMin; },
+          [](Ray& r, double t) { r.tMin = requireNotNan(t, "t_min"); })
+      .def_property(
+          "t_max", [](const Ray& r) { return r.tMax; },
+          [](Ray& r, double t) { r.tMax = requireNotNan(t, "t_max"); })
+      .def_property(
+          "time", [](const Ray& r) { return r.time; },
+          [](Ray& r, double t) { r.time = requireNotNan(t, "time"); })
       .def("at", &Ray::at, py::arg("t"), "The point at parameter t.")
       .def("__repr__", &Ray::toString);
 

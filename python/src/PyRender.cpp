@@ -6,6 +6,7 @@
 #include "raylab/core/Comparison.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/vis/ImageIO.h"
@@ -55,7 +56,7 @@ void bindRender(py::module_& m) {
             settingsFor(*handle.scene, {algorithm, spp, seed, maxDepth, nee, mis});
         warnAbout(*handle.scene);
         const py::dtype type = py::dtype::from_args(dtype);
-        if (threads < 0) throw py::value_error("threads must be 0 (all) or more");
+        checkRange("threads", threads, 0, limits::kMaxThreads);
         // The renderer keeps a reference to the scene: hold the snapshot for the whole run.
         const std::shared_ptr<const Scene> scene = handle.scene;
         Renderer renderer(*scene, settings);

@@ -115,7 +115,7 @@ raylab_add_cli_test(app.BadInput.TruncatedBinaryPly CODE 1
 # An output that is a folder: the message names it and the reason (it said "Success").
 file(MAKE_DIRECTORY ${out}/app_bad_folder_out.png)
 raylab_add_cli_test(app.BadInput.OutputIsAFolder CODE 1
-  STDERR "raylab: error: [^\n]*app_bad_folder_out\\.png: could not replace the file \\(Is a directory\\); the file was not changed"
+  STDERR "raylab: error: [^\n]*app_bad_folder_out\\.png: cannot write: it is a folder"
   LABELS app
   COMMAND ${raylab_exe} render --size 16x16 --spp 1 --out ${out}/app_bad_folder_out.png)
 

@@ -202,7 +202,8 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     // of the media on its two sides).
     const Material& own = tracer.materialOf(hit->object);
     const Material& material = Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own;
-    const HitContext context{intersector, tracer.settings(), ray, *hit, material, sampler};
+    const bool spawns = !(cap && cap->reached) && !(recorder && recorder->full());
+    const HitContext context{intersector, tracer.settings(), ray, *hit, material, sampler, spawns};
     const HitDecision decision = tracer.rule().onHit(context, children);
     emitted = decision.emitted;
     // A child with a non-finite or negative weight is a bug in the rule: never let it in.

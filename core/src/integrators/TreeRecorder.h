@@ -32,6 +32,8 @@ class TreeRecorder {
   /// step in the event's sentence. `media`: the nested volumes the ray is inside at its end.
   void recordStep(const QueuedRay& ray, const SceneHit* hit, EndReason end, const Vec3& emitted,
                   std::vector<QueuedRay>& children, const MediumStack& media);
+  /// Whether the budget has run out: no ray gets children any more.
+  bool full() const { return m_tree.truncated; }
 
  private:
   /// Ids for `count` new segments, or -1 when they would exceed the budget (recording

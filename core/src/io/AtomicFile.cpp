@@ -9,7 +9,9 @@
 #include <cstring>
 #include <filesystem>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/syscall.h>
 #include <unistd.h>
 
 namespace raylab {
@@ -43,9 +45,42 @@ class TrackedTemporary {
   std::atomic<const char*>* m_slot = nullptr;
 };
 
+/// A line for stderr, and a folder of files to remove, when a fatal signal ends the program
+/// now (setInterruptNote).
+std::atomic<const char*> g_interruptNote{nullptr};
+std::atomic<const char*> g_interruptFolder{nullptr};
+
+/// Removes the files of `folder`, then the folder, with system calls only (a signal
+/// handler may call no library function that allocates or locks): its entries are read
+/// with getdents64 and unlinked one by one.
+void removeFolderInHandler(const char* folder) {
+  const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  alignas(8) char buffer[4096];
+  for (;;) {
+    const long n = ::syscall(SYS_getdents64, fd, buffer, sizeof buffer);
+    if (n <= 0) break;
+    for (long at = 0; at < n;) {
+      // struct linux_dirent64: inode (8), offset (8), record length (2), type (1), name.
+      unsigned short length = 0;
+      std::memcpy(&length, buffer + at + 16, sizeof length);
+      const char* name = buffer + at + 19;
+      if (!(name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0'))))
+        ::unlinkat(fd, name, 0);
+      at += length;
+    }
+  }
+  ::close(fd);
+  ::rmdir(folder);
+}
+
 void removeTemporariesAndDie(int signal) {
   for (auto& slot : g_temporaries)
     if (const char* path = slot.load()) ::unlink(path);  // async-signal-safe
+  if (const char* folder = g_interruptFolder.load()) removeFolderInHandler(folder);
+  if (const char* note = g_interruptNote.load())
+    if (::write(STDERR_FILENO, note, std::strlen(note)) < 0) {
+    }
   std::signal(signal, SIG_DFL);
   std::raise(signal);
 }
@@ -55,16 +90,66 @@ std::string withReason(const char* what, int error) {
   return std::string(what) + " (" + std::strerror(error) + ")";
 }
 
+/// Where writeFileAtomically writes for `path`, and with which permissions: through a
+/// symbolic link to the file it names (the link stays a link), the existing file's mode
+/// kept; a FIFO, a device or a folder is never replaced by a regular file (issue 38: as
+/// root, saving to /dev/full made it a file). Nothing, and `problem` set, when refused.
+std::optional<std::string> writeTarget(const std::string& path, std::optional<mode_t>& mode,
+                                       std::string& problem) {
+  std::string target = path;
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    std::error_code ec;
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(path, ec);
+    if (ec) {
+      problem = "cannot follow the symbolic link (" + ec.message() + "); the file was not changed";
+      return std::nullopt;
+    }
+    target = resolved.string();
+  }
+  if (::stat(target.c_str(), &st) == 0) {
+    // (A folder is left to rename, which says "Is a directory".)
+    if (!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+      problem = "it is not a regular file (a FIFO or a device?); it was not replaced";
+      return std::nullopt;
+    }
+    if (S_ISREG(st.st_mode)) mode = st.st_mode & 07777;
+  }
+  return target;
+}
+
+/// A new file `base.raylab-XXXXXX` created with mode 0666 less the umask (mkstemp's 0600
+/// ignored it); -1 when none could be made.
+int createTemporary(const std::string& base, std::string& temp) {
+  static std::atomic<unsigned> counter{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    temp = base + ".raylab-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  errno = EEXIST;
+  return -1;
+}
+
 }  // namespace
 
+void setInterruptNote(const char* note, const char* folder) {
+  g_interruptFolder.store(folder);
+  g_interruptNote.store(note);
+}
+
 std::optional<std::string> writeFileAtomically(const std::string& path, const std::string& bytes) {
-  std::string temp = path + ".XXXXXX";
-  const int fd = ::mkstemp(temp.data());
+  std::optional<mode_t> mode;
+  std::string refused;
+  const std::optional<std::string> target = writeTarget(path, mode, refused);
+  if (!target) return refused;
+  std::string temp;
+  const int fd = createTemporary(*target, temp);
   if (fd < 0)
     return withReason("cannot create a temporary file next to it", errno) +
            "; the file was not changed";
   const TrackedTemporary tracked(temp);
-  ::fchmod(fd, 0644);  // mkstemp makes the file private; these are ordinary files
+  if (mode) ::fchmod(fd, *mode);  // a 0600 file stays private
   const auto fail = [&](const char* problem, int error) {
     ::unlink(temp.c_str());
     return std::optional<std::string>(withReason(problem, error) + "; the file was not changed");
@@ -85,7 +170,7 @@ std::optional<std::string> writeFileAtomically(const std::string& path, const st
     return fail("could not flush the file", error);
   }
   if (::close(fd) != 0) return fail("could not flush the file", errno);
-  if (std::rename(temp.c_str(), path.c_str()) != 0)
+  if (std::rename(temp.c_str(), target->c_str()) != 0)
     return fail("could not replace the file", errno);
   return std::nullopt;
 }

@@ -2,12 +2,16 @@
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Check.h"
+#include "raylab/core/Limits.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_set>
@@ -106,17 +110,32 @@ void writePfm(const FloatImage& image, const std::string& path) {
 namespace {
 
 /// Reads a PFM from `in`; `exact` refuses bytes after the pixels.
-FloatImage readPfmStream(std::istream& in, const std::string& name, bool exact) {
+/// `remaining`: the stream's size in bytes when known (a file's, a string's).
+FloatImage readPfmStream(std::istream& in, const std::string& name, bool exact,
+                         std::optional<std::uint64_t> remaining) {
   std::string magic;
   int width = 0, height = 0;
   double scale = 0.0;
   in >> magic >> width >> height >> scale;
   if (!in || magic != "PF")
     throw ReadError(name + ": not a colour PFM file (expected the \"PF\" header)");
-  if (width <= 0 || height <= 0 || width > 65536 || height > 65536 || scale == 0.0)
+  if (width <= 0 || height <= 0 || !std::isfinite(scale) || scale == 0.0)
     throw ReadError(name + ": bad PFM header (size " + std::to_string(width) + "x" +
                     std::to_string(height) + ", scale " + std::to_string(scale) + ")");
+  // The image limit before any allocation (issue 38: 65536 x 65536 asked for 48 GB).
+  if (width > limits::kMaxImageSide || height > limits::kMaxImageSide ||
+      std::int64_t(width) * height > limits::kMaxImagePixels)
+    throw ReadError(name + ": the PFM image is " + std::to_string(width) + "x" +
+                    std::to_string(height) + "; RayLab's images have sides of at most " +
+                    std::to_string(limits::kMaxImageSide) + " and at most 4096 x 4096 pixels");
   in.get();  // the single whitespace character after the scale
+  // The data must be there before the image is allocated: a 19-byte header cannot make
+  // RayLab touch gigabytes before "truncated".
+  const std::uint64_t dataBytes = std::uint64_t(width) * std::uint64_t(height) * 12;
+  if (remaining && *remaining < dataBytes + std::uint64_t(in.tellg()))
+    throw ReadError(name + ": truncated PFM data (the header announces " + std::to_string(width) +
+                    "x" + std::to_string(height) + " pixels, " + std::to_string(dataBytes) +
+                    " bytes, the file holds fewer)");
   FloatImage image(width, height);
   std::vector<float> row(std::size_t(width) * 3);
   const bool swap = (scale < 0.0) != hostIsLittleEndian();
@@ -125,8 +144,13 @@ FloatImage readPfmStream(std::istream& in, const std::string& name, bool exact) 
     if (!in) throw ReadError(name + ": truncated PFM data");
     for (int x = 0; x < width; ++x)
       for (int c = 0; c < 3; ++c) {
-        const float v = row[std::size_t(x) * 3 + c];
-        image.at(x, y)[c] = swap ? byteSwapped(v) : v;
+        const float v =
+            swap ? byteSwapped(row[std::size_t(x) * 3 + c]) : row[std::size_t(x) * 3 + c];
+        // A NaN or infinite reference would give meaningless error figures (issue 38).
+        if (!std::isfinite(v))
+          throw ReadError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                          ") is not a finite number");
+        image.at(x, y)[c] = v;
       }
   }
   if (exact && in.peek() != std::char_traits<char>::eof())
@@ -137,14 +161,21 @@ FloatImage readPfmStream(std::istream& in, const std::string& name, bool exact) 
 }  // namespace
 
 FloatImage readPfm(const std::string& path) {
+  // A regular file only: a FIFO would block and /dev/zero read without end.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw ReadError(path + ": not a regular file (a folder or a device?)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ReadError(path + ": cannot open image file");
-  return readPfmStream(in, path, false);
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  return readPfmStream(in, path, false,
+                       ec ? std::nullopt : std::optional<std::uint64_t>(std::uint64_t(size)));
 }
 
 FloatImage decodePfm(const std::string& bytes, const std::string& name) {
   std::istringstream in(bytes, std::ios::binary);
-  return readPfmStream(in, name, true);
+  return readPfmStream(in, name, true, std::uint64_t(bytes.size()));
 }
 
 double srgbFromLinear(double linear) {

@@ -4,6 +4,7 @@
 
 #include "io/PrettyJson.h"
 #include "raylab/core/Limits.h"
+#include "raylab/core/Text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -39,7 +40,8 @@ inline std::string excerpt(const nlohmann::json& j) {
   if (j.is_object()) return "an object with " + std::to_string(j.size()) + " keys";
   if (j.is_string()) {
     const std::string& text = j.get_ref<const std::string&>();
-    if (text.size() > 60) return nlohmann::json(text.substr(0, 60)).dump() + "...";
+    // Cut on a character boundary: a cut UTF-8 character makes dump() throw (issue 38).
+    if (text.size() > 60) return nlohmann::json(utf8Prefix(text, 60)).dump() + "...";
   }
   return j.dump();
 }

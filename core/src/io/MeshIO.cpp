@@ -1,6 +1,7 @@
 #include "raylab/core/MeshIO.h"
 
 #include "io/MeshNormals.h"
+#include "io/MeshSoupChecks.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Limits.h"
 
@@ -386,7 +387,10 @@ SizeProblem checkStl(const std::string& path, std::uintmax_t size) {
   const std::uint64_t count = std::uint64_t(b[0]) | std::uint64_t(b[1]) << 8 |
                               std::uint64_t(b[2]) << 16 | std::uint64_t(b[3]) << 24;
   const std::uint64_t expected = 84 + 50 * count;
-  if (looksAscii && expected != size) return std::nullopt;  // an ASCII STL file
+  if (looksAscii && expected != size) {  // an ASCII STL file: its triangles counted first
+    if (auto problem = meshsoup::checkAsciiStlCount(path)) return Located{0, *problem};
+    return std::nullopt;
+  }
   if (auto problem = checkCounts(0, static_cast<long long>(count), 0)) return problem;
   if (expected > size)
     return Located{0, "truncated binary STL: the header announces " + std::to_string(count) +
@@ -707,6 +711,9 @@ TriangleMesh MeshIO::load(const std::string& path, const Options& options) {
                (report.empty() ? std::string(": the reader gave no reason") : ": " + report));
   }
   if (polygons.empty()) throw fail("no faces in the file (empty mesh)");
+  // Corners counted and repeated vertices found in linear time, before CGAL's repair
+  // (quadratic in a face repeating its vertices) and the polygon checks (issue 38).
+  if (auto problem = meshsoup::checkFaces(polygons)) throw fail(*problem);
   for (std::size_t f = 0; f < polygons.size(); ++f) {
     const bool bad =
         polygons[f].size() < 3 || std::any_of(polygons[f].begin(), polygons[f].end(),

@@ -171,6 +171,23 @@ class Reader : private JsonChecks<Reader> {
         m_baseDir(std::filesystem::path(m_origin).parent_path().string()) {}
 
   Lesson lesson(const json& root);
+  /// The counts of the steps and of their scene changes against their limits, before any
+  /// step is read (each scene change costs a copy of the scene file's JSON).
+  void checkCounts(const json& steps) const {
+    if (steps.size() > limits::kMaxLessonSteps)
+      fail("/steps", "a lesson has at most " + std::to_string(limits::kMaxLessonSteps) +
+                         " steps, this one " + std::to_string(steps.size()));
+    std::size_t changes = 0;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (!steps[i].is_object() || !steps[i].contains("scene_changes")) continue;
+      changes += steps[i]["scene_changes"].size();
+      if (changes > limits::kMaxLessonSceneChanges)
+        fail("/steps/" + std::to_string(i) + "/scene_changes",
+             "a lesson has at most " + std::to_string(limits::kMaxLessonSceneChanges) +
+                 " scene changes, all steps together (" + std::to_string(changes) +
+                 " up to this step)");
+    }
+  }
   /// The lesson's title alone: the version and "title" checked, nothing else read.
   LocalText title(const json& root);
   /// Checks that root is a lesson of the version this build reads.
@@ -185,6 +202,19 @@ class Reader : private JsonChecks<Reader> {
   std::string m_scenePath;
   json m_sceneDoc;  ///< The scene file's JSON: scene changes edit copies of it.
   std::shared_ptr<const Scene> m_scene;
+  /// The work the lesson asks for so far (limits::kMaxLessonWork): camera samples of its
+  /// computed answers and directions of its samples views.
+  mutable std::int64_t m_work = 0;
+
+  /// Adds `work` to the lesson's budget, or fails at `path` when the budget is past.
+  void spend(std::int64_t work, const std::string& path, const std::string& what) const {
+    m_work += work;
+    if (m_work > limits::kMaxLessonWork)
+      fail(path, what + " takes the lesson past its budget of " +
+                     std::to_string(limits::kMaxLessonWork) +
+                     " camera samples and sample directions, all steps together (" +
+                     std::to_string(m_work) + " asked for so far)");
+  }
 
   /// Loads scene file `scene` (relative to the lesson file) as the scene that follows:
   /// the lesson's, or one step's own ("scene" at `place`).
@@ -262,6 +292,9 @@ class Reader : private JsonChecks<Reader> {
   std::shared_ptr<const Scene> changedScene(const json& changes, const std::string& path,
                                             std::vector<std::string>& written) const;
   ChangeMapping applyChange(json& doc, const json& c, const std::string& path) const;
+  /// Fails with SceneIO's `message` about a changed scene, at the place of change `cp`.
+  [[noreturn]] void changeError(std::string message, const ChangeMapping& mapping,
+                                const std::string& cp) const;
   json& namedEntry(json& doc, const char* list, const char* what, const json& name,
                    const std::string& path, std::size_t& index) const;
   LessonQuestion question(const json& j, const std::string& path, const LessonStep& step) const;
@@ -450,31 +483,53 @@ std::shared_ptr<const Scene> Reader::changedScene(const json& changes, const std
                                                   std::vector<std::string>& written) const {
   if (!changes.is_array()) fail(path, "expected a list of changes");
   if (changes.empty()) return m_scene;
+  // Every change applied to the scene file's JSON, then the changed scene read once (issue
+  // 38: reading it after each change made 3,000 changes of one step take 35 s).
   json doc = m_sceneDoc;
-  std::shared_ptr<const Scene> scene;
+  std::vector<ChangeMapping> mappings;
   for (std::size_t k = 0; k < changes.size(); ++k) {
-    const std::string cp = path + "/" + std::to_string(k);
     written.push_back(changes[k].dump());
-    const ChangeMapping mapping = applyChange(doc, changes[k], cp);
-    // The changed scene must pass the scene file's own rules.
-    try {
-      scene = std::make_shared<const Scene>(SceneIO::parse(doc.dump(), m_scenePath));
-    } catch (const SceneIO::LoadError& e) {
-      // SceneIO says "<scene>: at <path>: <problem>"; say it at the change's place.
-      std::string message = e.what();
-      const std::string head = m_scenePath + ": at ";
-      if (message.rfind(head, 0) == 0) message = message.substr(head.size());
-      const std::size_t colon = message.find(": ");
-      const std::string scenePath = colon == std::string::npos ? "" : message.substr(0, colon);
-      const std::string problem = colon == std::string::npos ? message : message.substr(colon + 2);
-      const std::string& prefix = mapping.scenePrefix;
-      if (!scenePath.empty() && scenePath.rfind(prefix, 0) == 0 &&
-          (scenePath.size() == prefix.size() || scenePath[prefix.size()] == '/'))
-        fail(mapping.lessonPrefix + scenePath.substr(prefix.size()), problem);
-      fail(cp, problem + (scenePath.empty() ? "" : " (at " + scenePath + " of the changed scene)"));
-    }
+    mappings.push_back(applyChange(doc, changes[k], path + "/" + std::to_string(k)));
   }
-  return scene;
+  try {
+    return std::make_shared<const Scene>(SceneIO::parse(doc.dump(), m_scenePath));
+  } catch (const SceneIO::LoadError&) {
+    // Name the change that breaks it: bisect for a k whose first k changes load and whose
+    // first k + 1 do not (a few reads, not one per change).
+  }
+  const auto loadsAfter = [&](std::size_t count) -> std::optional<std::string> {
+    json prefix = m_sceneDoc;
+    for (std::size_t k = 0; k < count; ++k)
+      applyChange(prefix, changes[k], path + "/" + std::to_string(k));
+    try {
+      SceneIO::parse(prefix.dump(), m_scenePath);
+      return std::nullopt;
+    } catch (const SceneIO::LoadError& e) {
+      return std::string(e.what());
+    }
+  };
+  std::size_t good = 0, bad = changes.size();  // loads after `good`, not after `bad`
+  while (bad - good > 1) {
+    const std::size_t mid = good + (bad - good) / 2;
+    (loadsAfter(mid) ? bad : good) = mid;
+  }
+  changeError(loadsAfter(bad).value_or("the changed scene does not load"), mappings[bad - 1],
+              path + "/" + std::to_string(bad - 1));
+}
+
+void Reader::changeError(std::string message, const ChangeMapping& mapping,
+                         const std::string& cp) const {
+  // SceneIO says "<scene>: at <path>: <problem>"; say it at the change's place.
+  const std::string head = m_scenePath + ": at ";
+  if (message.rfind(head, 0) == 0) message = message.substr(head.size());
+  const std::size_t colon = message.find(": ");
+  const std::string scenePath = colon == std::string::npos ? "" : message.substr(0, colon);
+  const std::string problem = colon == std::string::npos ? message : message.substr(colon + 2);
+  const std::string& prefix = mapping.scenePrefix;
+  if (!scenePath.empty() && scenePath.rfind(prefix, 0) == 0 &&
+      (scenePath.size() == prefix.size() || scenePath[prefix.size()] == '/'))
+    fail(mapping.lessonPrefix + scenePath.substr(prefix.size()), problem);
+  fail(cp, problem + (scenePath.empty() ? "" : " (at " + scenePath + " of the changed scene)"));
 }
 
 int Reader::meshObject(const json& name, const std::string& path, const Scene& scene) const {
@@ -573,7 +628,19 @@ LessonCheck Reader::check(const json& j, const std::string& path, const LessonSt
   if (j.contains("kind")) c.kind = named(j["kind"], path + "/kind", kKinds, "ray kind");
   if (j.contains("end")) c.end = named(j["end"], path + "/end", kEnds, "end reason");
   if (j.contains("ray")) c.ray = integerAtLeast(j["ray"], path + "/ray", 0);
-  if (j.contains("spp")) c.spp = integerAtLeast(j["spp"], path + "/spp", 1);
+  if (j.contains("spp")) {
+    c.spp = integerAtLeast(j["spp"], path + "/spp", 1);
+    if (c.spp > limits::kMaxSamplesPerPixel)
+      fail(path + "/spp", "must be at most " + std::to_string(limits::kMaxSamplesPerPixel) +
+                              ", got " + std::to_string(c.spp));
+  }
+  // A computed answer's camera samples count against the lesson's budget before any is
+  // traced (issue 38: an spp of 2^31 - 1 ran for hours).
+  if (c.quantity == Q::PixelLuminance)
+    spend(c.spp > 0 ? c.spp : step.scene->render.samplesPerPixel,
+          path + (j.contains("spp") ? "/spp" : ""),
+          "the answer's " + std::to_string(c.spp > 0 ? c.spp : step.scene->render.samplesPerPixel) +
+              " samples per pixel");
   if (c.quantity == Q::BvhNodes || c.quantity == Q::BvhBoxesEntered ||
       c.quantity == Q::BvhTriangleTests)
     c.object = j.contains("object") ? meshObject(j["object"], path + "/object", *step.scene)
@@ -803,6 +870,10 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
     LessonSamples samples;
     samples.sampler = named(member(sj, sp, "sampler"), sp + "/sampler", kSamplers, "sampler");
     if (sj.contains("count")) samples.count = integerAtLeast(sj["count"], sp + "/count", 1);
+    if (samples.count > limits::kMaxLessonSamples)
+      fail(sp + "/count", "must be at most " + std::to_string(limits::kMaxLessonSamples) +
+                              ", got " + std::to_string(samples.count));
+    spend(samples.count, sp + "/count", std::to_string(samples.count) + " sample directions");
     if (samples.sampler == LessonSamples::Sampler::Phong) {
       samples.exponent = number(member(sj, sp, "exponent"), sp + "/exponent");
       if (!(samples.exponent > 0.0)) fail(sp + "/exponent", "exponent (Phong) must be positive");
@@ -909,17 +980,19 @@ void Reader::loadScene(const std::string& scene, const std::string& place) {
                     .lexically_normal()
                     .string();
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(m_scenePath, ec))
+  if (!std::filesystem::exists(m_scenePath, ec))
     fail(place, "scene file \"" + scene + "\" not found (looked for " + m_scenePath + ")");
-  std::ifstream in(m_scenePath, std::ios::binary);
-  std::ostringstream sceneText;
-  sceneText << in.rdbuf();
+  // Read as the scene loader reads: a regular file of bounded size (a FIFO, a folder or a
+  // device is named as such, issue 38).
+  std::string sceneText;
+  if (const auto problem = readTextFile(m_scenePath, "scene file", sceneText))
+    fail(place, "the scene does not load: " + *problem);
   try {
-    m_scene = std::make_shared<const Scene>(SceneIO::parse(sceneText.str(), m_scenePath));
+    m_scene = std::make_shared<const Scene>(SceneIO::parse(sceneText, m_scenePath));
   } catch (const SceneIO::LoadError& e) {
     fail(place, std::string("the scene does not load: ") + e.what());
   }
-  m_sceneDoc = json::parse(sceneText.str());
+  m_sceneDoc = json::parse(sceneText);
 }
 
 void Reader::version(const json& root) {
@@ -973,6 +1046,7 @@ Lesson Reader::lesson(const json& root) {
 
   const json& steps = member(root, "", "steps");
   if (!steps.is_array() || steps.empty()) fail("/steps", "expected a list of steps");
+  checkCounts(steps);
   for (std::size_t i = 0; i < steps.size(); ++i) {
     m_step = "step " + std::to_string(i + 1) + ": ";
     m_stepIndex = i;

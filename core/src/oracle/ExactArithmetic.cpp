@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 namespace raylab::oracle {
 
@@ -26,6 +28,13 @@ double evenOf(double a, double b) {
 }
 
 }  // namespace
+
+Ft exactOf(double x) {
+  if (!std::isfinite(x))
+    throw std::invalid_argument("the exact oracle needs finite numbers: a ray or shape holds " +
+                                std::string(std::isnan(x) ? "NaN" : "an infinity"));
+  return Ft(x);
+}
 
 bool XVec::isZero() const { return CGAL::is_zero(x) && CGAL::is_zero(y) && CGAL::is_zero(z); }
 

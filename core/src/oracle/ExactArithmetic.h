@@ -21,14 +21,19 @@ using Ft = CGAL::Epeck::FT;
 /// Exact real with square roots (CORE::Expr), only for the sphere's roots.
 using Real = CGAL::Exact_predicates_exact_constructions_kernel_with_sqrt::FT;
 
+/// The exact value of a finite double; std::invalid_argument for NaN and infinities (the
+/// oracle's inputs: a ray or shape from Python may hold them).
+Ft exactOf(double x);
+
 /// A 3-vector of exact rationals.
 struct XVec {
   Ft x, y, z;
 
   XVec() : x(0), y(0), z(0) {}
   XVec(Ft a, Ft b, Ft c) : x(std::move(a)), y(std::move(b)), z(std::move(c)) {}
-  /// The exact value of a double vector.
-  explicit XVec(const Vec3& v) : x(v.x), y(v.y), z(v.z) {}
+  /// The exact value of a double vector; std::invalid_argument when a component is NaN
+  /// or infinite (GMP has no such rational and stops the program with SIGFPE, issue 38).
+  explicit XVec(const Vec3& v) : x(exactOf(v.x)), y(exactOf(v.y)), z(exactOf(v.z)) {}
 
   const Ft& operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
   Ft& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }

@@ -161,7 +161,7 @@ ExactResult ExactOracle::sphere(const Sphere& sphere, const Ray& ray) {
   const Ft a = dot(d, d);
   if (CGAL::is_zero(a)) return r;
   const Ft b = dot(d, f);
-  const Ft rr = det * det * Ft(sphere.radius()) * Ft(sphere.radius());
+  const Ft rr = det * det * oracle::exactOf(sphere.radius()) * oracle::exactOf(sphere.radius());
   const Ft c = dot(f, f) - rr;
   const Ft disc = b * b - a * c;
   // disc / (a r^2) = 1 - D^2 / r^2, D the distance from the centre to the line.

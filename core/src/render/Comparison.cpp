@@ -1,5 +1,6 @@
 #include "raylab/core/Comparison.h"
 
+#include "raylab/core/Limits.h"
 #include "raylab/core/ReferenceCache.h"
 
 #include <nlohmann/json.hpp>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -76,7 +78,9 @@ double displayRmse(const FloatImage& image, const FloatImage& reference) {
 
 int ComparisonSettings::defaultReferenceSpp() const {
   if (equalTime()) return 256;
-  return 16 * samplesPerPixel;
+  // Sixteen times the samples, within the spp limit (16 x 2^31 overflowed an int).
+  return int(
+      std::min<std::int64_t>(16 * std::int64_t(samplesPerPixel), limits::kMaxSamplesPerPixel));
 }
 
 int ComparisonSettings::referenceSpp() const {

@@ -2,12 +2,15 @@
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Image.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/core/TriangleMesh.h"
 
+#include <openssl/evp.h>
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -15,7 +18,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <random>
 #include <sstream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace raylab {
 
@@ -27,50 +37,50 @@ using ojson = nlohmann::ordered_json;
 /// Format name and version of the sidecar; bump the version when the key's text or the
 /// files change meaning, so older entries miss.
 constexpr const char* kFormat = "raylab-reference-cache";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;  // 2: SHA-256 keys and image hashes
 /// Pixels re-traced to check an entry against the current path tracer.
 constexpr int kCheckedPixels = 6;
 
 /**
- * \brief A 128-bit hash of bytes, as 32 hex digits: two 64-bit FNV-1a lanes with
- * different offsets, each finished by the splitmix64 mixer. Not cryptographic: it tells
- * cache entries apart and catches damaged files; the re-traced pixels catch the rest.
+ * \brief SHA-256 (OpenSSL's libcrypto) of bytes, as 64 hex digits. It names cache entries
+ * and seals each image to its key and settings: a forged or damaged image needs a
+ * SHA-256 collision to pass (issue 38 replaced a hand-written FNV hash that a forger could
+ * recompute).
  */
-class Hash128 {
+class Sha256 {
  public:
-  void add(const void* data, std::size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) {
-      m_a = (m_a ^ bytes[i]) * 0x100000001b3ULL;
-      m_b = (m_b ^ bytes[i]) * 0x100000001b3ULL;
-      m_b ^= m_b >> 29;
-    }
+  Sha256() : m_context(EVP_MD_CTX_new(), &EVP_MD_CTX_free) {
+    if (!m_context || EVP_DigestInit_ex(m_context.get(), EVP_sha256(), nullptr) != 1)
+      throw std::runtime_error("OpenSSL cannot compute SHA-256");
   }
+  void add(const void* data, std::size_t size) {
+    if (size > 0) EVP_DigestUpdate(m_context.get(), data, size);
+  }
+  /// The text's length, then its bytes (so "ab" + "c" and "a" + "bc" differ).
   void add(const std::string& text) {
     const std::uint64_t size = text.size();
     add(&size, sizeof size);
     add(text.data(), text.size());
   }
-  std::string hex() const {
-    char out[33];
-    std::snprintf(out, sizeof out, "%016llx%016llx", static_cast<unsigned long long>(mix(m_a)),
-                  static_cast<unsigned long long>(mix(m_b)));
+  std::string hex() {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int length = 0;
+    EVP_DigestFinal_ex(m_context.get(), digest, &length);
+    std::string out;
+    char two[3];
+    for (unsigned int i = 0; i < length; ++i) {
+      std::snprintf(two, sizeof two, "%02x", digest[i]);
+      out += two;
+    }
     return out;
   }
 
  private:
-  static std::uint64_t mix(std::uint64_t z) {
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  std::uint64_t m_a = 0xcbf29ce484222325ULL;
-  std::uint64_t m_b = 0x84222325cbf29ce4ULL;
+  std::unique_ptr<EVP_MD_CTX, void (*)(EVP_MD_CTX*)> m_context;
 };
 
 std::string hashBytes(const std::string& bytes) {
-  Hash128 hash;
+  Sha256 hash;
   hash.add(bytes);
   return hash.hex();
 }
@@ -94,7 +104,7 @@ std::string keyText(const Scene& scene, const RenderSettings& settings) {
   Scene normalised = scene;
   normalised.name.clear();
   normalised.render = RenderSettings{};
-  Hash128 meshes;
+  Sha256 meshes;
   for (std::size_t i = 0; i < normalised.objects.size(); ++i) {
     SceneObject& object = normalised.objects[i];
     const auto* mesh = dynamic_cast<const TriangleMesh*>(object.shape.get());
@@ -113,14 +123,51 @@ std::string keyText(const Scene& scene, const RenderSettings& settings) {
          settingsJson(settings).dump() + "\n";
 }
 
-std::optional<std::string> readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return bytes.str();
+/**
+ * \brief The bytes of a cache file, read only when it is a regular file of at most
+ * `maxBytes`: never through a symbolic link (O_NOFOLLOW), never blocking on a FIFO
+ * (O_NONBLOCK), never reading a device without end (issue 38). Otherwise nothing, and
+ * `problem` says why (empty when the file does not exist: nothing is cached).
+ */
+std::optional<std::string> readCacheFile(const std::string& path, std::uint64_t maxBytes,
+                                         std::string& problem) {
+  problem.clear();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    const int error = errno;
+    if (error != ENOENT)
+      problem = error == ELOOP ? "a symbolic link, not a cache file" : std::strerror(error);
+    return std::nullopt;
+  }
+  struct stat st {};
+  std::string bytes;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    problem = "not a regular file (a FIFO, a folder or a device?)";
+  } else if (std::uint64_t(st.st_size) > maxBytes) {
+    problem = "larger than any cache file (" + std::to_string(st.st_size) + " bytes)";
+  } else {
+    // Up to one byte past the limit, so a file that grew meanwhile is noticed too.
+    bytes.resize(std::size_t(maxBytes) + 1);
+    std::size_t got = 0;
+    for (ssize_t n = 0; got < bytes.size(); got += std::size_t(n)) {
+      n = ::read(fd, bytes.data() + got, bytes.size() - got);
+      if (n < 0 && errno == EINTR)
+        n = 0;
+      else if (n <= 0) {
+        if (n < 0) problem = std::strerror(errno);
+        break;
+      }
+    }
+    bytes.resize(got);
+    if (got > maxBytes) problem = "larger than any cache file";
+  }
+  ::close(fd);
+  if (!problem.empty()) return std::nullopt;
+  return bytes;
 }
+
+/// Largest PFM a reference can be: the image limit's pixels and a header.
+constexpr std::uint64_t kMaxPfmBytes = std::uint64_t(limits::kMaxImagePixels) * 12 + 64;
 
 /// Pixel (x, y) of a reference as the Renderer computes it: the finite estimates of
 /// samples 0 .. spp-1 summed in sample order, times 1/spp, as float.
@@ -134,18 +181,16 @@ glm::vec3 retrace(const Tracer& tracer, int x, int y, int spp) {
 }
 
 /// Why `image` is not the reference of `scene` at `settings`, judged by re-tracing a few
-/// pixels spread over it (the centre and points chosen by the key); empty when they match.
+/// pixels at places drawn afresh at each check (the system's random device), so no forger
+/// can know which pixels to leave intact; empty when they match.
 std::string retraceProblem(const Scene& scene, const RenderSettings& settings,
-                           const FloatImage& image, const std::string& key) {
+                           const FloatImage& image) {
   const Tracer tracer(scene, settings);
-  std::uint64_t state = std::strtoull(key.substr(0, 16).c_str(), nullptr, 16);
+  std::random_device device;
+  std::mt19937_64 random((std::uint64_t(device()) << 32) ^ device());
   for (int i = 0; i < kCheckedPixels; ++i) {
-    int x = image.width / 2, y = image.height / 2;
-    if (i > 0) {
-      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-      x = int((state >> 33) % std::uint64_t(image.width));
-      y = int((state >> 13) % std::uint64_t(image.height));
-    }
+    const int x = int(random() % std::uint64_t(image.width));
+    const int y = int(random() % std::uint64_t(image.height));
     const glm::vec3 expected = retrace(tracer, x, y, settings.samplesPerPixel);
     if (std::memcmp(&expected, &image.at(x, y), sizeof expected) != 0)
       return "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
@@ -153,6 +198,16 @@ std::string retraceProblem(const Scene& scene, const RenderSettings& settings,
              "path tracer?)";
   }
   return {};
+}
+
+/// The image's seal: SHA-256 over the entry's key, its settings and every byte of the PFM.
+std::string imageSeal(const std::string& key, const RenderSettings& settings,
+                      const std::string& pfmBytes) {
+  Sha256 hash;
+  hash.add(key);
+  hash.add(settingsJson(settings).dump());
+  hash.add(pfmBytes);
+  return hash.hex();
 }
 
 }  // namespace
@@ -191,35 +246,45 @@ ReferenceCache::Lookup ReferenceCache::load(const Scene& scene,
   Lookup out;
   const std::string k = key(scene, referenceSettings);
   const std::string sidecarFile = sidecarPath(k), imageFile = imagePath(k);
-  const std::optional<std::string> sidecarText = readBytes(sidecarFile);
-  if (!sidecarText) return out;  // nothing cached
   const auto ignore = [&](const std::string& file, const std::string& why) {
     out.problem = file + ": ignored (" + why + ")";
     return out;
   };
+  std::string problem;
+  const std::optional<std::string> sidecarText =
+      readCacheFile(sidecarFile, limits::kMaxCacheSidecarBytes, problem);
+  if (!sidecarText) return problem.empty() ? out : ignore(sidecarFile, problem);
 
-  // Step 1: the sidecar names this key, these settings and this size.
+  // Step 1: the sidecar names this key, these settings and this size, every field of the
+  // type it must have (a string "seconds" or a numeric "imageHash" is a damaged entry).
   const ojson sidecar = ojson::parse(*sidecarText, nullptr, /*allow_exceptions=*/false);
   if (sidecar.is_discarded() || !sidecar.is_object()) return ignore(sidecarFile, "not valid JSON");
+  std::string seal;
+  double seconds = 0.0;
   try {
-    if (sidecar.value("format", "") != kFormat || sidecar.value("version", 0) != kVersion)
+    if (sidecar.at("format") != ojson(kFormat) || sidecar.at("version") != ojson(kVersion))
       return ignore(sidecarFile, "another format or version");
-    if (sidecar.at("key").get<std::string>() != k) return ignore(sidecarFile, "another key");
+    if (sidecar.at("key") != ojson(k)) return ignore(sidecarFile, "another key");
     if (sidecar.at("settings") != settingsJson(referenceSettings))
       return ignore(sidecarFile, "other settings");
     // Compared as JSON numbers: get<int> of a corrupt 1e30 would be undefined behaviour.
     if (sidecar.at("width") != ojson(scene.camera.width) ||
         sidecar.at("height") != ojson(scene.camera.height))
       return ignore(sidecarFile, "another size");
+    if (!sidecar.at("imageHash").is_string() || !sidecar.at("seconds").is_number())
+      return ignore(sidecarFile, "imageHash must be a string and seconds a number");
+    seal = sidecar.at("imageHash").get<std::string>();
+    seconds = sidecar.at("seconds").get<double>();
   } catch (const nlohmann::json::exception& e) {
     return ignore(sidecarFile, std::string("a field is missing or wrong: ") + e.what());
   }
 
-  // Step 2: the image's bytes are the ones written, and they are a PFM of that size.
-  const std::optional<std::string> bytes = readBytes(imageFile);
-  if (!bytes) return ignore(imageFile, "cannot be read");
-  if (hashBytes(*bytes) != sidecar.value("imageHash", ""))
-    return ignore(imageFile, "its bytes do not match the hash its sidecar recorded");
+  // Step 2: the image's bytes are the ones written for this key and these settings, and
+  // they are a PFM of that size.
+  const std::optional<std::string> bytes = readCacheFile(imageFile, kMaxPfmBytes, problem);
+  if (!bytes) return ignore(imageFile, problem.empty() ? "missing" : problem);
+  if (imageSeal(k, referenceSettings, *bytes) != seal)
+    return ignore(imageFile, "its bytes do not match the hash (SHA-256) its sidecar recorded");
   FloatImage image;
   try {
     image = imageio::decodePfm(*bytes, imageFile);
@@ -229,16 +294,16 @@ ReferenceCache::Lookup ReferenceCache::load(const Scene& scene,
   if (image.width != scene.camera.width || image.height != scene.camera.height)
     return ignore(imageFile, "another size");
 
-  // Step 3: a few pixels traced now equal the cached ones.
-  if (const std::string problem = retraceProblem(scene, referenceSettings, image, k);
-      !problem.empty())
-    return ignore(imageFile, problem);
+  // Step 3: a few pixels, drawn afresh, traced now equal the cached ones.
+  if (const std::string different = retraceProblem(scene, referenceSettings, image);
+      !different.empty())
+    return ignore(imageFile, different);
 
   ComparisonReference reference;
   reference.image = std::move(image);
   reference.samplesPerPixel = referenceSettings.samplesPerPixel;
   reference.seed = referenceSettings.seed;
-  reference.seconds = sidecar.value("seconds", 0.0);
+  reference.seconds = std::isfinite(seconds) && seconds >= 0.0 ? seconds : 0.0;
   reference.cached = true;
   reference.cacheFile = imageFile;
   out.reference = std::move(reference);
@@ -268,7 +333,7 @@ std::optional<std::string> ReferenceCache::store(const Scene& scene,
   sidecar["width"] = reference.image.width;
   sidecar["height"] = reference.image.height;
   sidecar["seconds"] = reference.seconds;
-  sidecar["imageHash"] = hashBytes(bytes);
+  sidecar["imageHash"] = imageSeal(k, referenceSettings, bytes);
   // The image first: a sidecar is only ever beside the image it describes.
   if (auto problem = writeFileAtomically(imagePath(k), bytes))
     return imagePath(k) + ": " + *problem;

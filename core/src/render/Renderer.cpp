@@ -1,17 +1,45 @@
 #include "raylab/core/Renderer.h"
 
+#include "raylab/core/Limits.h"
+
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <vector>
 
 namespace raylab {
 
 namespace {
+
+/// Runs worker(0..count-1), worker 0 on this thread and the others on threads of their own.
+/// A thread the system cannot create (no memory or address space left for its stack) is
+/// not an error: the workers share the tiles through a counter, so the ones that run do the
+/// whole pass, with the same pixels (issue 38: a vector of joinable threads destroyed by
+/// the exception aborted the program). Its worker slot stays unused.
+void runWorkers(int count, const std::function<void(int)>& worker) {
+  std::vector<std::thread> pool;
+  pool.reserve(std::size_t(std::max(count - 1, 0)));
+  for (int w = 1; w < count; ++w) {
+    try {
+      pool.emplace_back(worker, w);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
+  try {
+    worker(0);
+  } catch (...) {
+    for (std::thread& t : pool) t.join();
+    throw;
+  }
+  for (std::thread& t : pool) t.join();
+}
 
 constexpr int kTileSize = 16;
 
@@ -59,7 +87,7 @@ FloatImage Renderer::render() {
   std::vector<glm::dvec3> working(pixelCount, glm::dvec3(0.0));
   const std::vector<Tile> tiles = makeTiles(width, height);
   int threadCount = m_threads > 0 ? m_threads : int(std::thread::hardware_concurrency());
-  threadCount = std::clamp(threadCount, 1, int(tiles.size()));
+  threadCount = std::clamp(threadCount, 1, std::min(int(tiles.size()), limits::kMaxThreads));
 
   const auto elapsed = [&start] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -121,14 +149,7 @@ FloatImage Renderer::render() {
       nonFinite[w] = myNonFinite;
       capped[w] = myCapped;
     };
-    if (threadCount == 1) {
-      worker(0);
-    } else {
-      std::vector<std::thread> pool;
-      pool.reserve(threadCount);
-      for (int w = 0; w < threadCount; ++w) pool.emplace_back(worker, w);
-      for (std::thread& t : pool) t.join();
-    }
+    runWorkers(threadCount, worker);
 
     // Merge the per-thread counters (rays traced count even in an abandoned pass).
     for (int w = 0; w < threadCount; ++w) {

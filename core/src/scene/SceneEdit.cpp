@@ -2,6 +2,7 @@
 
 #include "raylab/core/Plane.h"
 #include "raylab/core/SceneIO.h"
+#include "raylab/core/Text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +28,9 @@ json fileForm(const Scene& scene, const std::string& origin) {
 
 /// The file form read back through the loader: its checks, its messages.
 Scene readBack(const json& doc, const std::string& origin) {
-  return SceneIO::parse(doc.dump(), origin);
+  // (Text that is not UTF-8 becomes U+FFFD rather than an exception from dump(): the
+  // loader then names the place, issue 38.)
+  return SceneIO::parse(doc.dump(-1, ' ', false, json::error_handler_t::replace), origin);
 }
 
 [[noreturn]] void refuse(const std::string& origin, const std::string& where,
@@ -126,9 +129,13 @@ Scene setValue(const Scene& scene, const std::string& pointer, const std::string
   try {
     parsed = json::parse(value);
   } catch (const json::parse_error&) {
-    refuse(origin, pointer, "'" + value.substr(0, 80) + "' is not a JSON value");
+    refuse(origin, pointer, "'" + utf8Prefix(value, 80) + "' is not a JSON value");
   }
   json::json_pointer where;
+  // A place with control characters or bytes that are not UTF-8 names no key of a scene
+  // file (fuzzing `--set` found such a key made the JSON writer throw, issue 38).
+  if (printableText(pointer) != pointer)
+    refuse(origin, printableText(pointer), "not a place in a scene file");
   try {
     where = json::json_pointer(pointer);
   } catch (const json::exception&) {

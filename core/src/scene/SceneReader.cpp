@@ -11,6 +11,7 @@
 #include "raylab/core/Triangle.h"
 
 #include "io/JsonChecks.h"
+#include "io/MeshCache.h"
 #include "io/PrettyJson.h"
 #include "scene/ObjectForm.h"
 #include "scene/SceneKeys.h"
@@ -135,7 +136,7 @@ class Reader : private JsonChecks<Reader> {
         if (!std::filesystem::is_regular_file(source, ec))
           fail(path + "/file", "mesh file \"" + file + "\" not found (looked for " + source + ")");
         try {
-          auto mesh = std::make_unique<TriangleMesh>(MeshIO::load(source));
+          auto mesh = std::make_unique<TriangleMesh>(meshcache::load(source));
           if (object.meshNormals == MeshNormals::Flat) mesh->clearNormals();
           if (object.meshNormals == MeshNormals::Smooth)
             mesh->computeCreaseNormals(radians(object.creaseAngle));
@@ -323,6 +324,16 @@ class Reader : private JsonChecks<Reader> {
     if (!(m.ior > 0.0)) fail(p + "/ior", "ior (index of refraction) must be positive");
     if (!(m.iorOutside > 0.0))
       fail(p + "/ior_outside", "ior_outside (index of the medium outside) must be positive");
+    // Past these the tracers' refracted directions lose every digit (an ior of 1e20 on a
+    // mirror aborted the program, issue 38): refused here, with the place.
+    for (const auto& [key, value] :
+         {std::pair{"ior", m.ior}, std::pair{"ior_outside", m.iorOutside}})
+      if (value < limits::kMinIor || value > limits::kMaxIor) {
+        std::ostringstream out;
+        out << key << " " << value << " is outside [" << limits::kMinIor << ", " << limits::kMaxIor
+            << "] (real media lie between 1 and about 4)";
+        fail(p + "/" + key, out.str());
+      }
     if (!(m.exponent > 0.0)) fail(p + "/exponent", "exponent (Phong) must be positive");
     if (m.specular < 0.0 || m.specular > 1.0) fail(p + "/specular", "specular must be in [0, 1]");
     if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");

@@ -39,6 +39,32 @@ constexpr int kMaxLightSamples = 256;
 /// about 60,000 rays) first, so a tree `raylab trace` records whole is never capped.
 constexpr std::size_t kMaxRaysPerSample = std::size_t(1) << 16;
 
+/// Most worker threads of one render (--threads, Python's `threads`): each thread takes a
+/// stack of 8 MiB of address space, and a render has at most 65,536 tiles to share.
+constexpr int kMaxThreads = 256;
+
+/// Smallest and largest index of refraction (`ior`, `ior_outside`): real media lie between
+/// 1 and about 4; past these the refracted and reflected directions of the classic
+/// materials lose all their digits.
+constexpr double kMinIor = 0.01;
+constexpr double kMaxIor = 100.0;
+
+/// Most steps of one lesson file.
+constexpr std::size_t kMaxLessonSteps = 1000;
+/// Most scene changes of one lesson, all steps together (each is applied to the scene file
+/// once, and the changed scene read once per step).
+constexpr std::size_t kMaxLessonSceneChanges = 10'000;
+/// Most sample directions a lesson's samples view draws (`samples.count`).
+constexpr int kMaxLessonSamples = 1 << 16;
+/// The work budget of one lesson's computed answers and samples: the camera samples of its
+/// checked answers (`check.spp`, each a pixel's sample) plus the directions of its samples
+/// views, all steps together. Checked when the lesson is read, before any work; 4,194,304
+/// camera samples of a lesson scene take a few seconds on one core.
+constexpr std::int64_t kMaxLessonWork = std::int64_t(1) << 22;
+
+/// Largest reference-cache sidecar read, bytes (a real one is under 2 kB).
+constexpr std::uint64_t kMaxCacheSidecarBytes = std::uint64_t(1) << 20;
+
 /// Largest magnitude of a coordinate, size or radius, world units: squares and products of
 /// such numbers stay far from overflowing a double.
 constexpr double kMaxCoordinate = 1e12;
@@ -53,6 +79,12 @@ constexpr std::size_t kMaxMeshTriangles = 4'000'000;
 /// Most corners of one polygonal face of a mesh file: a face is checked to be a simple polygon
 /// before it is triangulated, in time quadratic in its corners.
 constexpr std::size_t kMaxFaceCorners = 4096;
+/// Most corners of all the faces of one mesh file together (a face's corners are read,
+/// checked and triangulated in time linear in them, or quadratic in one face's: see below).
+constexpr std::size_t kMaxMeshCorners = 3 * kMaxMeshTriangles;
+/// The work of checking every polygonal face simple, the sum over faces of corners squared:
+/// 64M, a second or two (4,096 faces of 4,096 corners would take a quarter of an hour).
+constexpr std::uint64_t kMaxFaceCheckWork = std::uint64_t(1) << 26;
 /// Largest mesh file read, bytes.
 constexpr std::uint64_t kMaxMeshFileBytes = std::uint64_t(1) << 30;
 

@@ -16,16 +16,20 @@ namespace raylab {
  *
  * An entry is two files in directory(): `<key>.pfm` (the reference, linear radiance) and
  * `<key>.json` (a sidecar naming the key, the reference's spp, seed, size and render time,
- * and a hash of the PFM's bytes). The key is a hash of everything the reference's pixels
+ * and the image's seal: SHA-256 over the key, the settings and every byte of the PFM). The
+ * key is a SHA-256 (OpenSSL's libcrypto) of everything the reference's pixels
  * depend on: the scene's content as SceneIO::serialize writes it (its name and render
  * block left out), the triangles of its meshes, and the settings path tracing reads (spp,
  * seed, maxDepth, Russian roulette depth, next-event estimation, MIS, background). The
  * image size is part of the scene's camera. Settings path tracing does not read (threads,
  * the distributed rays) share one entry.
  *
- * Nothing read is trusted: an entry is used only when its sidecar names the same key and
- * settings, the PFM's bytes have the recorded hash, and a few pixels re-traced now (at the
- * full spp, with the current code) equal the cached ones bit for bit, which also catches a
+ * Nothing read is trusted: an entry is used only when both files are regular files of
+ * bounded size (opened without following a symbolic link and without blocking on a FIFO),
+ * its sidecar names the same key and settings with fields of the right types, the PFM's
+ * bytes have the recorded seal, and a few pixels re-traced now (at places drawn afresh at
+ * each check, not derivable from the key; at the full spp, with the current code) equal
+ * the cached ones bit for bit, which also catches a
  * cache written by a program whose path tracer has since changed. Anything else is
  * ignored (load says why) and the reference is rendered and stored again. Both files are
  * written atomically (writeFileAtomically), the PFM first, so a reader never sees a

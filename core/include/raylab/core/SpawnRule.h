@@ -19,6 +19,10 @@ struct HitContext {
   const SceneHit& hit;       ///< Where, and which object.
   const Material& material;  ///< The object's material.
   Sampler& sampler;          ///< This sample's random stream.
+  /// False once the sample's ray cap or the tree's budget is reached: any children would be
+  /// dropped, so a rule may skip drawing them (the distributed rule's 256 glossy and shadow
+  /// directions per hit, issue 38). What the rule finds itself (`emitted`) must not change.
+  bool spawns = true;
 };
 
 /// An algorithm's answer at a hit.
