@@ -99,16 +99,20 @@ struct Schedule {
   bool stop = false;                          ///< The calling thread saw a cancel.
   const std::atomic<bool>* cancel = nullptr;  ///< Renderer::cancel()'s flag.
   bool timed = false;                         ///< Under a time limit: one pass at a time.
+  bool unwatched = false;  ///< No progress callback, no time limit: a pass counts as
+                           ///< reported once complete (nothing reads its buffer).
   int tileCount = 0;
-  long next = 0;                        ///< Next item: pass next / tileCount.
-  std::vector<std::vector<int>> order;  ///< Tiles by pass, in the order they are taken.
-  std::vector<int> tilePasses;          ///< Passes done per tile.
-  std::vector<double> tileCost;         ///< Seconds of each tile's latest pass.
-  std::vector<int> finished;            ///< Tiles done per pass.
-  int complete = 0;                     ///< Passes complete in every tile.
-  int reported = 0;                     ///< Passes whose buffer the calling thread read.
-  int exited = 0;                       ///< Workers that found nothing more to do.
-  std::vector<double> passIdle;         ///< Worker-seconds waiting, by pass.
+  std::vector<std::vector<int>> order;   ///< Tiles by pass, in the order they are taken.
+  std::vector<std::vector<char>> taken;  ///< By pass, whether order[p][k] was taken.
+  std::vector<int> firstOpen;            ///< By pass, the first position not taken.
+  int lowestOpen = 0;                    ///< The first pass with a tile not taken.
+  std::vector<int> tilePasses;           ///< Passes done per tile.
+  std::vector<double> tileCost;          ///< Seconds of each tile's latest pass.
+  std::vector<int> finished;             ///< Tiles done per pass.
+  int complete = 0;                      ///< Passes complete in every tile.
+  int reported = 0;                      ///< Passes whose buffer the calling thread read.
+  int exited = 0;                        ///< Workers that found nothing more to do.
+  std::vector<double> passIdle;          ///< Worker-seconds waiting, by pass.
 
   /// Whether pass p may start now (with the mutex held).
   bool passReady(int p) const {
@@ -124,6 +128,22 @@ struct Schedule {
       std::stable_sort(tiles.begin(), tiles.end(),
                        [this](int a, int b) { return tileCost[a] > tileCost[b]; });
     order.push_back(std::move(tiles));
+    taken.emplace_back(std::size_t(tileCount), 0);
+    firstOpen.push_back(0);
+  }
+
+  /// The first tile of pass p, in its order, that is not taken and whose pass p - 1 is
+  /// done; takes it. -1 when there is none now.
+  int takeReady(int p) {
+    for (int k = firstOpen[p]; k < tileCount; ++k) {
+      const int t = order[p][k];
+      if (taken[p][k] || tilePasses[t] < p) continue;
+      taken[p][k] = 1;
+      while (firstOpen[p] < tileCount && taken[p][firstOpen[p]]) ++firstOpen[p];
+      while (lowestOpen < int(firstOpen.size()) && firstOpen[lowestOpen] == tileCount) ++lowestOpen;
+      return t;
+    }
+    return -1;
   }
 
   /// The next (pass, tile) to trace, waiting until one may start; false when none is left
@@ -135,20 +155,18 @@ struct Schedule {
     bool waited = false;
     for (;;) {
       if (stop || *cancel) break;
-      const int p = int(next / tileCount);
-      if (p >= int(passes.size())) {
-        if (allScheduled) break;
-      } else if (passReady(p)) {
+      if (lowestOpen >= int(passes.size()) && allScheduled) break;  // all taken
+      // The oldest pass first; a later one where every open tile of it waits for its
+      // previous pass (a tile is never held up behind another that waits).
+      for (int p = lowestOpen; p < int(passes.size()) && passReady(p); ++p) {
         if (int(order.size()) <= p) orderPass(p);
-        const int t = order[p][next % tileCount];
-        if (tilePasses[t] >= p) {  // the tile's previous pass is done
-          ++next;
-          *pass = p;
-          *tile = t;
-          *range = passes[p];  // a copy: the calling thread may add passes meanwhile
-          if (waited) addIdle(secondsSince(start) - waitStart);
-          return true;
-        }
+        const int t = takeReady(p);
+        if (t < 0) continue;
+        *pass = p;
+        *tile = t;
+        *range = passes[p];  // a copy: the calling thread may add passes meanwhile
+        if (waited) addIdle(secondsSince(start) - waitStart);
+        return true;
       }
       waited = true;
       workAvailable.wait(lock);
@@ -168,6 +186,7 @@ struct Schedule {
       // Pass p of every tile needs its pass p - 1, so passes complete in order.
       if (++finished[p] == tileCount) {
         complete = p + 1;
+        if (unwatched) reported = complete;
         passComplete.notify_all();
       }
     }
@@ -303,6 +322,7 @@ FloatImage Renderer::render() {
   schedule.tileCost.assign(tiles.size(), 0.0);
   schedule.cancel = &m_cancel;
   schedule.timed = m_timeLimit > 0.0;
+  schedule.unwatched = !schedule.timed && !m_progress;
   // Untimed: every pass is known now. Timed: the first, then each after the one before.
   schedule.passes = schedule.timed ? std::vector<Pass>{{0, 1}} : doublingPasses(spp);
   schedule.allScheduled = !schedule.timed || spp == 1;
@@ -335,8 +355,8 @@ FloatImage Renderer::render() {
                 &m_stats.timeLimitReached});
   for (std::thread& t : pool) t.join();
 
-  // The workers' figures; the time the last ones kept the others waiting.
-  const double end = secondsSince(start);
+  // The workers' figures; the time the last worker kept the others waiting.
+  const double end = *std::max_element(exitTimes.begin(), exitTimes.end());
   for (int w = 0; w < threadCount; ++w) {
     m_stats.rays += counts[w].rays;
     m_stats.nonFiniteSamples += counts[w].nonFinite;
