@@ -48,8 +48,8 @@ deb="$(ls -t "$build"/raylab_*.deb | head -1)"
 step "package: $deb ($(du -h "$deb" | cut -f1)); Depends: $(dpkg-deb -f "$deb" Depends)"
 
 # 2. A fresh root from the machine's own mirror.
-mirror="$(grep -hoE '(URIs:|deb) +https?://[^ ]+' /etc/apt/sources.list /etc/apt/sources.list.d/* \
-  2>/dev/null | grep -v security | head -1 | awk '{print $2}')"
+mirror="$( (grep -shoE '(URIs:|deb) +https?://[^ ]+' /etc/apt/sources.list /etc/apt/sources.list.d/* ||
+  true) | grep -v security | head -1 | awk '{print $2}')"
 mirror="${mirror:-http://deb.debian.org/debian}"
 root="$(mktemp -d /var/tmp/raylab-package-root.XXXXXX)"
 cleanup() {
@@ -100,7 +100,7 @@ step "raylab render --out x.png"
 in_sh 'raylab render --out x.png && test -s x.png' || fail "raylab render"
 step "xvfb-run -a raylab lesson /usr/share/raylab/lessons/04-whitted.json --out d"
 in_sh 'xvfb-run -a raylab lesson /usr/share/raylab/lessons/04-whitted.json --out d >lesson.log 2>&1 ||
-       { cat lesson.log; exit 1; }; test -s d/handout.md; ls d/*.png | wc -l' ||
+       { cat lesson.log; exit 1; }; test -s d/lesson.md; ls d/*.png | wc -l' ||
   fail "raylab lesson --out"
 step "python3 -c \"import raylab\""
 in_sh 'python3 -c "import raylab; print(\"python:\", raylab.__file__, raylab.render(raylab.default_scene(), spp=1).shape)"' ||
