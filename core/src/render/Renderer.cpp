@@ -63,13 +63,24 @@ double secondsSince(Clock::time_point start) {
 /// Per-pixel running sums: buffer p mod 3 holds the sums after pass p.
 using Buffers = std::array<std::vector<glm::dvec3>, 3>;
 
-/// One worker's figures, counted on its own and merged at the end: counters side by side
-/// in one vector would share cache lines, which every ray's count would then bounce
-/// between the cores.
+/// A tile's figures, counted on the worker's own stack and added to its pass's when the
+/// tile is done: shared counters would bounce their cache lines between the cores at
+/// every ray.
 struct WorkerCounts {
   RayCounts rays;
   std::uint64_t nonFinite = 0;
   std::uint64_t capped = 0;
+
+  void addTo(RenderStats& stats) const {
+    stats.rays += rays;
+    stats.nonFiniteSamples += nonFinite;
+    stats.cappedSamples += capped;
+  }
+  void add(const WorkerCounts& other) {
+    rays += other.rays;
+    nonFinite += other.nonFinite;
+    capped += other.capped;
+  }
 };
 
 /**
@@ -113,6 +124,8 @@ struct Schedule {
   int reported = 0;                      ///< Passes whose buffer the calling thread read.
   int exited = 0;                        ///< Workers that found nothing more to do.
   std::vector<double> passIdle;          ///< Worker-seconds waiting, by pass.
+  std::vector<WorkerCounts> passCounts;  ///< Rays and samples traced, by pass.
+  int counted = 0;                       ///< Passes whose counts are in the renderer's stats.
 
   /// Whether pass p may start now (with the mutex held).
   bool passReady(int p) const {
@@ -177,12 +190,13 @@ struct Schedule {
     return false;
   }
 
-  /// Records that pass p of tile t is done, after `seconds`.
-  void finish(int p, int t, double seconds) {
+  /// Records that pass p of tile t is done, after `seconds`, with its figures.
+  void finish(int p, int t, double seconds, const WorkerCounts& counts) {
     {
       std::lock_guard<std::mutex> lock(mutex);
       tilePasses[t] = p + 1;
       tileCost[t] = seconds;
+      passCounts[p].add(counts);
       // Pass p of every tile needs its pass p - 1, so passes complete in order.
       if (++finished[p] == tileCount) {
         complete = p + 1;
@@ -205,7 +219,7 @@ struct Reporting {
   const std::atomic<bool>& cancel;
   double timeLimit;  ///< Seconds; 0 = none.
   int spp, width, height, threads;
-  bool* timeLimitReached;
+  RenderStats& stats;  ///< What the progress callback reads of renderer.stats().
 };
 
 /// Under a time limit, after the pass that reached `done` samples: the next pass, as many
@@ -215,12 +229,15 @@ void scheduleNext(Schedule& s, int done, double now, const Reporting& r) {
   if (done >= r.spp) {
     s.allScheduled = true;
   } else if (now >= r.timeLimit) {
-    *r.timeLimitReached = true;
+    r.stats.timeLimitReached = true;
     s.allScheduled = true;
   } else {
     const double expected = std::ceil((r.timeLimit - now) * done / std::max(now, 1e-9));
     const int size = int(std::clamp(expected, 1.0, double(done)));
     s.passes.push_back({done, std::min(r.spp, done + size)});
+    s.finished.push_back(0);
+    s.passIdle.push_back(0.0);
+    s.passCounts.emplace_back();
   }
 }
 
@@ -243,6 +260,10 @@ void reportPasses(Schedule& s, const Buffers& buffers, Clock::time_point start,
     if (r.progress) image = average(buffers[p % 3], r.width, r.height, done);
     lock.lock();
     s.reported = p + 1;
+    // The figures as they stood after pass p (rays of the complete passes), as before.
+    r.stats.samplesPerPixel = done;
+    s.passCounts[p].addTo(r.stats);
+    s.counted = p + 1;
     if (s.timed && !s.allScheduled) scheduleNext(s, done, secondsSince(start), r);
     s.workAvailable.notify_all();
     if (r.progress) {
@@ -326,43 +347,40 @@ FloatImage Renderer::render() {
   // Untimed: every pass is known now. Timed: the first, then each after the one before.
   schedule.passes = schedule.timed ? std::vector<Pass>{{0, 1}} : doublingPasses(spp);
   schedule.allScheduled = !schedule.timed || spp == 1;
-  schedule.finished.assign(schedule.timed ? std::size_t(spp) : schedule.passes.size(), 0);
+  schedule.finished.assign(schedule.passes.size(), 0);
   schedule.passIdle.assign(schedule.finished.size(), 0.0);
+  schedule.passCounts.assign(schedule.finished.size(), WorkerCounts{});
   const std::size_t pixelCount = std::size_t(width) * height;
   Buffers buffers;
   for (std::vector<glm::dvec3>& buffer : buffers) buffer.assign(pixelCount, glm::dvec3(0.0));
 
   // The workers take (pass, tile) items until none is left or the render stops.
-  std::vector<WorkerCounts> counts(threadCount);
   std::vector<double> exitTimes(threadCount, 0.0);
   const auto worker = [&](int w) {
-    WorkerCounts mine;
     int pass = 0, tile = 0;
     Pass range{};
     while (schedule.take(&pass, &tile, &range, start)) {
       const double tileStart = secondsSince(start);
-      traceTile(m_tracer, tiles[tile], range, pass, buffers, mine);
-      schedule.finish(pass, tile, secondsSince(start) - tileStart);
+      WorkerCounts counts;
+      traceTile(m_tracer, tiles[tile], range, pass, buffers, counts);
+      schedule.finish(pass, tile, secondsSince(start) - tileStart, counts);
     }
-    counts[w] = mine;
     exitTimes[w] = secondsSince(start);
   };
   std::vector<std::thread> pool;
   pool.reserve(threadCount);
   for (int w = 0; w < threadCount; ++w) pool.emplace_back(worker, w);
   reportPasses(schedule, buffers, start,
-               {m_progress, m_cancel, m_timeLimit, spp, width, height, threadCount,
-                &m_stats.timeLimitReached});
+               {m_progress, m_cancel, m_timeLimit, spp, width, height, threadCount, m_stats});
   for (std::thread& t : pool) t.join();
 
-  // The workers' figures; the time the last worker kept the others waiting.
+  // Every ray traced counts, also those of a pass a cancel abandoned; the time the last
+  // worker kept the others waiting.
+  for (std::size_t p = std::size_t(schedule.counted); p < schedule.passCounts.size(); ++p)
+    schedule.passCounts[p].addTo(m_stats);
   const double end = *std::max_element(exitTimes.begin(), exitTimes.end());
-  for (int w = 0; w < threadCount; ++w) {
-    m_stats.rays += counts[w].rays;
-    m_stats.nonFiniteSamples += counts[w].nonFinite;
-    m_stats.cappedSamples += counts[w].capped;
+  for (int w = 0; w < threadCount; ++w)
     schedule.passIdle[std::max(schedule.complete - 1, 0)] += end - exitTimes[w];
-  }
   // The image of the last pass reported (every complete pass unless cancelled).
   const int kept = schedule.reported;
   schedule.passIdle.resize(std::max<std::size_t>(schedule.passes.size(), 1));
