@@ -122,7 +122,7 @@ while read -r path; do
 done <"$root/tmp/raylab.files"
 while read -r path; do
   left+=("${path#"$root"}")
-done < <(find "$root" -xdev \( -path "$root/tmp" -o -path "$root/root" -o -path "$root/proc" \
+done < <(find "$root" -mindepth 1 -xdev \( -path "$root/tmp" -o -path "$root/root" -o -path "$root/proc" \
   -o -path "$root/var/lib/dpkg" -o -path "$root/var/cache/apt" -o -path "$root/var/log" \) -prune \
   -o -iname '*raylab*' -print)
 ((${#left[@]} == 0)) || fail "left behind after apt-get remove raylab: ${left[*]}"
