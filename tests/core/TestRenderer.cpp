@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -316,6 +317,21 @@ TEST(Renderer, 11_StatsSayTheThreadsTilesAndIdleTimeByPass) {
   EXPECT_EQ(stats.tileSize, 16);
   render(shippedScene("cornell", 16, 16), settings, 8, &stats);
   EXPECT_EQ(stats.threads, 4);
+}
+
+TEST(Renderer, 12_AnExceptionFromTheProgressCallbackStopsTheWorkersAndLeavesRender) {
+  // Python's comparison stops a render this way: the workers are still tracing the next
+  // pass when the callback throws; render() must wait for them and pass the exception on.
+  const Scene scene = shippedScene("cornell", 64, 64);
+  const RenderSettings settings = settingsFor(scene, Algorithm::PathTracing, 1 << 12);
+  Renderer renderer(scene, settings);
+  renderer.setThreads(4);
+  int calls = 0;
+  renderer.setProgress([&](double, const FloatImage&) {
+    if (++calls == 2) throw std::runtime_error("enough");
+  });
+  EXPECT_THROW(renderer.render(), std::runtime_error);
+  EXPECT_EQ(calls, 2);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
+#include <exception>
 #include <mutex>
 #include <numeric>
 #include <stdexcept>
@@ -83,6 +84,17 @@ struct WorkerCounts {
   }
 };
 
+/// Passes adding 1, 1, 2, 4, 8, ... samples (the total doubles each pass) up to spp.
+std::vector<Pass> doublingPasses(int spp) {
+  std::vector<Pass> passes;
+  for (int done = 0; done < spp;) {
+    const int last = std::min(spp, done + std::max(done, 1));
+    passes.push_back({done, last});
+    done = last;
+  }
+  return passes;
+}
+
 /**
  * \brief The work of one render shared by its worker threads: which (pass, tile) to trace
  * next, and when it may start.
@@ -126,6 +138,22 @@ struct Schedule {
   std::vector<double> passIdle;          ///< Worker-seconds waiting, by pass.
   std::vector<WorkerCounts> passCounts;  ///< Rays and samples traced, by pass.
   int counted = 0;                       ///< Passes whose counts are in the renderer's stats.
+
+  /// Sets up a render of `spp` samples over `tiles` tiles. Untimed, every pass is known
+  /// now; under a time limit, the first, then each after the one before.
+  void begin(int tiles, int spp, bool timeLimit, bool watched, const std::atomic<bool>* flag) {
+    tileCount = tiles;
+    tilePasses.assign(std::size_t(tiles), 0);
+    tileCost.assign(std::size_t(tiles), 0.0);
+    cancel = flag;
+    timed = timeLimit;
+    unwatched = !timed && !watched;
+    passes = timed ? std::vector<Pass>{{0, 1}} : doublingPasses(spp);
+    allScheduled = !timed || spp == 1;
+    finished.assign(passes.size(), 0);
+    passIdle.assign(passes.size(), 0.0);
+    passCounts.assign(passes.size(), WorkerCounts{});
+  }
 
   /// Whether pass p may start now (with the mutex held).
   bool passReady(int p) const {
@@ -304,17 +332,6 @@ void traceTile(const Tracer& tracer, const Tile& tile, const Pass& range, int pa
     }
 }
 
-/// Passes adding 1, 1, 2, 4, 8, ... samples (the total doubles each pass) up to spp.
-std::vector<Pass> doublingPasses(int spp) {
-  std::vector<Pass> passes;
-  for (int done = 0; done < spp;) {
-    const int last = std::min(spp, done + std::max(done, 1));
-    passes.push_back({done, last});
-    done = last;
-  }
-  return passes;
-}
-
 }  // namespace
 
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
@@ -338,18 +355,7 @@ FloatImage Renderer::render() {
   m_stats.tileSize = tileSize;
 
   Schedule schedule;
-  schedule.tileCount = int(tiles.size());
-  schedule.tilePasses.assign(tiles.size(), 0);
-  schedule.tileCost.assign(tiles.size(), 0.0);
-  schedule.cancel = &m_cancel;
-  schedule.timed = m_timeLimit > 0.0;
-  schedule.unwatched = !schedule.timed && !m_progress;
-  // Untimed: every pass is known now. Timed: the first, then each after the one before.
-  schedule.passes = schedule.timed ? std::vector<Pass>{{0, 1}} : doublingPasses(spp);
-  schedule.allScheduled = !schedule.timed || spp == 1;
-  schedule.finished.assign(schedule.passes.size(), 0);
-  schedule.passIdle.assign(schedule.finished.size(), 0.0);
-  schedule.passCounts.assign(schedule.finished.size(), WorkerCounts{});
+  schedule.begin(int(tiles.size()), spp, m_timeLimit > 0.0, bool(m_progress), &m_cancel);
   const std::size_t pixelCount = std::size_t(width) * height;
   Buffers buffers;
   for (std::vector<glm::dvec3>& buffer : buffers) buffer.assign(pixelCount, glm::dvec3(0.0));
@@ -370,9 +376,20 @@ FloatImage Renderer::render() {
   std::vector<std::thread> pool;
   pool.reserve(threadCount);
   for (int w = 0; w < threadCount; ++w) pool.emplace_back(worker, w);
-  reportPasses(schedule, buffers, start,
-               {m_progress, m_cancel, m_timeLimit, spp, width, height, threadCount, m_stats});
+  // The progress callback may throw (Python's comparison stops that way): the workers
+  // stop before their next tile, and the exception leaves render() once they have left.
+  std::exception_ptr failure;
+  try {
+    reportPasses(schedule, buffers, start,
+                 {m_progress, m_cancel, m_timeLimit, spp, width, height, threadCount, m_stats});
+  } catch (...) {
+    failure = std::current_exception();
+    const std::lock_guard<std::mutex> lock(schedule.mutex);
+    schedule.stop = true;
+    schedule.workAvailable.notify_all();
+  }
   for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
 
   // Every ray traced counts, also those of a pass a cancel abandoned; the time the last
   // worker kept the others waiting.
