@@ -25,6 +25,8 @@ packages=(
   python3-dev python3-numpy pybind11-dev              # the Python module (python/)
   python3-vtk9 python3-pytest python3-matplotlib      # its tests with VTK's Python package
   jupyter-nbconvert python3-ipykernel                 # the example notebook, run headless
+  help2man desktop-file-utils appstream               # man page; desktop files' checks
+  debootstrap librsvg2-bin                            # package test's fresh root; icon PNGs
 )
 
 missing=()

@@ -18,6 +18,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <vector>
@@ -30,6 +31,18 @@ const char* const kFooter =
     "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable output),\n"
     "            2 usage error, 3 internal error (please report it).\n"
     "Rendering needs an X server, also headless: run under xvfb-run -a.";
+
+/// Whether `path` starts like a lesson file: its first key "raylab_lesson" within the first
+/// kilobytes (as the MIME type of packaging/raylab-mime.xml tells lessons from scenes). Any
+/// other file, or one that cannot be read, is opened as a scene, whose loader reports it.
+bool isLessonFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  const std::size_t lessonKey = head.find("\"raylab_lesson\"");
+  return lessonKey != std::string::npos && lessonKey < head.find("\"raylab_scene\"");
+}
 
 }  // namespace
 
@@ -47,14 +60,20 @@ int runCommandLine(int argc, char** argv) {
   CLI::Option* sceneOption = cli.add_option(
       "--scene", windowScene,
       "Scene file to open (default: the scene open last time, else the built-in scene)");
-  cli.add_option("file", windowScene, "Scene file to open (the same as --scene FILE)")
+  // A file given alone (a double-click in a file manager runs `raylab FILE`): a scene, or
+  // a lesson, which the window opens at its first step.
+  std::string openFile;
+  cli.add_option("file", openFile,
+                 "Scene file to open (the same as --scene FILE), or a lesson file to open at "
+                 "its first step (the same as --lesson FILE)")
       ->excludes(sceneOption)
       ->type_name("FILE.json")
       ->check(CLI::Validator(
           [](const std::string& path) {
             return lowerExtension(path) == ".json"
                        ? std::string()
-                       : "'" + path + "' is neither a subcommand nor a scene file (.json)";
+                       : "'" + path +
+                             "' is neither a subcommand nor a scene or lesson file (.json)";
           },
           "FILE.json"));
   int quitAfterMs = -1;
@@ -160,6 +179,11 @@ int runCommandLine(int argc, char** argv) {
     return kExitUsage;
   }
 
+  if (!openFile.empty() && lesson.empty() && isLessonFile(openFile)) {
+    lesson = openFile;
+  } else if (!openFile.empty()) {
+    windowScene = openFile;
+  }
   for (const Subcommand& subcommand : subcommands) {
     if (subcommand.parser->parsed()) return subcommand.run(windowScene);
   }

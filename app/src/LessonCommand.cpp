@@ -4,6 +4,7 @@
 
 #include "CompareCommand.h"
 #include "ExitCodes.h"
+#include "InstalledData.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/AtomicFolder.h"
@@ -52,7 +53,7 @@ namespace {
 
 struct LessonOptions {
   std::string file;  ///< The lesson to check: a path, or an id in `dir`.
-  std::string dir = RAYLAB_LESSONS_DIR;
+  std::string dir = lessonsFolder();
   std::string lang = "en";
   std::string out;   ///< --out DIR: render every step and write the handout there.
   std::string size;  ///< --size WxH: picture size (image views: the largest render).

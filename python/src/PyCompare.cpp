@@ -18,9 +18,10 @@
 namespace raylab::python {
 namespace {
 
-/// Thrown from the comparison's progress callback to stop it. The callback runs between
-/// passes, after the renderer's worker threads have finished (Renderer::Progress), so the
-/// exception unwinds through Comparison::run without leaving work behind.
+/// Thrown from the comparison's progress callback to stop it. The callback runs on the
+/// renderer's calling thread after a pass (Renderer::Progress); the renderer stops its
+/// workers and lets the exception through once they have left, so it unwinds through
+/// Comparison::run without leaving work behind.
 struct ComparisonStopped {};
 
 py::dict seriesDict(const std::vector<ConvergencePoint>& series) {

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -271,6 +272,64 @@ TEST(Renderer, 09_RaysPerSampleAreCapped) {
   RenderStats ordinary;
   render(cornell, settingsFor(cornell, Algorithm::Distributed, 2), 2, &ordinary);
   EXPECT_EQ(ordinary.cappedSamples, 0u);
+}
+
+TEST(Renderer, 10_OverlappingPassesOnManyThreadsGiveTheOneThreadImage) {
+  // 45 x 29 in 8 x 8 tiles, 11 spp: passes of 1, 1, 2, 4 and 3 samples, the later ones
+  // taken dearest tile first, started while the pass before is still being traced.
+  const Scene scene = shippedScene("materials", 45, 29);
+  const RenderSettings settings = settingsFor(scene, Algorithm::PathTracing, 11);
+  const FloatImage one = render(scene, settings, 1);
+  for (int threads : {4, 7, 16}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    std::vector<double> fractions;
+    Renderer renderer(scene, settings);
+    renderer.setThreads(threads);
+    renderer.setProgress(
+        [&](double fraction, const FloatImage&) { fractions.push_back(fraction); });
+    expectIdentical(one, renderer.render());
+    EXPECT_EQ(fractions, (std::vector<double>{1.0 / 11, 2.0 / 11, 4.0 / 11, 8.0 / 11, 1.0}));
+  }
+}
+
+TEST(Renderer, 11_StatsSayTheThreadsTilesAndIdleTimeByPass) {
+  const Scene scene = shippedScene("cornell", 64, 48);
+  const RenderSettings settings = settingsFor(scene, Algorithm::RayCasting, 16);
+  RenderStats stats;
+  // 12 tiles of 16 x 16 are fewer than 16 per thread for 2 threads: tiles of 8 x 8.
+  render(scene, settings, 2, &stats);
+  EXPECT_EQ(stats.threads, 2);
+  EXPECT_EQ(stats.tileSize, 8);
+  ASSERT_EQ(stats.passIdleSeconds.size(), 5u) << "passes of 1, 1, 2, 4 and 8 samples";
+  for (double idle : stats.passIdleSeconds) {
+    EXPECT_GE(idle, 0.0);
+    EXPECT_LE(idle, 2 * stats.seconds);
+  }
+  // One thread never waits for another.
+  render(scene, settings, 1, &stats);
+  EXPECT_EQ(stats.threads, 1);
+  for (double idle : stats.passIdleSeconds) EXPECT_LT(idle, 0.05 * stats.seconds + 1e-3);
+  // 20 x 16 tiles of 16 x 16 are enough for 2 threads; a 16 x 16 image has 4 tiles of
+  // 8 x 8, so no more than 4 threads work on it.
+  render(shippedScene("cornell", 320, 256), settings, 2, &stats);
+  EXPECT_EQ(stats.tileSize, 16);
+  render(shippedScene("cornell", 16, 16), settings, 8, &stats);
+  EXPECT_EQ(stats.threads, 4);
+}
+
+TEST(Renderer, 12_AnExceptionFromTheProgressCallbackStopsTheWorkersAndLeavesRender) {
+  // Python's comparison stops a render this way: the workers are still tracing the next
+  // pass when the callback throws; render() must wait for them and pass the exception on.
+  const Scene scene = shippedScene("cornell", 64, 64);
+  const RenderSettings settings = settingsFor(scene, Algorithm::PathTracing, 1 << 12);
+  Renderer renderer(scene, settings);
+  renderer.setThreads(4);
+  int calls = 0;
+  renderer.setProgress([&](double, const FloatImage&) {
+    if (++calls == 2) throw std::runtime_error("enough");
+  });
+  EXPECT_THROW(renderer.render(), std::runtime_error);
+  EXPECT_EQ(calls, 2);
 }
 
 }  // namespace

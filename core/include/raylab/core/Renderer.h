@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace raylab {
 
@@ -24,6 +25,13 @@ struct RenderStats {
                                        ///< their rays past the cap were not traced, so
                                        ///< they miss some light (the same whatever the
                                        ///< thread count).
+  int threads = 0;                     ///< Worker threads that traced.
+  int tileSize = 0;                    ///< Side of the square tiles, pixels.
+  /// Worker-seconds spent waiting with no tile to trace, by pass (the oldest pass not
+  /// complete while a worker waited): for a tile's previous pass, for a pass to be
+  /// complete, and at the end of the render for the last tiles. Their sum divided by
+  /// threads x seconds is the fraction of the workers' time lost to waiting.
+  std::vector<double> passIdleSeconds;
 };
 
 /**
@@ -35,9 +43,13 @@ struct RenderStats {
  * the thread count or the scheduling.
  *
  * Passes add 1, 1, 2, 4, 8, ... samples per pixel (doubling the total each time) until
- * samplesPerPixel; each pass cuts the image into 16 x 16 tiles that the worker threads
- * take from a shared counter. A cancelled render returns the image of the last complete
- * pass. The scene passed in must outlive the renderer.
+ * samplesPerPixel; each pass cuts the image into 16 x 16 tiles (8 x 8 when that gives
+ * fewer than 16 per thread) that the worker threads take, the dearest first. No barrier
+ * separates the passes: a worker with no tile of a pass left takes the next pass's tiles
+ * whose previous pass is done (three buffers of sums keep the last complete pass and the
+ * two in progress; under a time limit a pass waits for the one before, whose time sets
+ * its size). A cancelled render returns the image of the last complete pass. The scene
+ * passed in must outlive the renderer.
  */
 class Renderer {
  public:
