@@ -45,7 +45,7 @@ foreach(row
     "Empty|empty.json|: the file is empty \\(expected a JSON object\\)\n"
     "SyntaxError|syntax-error.json|:3:31: JSON syntax error: syntax error while parsing value - unexpected '.'"
     "WrongType|wrong-type.json|: at /objects/0/shape/radius: expected a number, got \"big\"\n"
-    "UnknownKey|unknown-key.json|: at /materials/0/color: unknown key \"color\" \\(expected one of name, type, colour, "
+    "UnknownKey|unknown-key.json|: at /materials/0/color: unknown key \"color\" \\(expected one of name, display_name, type, colour, "
     "NaN|nan.json|:4:57: JSON syntax error: .*invalid literal.* \\(JSON has no NaN or Infinity: write a finite number\\)\n"
     "Infinity|infinity.json|:4:61: JSON syntax error: .*expected digit after '-'.* \\(JSON has no NaN or Infinity: write a finite number\\)\n"
     "NumberTooLargeForADouble|huge-number.json|:4:74: number '1e999' is too large for a double \\(largest about 1\\.8e308, RayLab's coordinates are at most 1e12\\)\n"
