@@ -445,6 +445,14 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
 /// "01", "02", ...
 std::string twoDigits(std::size_t n) { return (n < 10 ? "0" : "") + std::to_string(n); }
 
+/// Whether `name` is a file `lesson --out` writes (step-NN.png, lesson.md): the only files
+/// an earlier handout folder may hold, as the new handout replaces it whole.
+bool handoutFile(const std::string& name) {
+  const bool step = name.rfind("step-", 0) == 0 && name.size() > 9 &&
+                    name.compare(name.size() - 4, 4, ".png") == 0;
+  return step || name == "lesson.md";
+}
+
 int runRender(const LessonOptions& o) {
   namespace fs = std::filesystem;
   const std::string path = resolveLesson(o);

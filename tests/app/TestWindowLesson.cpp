@@ -510,25 +510,27 @@ TEST_F(WindowLessonTest, 16_TheChoicesAreShownInTheHandoutsOrder) {
   }
   EXPECT_GE(checked, 5);
   QDir(out).removeRecursively();
-  // Issue 38: a stranger's lesson whose title quoted in a message was cut inside a UTF-8
-  // character threw from the JSON writer: the window ended with the edits lost. The edits
-  // are asked about before the file is read, and the error is reported in a dialog.
-  TEST_F(WindowLessonTest, 17_AStrangersLessonAsksAboutTheEditsFirstAndIsReported) {
-    m_window->selectObject(m_window->document().scene().findObject("blue cube"));
-    m_window->editPanel()->duplicate();
-    ASSERT_TRUE(m_window->isWindowModified());
-    const std::string edited = SceneIO::serialize(m_window->document().scene());
-    const QString lesson =
-        QStringLiteral(RAYLAB_SOURCE_DIR "/tests/data/stranger/utf8-title-lesson.json");
-    m_window->setUnsavedChangesAnswer(QMessageBox::Cancel);
-    EXPECT_FALSE(m_window->openLesson(lesson));
-    EXPECT_TRUE(m_window->lastError().isEmpty()) << m_window->lastError().toStdString();
-    m_window->setUnsavedChangesAnswer(QMessageBox::Discard);
-    EXPECT_FALSE(m_window->openLesson(lesson));
-    EXPECT_TRUE(m_window->lastError().contains(QStringLiteral("utf8-title-lesson.json: at /title")))
-        << m_window->lastError().toStdString();
-    EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), edited);
-  }
+}
+
+// Issue 38: a stranger's lesson whose title quoted in a message was cut inside a UTF-8
+// character threw from the JSON writer: the window ended with the edits lost. The edits
+// are asked about before the file is read, and the error is reported in a dialog.
+TEST_F(WindowLessonTest, 17_AStrangersLessonAsksAboutTheEditsFirstAndIsReported) {
+  m_window->selectObject(m_window->document().scene().findObject("blue cube"));
+  m_window->editPanel()->duplicate();
+  ASSERT_TRUE(m_window->isWindowModified());
+  const std::string edited = SceneIO::serialize(m_window->document().scene());
+  const QString lesson =
+      QStringLiteral(RAYLAB_SOURCE_DIR "/tests/data/stranger/utf8-title-lesson.json");
+  m_window->setUnsavedChangesAnswer(QMessageBox::Cancel);
+  EXPECT_FALSE(m_window->openLesson(lesson));
+  EXPECT_TRUE(m_window->lastError().isEmpty()) << m_window->lastError().toStdString();
+  m_window->setUnsavedChangesAnswer(QMessageBox::Discard);
+  EXPECT_FALSE(m_window->openLesson(lesson));
+  EXPECT_TRUE(m_window->lastError().contains(QStringLiteral("utf8-title-lesson.json: at /title")))
+      << m_window->lastError().toStdString();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), edited);
+}
 
 }  // namespace
 }  // namespace raylab::app
