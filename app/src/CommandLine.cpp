@@ -3,6 +3,7 @@
 #include "AnimateCommand.h"
 #include "CompareCommand.h"
 #include "ExitCodes.h"
+#include "InstalledData.h"
 #include "LessonCommand.h"
 #include "PlotCommand.h"
 #include "RenderCommand.h"
@@ -11,6 +12,7 @@
 #include "TraceCommand.h"
 
 #include "raylab/core/FilePaths.h"
+#include "raylab/core/LessonAliases.h"
 
 #if RAYLAB_WITH_GUI
 #include "WindowCommand.h"
@@ -179,6 +181,9 @@ int runCommandLine(int argc, char** argv) {
     return kExitUsage;
   }
 
+  // Lessons renamed when the course was renumbered still open by their old names.
+  openFile = resolveLessonFile(openFile);
+  lesson = resolveLessonFile(lesson, lessonsFolder());
   if (!openFile.empty() && lesson.empty() && isLessonFile(openFile)) {
     lesson = openFile;
   } else if (!openFile.empty()) {

@@ -12,6 +12,7 @@
 #include "raylab/core/Exception.h"
 #include "raylab/core/Image.h"
 #include "raylab/core/Lesson.h"
+#include "raylab/core/LessonAliases.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
@@ -69,14 +70,9 @@ class OutputError : public Exception {
   using Exception::Exception;
 };
 
-/// `file` itself when it exists, else `dir`/`file`.json when that exists (a lesson id).
-std::string resolveLesson(const LessonOptions& o) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::exists(o.file, ec)) return o.file;
-  const fs::path byId = fs::path(o.dir) / (o.file + ".json");
-  return fs::is_regular_file(byId, ec) ? byId.string() : o.file;
-}
+/// `file` itself when it exists, else the lesson an id names in `dir`, or the file an old id
+/// (before the course was renumbered) names (resolveLessonFile).
+std::string resolveLesson(const LessonOptions& o) { return resolveLessonFile(o.file, o.dir); }
 
 /// " (2 steps need: schlick-fresnel, bvh-view)" or "".
 std::string needsNote(const Lesson& lesson) {

@@ -60,9 +60,9 @@ if(NOT has_bvh EQUAL -1)
          " rays/s " "Brute force: every ray")
   endif()
 endif()
-# Lesson 6's images ask for 16 and 64 spp; the test renders at most 4 (--max-spp 4), and the
+# Lesson 7's images ask for 16 and 64 spp; the test renders at most 4 (--max-spp 4), and the
 # handout says so under them: its text describes what the step asks for.
-if(LESSON MATCHES "06-path-tracing")
+if(LESSON MATCHES "07-path-tracing")
   if(LANG STREQUAL "zh")
     list(APPEND expected "此图按每像素 4 个样本渲染（受 --max-spp 限制），本步原本使用 16 个")
   else()

@@ -196,7 +196,7 @@ TEST_F(WindowLessonTest, 08_BundleAllHitsAndSamplesSteps) {
       << rays.crossingsText().toStdString();
   EXPECT_TRUE(rays.crossingsText().contains(QStringLiteral("leaves 'sphere'")));
 
-  const QString six = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/06-path-tracing.json");
+  const QString six = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/07-path-tracing.json");
   ASSERT_TRUE(m_window->openLesson(six));
   const Lesson lesson6 = LessonIO::load(six.toStdString());
   const int samples =
@@ -271,7 +271,7 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
   // Lesson 8: a step with a "bvh" block draws the boxes in the 3D view and says in the
   // panel what they are; the next step without one clears them; a brute-force image
   // step renders and its figures say so.
-  const QString file = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/08-acceleration.json");
+  const QString file = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/09-acceleration.json");
   ASSERT_TRUE(m_window->openLesson(file));
   LessonPanel& panel = *m_window->lessonPanel();
   const Lesson lesson = LessonIO::load(file.toStdString());
@@ -312,7 +312,7 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
 // comparison step leaves the panels the whole height. (The plot stayed hidden, and once its
 // box was ticked it had no height at all: the splitter had been laid out without it.)
 TEST_F(WindowLessonTest, 11_PlotStepsShowThePlot) {
-  const QString seven = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/07-four-side-by-side.json");
+  const QString seven = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/08-four-side-by-side.json");
   ASSERT_TRUE(m_window->openLesson(seven));
   const Lesson lesson = LessonIO::load(seven.toStdString());
   const int plot =
@@ -340,7 +340,7 @@ TEST_F(WindowLessonTest, 11_PlotStepsShowThePlot) {
 // A comparison step with a pixel shows that pixel's four trees beside the images once the
 // comparison is done, as its handout picture does (lesson 7, "Four trees of one pixel").
 TEST_F(WindowLessonTest, 12_AComparisonStepWithAPixelShowsItsFourTrees) {
-  const QString seven = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/07-four-side-by-side.json");
+  const QString seven = QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/08-four-side-by-side.json");
   ASSERT_TRUE(m_window->openLesson(seven));
   const Lesson lesson = LessonIO::load(seven.toStdString());
   const int trees = firstStep(lesson, [](const LessonStep& st) {

@@ -74,14 +74,14 @@ endif()
 
 # 2. The installed program finds the installed lessons, not the source tree's.
 run(${prefix}/bin/raylab lesson --list)
-if(NOT out MATCHES "04-whitted" OR NOT out MATCHES "08-acceleration")
+if(NOT out MATCHES "04-whitted" OR NOT out MATCHES "09-acceleration")
   message(FATAL_ERROR "raylab lesson --list from ${prefix} does not list the lessons:\n${out}")
 endif()
-file(REMOVE ${prefix}/share/raylab/lessons/08-acceleration.json)
+file(REMOVE ${prefix}/share/raylab/lessons/09-acceleration.json)
 run(${prefix}/bin/raylab lesson --list)
-if(out MATCHES "08-acceleration" OR NOT out MATCHES "07-four-side-by-side")
+if(out MATCHES "09-acceleration" OR NOT out MATCHES "08-four-side-by-side")
   message(FATAL_ERROR "the installed raylab does not read ${prefix}/share/raylab/lessons "
-                      "(08-acceleration.json was removed there):\n${out}")
+                      "(09-acceleration.json was removed there):\n${out}")
 endif()
 
 # 3. The Python package from the prefix (statements on lines: `;` would split the list).
