@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 using namespace raylab;
 namespace fs = std::filesystem;
@@ -27,11 +28,14 @@ TEST(LessonAliases, 01_OldIdsNameTheRenumberedLessons) {
 // old name is a shipped file any more (it would hide the renamed one).
 TEST(LessonAliases, 02_EveryOldFileOpensItsShippedLesson) {
   for (const char* oldId : {"06-path-tracing", "07-four-side-by-side", "08-acceleration"}) {
+    SCOPED_TRACE(oldId);
+    const std::optional<std::string> newId = renamedLessonId(oldId);
+    ASSERT_TRUE(newId);
     const std::string oldFile = kLessons + "/" + oldId + ".json";
     EXPECT_FALSE(fs::exists(oldFile)) << oldFile;
     const std::string resolved = resolveLessonFile(oldFile);
-    EXPECT_EQ(fs::path(resolved).filename().string(), *renamedLessonId(oldId) + ".json");
-    EXPECT_EQ(LessonIO::load(resolved).id, *renamedLessonId(oldId));
+    EXPECT_EQ(fs::path(resolved).filename().string(), *newId + ".json");
+    EXPECT_EQ(LessonIO::load(resolved).id, *newId);
     EXPECT_EQ(resolveLessonFile(oldId, kLessons), resolved) << "the old id in the folder";
   }
 }
