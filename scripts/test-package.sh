@@ -95,7 +95,7 @@ in_sh() { in_root sh -ec "cd /tmp/work; $1"; }
 step "raylab lesson --list"
 list="$(in_sh 'raylab lesson --list')"
 echo "$list"
-[[ $(grep -cE '^0[1-8]-' <<<"$list") -eq 8 ]] || fail "raylab lesson --list does not list the 8 lessons"
+[[ $(grep -cE '^0[1-9]-' <<<"$list") -eq 9 ]] || fail "raylab lesson --list does not list the 9 lessons"
 step "raylab render --out x.png"
 in_sh 'raylab render --out x.png && test -s x.png' || fail "raylab render"
 step "xvfb-run -a raylab lesson /usr/share/raylab/lessons/04-whitted.json --out d"
