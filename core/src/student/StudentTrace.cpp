@@ -50,6 +50,10 @@ double ulpsBetween(double a, double b) {
 }  // namespace
 
 void judgeCall(const Scene& scene, StudentCall& call) {
+  judgeCall(*scene.objects[std::size_t(call.object)].shape, call);
+}
+
+void judgeCall(const Shape& shape, StudentCall& call) {
   if (!call.error.empty()) {
     call.verdict = Verdict::Exception;
     return;
@@ -59,7 +63,6 @@ void judgeCall(const Scene& scene, StudentCall& call) {
     return;
   }
   // The exact answer, and the engine's own double answer, whose error sets the tolerance.
-  const Shape& shape = *scene.objects[std::size_t(call.object)].shape;
   const OracleComparison engine = ExactOracle::compare(shape, call.query);
   call.exactHit = engine.exact.hit();
   call.exact = engine.exact.t;

@@ -143,6 +143,8 @@ std::shared_ptr<Scene> studentScene(const Scene& scene, const StudentHooks& hook
 
 /// Judges one call against the exact oracle on `scene`'s object (the original scene).
 void judgeCall(const Scene& scene, StudentCall& call);
+/// Judges one call against the exact oracle on `shape` (call.object is not used).
+void judgeCall(const Shape& shape, StudentCall& call);
 
 /// Traces sample `sample` of pixel (x, y) (or `root` in place of its camera ray) twice:
 /// with the student's hooks and with the engine's own pieces, and judges every call.
