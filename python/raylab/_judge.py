@@ -97,6 +97,8 @@ def _call(fn, args):
     """(answer, error text): the student's answer, or what went wrong with its line."""
     try:
         return fn(*[np.array(a, float) if isinstance(a, tuple) else a for a in args]), ""
+    except MemoryError:
+        raise  # the memory limit: the whole check stops (raylab._check_child reports it)
     except Exception as error:  # the student's code: every failure is reported
         import traceback
         frames = traceback.extract_tb(error.__traceback__)

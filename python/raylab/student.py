@@ -223,4 +223,15 @@ def _stub(name):
 for _name in PIECES:
     globals()[_name] = _stub(_name)
 
+
+
+def save_view(path, scene, trace, width=400, height=300, language="en"):
+    """Writes a PNG: your tree coloured by verdict (with its legend) beside the engine's
+    tree coloured by ray kind. Needs an X server (xvfb-run), like raylab.save_view.
+
+    保存一张 PNG：左边是按评判结果着色的你的光线树，右边是按光线类型着色的引擎光线树。
+    """
+    _raylab.student_save_view(path, scene, trace, width, height, language)
+
+
 from ._judge import judge  # noqa: E402,F401

@@ -12,10 +12,14 @@
 #include "raylab/core/Renderer.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/StudentHooks.h"
+#include "raylab/vis/ImageIO.h"
+#include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/SceneView.h"
 
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -139,6 +143,34 @@ std::shared_ptr<TraceData> traceData(const std::shared_ptr<const Scene>& scene,
   return d;
 }
 
+/// The student's tree coloured by verdict (left) beside the engine's tree coloured by ray
+/// kind (right), each `width` x `height`, in one image.
+SrgbImage sideBySide(const SceneHandle& scene, const StudentTraceData& data, int width, int height,
+                     Language language) {
+  if (width < 1 || height < 1) throw py::value_error("width and height must be at least 1");
+  vis::RayTreeStyle studentStyle;
+  studentStyle.colouring = vis::RayColouring::Verdict;
+  studentStyle.language = language;
+  for (const RayVerdict& v : data.trace.verdicts) studentStyle.verdicts.push_back(int(v.verdict));
+  vis::RayTreeStyle referenceStyle;
+  referenceStyle.colouring = vis::RayColouring::Kind;
+  referenceStyle.language = language;
+  const std::shared_ptr<const Scene> snapshot = scene.scene;
+  py::gil_scoped_release release;
+  SrgbImage out(2 * width, height);
+  for (int side = 0; side < 2; ++side) {
+    vis::SceneView view(*snapshot);
+    view.resetViewCamera(double(width) / height);
+    view.setRayTree(side == 0 ? data.trace.student.tree : data.trace.reference.tree,
+                    side == 0 ? studentStyle : referenceStyle);
+    const SrgbImage half = view.renderOffscreen(width, height);
+    for (int y = 0; y < height; ++y)
+      std::memcpy(&out.rgb[(std::size_t(y) * 2 * width + side * width) * 3],
+                  &half.rgb[std::size_t(y) * width * 3], std::size_t(width) * 3);
+  }
+  return out;
+}
+
 void bindReferences(py::module_& m) {
   m.def("ref_reflect", [](const Vec3& d, const Vec3& n) { return bsdf::reflect(-d, n); });
   m.def("ref_refract", [](const Vec3& d, const Vec3& n, double eta) -> std::optional<Vec3> {
@@ -235,6 +267,18 @@ void bindStudent(py::module_& m) {
       },
       py::arg("shape"), py::arg("ray"), py::arg("student"), py::arg("error") = "",
       "One answer of a student's intersection judged against the exact oracle (a dict).");
+
+  m.def(
+      "student_save_view",
+      [](const std::string& path, const SceneHandle& scene, const StudentTraceData& data, int width,
+         int height, const std::string& language) {
+        vis::writePng(sideBySide(scene, data, width, height,
+                                 language == "zh" ? Language::Chinese : Language::English),
+                      path);
+      },
+      py::arg("path"), py::arg("scene"), py::arg("trace"), py::arg("width") = 400,
+      py::arg("height") = 300, py::arg("language") = "en",
+      "The student's tree coloured by verdict beside the engine's (by ray kind), as a PNG.");
 
   bindReferences(m);
 }

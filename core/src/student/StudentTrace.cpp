@@ -73,11 +73,14 @@ void judgeCall(const Shape& shape, StudentCall& call) {
   // Near a tangent or an edge the double answer may fall either way: a student who agrees
   // with the engine's double answer there is right.
   const bool eitherWay = call.tangent || engineHits != call.exactHit;
+  if (gave && !hits) {
+    // A t outside [tMin, tMax] (behind the origin, beyond the light): the engine ignores it,
+    // but the contract asks for None there.
+    call.verdict = call.exactHit && !eitherWay ? Verdict::WrongHit : Verdict::SpuriousHit;
+    return;
+  }
   if (!hits) {
-    if (!call.exactHit || eitherWay)
-      call.verdict = Verdict::Agrees;
-    else
-      call.verdict = gave ? Verdict::WrongHit : Verdict::MissedHit;
+    call.verdict = !call.exactHit || eitherWay ? Verdict::Agrees : Verdict::MissedHit;
     return;
   }
   if (!call.exactHit) {
