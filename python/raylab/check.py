@@ -96,7 +96,12 @@ def run_child(exercise, student_path, seconds=10.0, memory_mb=1024):
         err = err.decode("utf-8", "replace")
         if os.path.isfile(result_path):
             with open(result_path, encoding="utf-8") as f:
-                return json.load(f)
+                result = json.load(f)
+            if result.get("problem", {}).get("kind") == "memory":  # MemoryError in the child
+                return _failed("memory", student_path,
+                               "used more than the %d MB memory limit" % memory_mb,
+                               "使用的内存超过了 %d MB 的限制" % memory_mb, "MemoryError")
+            return result
         return _crash(child.returncode, err, student_path, memory_mb, seconds)
 
 

@@ -56,9 +56,35 @@ std::string describe(py::error_already_set& error) {
   return text;
 }
 
+/**
+ * \brief Keeps a Python thread state for a renderer's worker thread for the thread's life:
+ * pybind11 otherwise creates and deletes one around every call of a student's function from
+ * a thread Python does not know. Does nothing on a thread Python knows (the caller's).
+ */
+class PinnedThreadState {
+ public:
+  PinnedThreadState() {
+    if (PyGILState_GetThisThreadState() != nullptr) return;
+    m_gil = PyGILState_Ensure();
+    m_saved = PyEval_SaveThread();
+  }
+  ~PinnedThreadState() {
+    if (!m_saved) return;
+    PyEval_RestoreThread(m_saved);
+    PyGILState_Release(m_gil);
+  }
+  PinnedThreadState(const PinnedThreadState&) = delete;
+  PinnedThreadState& operator=(const PinnedThreadState&) = delete;
+
+ private:
+  PyGILState_STATE m_gil{};
+  PyThreadState* m_saved = nullptr;
+};
+
 /// Calls the student's `fn` for `piece` and reads a t: None, or a real number.
 template <typename... Args>
 std::optional<double> askT(const py::function& fn, const char* piece, Args&&... args) {
+  thread_local PinnedThreadState pinned;
   const py::gil_scoped_acquire gil;
   py::object answer;
   try {
@@ -85,24 +111,28 @@ StudentHooks hooksOf(const py::dict& functions) {
     if (name == "intersect_sphere")
       h.intersectSphere = [fn](const Point3& o, const Vec3& d, const Point3& c, double r,
                                double tMin, double tMax) {
+        thread_local PinnedThreadState pinned;
         const py::gil_scoped_acquire gil;
         return askT(fn, "intersect_sphere", vec(o), vec(d), vec(c), r, tMin, tMax);
       };
     else if (name == "intersect_plane")
       h.intersectPlane = [fn](const Point3& o, const Vec3& d, const Point3& p, const Normal3& n,
                               double tMin, double tMax) {
+        thread_local PinnedThreadState pinned;
         const py::gil_scoped_acquire gil;
         return askT(fn, "intersect_plane", vec(o), vec(d), vec(p), vec(n), tMin, tMax);
       };
     else if (name == "intersect_box")
       h.intersectBox = [fn](const Point3& o, const Vec3& d, const Point3& lo, const Point3& hi,
                             double tMin, double tMax) {
+        thread_local PinnedThreadState pinned;
         const py::gil_scoped_acquire gil;
         return askT(fn, "intersect_box", vec(o), vec(d), vec(lo), vec(hi), tMin, tMax);
       };
     else if (name == "intersect_triangle")
       h.intersectTriangle = [fn](const Point3& o, const Vec3& d, const Point3& a, const Point3& b,
                                  const Point3& c, double tMin, double tMax) {
+        thread_local PinnedThreadState pinned;
         const py::gil_scoped_acquire gil;
         return askT(fn, "intersect_triangle", vec(o), vec(d), vec(a), vec(b), vec(c), tMin, tMax);
       };
