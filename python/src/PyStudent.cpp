@@ -201,27 +201,7 @@ SrgbImage sideBySide(const SceneHandle& scene, const StudentTraceData& data, int
   return out;
 }
 
-void bindReferences(py::module_& m) {
-  m.def("ref_reflect", [](const Vec3& d, const Vec3& n) { return bsdf::reflect(-d, n); });
-  m.def("ref_refract", [](const Vec3& d, const Vec3& n, double eta) -> std::optional<Vec3> {
-    const auto t = bsdf::refract(-d, n, eta);
-    return t ? std::optional<Vec3>(*t) : std::nullopt;
-  });
-  m.def("ref_fresnel", &fresnel::dielectric);
-  m.def("ref_schlick", &fresnel::schlickDielectric);
-  m.def("ref_phong", &classic::phongHighlight);
-  m.def("ref_blinn_phong", &classic::blinnPhongHighlight);
-  m.def("ref_sample_cosine_hemisphere", [](double u1, double u2) {
-    const Vec3 w = sampleCosineHemisphere(Vec2(u1, u2));
-    return py::make_tuple(toTuple(w), cosineHemispherePdf(w.z));
-  });
-  m.def("ref_cosine_hemisphere_pdf", &cosineHemispherePdf);
-  m.def("ref_offset_distance", &rayOffsetDistance);
-}
-
-}  // namespace
-
-void bindStudent(py::module_& m) {
+void bindStudentTrace(py::module_& m) {
   py::class_<StudentTraceData, std::shared_ptr<StudentTraceData>>(
       m, "StudentTrace", "One pixel sample traced with a student's pieces and by the engine.")
       .def_property_readonly("student", [](const StudentTraceData& d) { return d.student; })
@@ -248,6 +228,30 @@ void bindStudent(py::module_& m) {
       .def_property_readonly("first_divergent",
                              [](const StudentTraceData& d) { return d.trace.firstDivergent; })
       .def_property_readonly("passes", [](const StudentTraceData& d) { return d.trace.passes(); });
+}
+
+void bindReferences(py::module_& m) {
+  m.def("ref_reflect", [](const Vec3& d, const Vec3& n) { return bsdf::reflect(-d, n); });
+  m.def("ref_refract", [](const Vec3& d, const Vec3& n, double eta) -> std::optional<Vec3> {
+    const auto t = bsdf::refract(-d, n, eta);
+    return t ? std::optional<Vec3>(*t) : std::nullopt;
+  });
+  m.def("ref_fresnel", &fresnel::dielectric);
+  m.def("ref_schlick", &fresnel::schlickDielectric);
+  m.def("ref_phong", &classic::phongHighlight);
+  m.def("ref_blinn_phong", &classic::blinnPhongHighlight);
+  m.def("ref_sample_cosine_hemisphere", [](double u1, double u2) {
+    const Vec3 w = sampleCosineHemisphere(Vec2(u1, u2));
+    return py::make_tuple(toTuple(w), cosineHemispherePdf(w.z));
+  });
+  m.def("ref_cosine_hemisphere_pdf", &cosineHemispherePdf);
+  m.def("ref_offset_distance", &rayOffsetDistance);
+}
+
+}  // namespace
+
+void bindStudent(py::module_& m) {
+  bindStudentTrace(m);
 
   m.def(
       "student_trace",
