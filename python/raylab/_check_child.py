@@ -95,7 +95,52 @@ def main(argv):
     for path in bug_paths:
         bug = _load(path, "bug_code")
         result["bugs"][path] = judge(piece, getattr(bug, function))
+    if piece in student.GEOMETRY:
+        result["tree"] = _tree(piece, fn)
     write(result)
+
+
+def _tree(piece, fn):
+    """The student's tree of a pixel of the default scene (with a plane or a triangle added
+    for those pieces): the first pixel of a 16 x 12 grid whose tree diverges, else the first
+    whose camera ray the piece answers; its first divergent ray with both values, and, with
+    a display, tree.png (the student's tree by verdict beside the engine's) in the working
+    folder."""
+    import os
+    import raylab
+    from raylab import student
+    scene = raylab.default_scene()
+    if piece in ("intersect_plane", "intersect_triangle"):
+        scene.add_shape(piece.split("_")[1])
+    width, height = scene.size
+    student.use(**{piece: fn})
+    chosen = None
+    for j in range(12):
+        for i in range(16):
+            pixel = (int((i + 0.5) * width / 16), int((j + 0.5) * height / 12))
+            t = student.trace(scene, pixel, algorithm="whitted")
+            if not t.passes:
+                chosen = (pixel, t)
+                break
+            if chosen is None and any(c["piece"] == piece and c["ray"] == 0
+                                      and c["reference"] is not None for c in t.calls):
+                chosen = (pixel, t)
+        if chosen and not chosen[1].passes:
+            break
+    if chosen is None:
+        return None
+    pixel, t = chosen
+    out = {"pixel": list(pixel), "algorithm": "whitted", "verdicts": t.verdicts,
+           "first_divergent": t.first_divergent, "picture": None}
+    if t.first_divergent >= 0:
+        out["call"] = t.calls[t.deciding_calls[t.first_divergent]]
+    if os.environ.get("DISPLAY"):
+        try:
+            student.save_view("tree.png", scene, t, width=400, height=300)
+            out["picture"] = os.path.abspath("tree.png")
+        except Exception as error:  # no usable display: the report says so
+            out["picture_error"] = str(error)
+    return out
 
 
 if __name__ == "__main__":

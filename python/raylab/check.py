@@ -97,6 +97,10 @@ def run_child(exercise, student_path, seconds=10.0, memory_mb=1024):
         if os.path.isfile(result_path):
             with open(result_path, encoding="utf-8") as f:
                 result = json.load(f)
+            picture = (result.get("tree") or {}).get("picture")
+            if picture and os.path.isfile(picture):  # read before the folder goes
+                with open(picture, "rb") as f:
+                    result["tree"]["png"] = f.read()
             if result.get("problem", {}).get("kind") == "memory":  # MemoryError in the child
                 return _failed("memory", student_path,
                                "used more than the %d MB memory limit" % memory_mb,
@@ -210,6 +214,9 @@ def report(exercise, student_path, result):
                   "- reference / 参考结果: %s" % _value(first["reference"])]
         if first.get("error"):
             lines.append("- error / 错误: %s" % first["error"])
+    lines += _tree_lines(result.get("tree"), out)
+    if (result.get("tree") or {}).get("png"):
+        out["png"] = result["tree"]["png"]
     bugs = name_bugs(exercise, result)
     out["bugs"] = [{"name": b["name"], "en": b["en"], "zh": b["zh"]} for b in bugs]
     for b in bugs:
@@ -217,6 +224,39 @@ def report(exercise, student_path, result):
                   "", b["hint_zh"]]
     out["markdown"] = "\n".join(lines) + "\n"
     return out
+
+
+def _tree_lines(tree, out):
+    """The report's lines about the traced pixel: its first divergent ray and the picture."""
+    if not tree:
+        return []
+    x, y = tree["pixel"]
+    lines = ["", "## Your tree / 你的光线树", "",
+             "Pixel (%d, %d) of the default scene, Whitted: %d rays / 默认场景像素 (%d, %d)，"
+             "Whitted 算法，共 %d 条光线。" % (x, y, len(tree["verdicts"]), x, y,
+                                             len(tree["verdicts"]))]
+    call = tree.get("call")
+    if call:
+        lines += ["", "First divergent ray / 第一条出错的光线: #%d (%s)" % (call["ray"],
+                                                                          call["verdict"]),
+                  "- origin %s, direction %s, t in [%s, %s]" % (
+                      _value(call["origin"]), _value(call["direction"]), _value(call["t_min"]),
+                      _value(call["t_max"])),
+                  "- yours / 你的结果: t = %s; exact / 精确结果: t = %s" % (
+                      _value(call["student"]), _value(call["reference"]))]
+        if call.get("error"):
+            lines.append("- error / 错误: %s" % call["error"])
+    else:
+        lines += ["", "Every ray agrees / 每条光线都一致。"]
+    out["tree"] = {k: v for k, v in tree.items() if k not in ("png", "picture")}
+    if tree.get("png"):
+        out["tree"]["picture"] = "tree.png"
+        lines += ["", "![Your tree coloured by verdict (left) beside the engine's (right) / "
+                      "左：按评判结果着色的你的光线树；右：引擎的光线树](tree.png)"]
+    elif tree.get("picture_error") or not tree.get("picture"):
+        lines += ["", "(No picture: no display; run under xvfb-run for tree.png / "
+                      "没有显示设备，未生成图片。)"]
+    return lines
 
 
 def main(argv=None):
@@ -242,7 +282,10 @@ def main(argv=None):
         with open(os.path.join(args.out, "report.md"), "w", encoding="utf-8") as f:
             f.write(r["markdown"])
         with open(os.path.join(args.out, "report.json"), "w", encoding="utf-8") as f:
-            json.dump({k: v for k, v in r.items() if k != "markdown"}, f, indent=1)
+            json.dump({k: v for k, v in r.items() if k not in ("markdown", "png")}, f, indent=1)
+        if r.get("png"):
+            with open(os.path.join(args.out, "tree.png"), "wb") as f:
+                f.write(r["png"])
     sys.stdout.write(r["markdown"])
     return 0 if r["passes"] else 1
 

@@ -60,7 +60,12 @@ def test_02_the_reference_solution_passes_every_case(name, tmp_path):
     assert report["passes"] and report["cases"]
     assert all(c["verdict"] == "agrees" or c["verdict"] == "off_by_ulps"
                for c in report["cases"]), text
+    if name in GEOMETRY:  # a pixel's tree traced with the solution: every ray agrees
+        assert report["tree"]["first_divergent"] == -1, text
 
+
+GEOMETRY = ("01-intersect-sphere", "02-intersect-plane", "03-intersect-box",
+            "04-intersect-triangle")
 
 BUGS = [(name, bug["name"]) for name in NAMES
         for bug in json.load(open(os.path.join(EXERCISES, name, "exercise.json"),
@@ -76,6 +81,15 @@ def test_03_each_typical_bug_fails_and_is_named(name, bug, tmp_path):
     assert [b["name"] for b in report["bugs"]] == [bug], text
     assert report["first_divergent"]["case"] in text
     assert "Known bug" in text and "常见错误" in text
+
+
+def test_03b_a_wrong_root_shows_its_first_divergent_ray_in_a_traced_tree(tmp_path):
+    code, report, text = check("01", os.path.join(EXERCISES, "01-intersect-sphere", "bugs",
+                                                   "wrong_root.py"), tmp_path)
+    tree = report["tree"]
+    assert tree["first_divergent"] == 0 and tree["verdicts"][0] == "wrong_hit"
+    assert tree["call"]["student"] > tree["call"]["reference"]
+    assert "First divergent ray" in text and "第一条出错的光线" in text
 
 
 def test_04_the_starter_fails_with_its_todo(tmp_path):
