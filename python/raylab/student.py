@@ -20,7 +20,6 @@ miss. 向量以含三个浮点数的 NumPy 数组传入；t 为浮点数，未�
 """
 
 import inspect as _inspect
-import math as _math
 
 from . import _raylab
 
