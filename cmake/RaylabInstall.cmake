@@ -27,6 +27,9 @@ install(TARGETS raylab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT Run
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/lessons/ DESTINATION ${RAYLAB_INSTALL_DATADIR}/lessons
         COMPONENT Runtime
         PATTERN "*.py" EXCLUDE)  # meshes/generate.py made the meshes; a user needs only them
+# The exercises of `raylab check` (issue 35): starters, instructions, solutions, typical bugs.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/exercises/ DESTINATION ${RAYLAB_INSTALL_DATADIR}/exercises
+        COMPONENT Runtime)
 
 # Desktop integration: the entry (opens scenes and lessons by double-click), the icon, the
 # MIME types of the two kinds of file (told apart by their first key), AppStream.

@@ -1,6 +1,7 @@
 #include "CommandLine.h"
 
 #include "AnimateCommand.h"
+#include "CheckCommand.h"
 #include "CompareCommand.h"
 #include "ExitCodes.h"
 #include "InstalledData.h"
@@ -165,7 +166,7 @@ int runCommandLine(int argc, char** argv) {
   const std::vector<Subcommand> subcommands = {
       addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
       addCompareCommand(cli),  addPlotCommand(cli),   addAnimateCommand(cli),
-      addLessonCommand(cli),
+      addLessonCommand(cli),   addCheckCommand(cli),
   };
 
   try {

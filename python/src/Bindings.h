@@ -127,5 +127,6 @@ void bindRender(py::module_& m);
 void bindTrace(py::module_& m);
 void bindCompare(py::module_& m);
 void bindVis(py::module_& m);
+void bindStudent(py::module_& m);
 
 }  // namespace raylab::python

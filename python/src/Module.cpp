@@ -253,4 +253,5 @@ PYBIND11_MODULE(_raylab, m) {
   bindTrace(m);
   bindCompare(m);
   bindVis(m);
+  bindStudent(m);
 }

@@ -3,6 +3,7 @@
 #include "RayTreeFixtures.h"
 #include "RayTreeGeometry.h"
 
+#include "raylab/core/StudentHooks.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
 
@@ -374,6 +375,23 @@ TEST(RayTreeStyle, 10_ColouringAndKindListsParseOneWay) {
               RayKind(k) == RayKind::Camera || RayKind(k) == RayKind::Shadow);
   EXPECT_EQ(parseRayKinds("camera,photon").error,
             "unknown ray kind 'photon' (expected " + rayKindNames() + ")");
+}
+
+TEST(RayTreeStyle, 11_VerdictColouringColoursEachRayByItsVerdict) {
+  EXPECT_EQ(parseColouring("verdict"), RayColouring::Verdict);
+  const RayTree tree = randomTree(6, 35);
+  RayTreeStyle style;
+  style.colouring = RayColouring::Verdict;
+  style.verdicts = {int(Verdict::Agrees), int(Verdict::WrongHit), int(Verdict::Exception)};
+  const int deepest = 8;
+  EXPECT_EQ(rayColour(tree.segments[0], style, deepest), verdictColour(int(Verdict::Agrees)));
+  EXPECT_EQ(rayColour(tree.segments[1], style, deepest), verdictColour(int(Verdict::WrongHit)));
+  EXPECT_EQ(rayColour(tree.segments[2], style, deepest), verdictColour(int(Verdict::Exception)));
+  // Rays without a verdict are drawn as not judged.
+  EXPECT_EQ(rayColour(tree.segments[5], style, deepest), verdictColour(int(Verdict::NotJudged)));
+  EXPECT_NE(verdictColour(int(Verdict::Agrees)), verdictColour(int(Verdict::WrongHit)));
+  EXPECT_EQ(verdictLabel(int(Verdict::MissedHit), Language::English), "missed hit");
+  EXPECT_EQ(verdictLabel(int(Verdict::MissedHit), Language::Chinese), "漏掉的交点");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "LegendText.h"
 #include "TextFonts.h"
+#include "raylab/core/StudentHooks.h"
 #include "raylab/vis/ComparisonCaptions.h"
 
 #include <vtkCellArray.h>
@@ -261,6 +262,16 @@ void RayTreeActors::updateLegend() {
       for (int d = 0; d <= deepest && m_legendEntryCount < kLegendEntries; d += every)
         addEntry(d == 0 ? (zh ? "0（相机）" : "0 (camera)") : std::to_string(d),
                  depthColour(d, deepest));
+      break;
+    }
+    case RayColouring::Verdict: {
+      // Only the verdicts this tree has, best first (at most kVerdictCount entries).
+      m_legendTitle->SetInput(zh ? "评判结果" : "verdict");
+      std::vector<bool> present(kVerdictCount, false);
+      for (const int v : style.verdicts)
+        if (v >= 0 && v < kVerdictCount) present[std::size_t(v)] = true;
+      for (int v = 0; v < kVerdictCount; ++v)
+        if (present[std::size_t(v)]) addEntry(verdictLabel(v, style.language), verdictColour(v));
       break;
     }
   }

@@ -122,6 +122,10 @@ Vec3 rayColour(const RaySegment& segment, const RayTreeStyle& style, int deepest
       return kindColour(segment.kind);
     case RayColouring::Depth:
       return depthColour(segment.depth, deepest);
+    case RayColouring::Verdict:
+      return verdictColour(segment.id >= 0 && std::size_t(segment.id) < style.verdicts.size()
+                               ? style.verdicts[std::size_t(segment.id)]
+                               : 0);
   }
   return Vec3(0.5);
 }

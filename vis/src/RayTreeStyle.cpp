@@ -1,5 +1,7 @@
 #include "raylab/vis/RayTreeStyle.h"
 
+#include "raylab/core/StudentHooks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -27,8 +29,32 @@ const char* toString(RayColouring colouring) {
       return "kind";
     case RayColouring::Depth:
       return "depth";
+    case RayColouring::Verdict:
+      return "verdict";
   }
   return "unknown";
+}
+
+Vec3 verdictColour(int verdict) {
+  // Indexed by raylab::Verdict: not judged, agrees, off by ulps, spurious, missed, wrong hit,
+  // NaN / Inf, exception.
+  static const Vec3 colours[kVerdictCount] = {
+      {0.55, 0.55, 0.55}, {0.20, 0.80, 0.25}, {0.75, 0.85, 0.20}, {1.00, 0.60, 0.10},
+      {0.95, 0.40, 0.10}, {0.90, 0.10, 0.10}, {0.60, 0.20, 0.90}, {0.95, 0.20, 0.85}};
+  return verdict >= 0 && verdict < kVerdictCount ? colours[verdict] : colours[0];
+}
+
+std::string verdictLabel(int verdict, Language language) {
+  static const char* words[kVerdictCount][2] = {{"not judged", "未评判"},
+                                                {"agrees", "一致"},
+                                                {"off by a few ulps", "差几个 ulp"},
+                                                {"spurious hit", "多出的交点"},
+                                                {"missed hit", "漏掉的交点"},
+                                                {"wrong hit", "交点错误"},
+                                                {"NaN / Inf", "NaN / 无穷大"},
+                                                {"exception", "异常"}};
+  const int v = verdict >= 0 && verdict < kVerdictCount ? verdict : 0;
+  return words[v][language == Language::Chinese ? 1 : 0];
 }
 
 double EnergyScale::position(double energy) const {
@@ -107,7 +133,8 @@ std::vector<bool> reachesLight(const RayTree& tree) {
 }
 
 std::optional<RayColouring> parseColouring(const std::string& name) {
-  for (RayColouring c : {RayColouring::Energy, RayColouring::Kind, RayColouring::Depth})
+  for (RayColouring c :
+       {RayColouring::Energy, RayColouring::Kind, RayColouring::Depth, RayColouring::Verdict})
     if (name == toString(c)) return c;
   return std::nullopt;
 }

@@ -20,10 +20,12 @@ namespace raylab::vis {
 
 /// What the colour of a drawn ray means.
 enum class RayColouring {
-  Energy,  ///< The original course program's convention: light grey low, green medium,
-           ///< blue high.
-  Kind,    ///< Camera, reflection, refraction, diffuse, glossy, shadow (see kindColour).
-  Depth,   ///< Bounces from the camera ray, on a sequential scale.
+  Energy,   ///< The original course program's convention: light grey low, green medium,
+            ///< blue high.
+  Kind,     ///< Camera, reflection, refraction, diffuse, glossy, shadow (see kindColour).
+  Depth,    ///< Bounces from the camera ray, on a sequential scale.
+  Verdict,  ///< A student's code judged ray by ray (issue 35): RayTreeStyle::verdicts, see
+            ///< verdictColour; rays without a verdict are grey.
 };
 const char* toString(RayColouring colouring);
 
@@ -54,6 +56,12 @@ struct EnergyScale {
 Vec3 kindColour(RayKind kind);
 /// Colour of a depth in the Depth colouring (0 = camera rays), `maxDepth` the deepest drawn.
 Vec3 depthColour(int depth, int maxDepth);
+/// Colour of a raylab::Verdict (StudentHooks.h, as int) in the Verdict colouring: agrees
+/// green, off by ulps yellow-green, the wrong answers from orange to red, exception magenta,
+/// not judged grey.
+Vec3 verdictColour(int verdict);
+/// The legend's words of a verdict ("wrong hit" / "交点错误").
+std::string verdictLabel(int verdict, Language language);
 
 /// Which segments are drawn. A segment is drawn when it passes every filter.
 struct RayFilter {
@@ -83,9 +91,12 @@ struct RayTreeStyle {
   bool showArrows = false;                ///< An arrow head at the end of every segment.
   bool showLegend = true;                 ///< The colour legend in a corner of the view.
   Language language = Language::English;  ///< The legend's words (Chinese: a CJK font).
+  /// Verdict colouring: per segment id, a raylab::Verdict as int (StudentTrace::verdicts);
+  /// segments beyond its end are not judged.
+  std::vector<int> verdicts;
 };
 
-/// The colouring named `name` ("energy", "kind" or "depth"), nothing for another name.
+/// The colouring named `name` ("energy", "kind", "depth" or "verdict"), nothing for another.
 std::optional<RayColouring> parseColouring(const std::string& name);
 /// The ray kinds of a comma-separated list of kind names ("camera,shadow"), as a filter's
 /// `kinds`; an empty list means every kind. The message names the first unknown kind.
