@@ -14,7 +14,7 @@
 // Bvh queries on the binary tree: all hits and nearest triangle, the recorded closest hit of
 // traceVisits and the brute-force references, each a small policy run by one stack
 // traversal (`traverse`). intersect() and occluded() run on the 8-wide tree
-// (BvhWideTraverse.cpp); the build is in BvhBuild.cpp.
+// (wide/WideTraverse.cpp); the build is in BvhBuild.cpp.
 
 namespace raylab {
 

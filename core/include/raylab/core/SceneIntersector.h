@@ -109,13 +109,17 @@ class SceneIntersector {
   /// Nearest hit of entry `e` (not a static round sphere) with `ray`, in the object's frame.
   std::optional<Hit> intersectEntry(const Entry& e, const Ray& ray) const;
   bool occludedEntry(const Entry& e, const Ray& ray) const;
+  /// Nearest hit of static round sphere `e` (column `slot`) with `ray`: its batched root from
+  /// `roots` (batchRoots), or Sphere::nearestRoot when `roots` is null.
+  std::optional<Hit> roundHit(const Entry& e, int slot, const Ray& ray, const double* roots) const;
 
   const Scene* m_scene;
   bool m_bruteForce = false;     ///< RenderSettings::acceleration off: test every triangle.
   std::vector<Entry> m_entries;  ///< Parallel to Scene::objects.
   /// The static round spheres by decreasing radius, their centres and radii as columns
   /// (padded to a multiple of 4 with spheres of radius 0), for roots several at a time
-  /// (roundRoots).
+  /// (roundRoots). Gathered, and searched, in core/src/scene/SphereBatch.cpp, beside the
+  /// plain loop of intersect().
   std::vector<double> m_roundX, m_roundY, m_roundZ, m_roundR;
   std::vector<int> m_roundSlot;    ///< Per entry: its index in the columns, or -1.
   std::vector<int> m_roundObject;  ///< Per column slot (not padding): its entry.
@@ -131,6 +135,17 @@ class SceneIntersector {
   /// tMax] provably lies inside the sphere or ends before it are NaN without their roots.
   /// False when not on x86-64 (the caller loops).
   bool roundRoots(const Ray& ray, bool segment, double* out) const;
+  /// Most columns (padding included) batchRoots answers for: callers keep the roots on the stack.
+  static constexpr int kBatchSpheres = 64;
+  /// roundRoots into `roots` (kBatchSpheres values) when there are round spheres and no more
+  /// than fit; false when the caller must test them one by one.
+  bool batchRoots(const Ray& ray, bool segment, double* roots) const;
+  /// Fills the columns and m_roundSlot, m_roundObject, m_roundCount, m_allRound from
+  /// m_entries (the constructor, once).
+  void gatherRoundSpheres();
+  /// intersect() for a scene of static round spheres only (m_allRound, smallpt), from their
+  /// batched `roots`: the same answer without the loop's branches.
+  bool intersectOnlySpheres(const Ray& ray, const double* roots, SceneHit& out) const;
   /// Meshes' hierarchies rebuilt with the settings' split (Entry::bvh points into them).
   std::vector<std::shared_ptr<const Bvh>> m_rebuilt;
   std::vector<int> m_lights;

@@ -221,7 +221,8 @@ struct WideResult {
 };
 
 namespace portable {
-#include "accel/BvhWideKernel.inc"
+#include "accel/wide/WideKernel.inc"
+#include "accel/wide/WideKernelPackets.inc"
 }  // namespace portable
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -238,7 +239,8 @@ namespace portable {
 #endif
 #define RAYLAB_BVH_KERNEL_AVX2 1
 namespace avx2 {
-#include "accel/BvhWideKernel.inc"
+#include "accel/wide/WideKernel.inc"
+#include "accel/wide/WideKernelPackets.inc"
 }  // namespace avx2
 #undef RAYLAB_BVH_KERNEL_AVX2
 #if defined(__clang__)
