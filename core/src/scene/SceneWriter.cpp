@@ -151,9 +151,14 @@ ojson materialToJson(const Material& m) {
   ObjectWriter j(kMaterialKeys);
   j.add("name", m.name);
   if (!m.nameZh.empty()) j.add("display_name", displayNameJson(m.nameZh));
-  j.add("type", toString(m.type))
-      .add("colour", toJson(m.colour))
-      .add("emission", toJson(m.emission));
+  j.add("type", toString(m.type)).add("colour", toJson(m.colour));
+  if (m.texture.active())
+    j.add("texture", ObjectWriter(kTextureKeys)
+                         .add("type", toString(m.texture.type))
+                         .add("scale", m.texture.scale)
+                         .add("colour2", toJson(m.texture.colour2))
+                         .take());
+  j.add("emission", toJson(m.emission));
   if (mirror || classic || m.reflectionRate != defaults.reflectionRate)
     j.add("reflection_rate", m.reflectionRate);
   if (mirror || classic || m.refractionRate != defaults.refractionRate)
