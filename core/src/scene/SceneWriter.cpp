@@ -136,8 +136,8 @@ ojson shapeToJson(const Shape& shape, ojson& transform) {
   throw SceneIO::SaveError(std::string("cannot save shape of kind ") + toString(shape.kind()));
 }
 
-/// A material as JSON: always name, type, colour, emission and opacity; the parameters
-/// the type uses; and any other parameter that differs from its default (so nothing is
+/// A material as JSON: always name, type, colour, emission and opacity; its texture if any; the
+/// parameters the type uses; and any other parameter that differs from its default (so nothing is
 /// lost in a round trip).
 ojson materialToJson(const Material& m) {
   const Material defaults;
