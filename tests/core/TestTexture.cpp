@@ -3,6 +3,7 @@
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
+#include "raylab/core/Renderer.h"
 #include "raylab/core/SceneEdit.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Texture.h"
@@ -101,6 +102,24 @@ TEST(Texture, 03_EveryAlgorithmShadesAKnownPixelWithTheSameTexel) {
     EXPECT_NEAR(red.g, 0.1 * direct, 0.01 * direct) << name;
     EXPECT_NEAR(white.g, 0.8 * direct, 0.02 * direct) << name;
   }
+}
+
+TEST(Texture, 03b_TheTexturedImageIsTheSameWhateverTheThreadCount) {
+  // Each thread shades with its own copy of the textured material: same pixels with 1 and 4.
+  const Scene scene = SceneIO::parse(floorScene(kChecker), "floor.json");
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::PathTracing;
+  settings.samplesPerPixel = 4;
+  Renderer one(scene, settings), four(scene, settings);
+  one.setThreads(1);
+  four.setThreads(4);
+  const FloatImage a = one.render(), b = four.render();
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) EXPECT_EQ(a.pixels[i], b.pixels[i]) << i;
+  // And the image holds both colours: red pixels on the left, grey ones on the right.
+  const glm::vec3 left = a.pixels[4 * 8 + 1], right = a.pixels[4 * 8 + 6];
+  EXPECT_GT(left.r, 4.0f * left.g);
+  EXPECT_NEAR(right.r, right.g, 1e-6f);
 }
 
 TEST(Texture, 04_TheInspectorNamesTheTextureAndTheTexelAtTheHit) {
