@@ -2212,6 +2212,30 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Scattering model: diffuse (Lambert), mirror (reflection and refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn&apos;s half-vector highlight), rough_conductor (microfacet metal), rough_dielectric (microfacet glass), plastic (a rough dielectric coating over a diffuse base)</source>
         <translation>散射模型：diffuse（Lambert 漫反射）、mirror（镜面，按反射系数和折射系数分配）、dielectric（按菲涅耳公式计算的玻璃）、glossy（Phong 光泽反射）、phong（经典 Phong 光照模型：环境光、漫反射、镜面反射）、blinn_phong（采用 Blinn 半程向量高光的 Phong 模型）、rough_conductor（粗糙导体，微表面金属）、rough_dielectric（粗糙电介质，微表面玻璃）、plastic（塑料：漫反射底层上覆一层粗糙电介质涂层）</translation>
     </message>
+    <message>
+        <source>A solid checker on the colour: space is cut into cubes of side &quot;checker scale&quot;, which take the colour and the second colour in turn (for depth of field and aliasing)</source>
+        <translation>在颜色上叠加三维（实体）棋盘格纹理：空间被划分为边长为“棋盘格尺寸”的立方体，相邻立方体交替取“颜色”和“第二颜色”（用于观察景深和走样）</translation>
+    </message>
+    <message>
+        <source>checker texture</source>
+        <translation>棋盘格纹理</translation>
+    </message>
+    <message>
+        <source>checker scale</source>
+        <translation>棋盘格尺寸</translation>
+    </message>
+    <message>
+        <source>second colour</source>
+        <translation>第二颜色</translation>
+    </message>
+    <message>
+        <source>Side of a checker cube, world units (&gt; 0)</source>
+        <translation>棋盘格立方体的边长，世界坐标单位（&gt; 0）</translation>
+    </message>
+    <message>
+        <source>The colour of every other checker cube, linear RGB in [0, 1]</source>
+        <translation>每隔一个棋盘格立方体所取的颜色，线性 RGB，取值 [0, 1]</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::RayTreePanel</name>

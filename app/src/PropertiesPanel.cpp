@@ -340,7 +340,7 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
         connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
                 [commit](double) { commit(); });
       }
-      if (key == "colour" || key == "background") {
+      if (key == "colour" || key == "colour2" || key == "background") {
         // Linear RGB in [0, 1], picked as a colour.
         auto* pick = new QPushButton(tr("…"));
         pick->setToolTip(tr("Choose the colour"));
@@ -445,6 +445,7 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
   if (values.value("type", "") == "mesh" && !values.contains("normals")) values["normals"] = "file";
   for (auto it = values.begin(); it != values.end(); ++it) {
     const std::string key = it.key();
+    if (material && key == "texture") continue;  // addTextureRows, after the colour
     const std::string place = pointer + "/" + key;
     const json& value = it.value();
     const QString what = label(key);
@@ -455,8 +456,49 @@ void PropertiesPanel::addGroup(const QString& title, const std::string& pointer)
     if (widget->toolTip().isEmpty())
       widget->setToolTip(tr("%1 (%2 in the scene file)").arg(what, QString::fromStdString(place)));
     form->addRow(what, widget);
+    if (material && key == "colour") addTextureRows(form, pointer, values, title);
   }
   m_form->layout()->addWidget(group);
+}
+
+void PropertiesPanel::addTextureRows(QFormLayout* form, const std::string& pointer,
+                                     const json& material, const QString& title) {
+  const std::string place = pointer + "/texture";
+  const bool on = material.contains("texture") && material["texture"].is_object();
+  auto* box = new QCheckBox;
+  box->setObjectName(QString::fromStdString(place));
+  box->setChecked(on);
+  box->setToolTip(
+      tr("A solid checker on the colour: space is cut into cubes of side \"checker scale\", "
+         "which take the colour and the second colour in turn (for depth of field and "
+         "aliasing)"));
+  const QString undoText = tr("Set %1 of %2").arg(tr("checker texture"), title);
+  connect(box, &QCheckBox::toggled, this, [this, pointer, place, undoText](bool checked) {
+    if (checked) {
+      const json checker = {{"type", "checker"}, {"scale", 1.0}, {"colour2", {0.1, 0.1, 0.1}}};
+      setValue(place, checker.dump(), undoText);
+    } else {
+      // Off: the material as it is, without its "texture" key.
+      json plain = json::parse(edit::valueAt(m_document.scene(), pointer, m_document.origin()));
+      plain.erase("texture");
+      setValue(pointer, plain.dump(), undoText);
+    }
+  });
+  form->addRow(tr("checker texture"), box);
+  if (!on) return;
+  const json& texture = material["texture"];
+  const std::pair<const char*, QString> rows[] = {{"scale", tr("checker scale")},
+                                                  {"colour2", tr("second colour")}};
+  for (const auto& [key, words] : rows) {
+    if (!texture.contains(key)) continue;
+    const std::string at = place + "/" + key;
+    QWidget* widget = makeField(key, at, texture[key], true, tr("Set %1 of %2").arg(words, title));
+    widget->setObjectName(QString::fromStdString(at));
+    widget->setToolTip(std::string(key) == "scale"
+                           ? tr("Side of a checker cube, world units (> 0)")
+                           : tr("The colour of every other checker cube, linear RGB in [0, 1]"));
+    form->addRow(words, widget);
+  }
 }
 
 }  // namespace raylab::app

@@ -18,7 +18,8 @@ class SceneDocument;
  * \brief Every value of the selection that a scene file holds, editable: with an object
  * selected, its shape's parameters (centre, radius, size, axes, the sphere's m and n
  * tessellation, corners and edges), its motion and its material (type and every
- * parameter of that type, colours with a colour picker); with nothing selected, the
+ * parameter of that type, colours with a colour picker, and its checker texture); with
+ * nothing selected, the
  * camera (position, look-at, up, field of view, image size, thin lens) and the render
  * settings (algorithm, spp, max depth, seed, ...). The original course program had to
  * change material parameters in its source code.
@@ -54,6 +55,10 @@ class PropertiesPanel : public QWidget {
   /// Makes the form again from the scene (after any change).
   void rebuild();
   void addGroup(const QString& title, const std::string& pointer);
+  /// The material at `pointer`'s checker texture (Texture.h): a check box that adds or
+  /// removes it and, when it is on, its cube side and second colour.
+  void addTextureRows(QFormLayout* form, const std::string& pointer,
+                      const nlohmann::ordered_json& material, const QString& title);
   /// The object's transform steps as the file lists them (applied in order after the shape,
   /// whose values are the ones before them): each step's values editable in place.
   void addTransformGroup(const QString& object, const std::string& base);

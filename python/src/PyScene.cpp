@@ -174,7 +174,9 @@ traces work on the scene as it was when they started.)");
             setValues(h, keyValues("/materials/" + std::to_string(index), kw));
           },
           py::arg("material"),
-          "A material's values (by name or index): set_material('glass', ior=1.33).")
+          "A material's values (by name or index): set_material('glass', ior=1.33); a checker "
+          "on its colour: set_material('floor', texture={'type': 'checker', 'scale': 0.5, "
+          "'colour2': [0.1, 0.1, 0.1]}).")
       .def(
           "set_object",
           [](SceneHandle& h, const py::object& which, const py::kwargs& kw) {

@@ -560,6 +560,54 @@ TEST_F(MainWindowTest, 14b2_FresnelRatesPlasticAndPriority) {
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
 }
 
+// The checker texture (issue 32): the material's box switches it on (a checker of the
+// default side 1 and a dark second colour), its scale is typed, a zero scale is refused with
+// the loader's message, the box switches it off again, and undo walks back to the file.
+TEST_F(MainWindowTest, 14b3_CheckerTextureOnOffAndARefusedScale) {
+  const std::string original = SceneIO::serialize(m_window->document().scene());
+  const int sphere = m_window->document().scene().findObject("red sphere");
+  m_window->selectObject(sphere);
+  PropertiesPanel& properties = *m_window->propertiesPanel();
+  const std::size_t material =
+      std::size_t(m_window->document().scene().objects[std::size_t(sphere)].material);
+  const std::string base = "/materials/" + std::to_string(material);
+  const auto textureOf = [&] { return m_window->document().scene().materials[material].texture; };
+  auto* box = qobject_cast<QCheckBox*>(properties.field(base + "/texture"));
+  ASSERT_NE(box, nullptr);
+  EXPECT_FALSE(box->isChecked());
+  EXPECT_FALSE(box->toolTip().isEmpty());
+  EXPECT_EQ(properties.field(base + "/texture/scale"), nullptr);
+  box->setChecked(true);
+  settle();
+  EXPECT_EQ(textureOf().type, TextureType::Checker);
+  EXPECT_EQ(textureOf().scale, 1.0);
+
+  auto* scale = qobject_cast<QDoubleSpinBox*>(properties.field(base + "/texture/scale"));
+  ASSERT_NE(scale, nullptr);
+  scale->setValue(0.25);
+  settle();
+  EXPECT_EQ(textureOf().scale, 0.25);
+  ASSERT_NE(properties.field(base + "/texture/colour2"), nullptr);
+  EXPECT_NE(properties.field(base + "/texture/colour2")->findChild<QPushButton*>(), nullptr);
+  EXPECT_FALSE(properties.setValue(base + "/texture/scale", "0", QStringLiteral("scale")));
+  EXPECT_TRUE(m_window->lastError().contains(
+      QString::fromStdString(base + "/texture/scale: scale (a checker cube's side) must be "
+                                    "positive, got 0")))
+      << m_window->lastError().toStdString();
+  EXPECT_EQ(textureOf().scale, 0.25);
+
+  box = qobject_cast<QCheckBox*>(properties.field(base + "/texture"));
+  ASSERT_NE(box, nullptr);
+  EXPECT_TRUE(box->isChecked());
+  box->setChecked(false);
+  settle();
+  EXPECT_FALSE(textureOf().active());
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+  for (int i = 0; i < 3; ++i) m_window->document().undoStack().undo();
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), original);
+  EXPECT_FALSE(m_window->document().undoStack().canUndo());
+}
+
 // A mesh's shading normals are offered in the properties panel: "file" shown although the
 // file leaves it out, switched to "smooth" the crease angle appears (60), set to 30 it
 // reaches the scene, 200 is refused with the loader's message, and undo restores the file.

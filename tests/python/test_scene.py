@@ -204,3 +204,43 @@ def test15_fresnel_plastic_and_priority_through_set_material():
     scene.set_camera(width=16, height=12)
     image = raylab.render(scene, algorithm="path", spp=1)
     assert image.shape[:2] == (12, 16)
+
+
+CHECKER_FLOOR = """{"raylab_scene": 2,
+  "materials": [{"name": "floor", "type": "diffuse", "colour": [0.8, 0.8, 0.8],
+                 "texture": {"type": "checker", "scale": 1, "colour2": [0.8, 0.1, 0.1]}}],
+  "objects": [{"name": "floor", "material": "floor",
+               "shape": {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0]}}],
+  "point_lights": [{"name": "lamp", "position": [1, 3, 0.5], "intensity": [10, 10, 10]}],
+  "camera": {"position": [1, 3, 0.5], "look_at": [1, 0, 0.5], "up": [0, 0, -1],
+             "vertical_fov": 10, "width": 8, "height": 8},
+  "render": {"background": [0, 0, 0]}}"""
+
+
+def test16_checker_texture_made_read_set_and_rendered():
+    # Issue 32: the checker texture is a material value like any other: made in a scene's
+    # text, read back, set with set_material, checked by the loader's rules.
+    scene = raylab.Scene.parse(CHECKER_FLOOR, "floor.json")
+    texture = scene.materials[0]["texture"]
+    assert texture == {"type": "checker", "scale": 1.0, "colour2": [0.8, 0.1, 0.1]}
+    # The left half of the image sees the red cube, the right half the white one, under
+    # every algorithm (linear values: the red pixel's red channel 8 times its green).
+    for algorithm in ("raycast", "whitted", "distributed", "path"):
+        image = raylab.render(scene, algorithm=algorithm, spp=1)
+        red, white = image[4, 1], image[4, 6]
+        assert red[0] / red[1] == pytest.approx(8.0, rel=1e-6), algorithm
+        assert white[0] / white[1] == pytest.approx(1.0, rel=1e-6), algorithm
+    scene.set_material("floor", texture={"type": "checker", "scale": 0.25})
+    assert scene.get("/materials/0/texture/scale") == 0.25
+    assert scene.get("/materials/0/texture/colour2") == [0.1, 0.1, 0.1]
+    for bad, problem in ((0, "must be positive, got 0"), (-1, "must be positive, got -1"),
+                         (float("nan"), "is not a JSON value")):
+        with pytest.raises(raylab.SceneError, match="floor.json: at /materials/0/texture/scale") \
+                as error:
+            scene.set("/materials/0/texture/scale", bad)
+        assert problem in str(error.value)
+    with pytest.raises(raylab.SceneError, match="colour components must be in \\[0, 1\\]"):
+        scene.set("/materials/0/texture/colour2", [0, 2, 0])
+    with pytest.raises(raylab.SceneError, match='unknown key "size"'):
+        scene.set("/materials/0/texture/size", 1)
+    assert scene.get("/materials/0/texture/scale") == 0.25

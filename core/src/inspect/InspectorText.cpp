@@ -75,6 +75,9 @@ std::string materialParameters(const Material& m) {
              toString(m.fresnel) + " Fresnel)";
       break;
   }
+  if (m.texture.active())
+    text += ", checker texture (cubes of side " + number(m.texture.scale) + ", second colour " +
+            vec(m.texture.colour2) + ")";
   if (m.priority > 0) text += ", priority " + std::to_string(m.priority);
   if (m.isEmitter()) text += ", emits " + vec(m.emission);
   return text;

@@ -63,6 +63,10 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
     if (o.material >= 0 && o.material < int(scene.materials.size())) {
       const Material& m = scene.materials[std::size_t(o.material)];
       r.material = MaterialSummary{m.name, m.type, inspect::materialParameters(m), m.isEmitter()};
+      // A textured colour: the texel the algorithms shaded this hit with.
+      if (m.texture.active() && s.hit && s.kind != RayKind::Shadow)
+        r.material->parameters +=
+            "; colour here " + inspect::vec(m.texture.eval(m.colour, s.endPoint, s.normal));
     }
   }
   r.lightName = lightNameOf(s, scene);

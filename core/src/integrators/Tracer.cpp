@@ -136,6 +136,15 @@ void carryMedia(const QueuedRay& ray, const SceneHit& hit, const MediumStack& in
   }
 }
 
+/// `own` with its colour replaced by its texture's texel at the hit (Texture.h): the
+/// algorithms then shade with Material::colour as for an untextured material.
+const Material& texturedMaterial(const Material& own, const SceneHit& hit) {
+  thread_local Material textured;
+  textured = own;  // reuses the name's storage: no allocation once warmed up
+  textured.colour = own.texture.eval(own.colour, hit.si.p, hit.si.n);
+  return textured;
+}
+
 /// The material the rules see at a hit on a nested volume: the object's own, with the
 /// index pair of the crossing as its ior (inside of the surface) and iorOutside.
 const Material& nestedMaterial(const Material& own, const SceneHit& hit,
@@ -200,7 +209,10 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
   } else {
     // 2c. Ask the algorithm what the hit spawns (at a volume's surface, with the indices
     // of the media on its two sides).
-    const Material& own = tracer.materialOf(hit->object);
+    const Material& plain = tracer.materialOf(hit->object);
+    // A textured material's colour is its texel at the hit: the one lookup every algorithm
+    // shares.
+    const Material& own = plain.texture.active() ? texturedMaterial(plain, *hit) : plain;
     const Material& material = Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own;
     const bool spawns = !(cap && cap->reached) && !(recorder && recorder->full());
     const HitContext context{intersector, tracer.settings(), ray, *hit, material, sampler, spawns};

@@ -101,7 +101,9 @@ const char* toString(MicrofacetModel model) {
 
 std::string Material::toString() const {
   return "Material[" + name + ", " + raylab::toString(type) +
-         ", colour=" + raylab::toString(colour) + ", emission=" + raylab::toString(emission) +
+         ", colour=" + raylab::toString(colour) +
+         (texture.active() ? ", texture=" + texture.toString() : std::string()) +
+         ", emission=" + raylab::toString(emission) +
          ", reflectionRate=" + std::to_string(reflectionRate) +
          ", refractionRate=" + std::to_string(refractionRate) + ", ior=" + std::to_string(ior) +
          ", exponent=" + std::to_string(exponent) + ", specular=" + std::to_string(specular) +

@@ -26,6 +26,7 @@ inline constexpr std::array kMaterialKeys = {"name",
                                              "display_name",
                                              "type",
                                              "colour",
+                                             "texture",
                                              "emission",
                                              "reflection_rate",
                                              "refraction_rate",
@@ -42,6 +43,8 @@ inline constexpr std::array kMaterialKeys = {"name",
                                              "visible_normals",
                                              "ior_outside",
                                              "priority"};
+/// A material's "texture" (Texture.h).
+inline constexpr std::array kTextureKeys = {"type", "scale", "colour2"};
 /// Sets a material's "fresnel" from its word: none, exact or schlick weighing the rates of a
 /// mirror, phong or blinn_phong (Material::rateFresnel), exact or schlick a dielectric's
 /// reflectance (Material::fresnel). Returns "" or, for a word its type does not take, the

@@ -297,6 +297,7 @@ class Reader : private JsonChecks<Reader> {
     // The classic materials reflect nothing unless told (kr = 0), unlike the mirror.
     if (m.isClassic()) m.reflectionRate = 0.0;
     if (j.contains("colour")) m.colour = vec3(j["colour"], p + "/colour");
+    if (j.contains("texture")) m.texture = texture(j["texture"], p + "/texture");
     if (j.contains("emission")) m.emission = vec3(j["emission"], p + "/emission");
     if (j.contains("reflection_rate"))
       m.reflectionRate = number(j["reflection_rate"], p + "/reflection_rate");
@@ -338,6 +339,26 @@ class Reader : private JsonChecks<Reader> {
     if (m.specular < 0.0 || m.specular > 1.0) fail(p + "/specular", "specular must be in [0, 1]");
     if (m.opacity < 0.0 || m.opacity > 1.0) fail(p + "/opacity", "opacity must be in [0, 1]");
     return m;
+  }
+
+  /// A material's "texture" (Texture.h): {"type": "checker", "scale": s, "colour2": [r, g, b]}.
+  Texture texture(const json& j, const std::string& p) const {
+    if (!j.is_object())
+      fail(p, "expected {\"type\": \"checker\", \"scale\": ..., \"colour2\": [r, g, b]}, got " +
+                  excerpt(j));
+    onlyKeys(j, p, kTextureKeys);
+    Texture t;
+    const std::string type = string(member(j, p, "type"), p + "/type");
+    if (type != toString(TextureType::Checker))
+      fail(p + "/type", "unknown texture type \"" + type + "\" (expected checker)");
+    t.type = TextureType::Checker;
+    if (j.contains("scale"))
+      t.scale = length(j["scale"], p + "/scale", "scale (a checker cube's side)");
+    if (j.contains("colour2")) t.colour2 = vec3(j["colour2"], p + "/colour2");
+    for (int c = 0; c < 3; ++c)
+      if (t.colour2[c] < 0.0 || t.colour2[c] > 1.0)
+        fail(p + "/colour2", "colour components must be in [0, 1], got " + excerpt(j["colour2"]));
+    return t;
   }
 
   /// The parameters of the classic Phong and the microfacet materials (see Material.h).

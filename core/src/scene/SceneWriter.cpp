@@ -136,8 +136,8 @@ ojson shapeToJson(const Shape& shape, ojson& transform) {
   throw SceneIO::SaveError(std::string("cannot save shape of kind ") + toString(shape.kind()));
 }
 
-/// A material as JSON: always name, type, colour, emission and opacity; the parameters
-/// the type uses; and any other parameter that differs from its default (so nothing is
+/// A material as JSON: always name, type, colour, emission and opacity; its texture if any; the
+/// parameters the type uses; and any other parameter that differs from its default (so nothing is
 /// lost in a round trip).
 ojson materialToJson(const Material& m) {
   const Material defaults;
@@ -151,9 +151,14 @@ ojson materialToJson(const Material& m) {
   ObjectWriter j(kMaterialKeys);
   j.add("name", m.name);
   if (!m.nameZh.empty()) j.add("display_name", displayNameJson(m.nameZh));
-  j.add("type", toString(m.type))
-      .add("colour", toJson(m.colour))
-      .add("emission", toJson(m.emission));
+  j.add("type", toString(m.type)).add("colour", toJson(m.colour));
+  if (m.texture.active())
+    j.add("texture", ObjectWriter(kTextureKeys)
+                         .add("type", toString(m.texture.type))
+                         .add("scale", m.texture.scale)
+                         .add("colour2", toJson(m.texture.colour2))
+                         .take());
+  j.add("emission", toJson(m.emission));
   if (mirror || classic || m.reflectionRate != defaults.reflectionRate)
     j.add("reflection_rate", m.reflectionRate);
   if (mirror || classic || m.refractionRate != defaults.refractionRate)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/Texture.h"
 #include "raylab/core/Types.h"
 
 #include <string>
@@ -100,6 +101,9 @@ struct Material {
                      ///< the media on both its sides (ior, iorOutside); >= 1, the object is
                      ///< a volume of index `ior`, and where volumes overlap the one of
                      ///< higher priority fills the overlap (NestedMedia.h).
+  /// A pattern the colour follows ("texture": a checker of `colour` and texture.colour2);
+  /// the engine hands the algorithms the texel as `colour` (Texture.h).
+  Texture texture;
 
   /// eta_inside / eta_outside, the relative index refraction at this surface uses.
   double relativeIor() const { return ior / iorOutside; }
