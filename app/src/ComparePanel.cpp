@@ -1,8 +1,8 @@
 #include "ComparePanel.h"
 
 #include "Language.h"
-#include "RenderJob.h"
 #include "UiWords.h"
+#include "window/BackgroundTask.h"
 
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/ReferenceCache.h"
@@ -55,7 +55,8 @@ void clearRenderers(QVTKOpenGLNativeWidget* widget) {
 
 }  // namespace
 
-ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
+ComparePanel::ComparePanel(QWidget* parent)
+    : QWidget(parent), m_task(std::make_unique<BackgroundTask>()) {
   auto* layout = new QVBoxLayout(this);
 
   // Step 1: equal samples or equal time, the budget, Compare / Cancel.
@@ -138,11 +139,7 @@ ComparePanel::ComparePanel(QWidget* parent) : QWidget(parent) {
 }
 
 ComparePanel::~ComparePanel() {
-  m_pending = false;
-  if (m_worker) {
-    m_worker->comparison->cancel();
-    m_worker->thread.join();
-  }
+  m_task.reset();  // stops the comparison and joins its thread
   clearRenderers(m_widget);
   clearRenderers(m_plotWidget);
 }
@@ -162,35 +159,37 @@ void ComparePanel::setEqualTime(bool on) { m_mode->setCurrentIndex(on ? 1 : 0); 
 void ComparePanel::setSamplesPerPixel(int spp) { m_spp->setValue(spp); }
 void ComparePanel::setSeconds(double seconds) { m_seconds->setValue(seconds); }
 
+bool ComparePanel::running() const { return m_task->busy(); }
+
 void ComparePanel::setScene(const Scene& scene) {
   m_scene = std::make_shared<const Scene>(scene);
-  // A comparison of an older scene is never left on screen.
-  if (running() || m_result) compare();
+  // A comparison of an older scene is never left on screen: gone now, the new one follows.
+  if (!running() && !m_result) return;
+  m_task->drop();
+  clearResult();
+  compare();
+}
+
+void ComparePanel::clearResult() {
+  clearRenderers(m_widget);
+  clearRenderers(m_plotWidget);
+  m_result.reset();
+  m_resultScene.reset();
+  m_view.reset();
+  m_plot.reset();
+  m_trees.clear();
+  m_traced = {-1, -1};
+  m_widget->renderWindow()->Render();
+  m_widget->update();
+  if (m_plotWidget->isVisible()) {
+    m_plotWidget->renderWindow()->Render();
+    m_plotWidget->update();
+  }
+  m_progress->setValue(0);
 }
 
 void ComparePanel::compare() {
   if (!m_scene) return;
-  if (m_worker) {
-    // One comparison at a time: this one starts when the running one has stopped.
-    m_worker->comparison->cancel();
-    m_pending = true;
-    updateControls();
-    return;
-  }
-  launch();
-}
-
-void ComparePanel::cancel() {
-  m_pending = false;
-  if (m_worker) {
-    m_worker->comparison->cancel();
-    m_status->setText(tr("Cancelled"));
-  }
-  updateControls();
-}
-
-void ComparePanel::launch() {
-  const int generation = ++m_generation;
   std::shared_ptr<Comparison> comparison;
   try {
     comparison = std::make_shared<Comparison>(*m_scene, m_scene->render, settings());
@@ -199,48 +198,35 @@ void ComparePanel::launch() {
     return;
   }
   comparison->setReferenceCache(ReferenceCache::fromEnvironment());
-  // Posts to this object from the worker; the destructor joins the worker first.
-  comparison->setProgress([this, generation](const std::string& stage, double fraction, int spp) {
-    // The stage in the window's language: an algorithm's name, or the reference.
-    const std::optional<Algorithm> algorithm = parseAlgorithm(stage);
-    const QString what = algorithm              ? algorithmLabel(*algorithm)
-                         : stage == "reference" ? tr("the reference")
-                                                : QString::fromStdString(stage);
-    QMetaObject::invokeMethod(
-        this,
-        [this, generation, what, fraction, spp] {
-          if (generation != m_generation || m_pending) return;
-          m_progress->setValue(int(1000.0 * fraction));
-          m_status->setText(tr("Comparing: %1, %2 spp…").arg(what).arg(spp));
-        },
-        Qt::QueuedConnection);
-  });
-  comparison->setPassCallback(
-      [this, generation](const ComparisonResult& soFar, int, double fraction) {
-        auto copy = std::make_shared<const ComparisonResult>(soFar);
-        QMetaObject::invokeMethod(
-            this,
-            [this, generation, copy, fraction] {
-              if (generation == m_generation && !m_pending) showPass(copy, fraction);
-            },
-            Qt::QueuedConnection);
+  BackgroundTask::Job job;
+  job.stop = [comparison] { comparison->cancel(); };
+  job.run = [this, comparison, scene = m_scene](const BackgroundTask::Post& post) {
+    // Each stage and pass goes to the UI thread; a superseded comparison's are dropped.
+    comparison->setProgress([this, post](const std::string& stage, double fraction, int spp) {
+      // The stage in the window's language: an algorithm's name, or the reference.
+      const std::optional<Algorithm> algorithm = parseAlgorithm(stage);
+      const QString what = algorithm              ? algorithmLabel(*algorithm)
+                           : stage == "reference" ? tr("the reference")
+                                                  : QString::fromStdString(stage);
+      post([this, what, fraction, spp] {
+        m_progress->setValue(int(1000.0 * fraction));
+        m_status->setText(tr("Comparing: %1, %2 spp…").arg(what).arg(spp));
       });
-  Worker worker;
-  worker.comparison = comparison;
-  worker.scene = m_scene;
-  worker.generation = generation;
-  worker.thread = std::thread([this, generation, comparison, scene = m_scene] {
-    lowerThreadPriority();  // and its tile threads: the window stays live while comparing
+    });
+    comparison->setPassCallback(
+        [this, post, scene](const ComparisonResult& soFar, int, double fraction) {
+          auto copy = std::make_shared<const ComparisonResult>(soFar);
+          post([this, copy, scene, fraction] { showPass(copy, scene, fraction); });
+        });
     std::shared_ptr<const ComparisonResult> result;
     try {
       result = std::make_shared<const ComparisonResult>(comparison->run());
     } catch (const std::exception&) {
-      // Invalid settings are refused before the thread starts; nothing else throws.
+      // Invalid settings are refused before the job starts; nothing else throws.
     }
-    QMetaObject::invokeMethod(
-        this, [this, generation, result] { ended(generation, result); }, Qt::QueuedConnection);
-  });
-  m_worker = std::move(worker);
+    return std::function<void()>([this, result, scene] { ended(result, scene); });
+  };
+  m_task->start(std::move(job));
   m_trees.clear();
   m_traced = {-1, -1};
   m_progress->setValue(0);
@@ -249,10 +235,16 @@ void ComparePanel::launch() {
   updateControls();
 }
 
+void ComparePanel::cancel() {
+  if (m_task->threadRunning()) m_status->setText(tr("Cancelled"));
+  m_task->cancel();
+  updateControls();
+}
+
 void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& result,
-                            double fraction) {
+                            const std::shared_ptr<const Scene>& scene, double fraction) {
   m_result = result;
-  m_resultScene = m_worker ? m_worker->scene : m_scene;
+  m_resultScene = scene;
   m_progress->setValue(int(1000.0 * fraction));
   if (!m_view) {
     // The error is explained in the picture's bottom band, in the window's language.
@@ -265,18 +257,11 @@ void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& resul
   if (m_plotWidget->isVisible()) showPlot();
 }
 
-void ComparePanel::ended(int generation, const std::shared_ptr<const ComparisonResult>& result) {
-  if (!m_worker || m_worker->generation != generation) return;
-  m_worker->thread.join();
-  m_worker.reset();
-  if (m_pending) {
-    m_pending = false;
-    launch();
-    return;
-  }
+void ComparePanel::ended(const std::shared_ptr<const ComparisonResult>& result,
+                         const std::shared_ptr<const Scene>& scene) {
   ++m_ended;
   const bool cancelled = !result || result->cancelled;
-  if (result && !result->algorithms.empty()) showPass(result, 1.0);
+  if (result && !result->algorithms.empty()) showPass(result, scene, 1.0);
   if (!cancelled) m_progress->setValue(1000);
   const QString reference =
       result && result->reference.cached ? tr(" (the reference came from the cache)") : QString();

@@ -8,7 +8,6 @@
 
 #include <memory>
 #include <optional>
-#include <thread>
 
 class QCheckBox;
 class QComboBox;
@@ -27,15 +26,18 @@ class ConvergencePlot;
 
 namespace raylab::app {
 
+class BackgroundTask;
+
 /**
  * \brief The window's Compare tab: the four algorithms side by side on the open scene
  * (vis::ComparisonView hosted in a VTK widget, in the window's language), at equal samples
  * or equal time, each panel with its figures, the error figure explained in the picture's
  * bottom band, and the convergence plot.
  *
- * The comparison (core Comparison, with the reference cache of the environment) runs on a
- * worker thread and shows every pass as it finishes; Cancel keeps what is done; Compare
- * while one runs cancels it and starts again when it has stopped (never two at once).
+ * The comparison (core Comparison, with the reference cache of the environment) runs as a
+ * BackgroundTask job and shows every pass as it finishes; Cancel keeps what is done; Compare
+ * while one runs supersedes it (never two at once). A new scene clears the comparison shown
+ * at once: no picture or figure of an older scene stays on screen.
  * Clicking a pixel of any panel traces that pixel with all four algorithms and shows the
  * four trees beside the images.
  */
@@ -46,13 +48,14 @@ class ComparePanel : public QWidget {
   explicit ComparePanel(QWidget* parent = nullptr);
   ~ComparePanel() override;
 
-  /// The scene compared from now on (a running comparison is cancelled and restarted).
+  /// The scene compared from now on. A comparison shown or running is cleared at once and
+  /// started again on this scene.
   void setScene(const Scene& scene);
   /// Starts the comparison with the controls' settings.
   void compare();
   /// Stops it; the passes done stay.
   void cancel();
-  bool running() const { return m_worker.has_value() || m_pending; }
+  bool running() const;
   /// The comparison shown (the last pass received), null before the first.
   const ComparisonResult* result() const { return m_result.get(); }
   /// The settings the controls ask for.
@@ -97,24 +100,19 @@ class ComparePanel : public QWidget {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
-  struct Worker {
-    std::shared_ptr<Comparison> comparison;
-    std::shared_ptr<const Scene> scene;
-    std::thread thread;
-    int generation = 0;
-  };
-  void launch();
-  void showPass(const std::shared_ptr<const ComparisonResult>& result, double fraction);
-  void ended(int generation, const std::shared_ptr<const ComparisonResult>& result);
+  void showPass(const std::shared_ptr<const ComparisonResult>& result,
+                const std::shared_ptr<const Scene>& scene, double fraction);
+  void ended(const std::shared_ptr<const ComparisonResult>& result,
+             const std::shared_ptr<const Scene>& scene);
+  /// Forgets the comparison shown: its pictures, figures, plot and traced trees.
+  void clearResult();
   /// The comparison's renderers in the widget, laid out for its size.
   void redraw();
   void showPlot();
   void updateControls();
 
   std::shared_ptr<const Scene> m_scene;
-  std::optional<Worker> m_worker;
-  bool m_pending = false;  ///< Compare asked while one was stopping.
-  int m_generation = 0;
+  std::unique_ptr<BackgroundTask> m_task;
   int m_ended = 0;
   std::shared_ptr<const ComparisonResult> m_result;
   std::shared_ptr<const Scene> m_resultScene;  ///< The scene m_result was made from.

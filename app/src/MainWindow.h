@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -37,6 +38,8 @@ class ComparePanel;
 class LessonPanel;
 class RenderPanel;
 class SceneDocument;
+class ActionTable;
+struct ActionRow;
 
 /**
  * \brief RayLab's main window, the original course program whole and more: the scene's 3D
@@ -184,7 +187,25 @@ class MainWindow : public QMainWindow {
   void dropEvent(QDropEvent* event) override;
 
  private:
+  /// \name Building the window (window/WindowLayout.cpp, window/WindowMenus.cpp)
+  /// @{
+  /// The 3D view beside the image tabs, in a splitter.
+  void buildCentralArea();
+  /// The docks: objects, edit and properties on the left; ray tree, inspector, lesson on
+  /// the right.
+  void buildDocks();
+  /// The panels' signals to the window and to each other.
+  void connectPanels();
+  /// The menus, each from its table of actions.
   void buildMenus();
+  std::vector<ActionRow> fileMenuRows();
+  std::vector<ActionRow> editMenuRows();
+  std::vector<ActionRow> addMenuRows();
+  std::vector<ActionRow> renderMenuRows();
+  std::vector<ActionRow> animationMenuRows();
+  /// The View menu: presentation, image tabs, reset, the docks, the language.
+  void buildViewMenu();
+  /// @}
   /// The 3D view and the image tabs side by side or one above the other, whichever suits
   /// the central area's shape.
   void fitSplitter();
@@ -244,6 +265,7 @@ class MainWindow : public QMainWindow {
   QDockWidget* m_inspectorDock = nullptr;  ///< Tab of the inspector, beside it.
   QList<QDockWidget*> m_leftDocks;         ///< Sized once, when first shown.
   QMenu* m_recentMenu = nullptr;
+  std::unique_ptr<ActionTable> m_actions;  ///< The menus' actions, each from its row.
   QMenu* m_addMenu = nullptr;
   int m_selected = -1;
   QString m_lastError;

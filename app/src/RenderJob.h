@@ -5,19 +5,14 @@
 #include "raylab/core/Renderer.h"
 #include "raylab/core/Scene.h"
 
+#include "window/BackgroundTask.h"
+
 #include <QImage>
 #include <QObject>
 
 #include <memory>
-#include <optional>
-#include <thread>
 
 namespace raylab::app {
-
-/// Lowers the calling thread's scheduling priority below the UI thread's (Linux's nice is
-/// per thread, and threads it starts inherit it: a renderer's tile threads), so that with
-/// every core rendering the window still answers at once. Best effort: elsewhere nothing.
-void lowerThreadPriority();
 
 /// What a render has reached after one progressive pass.
 struct RenderProgress {
@@ -37,8 +32,8 @@ struct RenderProgress {
 /**
  * \brief One render at a time, off the UI thread: the window's Render button.
  *
- * start() renders a copy of the scene with core's Renderer on a worker thread (which runs
- * the renderer's own tile threads), and reports each finished pass with passFinished on
+ * start() renders a copy of the scene with core's Renderer as a BackgroundTask job (whose
+ * thread runs the renderer's own tile threads), and reports each finished pass with passFinished on
  * the UI thread. Like the original course program's mutex, two renders never run at once:
  * start() while a render runs cancels it and starts the new one as soon as the old one has
  * stopped (the old one's late passes are dropped). cancel() returns at once; the worker
@@ -62,9 +57,9 @@ class RenderJob : public QObject {
   /// stays the result. Returns at once.
   void cancel();
   /// True from start() until finished() is emitted for the last render asked for.
-  bool busy() const { return m_worker.has_value() || m_pending.has_value(); }
+  bool busy() const { return m_task.busy(); }
   /// True while a worker thread exists (a cancelled one may still be stopping).
-  bool threadRunning() const { return m_worker.has_value(); }
+  bool threadRunning() const { return m_task.threadRunning(); }
   /// The most render threads that ever ran at the same time in this process, over every
   /// job (for tests: the window must never render twice at once).
   static int mostAtOnce();
@@ -76,23 +71,7 @@ class RenderJob : public QObject {
   void finished(const raylab::app::RenderProgress& progress, bool cancelled);
 
  private:
-  struct Request {
-    std::shared_ptr<const Scene> scene;
-    RenderSettings settings;
-    int threads = 0;
-  };
-  struct Worker {
-    std::shared_ptr<Renderer> renderer;
-    std::thread thread;
-    int generation = 0;
-  };
-  void launch(Request request);
-  /// The worker's end, on the UI thread: joins it, then starts a waiting request.
-  void workerDone(int generation, const RenderProgress& last, bool cancelled);
-
-  std::optional<Worker> m_worker;
-  std::optional<Request> m_pending;
-  int m_generation = 0;
+  BackgroundTask m_task;
 };
 
 }  // namespace raylab::app

@@ -912,5 +912,34 @@ TEST_F(MainWindowTest, 21_EveryActionHasATooltipAndTheShortcutTableListsThem) {
   EXPECT_TRUE(f11 && space);
 }
 
+// The menus come from tables of actions (window/WindowMenus.cpp): an action that needs a
+// selection is enabled only while there is one, in the menu and for its shortcut.
+TEST_F(MainWindowTest, 22_ActionsOnTheSelectionAreEnabledOnlyWithOne) {
+  QAction* remove = nullptr;
+  QAction* duplicate = nullptr;
+  for (QAction* menu : m_window->menuBar()->actions())
+    if (menu->menu())
+      for (QAction* a : menu->menu()->actions()) {
+        if (a->shortcuts().contains(QKeySequence(QKeySequence::Delete))) remove = a;
+        if (a->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::Key_D))) duplicate = a;
+      }
+  ASSERT_TRUE(remove && duplicate);
+  m_window->selectObject(-1);
+  EXPECT_FALSE(remove->isEnabled());
+  EXPECT_FALSE(duplicate->isEnabled());
+  const std::size_t objects = m_window->document().scene().objects.size();
+  activate();
+  QTest::keyClick(m_window->viewWidget(), Qt::Key_Delete);
+  EXPECT_EQ(m_window->document().scene().objects.size(), objects);
+  m_window->selectObject(0);
+  EXPECT_TRUE(remove->isEnabled());
+  EXPECT_TRUE(duplicate->isEnabled());
+  activate();
+  QTest::keyClick(m_window->viewWidget(), Qt::Key_Delete);
+  EXPECT_EQ(m_window->document().scene().objects.size(), objects - 1) << "Del deletes it";
+  EXPECT_EQ(m_window->selectedObject(), -1);
+  EXPECT_FALSE(remove->isEnabled()) << "nothing selected after the delete";
+}
+
 }  // namespace
 }  // namespace raylab::app

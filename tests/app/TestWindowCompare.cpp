@@ -5,6 +5,8 @@
 #include "WindowTest.h"
 
 #include "ComparePanel.h"
+#include "ImageView.h"
+#include "RenderPanel.h"
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/RayTreeJson.h"
@@ -133,6 +135,76 @@ TEST_F(WindowCompareTest, 03_CancelAndASecondRequest) {
   ASSERT_TRUE(waitUntilStopped(panel));
   EXPECT_EQ(panel.comparisonsEnded(), 2);
   EXPECT_FALSE(panel.running());
+}
+
+// Opening another scene while the render and the comparison of the first run: the old
+// comparison leaves the screen at once, no late pass of the old render or comparison is ever
+// shown, each starts again on the new scene, and nothing crashes (issue 33 item 8, issue 31
+// item 5: the window's one BackgroundTask supersedes an older job).
+TEST_F(WindowCompareTest, 04_AnotherSceneDropsTheStaleRenderAndComparison) {
+  // Two small scenes of different sizes: a late pass of the first is told by its width.
+  Scene first = defaultScene();
+  first.camera.width = 80;
+  first.camera.height = 60;
+  Scene second = first;
+  second.camera.width = 64;
+  second.camera.height = 48;
+  const QString dir = scratch(QStringLiteral("stale"));
+  const QString firstPath = dir + QStringLiteral("/first.json");
+  const QString secondPath = dir + QStringLiteral("/second.json");
+  SceneIO::save(first, firstPath.toStdString());
+  SceneIO::save(second, secondPath.toStdString());
+  ASSERT_TRUE(m_window->openFile(firstPath, false));
+  ComparePanel& compare = *m_window->comparePanel();
+  RenderPanel& render = *m_window->renderPanel();
+  m_window->showImageTab(&compare);
+  compare.setEqualTime(false);
+  compare.setSamplesPerPixel(1);
+  compare.compare();
+  ASSERT_TRUE(waitUntilStopped(compare));
+  ASSERT_NE(compare.result(), nullptr);
+  // The first scene's comparison is on screen and runs again; its render runs (for long).
+  render.setAlgorithm(Algorithm::PathTracing);
+  render.setSamplesPerPixel(1 << 16);
+  render.render();
+  const auto start = std::chrono::steady_clock::now();
+  while (render.progress().samplesPerPixel < 1 &&
+         std::chrono::steady_clock::now() - start < std::chrono::minutes(2))
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+  ASSERT_GE(render.progress().samplesPerPixel, 1);
+  render.setSamplesPerPixel(1);
+  compare.compare();
+  std::vector<int> widths;  // of every render pass shown from now on
+  QObject::connect(render.job(), &RenderJob::passFinished, [&widths](const RenderProgress& p) {
+    widths.push_back(p.image ? p.image->width : -1);
+  });
+
+  ASSERT_TRUE(m_window->openFile(secondPath, false));
+  const int newWidth = second.camera.width;
+  // Gone at once: no picture, figure or tree of the old scene stays in the Compare tab.
+  EXPECT_EQ(compare.result(), nullptr) << "the old scene's comparison is still shown";
+  EXPECT_EQ(compare.view(), nullptr);
+  EXPECT_TRUE(compare.trees().empty());
+  EXPECT_TRUE(compare.running()) << "the new scene is not being compared";
+  EXPECT_TRUE(render.rendering()) << "the new scene is not being rendered";
+  // Whatever is shown from now on is of the new scene.
+  int shownOld = 0;
+  const auto begin = std::chrono::steady_clock::now();
+  while ((compare.running() || render.rendering()) &&
+         std::chrono::steady_clock::now() - begin < std::chrono::minutes(3)) {
+    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    if (compare.result() && compare.result()->algorithms.front().image.width != newWidth)
+      ++shownOld;
+  }
+  EXPECT_FALSE(compare.running());
+  EXPECT_EQ(shownOld, 0) << "a pass of the old scene's comparison was shown";
+  ASSERT_NE(compare.result(), nullptr);
+  EXPECT_EQ(compare.result()->algorithms.front().image.width, newWidth);
+  EXPECT_EQ(compare.comparisonsEnded(), 2) << "a superseded comparison reported its end";
+  ASSERT_FALSE(widths.empty());
+  for (int w : widths) EXPECT_EQ(w, newWidth) << "a pass of the old scene's render was shown";
+  EXPECT_EQ(render.imageView()->image().width, newWidth);
+  EXPECT_EQ(RenderJob::mostAtOnce(), 1) << "two renders ran at once";
 }
 
 }  // namespace
