@@ -5,6 +5,7 @@
 #include "raylab/core/RenderSettings.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/TreeViewState.h"
 
 #include <QWidget>
 
@@ -89,6 +90,21 @@ class RayTreePanel : public QWidget {
   const RayTree& tree() const;
   /// What each processed ray did, by ray id (the stepper's narration).
   const std::vector<std::string>& stepTexts() const;
+
+  /// \name The panel's part of the view state (vis::TreeViewState; RayTreePanelState.cpp)
+  /// @{
+  /// Sets the controls from `state`: algorithm, pixel, sample, chosen ray, bundle, all
+  /// hits, colouring, filters, normals and the reveal order. Then trace() (or clearTrace())
+  /// and showState(state) show it.
+  void applyState(const vis::TreeViewState& state);
+  /// After the trace: the state's reveal frame (none: the whole tree) and selected ray.
+  void showState(const vis::TreeViewState& state);
+  /// The state the controls hold now (what is traced, how it is drawn, the frame shown,
+  /// the selected ray); the window adds the view camera and the layout.
+  vis::TreeViewState viewState() const;
+  /// The tree shown, shared with the view (null before the first trace).
+  std::shared_ptr<const RayTree> sharedTree() const;
+  /// @}
 
   /// How the tree is drawn, read from the controls.
   vis::RayTreeStyle treeStyle() const;
