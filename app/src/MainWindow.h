@@ -20,6 +20,7 @@ class QTabWidget;
 class QVTKOpenGLNativeWidget;
 
 namespace raylab {
+struct Lesson;
 struct LessonStep;
 }
 
@@ -138,6 +139,9 @@ class MainWindow : public QMainWindow {
   /// first, unless `ask` is false). On failure: a dialog with the loader's message, nothing
   /// changed; returns false.
   bool openLesson(const QString& path, bool ask = true);
+  /// Shows `lesson` (loaded, with steps) at step `step` (0-based, clamped): the Lesson tab
+  /// raised, the menu's step keys enabled (openLesson, and the language switch).
+  void playLesson(std::shared_ptr<const Lesson> lesson, int step);
   /// Sets the 3D view, the ray-tree panel, the image and the tabs for step `index` of
   /// the open lesson, as the lesson stager (vis::stepViewState) stages it: its scene,
   /// algorithm, pixel, reveal, colours, filters, camera view, selected ray, rendered image

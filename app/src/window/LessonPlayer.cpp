@@ -58,11 +58,17 @@ bool MainWindow::openLesson(const QString& path, bool ask) {
     showError(tr("Cannot open the lesson"), tr("%1: the lesson has no steps").arg(path));
     return false;
   }
+  playLesson(lesson, 0);
+  return true;
+}
+
+void MainWindow::playLesson(std::shared_ptr<const Lesson> lesson, int step) {
   m_lessonDock->show();
   m_lessonDock->raise();
   m_lessonPanel->setLesson(lesson);  // shows step 1 (stepChanged)
+  const int last = int(lesson->steps.size()) - 1;
+  if (step > 0) m_lessonPanel->showStep(std::min(step, last));
   fillLessonsMenu();
-  return true;
 }
 
 void MainWindow::showLessonStep(int index) {
