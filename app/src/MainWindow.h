@@ -22,7 +22,7 @@ class QVTKOpenGLNativeWidget;
 namespace raylab {
 struct Lesson;
 struct LessonStep;
-}
+}  // namespace raylab
 
 namespace raylab::vis {
 class SceneView;
