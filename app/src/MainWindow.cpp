@@ -185,7 +185,7 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
           [this](int row) { selectObject(row); });
 
   // Step 3: the ray-tree panel on the right, scrolling when the window is low.
-  m_rayPanel = new RayTreePanel(*m_view);
+  m_rayPanel = new RayTreePanel(*m_view, *m_document);
   QDockWidget* rays = addDock(tr("Ray tree"), QStringLiteral("raytree"), scrolling(m_rayPanel),
                               Qt::RightDockWidgetArea);
 

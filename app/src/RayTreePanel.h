@@ -31,6 +31,8 @@ class SceneView;
 
 namespace raylab::app {
 
+class SceneDocument;
+
 /**
  * \brief The ray-tree panel: trace one pixel sample with the chosen algorithm, draw its
  * tree in the 3D view, and play the bounce animation.
@@ -50,8 +52,8 @@ class RayTreePanel : public QWidget {
   /// Interval of the animation timer, ms (25 ticks per second).
   static constexpr int kTickMs = 40;
 
-  /// A panel drawing into `view` (which must outlive it), for the view's scene.
-  explicit RayTreePanel(vis::SceneView& view, QWidget* parent = nullptr);
+  /// A panel drawing into `view`, tracing `document`'s scene (both must outlive it).
+  RayTreePanel(vis::SceneView& view, const SceneDocument& document, QWidget* parent = nullptr);
   ~RayTreePanel() override;
 
   /// Chooses the algorithm, pixel and sample of the next trace (clamped to the film).
@@ -220,6 +222,7 @@ class RayTreePanel : public QWidget {
   bool runCancellable(Work work, Result& result);
 
   vis::SceneView& m_view;
+  const SceneDocument& m_document;  ///< The scene traced (never read from the view).
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
   std::optional<Ray> m_root;              ///< Traced in place of the pixel's camera ray, when set.

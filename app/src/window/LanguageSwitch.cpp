@@ -21,6 +21,9 @@ std::unique_ptr<MainWindow> rebuildWindow(MainWindow& window) {
   const Algorithm renderAlgorithm = window.renderPanel()->algorithm();
   const int spp = window.renderPanel()->samplesPerPixel();
 
+  // The old window's panels read the document: nothing of theirs runs once it is taken.
+  window.rayTreePanel()->pause();
+  window.rayTreePanel()->cancelTrace();
   auto next = std::make_unique<MainWindow>(window.takeDocument());
   if (lesson) {
     next->playLesson(lesson, step);
