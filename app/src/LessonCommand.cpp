@@ -26,6 +26,7 @@
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/SceneView.h"
+#include "raylab/vis/TreeViewState.h"
 #include "raylab/vis/ViewCamera.h"
 
 #if RAYLAB_WITH_GUI
@@ -176,36 +177,6 @@ std::pair<int, int> fitInside(std::pair<int, int> size, std::pair<int, int> cap)
   return {std::max(1, int(size.first * scale + 0.5)), std::max(1, int(size.second * scale + 0.5))};
 }
 
-/// The ray-tree style of a step: its colouring and filters.
-vis::RayTreeStyle styleOf(const LessonStep& step) {
-  vis::RayTreeStyle style;
-  style.colouring =
-      vis::parseColouring(toString(step.colouring)).value_or(vis::RayColouring::Energy);
-  if (!step.filters.kinds.empty()) {
-    style.filter.kinds.fill(false);
-    for (RayKind kind : step.filters.kinds) style.filter.kinds[static_cast<int>(kind)] = true;
-  }
-  style.filter.maxDepth = step.filters.maxDepth;
-  style.filter.onlyReachingLight = step.filters.reachingLight;
-  style.filter.minEnergy = step.filters.minEnergy;
-  return style;
-}
-
-/// The reveal of a step: an animation frame, every ray up to a depth, or everything.
-std::optional<vis::RevealFrame> revealOf(const LessonStep& step, const RayTree& tree) {
-  if (step.reveal.by == LessonReveal::By::Frame)
-    return vis::revealFrame(tree, vis::AnimationSettings{}, step.reveal.value);
-  if (step.reveal.by != LessonReveal::By::Depth) return std::nullopt;
-  vis::RevealFrame frame;
-  frame.done = true;
-  for (const RaySegment& s : tree.segments) {
-    frame.fraction.push_back(s.depth <= step.reveal.value ? 1.0F : 0.0F);
-    frame.done = frame.done && s.depth <= step.reveal.value;
-  }
-  frame.step = step.reveal.value;
-  return frame;
-}
-
 /// The inspector's lines of ray `id` of `tree` in `language`: Chinese through the window's
 /// translation of them (InspectorWords) when this build has the window, else English.
 std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Language language,
@@ -230,71 +201,42 @@ struct StepPicture : PictureWords {
   SrgbImage image;
 };
 
-/// The 3D view of the step's scene, with its pixel's tree when it has one (and the
-/// selected ray in the inspector view).
-StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, bool inspector,
-                         Language language) {
+/// The 3D view of the step as the lesson stager sets it (vis::stepViewState, as the
+/// window's lesson player shows it): the step's scene with its pixel's tree when it has one,
+/// the selected ray in the inspector view, or a sampler's directions; and the words beside.
+StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, Language language) {
   const Scene& scene = *step.scene;
   // The names the reader sees (Chinese display names in a zh handout), for words only.
   const Scene shown = sceneAsShown(scene, language == Language::Chinese);
+  const vis::TreeViewState state = vis::stepViewState(step, false, language);
   vis::SceneView view(scene);
   StepPicture result;
-  const double aspect = double(size.first) / size.second;
-  const bool hitCloseUp = step.cameraView == LessonCameraView::CloseUp && !step.bvh;
-  std::optional<vis::ViewCamera> closeUp;
-  if (step.traces()) {
+  std::shared_ptr<const RayTree> tree;
+  if (state.traced) {
     // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
     // together.
-    const RayTree tree = step.bundle > 1 ? traceBundle(scene, step.settings(), *step.pixelX,
-                                                       *step.pixelY, step.sample, step.bundle)
-                                               .combined
-                                         : step.trace().tree;
-    vis::RayTreeStyle style = styleOf(step);
-    style.language = language;
-    style.showNormals = hitCloseUp;
-    view.setRayTree(tree, style);
-    if (hitCloseUp) closeUp = vis::closeUpOnRay(scene, tree, step.selectRay.value_or(0), aspect);
-    if (const auto frame = revealOf(step, tree)) view.setReveal(*frame);
-    const int id = inspector ? step.selectRay.value_or(0) : 0;
-    if (inspector) {
-      view.setSelectedSegment(id);
-      result.inspectorText = inspectorLines(shown, tree, id, language, step.exactness);
-    }
-    if (step.allHits) {
-      const RaySegment& ray = tree.segments.at(std::size_t(id));
-      const std::vector<SceneCrossing> crossings =
-          sceneCrossings(scene, ray.origin, ray.direction, ray.time);
-      view.setCrossings(crossings, ray.origin, ray.direction);
-      result.crossingsText = crossingsText(shown, crossings, language == Language::Chinese);
+    tree = std::make_shared<const RayTree>(step.bundle > 1
+                                               ? traceBundle(scene, step.settings(), *step.pixelX,
+                                                             *step.pixelY, step.sample, step.bundle)
+                                                     .combined
+                                               : step.trace().tree);
+  }
+  view.show(state, tree, double(size.first) / size.second);
+  if (tree && !tree->segments.empty()) {
+    const int id = std::max(0, state.selectedSegment);
+    if (state.layout == vis::ViewLayout::Inspector)
+      result.inspectorText = inspectorLines(shown, *tree, id, language, step.exactness);
+    if (state.allHits) {
+      const RaySegment& ray = tree->segments.at(std::size_t(id));
+      result.crossingsText =
+          crossingsText(shown, sceneCrossings(scene, ray.origin, ray.direction, ray.time),
+                        language == Language::Chinese);
     }
   }
   // A mesh's BVH boxes (lesson 8), said in words under the picture.
-  vis::BvhStyle bvh = vis::lessonBvhStyle(step);
-  bvh.language = language;
-  if (bvh.shown()) {
-    view.setBvh(bvh);
-    result.caption = vis::bvhCaption(shown, bvh, view.bvhSummary(), language,
+  if (state.bvh.shown())
+    result.caption = vis::bvhCaption(shown, state.bvh, view.bvhSummary(), language,
                                      step.pixelX.value_or(-1), step.pixelY.value_or(-1));
-  }
-  if (closeUp)
-    view.setViewCamera(*closeUp);
-  else if (step.cameraView == LessonCameraView::Camera)
-    view.setViewCamera(vis::behindCameraView(scene, aspect));
-  else if (step.cameraView == LessonCameraView::CloseUp && step.bvh)
-    view.setViewCamera(vis::closeUpView(scene, step.bvh->object, aspect));
-  else
-    view.resetViewCamera(aspect);
-  result.image = view.renderOffscreen(size.first, size.second);
-  return result;
-}
-
-/// The samples view: the sampler's directions as a point cloud over the surface.
-StepPicture samplesPicture(const LessonStep& step, std::pair<int, int> size, Language language) {
-  vis::SceneView view(*step.scene);
-  const LessonSamples samples = step.samples.value_or(LessonSamples{});
-  view.setSampleCloud(samples.directions(), samples.sampler == LessonSamples::Sampler::Sphere,
-                      vis::sampleAxisLabel(samples.sampler, language), language);
-  StepPicture result;
   result.image = view.renderOffscreen(size.first, size.second);
   return result;
 }
@@ -414,7 +356,7 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
   const HandoutWords& words = handoutWords(language);
   const std::vector<std::string>& missing = step.needs;
   if (!missing.empty()) {
-    StepPicture result = scenePicture(step, picture, false, language);
+    StepPicture result = scenePicture(step, picture, language);
     result.note = std::string(words.missing) + (language == Language::Chinese ? "：" : ": ");
     for (std::size_t i = 0; i < missing.size(); ++i)
       result.note += (i ? ", `" : "`") + missing[i] + "`";
@@ -429,12 +371,8 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
       return comparePicture(step, size.value_or(kDefaultFiguresPicture), maxSpp, language);
     case LessonView::Plot:
       return plotPicture(step, size.value_or(kDefaultFiguresPicture), maxSpp, language);
-    case LessonView::Inspector:
-      return scenePicture(step, picture, true, language);
-    case LessonView::Samples:
-      return samplesPicture(step, picture, language);
-    default:
-      return scenePicture(step, picture, false, language);
+    default:  // the 3D view: the scene, the inspector's ray, a sampler's directions
+      return scenePicture(step, picture, language);
   }
 }
 

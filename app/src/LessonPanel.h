@@ -44,6 +44,8 @@ class LessonPanel : public QWidget {
   /// Starts `lesson` at its first step.
   void setLesson(std::shared_ptr<const Lesson> lesson);
   const Lesson* lesson() const { return m_lesson.get(); }
+  /// The lesson shown, shared (null when none): the language switch carries it over.
+  std::shared_ptr<const Lesson> sharedLesson() const { return m_lesson; }
   /// The step shown (0-based), -1 without a lesson.
   int step() const { return m_step; }
   /// Shows step `index` (clamped to the lesson's steps) and emits stepChanged.

@@ -21,12 +21,14 @@ class QTabWidget;
 class QVTKOpenGLNativeWidget;
 
 namespace raylab {
+struct Lesson;
 struct LessonStep;
-}
+}  // namespace raylab
 
 namespace raylab::vis {
 class SceneView;
-}
+struct TreeViewState;
+}  // namespace raylab::vis
 
 namespace raylab::app {
 
@@ -140,9 +142,13 @@ class MainWindow : public QMainWindow {
   /// first, unless `ask` is false). On failure: a dialog with the loader's message, nothing
   /// changed; returns false.
   bool openLesson(const QString& path, bool ask = true);
+  /// Shows `lesson` (loaded, with steps) at step `step` (0-based, clamped): the Lesson tab
+  /// raised, the menu's step keys enabled (openLesson, and the language switch).
+  void playLesson(std::shared_ptr<const Lesson> lesson, int step);
   /// Sets the 3D view, the ray-tree panel, the image and the tabs for step `index` of
-  /// the open lesson: its scene, algorithm, pixel, reveal, colours, filters, camera view,
-  /// selected ray, rendered image.
+  /// the open lesson, as the lesson stager (vis::stepViewState) stages it: its scene,
+  /// algorithm, pixel, reveal, colours, filters, camera view, selected ray, rendered image
+  /// (window/LessonPlayer.cpp).
   void showLessonStep(int index);
   /// Shows what the open step's "predict" question hid, once its answer is final (for a
   /// "try_value" step: the task's value tried).
@@ -232,8 +238,14 @@ class MainWindow : public QMainWindow {
   void updateRecentMenu();
   /// The Lessons menu: each lesson's title in the window's language, then the step keys.
   void fillLessonsMenu();
-  /// The step's tree, samples, comparison or image (what a prediction waits for).
-  void showLessonResult(const LessonStep& step);
+  /// The step's tree, samples, comparison or image (what a prediction waits for), from
+  /// its view state: the panels' controls, SceneView::show, the view's framing.
+  void showLessonResult(const LessonStep& step, const vis::TreeViewState& state);
+  /// The step's pane beside the 3D view (image, comparison, plot), the others hidden and
+  /// stopped.
+  void showLessonPane(const LessonStep& step, const vis::TreeViewState& state);
+  /// Hides the image and comparison tabs (the 3D view takes the central area).
+  void hideImageTabs();
   /// A dialog (not blocking the event loop) with `text`; kept for lastError().
   void showError(const QString& title, const QString& text);
   /// Adds a shape, a mesh or a point light through `edit` and selects it.

@@ -1,5 +1,7 @@
 #include "RayTreePanel.h"
 
+#include "SceneDocument.h"
+
 #include "Language.h"
 #include "UiWords.h"
 
@@ -75,7 +77,8 @@ constexpr double kSpeeds[] = {0.125, 0.25, 0.5, 1.0, 2.0, 3.0, 4.0, 8.0, 16.0};
 
 }  // namespace
 
-RayTreePanel::RayTreePanel(vis::SceneView& view, QWidget* parent) : QWidget(parent), m_view(view) {
+RayTreePanel::RayTreePanel(vis::SceneView& view, const SceneDocument& document, QWidget* parent)
+    : QWidget(parent), m_view(view), m_document(document) {
   auto* layout = new QVBoxLayout(this);
   layout->setSpacing(4);
   layout->setContentsMargins(6, 4, 6, 4);
@@ -94,7 +97,7 @@ RayTreePanel::RayTreePanel(vis::SceneView& view, QWidget* parent) : QWidget(pare
 RayTreePanel::~RayTreePanel() = default;
 
 QWidget* RayTreePanel::buildTraceGroup() {
-  const Scene& scene = m_view.scene();
+  const Scene& scene = m_document.scene();
   auto* group = new QGroupBox(tr("Trace a pixel"));
   auto* form = new QFormLayout(group);
 
@@ -290,10 +293,10 @@ void RayTreePanel::markCrossings() {
   }
   const RaySegment& ray = shown.segments[std::size_t(m_selected >= 0 ? m_selected : 0)];
   const std::vector<SceneCrossing> crossings =
-      sceneCrossings(m_view.scene(), ray.origin, ray.direction, ray.time);
+      sceneCrossings(m_document.scene(), ray.origin, ray.direction, ray.time);
   m_view.setCrossings(crossings, ray.origin, ray.direction);
   m_crossingsText = QString::fromStdString(
-      raylab::crossingsText(m_view.scene(), crossings, currentLanguage() == kChinese));
+      raylab::crossingsText(m_document.scene(), crossings, currentLanguage() == kChinese));
   m_crossingsLabel->setText(m_crossingsText.trimmed());
   m_crossingsLabel->show();
 }
@@ -419,11 +422,11 @@ const std::vector<std::string>& RayTreePanel::stepTexts() const {
 
 void RayTreePanel::trace() {
   pause();
-  const Scene& scene = m_view.scene();
-  RenderSettings settings = scene.render;
+  // The document's snapshot: immutable, so an edit while the trace runs replaces it
+  // without changing it under the worker (no copy needed).
+  const std::shared_ptr<const Scene> copy = m_document.sceneSnapshot();
+  RenderSettings settings = copy->render;
   settings.algorithm = algorithm();
-  // A copy of the scene: an edit while the trace runs must not change it under the worker.
-  auto copy = std::make_shared<const Scene>(scene);
   const int x = m_pixelX->value(), y = m_pixelY->value(), sample = m_sample->value();
   if (m_bundle->value() > 1 && !m_root) {
     traceBundleOf(copy, settings, x, y, sample, m_bundle->value());
@@ -469,11 +472,10 @@ void RayTreePanel::trace() {
 
 void RayTreePanel::simulate() {
   pause();
-  const Scene& scene = m_view.scene();
-  RenderSettings settings = scene.render;
+  const std::shared_ptr<const Scene> copy = m_document.sceneSnapshot();
+  RenderSettings settings = copy->render;
   settings.algorithm = algorithm();
   const int across = m_across->value(), down = m_down->value();
-  auto copy = std::make_shared<const Scene>(scene);
   GridTrace grid;
   if (!runCancellable(
           [copy, settings, across, down](const std::atomic<bool>* cancel) {
@@ -703,8 +705,8 @@ void RayTreePanel::showFrame() {
 
   // The picture and the status line: functions of the frame number only.
   m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), m_frame));
-  setStatus(stepCaption(*m_trace, animation(), m_frame, objectNamesOf(m_view.scene()),
-                        pointLightNamesOf(m_view.scene())));
+  setStatus(stepCaption(*m_trace, animation(), m_frame, objectNamesOf(m_document.scene()),
+                        pointLightNamesOf(m_document.scene())));
   emit viewChanged();
 }
 

@@ -5,6 +5,7 @@
 #include "raylab/core/RenderSettings.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/TreeViewState.h"
 
 #include <QWidget>
 
@@ -30,6 +31,8 @@ class SceneView;
 
 namespace raylab::app {
 
+class SceneDocument;
+
 /**
  * \brief The ray-tree panel: trace one pixel sample with the chosen algorithm, draw its
  * tree in the 3D view, and play the bounce animation.
@@ -49,8 +52,8 @@ class RayTreePanel : public QWidget {
   /// Interval of the animation timer, ms (25 ticks per second).
   static constexpr int kTickMs = 40;
 
-  /// A panel drawing into `view` (which must outlive it), for the view's scene.
-  explicit RayTreePanel(vis::SceneView& view, QWidget* parent = nullptr);
+  /// A panel drawing into `view`, tracing `document`'s scene (both must outlive it).
+  RayTreePanel(vis::SceneView& view, const SceneDocument& document, QWidget* parent = nullptr);
   ~RayTreePanel() override;
 
   /// Chooses the algorithm, pixel and sample of the next trace (clamped to the film).
@@ -89,6 +92,21 @@ class RayTreePanel : public QWidget {
   const RayTree& tree() const;
   /// What each processed ray did, by ray id (the stepper's narration).
   const std::vector<std::string>& stepTexts() const;
+
+  /// \name The panel's part of the view state (vis::TreeViewState; RayTreePanelState.cpp)
+  /// @{
+  /// Sets the controls from `state`: algorithm, pixel, sample, chosen ray, bundle, all
+  /// hits, colouring, filters, normals and the reveal order. Then trace() (or clearTrace())
+  /// and showState(state) show it.
+  void applyState(const vis::TreeViewState& state);
+  /// After the trace: the state's reveal frame (none: the whole tree) and selected ray.
+  void showState(const vis::TreeViewState& state);
+  /// The state the controls hold now (what is traced, how it is drawn, the frame shown,
+  /// the selected ray); the window adds the view camera and the layout.
+  vis::TreeViewState viewState() const;
+  /// The tree shown, shared with the view (null before the first trace).
+  std::shared_ptr<const RayTree> sharedTree() const;
+  /// @}
 
   /// How the tree is drawn, read from the controls.
   vis::RayTreeStyle treeStyle() const;
@@ -204,6 +222,7 @@ class RayTreePanel : public QWidget {
   bool runCancellable(Work work, Result& result);
 
   vis::SceneView& m_view;
+  const SceneDocument& m_document;  ///< The scene traced (never read from the view).
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
   std::optional<Ray> m_root;              ///< Traced in place of the pixel's camera ray, when set.

@@ -10,6 +10,7 @@
 #include "SceneDocument.h"
 #include "SceneSource.h"
 #include "TraceCommand.h"
+#include "window/LanguageSwitch.h"
 
 #include "raylab/core/Exception.h"
 #include "raylab/core/Lesson.h"
@@ -132,7 +133,8 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   }
 
   // View > Language: the window is built again in the new language, on the same document
-  // (file, edits, undo history), with the same layout, algorithm and traced pixel.
+  // (file, edits, undo history), carrying the open lesson and step, or the traced tree's
+  // view state (rebuildWindow).
   std::function<void(const QString&)> switchLanguage;
   const auto listen = [&application, &switchLanguage](MainWindow& w) {
     QObject::connect(
@@ -143,32 +145,7 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   listen(*window);
   switchLanguage = [&window, &listen](const QString& language) {
     installLanguage(language);
-    window->saveLayout();
-    const RayTreePanel& before = *window->rayTreePanel();
-    const bool traced = !before.tree().segments.empty() && !before.showsGrid();
-    const int x = before.pixelXBox()->value(), y = before.pixelYBox()->value();
-    const int sample = before.sampleBox()->value(), frame = before.frame();
-    const bool presenting = window->presentationMode();
-    const bool rendered = window->renderPanel()->hasImage();
-    const int spp = window->renderPanel()->samplesPerPixel();
-    auto next = std::make_unique<MainWindow>(window->takeDocument());
-    next->selectObject(window->selectedObject());
-    next->rayTreePanel()->setAlgorithm(before.algorithm());
-    if (traced) {
-      next->rayTreePanel()->setPixel(x, y);
-      next->rayTreePanel()->setSample(sample);
-      next->rayTreePanel()->trace();
-      next->rayTreePanel()->setFrame(frame);
-    }
-    next->renderPanel()->setAlgorithm(window->renderPanel()->algorithm());
-    next->renderPanel()->setSamplesPerPixel(spp);
-    next->show();
-    if (presenting) next->setPresentationMode(true);
-    if (rendered) {
-      next->showImageTab(next->renderPanel());
-      next->renderPanel()->render();
-    }
-    window->hide();
+    auto next = rebuildWindow(*window);
     window.release()->deleteLater();
     window = std::move(next);
     listen(*window);

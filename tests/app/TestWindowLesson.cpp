@@ -10,9 +10,12 @@
 #include "Language.h"
 #include "LessonPanel.h"
 #include "RenderPanel.h"
+#include "window/LanguageSwitch.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/vis/ImageIO.h"
+#include "raylab/vis/TreeViewState.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -27,6 +30,9 @@
 #include <gmock/gmock.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
 
 namespace raylab::app {
 namespace {
@@ -530,6 +536,213 @@ TEST_F(WindowLessonTest, 17_AStrangersLessonAsksAboutTheEditsFirstAndIsReported)
   EXPECT_TRUE(m_window->lastError().contains(QStringLiteral("utf8-title-lesson.json: at /title")))
       << m_window->lastError().toStdString();
   EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), edited);
+}
+
+/// How far two pictures of the same view differ: the share of pixels of the window's that
+/// no pixel of the handout's within one pixel matches (every channel within 64: a ray, a
+/// word or an edge moved, coloured or missing; the window draws with multisampling, the
+/// handout without, so thin lines differ by a pixel), and the mean channel difference.
+struct PictureDifference {
+  double changedShare = 1.0;
+  double meanDifference = 255.0;
+};
+
+PictureDifference difference(const QImage& window, const SrgbImage& handout) {
+  PictureDifference d;
+  const int w = handout.width, h = handout.height;
+  if (window.width() != w || window.height() != h) return d;
+  const auto at = [&](int x, int y, int c) {
+    return int(handout.rgb[3 * (std::size_t(y) * std::size_t(w) + std::size_t(x)) + c]);
+  };
+  long changed = 0;
+  double sum = 0.0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const QRgb p = window.pixel(x, y);
+      const int rgb[3] = {qRed(p), qGreen(p), qBlue(p)};
+      for (int c = 0; c < 3; ++c) sum += std::abs(rgb[c] - at(x, y, c));
+      bool matched = false;
+      for (int dy = -1; dy <= 1 && !matched; ++dy)
+        for (int dx = -1; dx <= 1 && !matched; ++dx) {
+          const int u = std::clamp(x + dx, 0, w - 1), v = std::clamp(y + dy, 0, h - 1);
+          matched = std::abs(rgb[0] - at(u, v, 0)) <= 64 && std::abs(rgb[1] - at(u, v, 1)) <= 64 &&
+                    std::abs(rgb[2] - at(u, v, 2)) <= 64;
+        }
+      changed += !matched;
+    }
+  const double pixels = double(w) * h;
+  d.changedShare = changed / pixels;
+  d.meanDifference = sum / (3.0 * pixels);
+  return d;
+}
+
+/// Answers a step's prediction right, so that the window shows what the handout draws.
+void answerRight(LessonPanel& panel, const LessonStep& step) {
+  if (!panel.waitingForPrediction() || !step.question) return;
+  if (step.question->type == LessonQuestion::Type::Choice)
+    panel.answerChoice(step.question->answerIndex);
+  else
+    panel.answerNumber(step.question->answer);
+}
+
+/// Issue 31: one lesson stager. Every 3D step of the lessons named by `prefixes`, shown by
+/// the window's lesson player, looks as `raylab lesson --out` draws it at the same size:
+/// the same scene, tree, reveal, selection, overlays and view camera.
+void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grabView,
+                         std::initializer_list<const char*> prefixes) {
+  for (const char* prefix : prefixes) {
+    const QString file = lessonFile(prefix);
+    ASSERT_TRUE(window.openLesson(file));
+    LessonPanel& panel = *window.lessonPanel();
+    const Lesson lesson = LessonIO::load(file.toStdString());
+    // The size of the 3D view on a 3D step (an image step shares the centre with the tabs).
+    std::size_t firstView = 0;
+    while (
+        firstView + 1 < lesson.steps.size() &&
+        !vis::shows3D(vis::stepViewState(lesson.steps[firstView], false, Language::English).layout))
+      ++firstView;
+    panel.showStep(int(firstView));
+    const QImage first = grabView();
+    // The handout's pictures at the size of the window's 3D view (one sample of its
+    // images and comparisons: only the 3D views are compared).
+    const QString out = QDir::temp().filePath(QStringLiteral("raylab-stager-") + prefix);
+    const QString seenDir = out + QStringLiteral("window");
+    QDir(out).removeRecursively();
+    QDir(seenDir).removeRecursively();
+    QDir().mkpath(seenDir);
+    QProcess cli;
+    cli.start(
+        QStringLiteral(RAYLAB_EXE),
+        {QStringLiteral("lesson"), file, QStringLiteral("--out"), out, QStringLiteral("--size"),
+         QStringLiteral("%1x%2").arg(first.width()).arg(first.height()),
+         QStringLiteral("--max-spp"), QStringLiteral("1")});
+    ASSERT_TRUE(cli.waitForFinished(300000));
+    ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+    int compared = 0;
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+      const LessonStep& step = lesson.steps[i];
+      panel.showStep(int(i));
+      const vis::TreeViewState state = vis::stepViewState(step, false, Language::English);
+      if (!vis::shows3D(state.layout) || !step.needs.empty()) continue;
+      answerRight(panel, step);
+      const QImage shown = grabView();
+      const QString png = out + QStringLiteral("/step-%1.png").arg(int(i) + 1, 2, 10, QChar('0'));
+      const SrgbImage handout = vis::readPng(png.toStdString());
+      const PictureDifference d = difference(shown, handout);
+      const QString seen =
+          seenDir + QStringLiteral("/step-%1.png").arg(int(i) + 1, 2, 10, QChar('0'));
+      shown.save(seen);
+      EXPECT_LT(d.changedShare, 0.02)
+          << prefix << " step " << i + 1 << ": " << seen.toStdString() << " against "
+          << png.toStdString() << ", mean difference " << d.meanDifference;
+      EXPECT_LT(d.meanDifference, 3.0) << prefix << " step " << i + 1;
+      std::cout << prefix << " step " << i + 1 << ": " << 100.0 * d.changedShare
+                << "% changed, mean " << d.meanDifference << "\n";
+      ++compared;
+    }
+    EXPECT_GT(compared, 0) << prefix;
+  }
+}
+
+TEST_F(WindowLessonTest, 18_EveryStepOfLessons1And2LooksAsInTheHandout) {
+  compareWithHandouts(*m_window, [this] { return grabView(); }, {"01-", "02-"});
+}
+
+TEST_F(WindowLessonTest, 19_EveryStepOfLessons3And4LooksAsInTheHandout) {
+  compareWithHandouts(*m_window, [this] { return grabView(); }, {"03-", "04-"});
+}
+
+TEST_F(WindowLessonTest, 20_EveryStepOfLessons5And6LooksAsInTheHandout) {
+  compareWithHandouts(*m_window, [this] { return grabView(); }, {"05-", "06-"});
+}
+
+TEST_F(WindowLessonTest, 21_EveryStepOfLessons7And8LooksAsInTheHandout) {
+  compareWithHandouts(*m_window, [this] { return grabView(); }, {"07-", "08-"});
+}
+
+// Issue 33: after a comparison or plot step the next 3D step gets the 3D view back: the
+// comparison pane hidden, its comparison stopped, the view at least half the window high.
+TEST_F(WindowLessonTest, 22_AComparisonStepThenA3DStepGivesThe3DViewBack) {
+  const QString file = lessonFile("06-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  LessonPanel& panel = *m_window->lessonPanel();
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  int compare = -1;
+  for (std::size_t i = 0; i + 1 < lesson.steps.size(); ++i) {
+    const LessonView view = lesson.steps[i].view, next = lesson.steps[i + 1].view;
+    if ((view == LessonView::Compare || view == LessonView::Plot) &&
+        (next == LessonView::Scene || next == LessonView::Samples))
+      compare = int(i);
+  }
+  ASSERT_GE(compare, 0) << "lesson 6 has a comparison followed by a 3D step";
+  panel.showStep(compare);
+  settle();
+  EXPECT_TRUE(m_window->imageTabs()->isVisible());
+  EXPECT_TRUE(m_window->comparePanel()->running());
+  panel.next();
+  settle();
+  EXPECT_FALSE(m_window->imageTabs()->isVisible()) << "the comparison pane is left over";
+  EXPECT_FALSE(m_window->comparePanel()->running()) << "the comparison runs past its step";
+  EXPECT_GE(m_window->viewWidget()->height(), m_window->height() / 2);
+  EXPECT_GE(m_window->viewWidget()->width(), m_window->width() / 3);
+}
+
+// Issue 33: View > Language keeps the open lesson at its step (the new window is built
+// from the old one's state: rebuildWindow), and without a lesson the traced tree with its
+// colours and frame.
+TEST_F(WindowLessonTest, 23_TheLanguageSwitchKeepsTheLessonAndItsStep) {
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) {
+    return st.pixelX && st.view == LessonView::Scene && !(st.question && st.question->predict);
+  });
+  m_window->lessonPanel()->showStep(s);
+  settle();
+  const RayTree before = m_window->rayTreePanel()->tree();
+  m_window.reset(rebuildWindow(*m_window).release());
+  settle();
+  ASSERT_NE(m_window->lessonPanel()->lesson(), nullptr) << "the lesson was closed";
+  EXPECT_EQ(m_window->lessonPanel()->lesson()->id, lesson.id);
+  EXPECT_EQ(m_window->lessonPanel()->step(), s);
+  const LessonStep& step = lesson.steps[std::size_t(s)];
+  EXPECT_EQ(SceneIO::serialize(m_window->document().scene()), SceneIO::serialize(*step.scene));
+  EXPECT_EQ(RayTreeJson::serialize(m_window->rayTreePanel()->tree(), *step.scene, step.settings()),
+            RayTreeJson::serialize(before, *step.scene, step.settings()));
+}
+
+TEST_F(WindowLessonTest, 24_TheLanguageSwitchKeepsTheTreeItsColoursAndFrame) {
+  RayTreePanel& rays = traceCube();
+  rays.colouringBox()->setCurrentIndex(rays.colouringBox()->findData(QStringLiteral("kind")));
+  rays.setFrame(rays.frameCount() / 2);
+  const int frame = rays.frame();
+  const std::size_t segments = rays.tree().segments.size();
+  ASSERT_GT(segments, 0U);
+  m_window.reset(rebuildWindow(*m_window).release());
+  settle();
+  RayTreePanel& after = *m_window->rayTreePanel();
+  EXPECT_EQ(after.tree().segments.size(), segments);
+  EXPECT_EQ(after.frame(), frame);
+  EXPECT_EQ(after.colouringBox()->currentData().toString(), QStringLiteral("kind"));
+  EXPECT_EQ(after.algorithm(), Algorithm::Whitted);
+}
+
+// Issue 33: the selection does not carry over to a lesson's scene by row number (the 7th
+// object of the default scene selected, lesson 6's 7th object was outlined, and Del
+// would have deleted it).
+TEST_F(WindowLessonTest, 25_ALessonsSceneStartsWithNothingSelected) {
+  const int count = int(m_window->document().scene().objects.size());
+  ASSERT_GE(count, 2);
+  m_window->selectObject(count - 1);
+  ASSERT_EQ(m_window->selectedObject(), count - 1);
+  ASSERT_TRUE(m_window->openLesson(lessonFile("06-")));
+  settle();
+  EXPECT_EQ(m_window->selectedObject(), -1);
+  EXPECT_EQ(m_window->sceneView().highlighted(), -1);
+  m_window->selectObject(0);
+  m_window->lessonPanel()->next();
+  settle();
+  EXPECT_EQ(m_window->selectedObject(), -1) << "each step's scene is a new scene";
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "BvhActors.h"
 #include "RayTreeActors.h"
+#include "SceneViewImpl.h"
 #include "ShapeGeometry.h"
 #include "TeachingOverlays.h"
 #include "TextFonts.h"
@@ -43,7 +44,6 @@ namespace raylab::vis {
 namespace {
 
 /// Background of the 3D view: a dark slate that none of the scene colours uses.
-constexpr double kBackground[3] = {0.12, 0.13, 0.16};
 /// Colour of the selection outline.
 constexpr double kHighlight[3] = {1.0, 0.85, 0.0};
 /// Colour and opacity of the scene camera's body, colour of its frustum lines: the lime of
@@ -191,29 +191,6 @@ void seeThroughGlass(const Scene& scene, const std::vector<vtkSmartPointer<vtkAc
 }
 
 }  // namespace
-
-struct SceneView::Impl {
-  vtkNew<vtkRenderer> renderer;
-  std::vector<vtkSmartPointer<vtkActor>> objects;     ///< One per scene object.
-  std::vector<vtkSmartPointer<vtkActor>> highlights;  ///< Hidden outlines, one per object.
-  vtkSmartPointer<vtkRenderWindow> offscreen;         ///< Created on first offscreen render.
-  RayTreeActors rays{Vec3(kBackground[0], kBackground[1], kBackground[2])};  ///< Ray tree.
-  BvhActors bvh;               ///< A mesh's BVH boxes.
-  std::vector<bool> oneSided;  ///< Per object: drawn one-sided (culled from behind).
-  std::vector<vtkSmartPointer<vtkProp>> crossings;  ///< setCrossings' line and marks.
-  int crossingCount = 0;
-  std::vector<int> crossed;  ///< Solids the crossings' ray passes through (drawn see-through).
-  std::vector<vtkSmartPointer<vtkProp>> cloud;  ///< setSampleCloud's props; empty = scene.
-  vtkSmartPointer<vtkTextActor> caption;        ///< setCaption's text; null when none.
-  Point3 inside{0.0};  ///< The room's inside, which one-sided surfaces face.
-
-  ~Impl() {
-    if (offscreen) {
-      offscreen->RemoveRenderer(renderer);
-      offscreen->Finalize();
-    }
-  }
-};
 
 SceneView::SceneView(const Scene& scene) : m_impl(std::make_unique<Impl>()) {
   // Lines drawn over faces (the selection outline) are pulled towards the eye.
@@ -382,33 +359,6 @@ void SceneView::setCaption(const std::string& text, Language language) {
   caption->SetDisplayPosition(8, 8);
   m_impl->caption = caption;
   m_impl->renderer->AddViewProp(caption);
-}
-
-int SceneView::objectAt(double x, double y, int width, int height) const {
-  if (width <= 0 || height <= 0 || m_scene.objects.empty()) return -1;
-  // The view ray through (x, y): a pinhole at the eye with the view's vertical angle.
-  const ViewCamera view = viewCamera();
-  const Vec3 forward = glm::normalize(view.focalPoint - view.eye);
-  const Vec3 right = glm::normalize(glm::cross(forward, view.up));
-  const Vec3 up = glm::cross(right, forward);
-  const double tanHalf = std::tan(radians(view.viewAngle) / 2.0);
-  const double px = (2.0 * x / width - 1.0) * tanHalf * double(width) / height;
-  const double py = (1.0 - 2.0 * y / height) * tanHalf;
-  Ray ray = Ray::make(view.eye, forward + px * right + py * up);
-  // The first surface drawn there: one-sided surfaces (walls, quads, planes, triangles)
-  // are invisible from their back, so the ray passes through them.
-  const SceneIntersector intersector(m_scene);
-  for (int pass = 0; pass < 64; ++pass) {
-    const std::optional<SceneHit> hit = intersector.intersect(ray);
-    if (!hit) return -1;
-    const std::size_t i = std::size_t(hit->object);
-    const bool oneSided = m_impl->oneSided.size() == m_scene.objects.size() && m_impl->oneSided[i];
-    Vec3 n = hit->si.n;
-    if (glm::dot(m_impl->inside - hit->si.p, n) < 0.0) n = -n;  // the face drawn
-    if (!oneSided || glm::dot(ray.direction, n) < 0.0) return hit->object;
-    ray.tMin = glm::length(hit->si.p - ray.origin) * (1.0 + 1e-9) + 1e-9;
-  }
-  return -1;
 }
 
 void SceneView::updateScene(const Scene& scene) {
@@ -597,49 +547,6 @@ void SceneView::setSelectedSegment(int id) {
 int SceneView::selectedSegment() const { return m_impl->rays.selected; }
 
 int SceneView::rayTreeBuildCount() const { return m_impl->rays.buildCount(); }
-
-int SceneView::segmentAt(double x, double y, int width, int height, double tolerance) const {
-  m_impl->rays.ensureBuilt();
-  const RayTreeActors& rays = m_impl->rays;
-  if (!rays.shown || width <= 0 || height <= 0) return -1;
-  // Project with the view camera's matrix once, then test every drawn line in 2D.
-  vtkCamera* camera = m_impl->renderer->GetActiveCamera();
-  vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(double(width) / height, -1, 1);
-  double e[16];
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) e[4 * r + c] = m->GetElement(r, c);
-  // SrgbImage coordinates (y down) of a world point; w <= 0 when behind the eye.
-  auto project = [&](const float* p, double& px, double& py) {
-    const double w = e[12] * p[0] + e[13] * p[1] + e[14] * p[2] + e[15];
-    if (w <= 1e-12) return false;
-    px = ((e[0] * p[0] + e[1] * p[1] + e[2] * p[2] + e[3]) / w + 1.0) * width / 2.0;
-    py = height - ((e[4] * p[0] + e[5] * p[1] + e[6] * p[2] + e[7]) / w + 1.0) * height / 2.0;
-    return true;
-  };
-  int best = -1;
-  double bestDistance = tolerance;
-  for (int k = 0; k < kRayWidthClasses; ++k) {
-    vtkPolyData* lines = rays.geometry.lines[std::size_t(k)];
-    if (!lines || lines->GetNumberOfPoints() == 0) continue;
-    const auto* points = static_cast<const float*>(lines->GetPoints()->GetVoidPointer(0));
-    const std::vector<int>& ids = rays.geometry.cellSegment[std::size_t(k)];
-    for (std::size_t c = 0; c < ids.size(); ++c) {
-      double ax, ay, bx, by;
-      if (!project(points + 6 * c, ax, ay) || !project(points + 6 * c + 3, bx, by)) continue;
-      // Distance from (x, y) to the projected segment.
-      const double dx = bx - ax, dy = by - ay;
-      const double len2 = dx * dx + dy * dy;
-      const double t =
-          len2 > 0.0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / len2, 0.0, 1.0) : 0.0;
-      const double d = std::hypot(x - (ax + t * dx), y - (ay + t * dy));
-      if (d < bestDistance) {
-        bestDistance = d;
-        best = ids[c];
-      }
-    }
-  }
-  return best;
-}
 
 std::optional<Vec2> SceneView::worldToImage(const Point3& world, int width, int height) const {
   return projectToImage(viewCamera(), world, width, height);

@@ -107,7 +107,7 @@ void MainWindow::buildDocks() {
   m_leftDocks = {objects, edit, properties};
 
   // On the right the ray-tree panel, scrolling when the window is low.
-  m_rayPanel = new RayTreePanel(*m_view);
+  m_rayPanel = new RayTreePanel(*m_view, *m_document);
   m_raysDock = addDock(tr("Ray tree"), QStringLiteral("raytree"), scrolling(m_rayPanel),
                        Qt::RightDockWidgetArea);
   // The inspector, in a tab beside the ray-tree panel (raised when a ray is chosen): the 3D

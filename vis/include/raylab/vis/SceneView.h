@@ -9,6 +9,7 @@
 #include "raylab/vis/BvhStyle.h"
 #include "raylab/vis/Image.h"
 #include "raylab/vis/RayTreeStyle.h"
+#include "raylab/vis/TreeViewState.h"
 #include "raylab/vis/ViewCamera.h"
 
 #include <memory>
@@ -46,6 +47,17 @@ class SceneView {
   ~SceneView();
   SceneView(const SceneView&) = delete;
   SceneView& operator=(const SceneView&) = delete;
+
+  /**
+   * \brief Shows `state` (TreeViewState.h) over the scene: `tree` (the state's traced tree,
+   * shared, never copied; null or `state.hidden` or not `state.traced`: no tree) drawn with
+   * its style, revealed to its frame, its selected ray marked, every crossing of that ray
+   * (or ray 0) with `allHits`, the BVH boxes, a sampler's directions in place of the scene
+   * (Samples layout), the selected object outlined, and the view camera of `state` for a
+   * picture of aspect `aspect` (width / height; the sample cloud keeps its own side view).
+   * Replaces whatever these showed before.
+   */
+  void show(const TreeViewState& state, std::shared_ptr<const RayTree> tree, double aspect);
 
   /// Replaces every actor with those of `scene`, clears the selection, resets the view.
   void setScene(const Scene& scene);

@@ -1,0 +1,51 @@
+#include "LanguageSwitch.h"
+
+#include "LessonPanel.h"
+#include "RayTreePanel.h"
+#include "RenderPanel.h"
+#include "SceneDocument.h"
+
+#include "raylab/vis/TreeViewState.h"
+
+namespace raylab::app {
+
+std::unique_ptr<MainWindow> rebuildWindow(MainWindow& window) {
+  window.saveLayout();
+  // What the old window shows, as state.
+  const vis::TreeViewState rays = window.rayTreePanel()->viewState();
+  const std::shared_ptr<const Lesson> lesson = window.lessonPanel()->sharedLesson();
+  const int step = window.lessonPanel()->step();
+  const int selected = window.selectedObject();
+  const bool presenting = window.presentationMode();
+  const bool rendered = window.renderPanel()->hasImage();
+  const Algorithm renderAlgorithm = window.renderPanel()->algorithm();
+  const int spp = window.renderPanel()->samplesPerPixel();
+
+  // The old window's panels read the document: nothing of theirs runs once it is taken.
+  window.rayTreePanel()->pause();
+  window.rayTreePanel()->cancelTrace();
+  auto next = std::make_unique<MainWindow>(window.takeDocument());
+  if (lesson) {
+    next->playLesson(lesson, step);
+  } else {
+    next->selectObject(selected);
+    RayTreePanel& panel = *next->rayTreePanel();
+    panel.applyState(rays);
+    if (rays.traced) {
+      panel.trace();
+      panel.showState(rays);
+    }
+  }
+  next->renderPanel()->setAlgorithm(renderAlgorithm);
+  next->renderPanel()->setSamplesPerPixel(spp);
+  next->show();
+  if (presenting) next->setPresentationMode(true);
+  if (rendered && !lesson) {
+    next->showImageTab(next->renderPanel());
+    next->renderPanel()->render();
+  }
+  window.hide();
+  return next;
+}
+
+}  // namespace raylab::app

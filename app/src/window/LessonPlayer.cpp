@@ -1,0 +1,202 @@
+// The window's lesson player: opens a lesson and shows its steps. Each step is staged by
+// the lesson stager (vis::stepViewState, as `raylab lesson --out` stages it) and drawn by
+// SceneView::show; the panels' controls are set from the same state, and the step's pane
+// (the 3D view alone, the image, the comparison, the plot) is laid out from its layout.
+#include "MainWindow.h"
+
+#include "ComparePanel.h"
+#include "InspectorPanel.h"
+#include "Language.h"
+#include "LessonPanel.h"
+#include "RayTreePanel.h"
+#include "RenderPanel.h"
+#include "SceneDocument.h"
+
+#include "raylab/core/Exception.h"
+#include "raylab/core/Lesson.h"
+#include "raylab/vis/SceneView.h"
+#include "raylab/vis/TreeViewState.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QSignalBlocker>
+#include <QTabWidget>
+
+#include <algorithm>
+#include <memory>
+
+namespace raylab::app {
+
+namespace {
+
+/// Most samples per pixel a lesson step renders in the window (as the handout's images).
+constexpr int kLessonImageSpp = 64;
+/// A lesson's comparison in the window: spp of each algorithm, or seconds of each.
+constexpr int kLessonCompareSpp = 8;
+constexpr double kLessonCompareSeconds = 1.0;
+
+/// The lesson's language: the window's.
+Language lessonLanguage() {
+  return currentLanguage() == kChinese ? Language::Chinese : Language::English;
+}
+
+}  // namespace
+
+bool MainWindow::openLesson(const QString& path, bool ask) {
+  // Ask about unsaved edits before reading a stranger's file: whatever the file holds, the
+  // edits are saved or dropped by the user's choice first (issue 38).
+  if (ask && !maybeSave()) return false;
+  std::shared_ptr<const Lesson> lesson;
+  try {
+    lesson = std::make_shared<const Lesson>(LessonIO::load(path.toStdString()));
+  } catch (const std::exception& e) {
+    showError(tr("Cannot open the lesson"), QString::fromStdString(e.what()));
+    return false;
+  }
+  if (lesson->steps.empty()) {
+    showError(tr("Cannot open the lesson"), tr("%1: the lesson has no steps").arg(path));
+    return false;
+  }
+  playLesson(lesson, 0);
+  return true;
+}
+
+void MainWindow::playLesson(std::shared_ptr<const Lesson> lesson, int step) {
+  m_lessonDock->show();
+  m_lessonDock->raise();
+  m_lessonPanel->setLesson(lesson);  // shows step 1 (stepChanged)
+  const int last = int(lesson->steps.size()) - 1;
+  if (step > 0) m_lessonPanel->showStep(std::min(step, last));
+  fillLessonsMenu();
+}
+
+void MainWindow::showLessonStep(int index) {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  if (!lesson || index < 0 || index >= int(lesson->steps.size())) return;
+  const LessonStep& step = lesson->steps[std::size_t(index)];
+  // The step's scene, as a new document (its changes are the lesson's, not edits). The
+  // old scene's selection does not carry over to it by row number (issue 33).
+  selectObject(-1);
+  m_rayPanel->setRootRay(std::nullopt);  // a chosen ray belongs to its step's scene
+  m_document->adopt(*step.scene, {});
+  // A prediction first: the tree, the boxes and the image wait for the answer
+  // (revealLessonStep). A step whose value the student changes shows its scene as it is.
+  const vis::TreeViewState state =
+      vis::stepViewState(step, m_lessonPanel->waitingForPrediction(), lessonLanguage());
+  showLessonResult(step, state);
+  m_lessonPanel->setBvhView(state.bvh, m_view->bvhSummary());
+  if (state.layout != vis::ViewLayout::Inspector || state.hidden) m_lessonPanel->setRayText({});
+  m_lessonDock->raise();
+  render();
+}
+
+void MainWindow::revealLessonStep() {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  const int index = m_lessonPanel->step();
+  if (!lesson || index < 0) return;
+  const LessonStep& step = lesson->steps[std::size_t(index)];
+  // A tried value's step shows the task's value now; any other step what it hid.
+  if (step.tryValue) {
+    m_lessonPanel->tryValueBox()->setValue(step.tryValue->value);
+    tryLessonValue(step.tryValue->value);
+    return;
+  }
+  if (step.question && step.question->predict) showLessonStep(index);
+}
+
+void MainWindow::tryLessonValue(double value) {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  const int index = m_lessonPanel->step();
+  if (!lesson || index < 0 || !lesson->steps[std::size_t(index)].tryValue) return;
+  LessonStep tried = lesson->steps[std::size_t(index)];
+  try {
+    tried.scene = std::make_shared<const Scene>(tried.tryValue->with(*tried.scene, value));
+  } catch (const Exception& e) {
+    showError(tr("Cannot use this value"), QString::fromStdString(e.what()));
+    return;
+  }
+  // The tried scene replaces the step's in the 3D view.
+  m_document->adopt(*tried.scene, {});
+  showLessonResult(tried, vis::stepViewState(tried, false, lessonLanguage()));
+  render();
+}
+
+void MainWindow::showLessonResult(const LessonStep& step, const vis::TreeViewState& state) {
+  // The ray-tree panel's controls from the state, its trace, its frame and selection.
+  RayTreePanel& rays = *m_rayPanel;
+  rays.applyState(state);
+  if (state.traced) {
+    rays.trace();
+    if (state.layout == vis::ViewLayout::Inspector) m_inspector->setExactness(state.exactness);
+    rays.showState(state);  // the lesson panel shows the inspector's ray
+  } else {
+    rays.setRootRay(std::nullopt);
+    rays.clearTrace();
+  }
+  // The 3D view as the handout draws it, with the panel's tree and its style (which adds
+  // the teacher's presentation line width and toggles).
+  vis::TreeViewState shown = state;
+  shown.style = rays.treeStyle();
+  const std::shared_ptr<const RayTree> tree = rays.sharedTree();
+  m_view->show(shown, tree, viewAspect());
+  if (!m_view->showsSampleCloud()) {
+    frameView([this, shown, tree](double aspect) {
+      static const RayTree kNone;
+      return vis::viewCameraOf(shown, m_view->scene(), tree ? *tree : kNone, aspect);
+    });
+  }
+  showLessonPane(step, state);
+}
+
+void MainWindow::showLessonPane(const LessonStep& step, const vis::TreeViewState& state) {
+  // The Image tab takes the step's algorithm on every step, so Render there renders the
+  // step's. A pane the step does not use is hidden, and a comparison or a render runs only
+  // on its own step: a 3D step after a comparison gets the 3D view back (issue 33).
+  m_renderPanel->setAlgorithm(step.algorithm);
+  const bool compares =
+      (state.layout == vis::ViewLayout::Compare || state.layout == vis::ViewLayout::Plot) &&
+      !state.hidden;
+  const bool image = state.layout == vis::ViewLayout::Image && !state.hidden;
+  if (!compares) m_comparePanel->cancel();
+  if (!image) m_renderPanel->cancel();
+  if (!compares && !image) {
+    hideImageTabs();
+    return;
+  }
+  if (image) {
+    m_renderPanel->setSamplesPerPixel(std::min(step.settings().samplesPerPixel, kLessonImageSpp));
+    showImageTab(m_renderPanel);
+    m_renderPanel->render();
+    return;
+  }
+  m_comparePanel->setEqualTime(step.measure == LessonMeasure::Time);
+  m_comparePanel->setSamplesPerPixel(kLessonCompareSpp);
+  m_comparePanel->setSeconds(kLessonCompareSeconds);
+  showImageTab(m_comparePanel);
+  // A plot step shows the convergence plot under the comparison; a comparison step leaves
+  // the panels the whole height.
+  m_comparePanel->setPlotShown(state.layout == vis::ViewLayout::Plot);
+  // A step's pixel: its four trees beside the images once they are done, as in the handout.
+  std::optional<std::pair<int, int>> pixel;
+  if (step.pixelX && step.pixelY) pixel = std::make_pair(*step.pixelX, *step.pixelY);
+  m_comparePanel->traceWhenDone(pixel);
+  m_comparePanel->compare();
+}
+
+void MainWindow::hideImageTabs() {
+  m_imageTabs->hide();
+  if (m_imagesAction) {
+    const QSignalBlocker block(m_imagesAction);
+    m_imagesAction->setChecked(false);
+  }
+}
+
+bool MainWindow::lessonShowsInspector() const {
+  const Lesson* lesson = m_lessonPanel->lesson();
+  const int step = m_lessonPanel->step();
+  return lesson && !m_lessonDock->isHidden() && step >= 0 &&
+         lesson->steps[std::size_t(step)].view == LessonView::Inspector;
+}
+
+}  // namespace raylab::app
