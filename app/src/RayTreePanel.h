@@ -87,8 +87,6 @@ class RayTreePanel : public QWidget {
   bool showsGrid() const { return m_trace && m_grid; }
   /// The tree shown (empty before the first trace).
   const RayTree& tree() const;
-  /// What each processed ray did, by ray id (the stepper's narration).
-  const std::vector<std::string>& stepTexts() const;
 
   /// How the tree is drawn, read from the controls.
   vis::RayTreeStyle treeStyle() const;
