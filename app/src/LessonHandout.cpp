@@ -44,7 +44,7 @@ std::string tryValueSection(const Lesson& lesson, const LessonStep& step, Langua
   const LessonTryValue& t = *step.tryValue;
   const std::string command = tryCommand(lesson, step);
   const std::string fence = markdownFence(command);
-  return label("handout.bold_label", "handout.try_value", language) +
+  return label("handout.try_label", "handout.try_value", language) +
          phrase("handout.try_task", language,
                 {{"label", markdownText(t.label.in(language), true)},
                  {"from", formatNumber(t.original)},
