@@ -1,4 +1,6 @@
-#include "io/MeshNormals.h"
+#include "io/mesh/MeshNormals.h"
+
+#include "raylab/core/Limits.h"
 
 #include <array>
 #include <cmath>
@@ -23,6 +25,12 @@ std::string trimmed(const std::string& s) {
 /// A file's normal must give a direction: finite and not zero.
 void checkNormal(const Normal3& n, int line, const std::string& where) {
   if (!isFinite(n)) throw Problem(line, where + " is not finite: " + toString(n));
+  // A component past RayLab's largest coordinate: its length overflows, and the normal
+  // normalised later had zero length, named without its line (issue 38).
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(n[k]) > limits::kMaxCoordinate)
+      throw Problem(line, where + " has a component beyond RayLab's largest coordinate, 1e12: " +
+                              toString(n));
   if (!(glm::length(n) > 0.0))
     throw Problem(line, where + " has zero length: " + toString(n) + " gives no direction");
 }
