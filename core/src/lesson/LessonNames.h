@@ -1,6 +1,12 @@
 #pragma once
 
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Lesson.h"
+
+#include <array>
+#include <iterator>
+#include <type_traits>
+#include <utility>
 
 #include <cstddef>
 #include <optional>
@@ -48,10 +54,13 @@ inline const Named<LessonCheck::Quantity> kQuantities[] = {
     {"bvh_boxes_entered", LessonCheck::Quantity::BvhBoxesEntered},
     {"bvh_triangle_tests", LessonCheck::Quantity::BvhTriangleTests},
     {"ray_target", LessonCheck::Quantity::RayTarget}};
-inline const Named<Algorithm> kAlgorithms[] = {{"raycast", Algorithm::RayCasting},
-                                               {"whitted", Algorithm::Whitted},
-                                               {"distributed", Algorithm::Distributed},
-                                               {"path", Algorithm::PathTracing}};
+/// The algorithms' words, from the one algorithm table (AlgorithmInfo.h).
+inline const std::array<Named<Algorithm>, kAllAlgorithms.size()> kAlgorithms = [] {
+  std::array<Named<Algorithm>, kAllAlgorithms.size()> table{};
+  for (std::size_t i = 0; i < table.size(); ++i)
+    table[i] = {algorithmInfo(kAllAlgorithms[i]).word, kAllAlgorithms[i]};
+  return table;
+}();
 inline const Named<RayKind> kKinds[] = {
     {"camera", RayKind::Camera},         {"reflection", RayKind::Reflection},
     {"refraction", RayKind::Refraction}, {"diffuse", RayKind::Diffuse},
@@ -65,26 +74,31 @@ inline const Named<EndReason> kEnds[] = {{"escaped", EndReason::Escaped},
                                          {"reached_light", EndReason::ReachedLight},
                                          {"spawned", EndReason::Spawned}};
 
-template <class E, std::size_t N>
-std::optional<E> lookup(const Named<E> (&table)[N], const std::string& name) {
-  for (const Named<E>& entry : table)
+/// The value type of a table of Named values (a C array or a std::array).
+template <class Table>
+using NamedValue = std::decay_t<decltype(std::begin(std::declval<const Table&>())->value)>;
+
+template <class Table>
+std::optional<NamedValue<Table>> lookup(const Table& table, const std::string& name) {
+  for (const auto& entry : table)
     if (name == entry.name) return entry.value;
   return std::nullopt;
 }
 
-template <class E, std::size_t N>
-const char* nameOf(const Named<E> (&table)[N], E value) {
-  for (const Named<E>& entry : table)
+template <class Table>
+const char* nameOf(const Table& table, NamedValue<Table> value) {
+  for (const auto& entry : table)
     if (entry.value == value) return entry.name;
   return "unknown";
 }
 
 /// "a, b or c": the names of a table, for messages.
-template <class E, std::size_t N>
-std::string namesOf(const Named<E> (&table)[N]) {
+template <class Table>
+std::string namesOf(const Table& table) {
+  const std::size_t count = std::size(table);
   std::string list;
-  for (std::size_t i = 0; i < N; ++i)
-    list += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + table[i].name;
+  for (std::size_t i = 0; i < count; ++i)
+    list += std::string(i == 0 ? "" : i + 1 == count ? " or " : ", ") + table[i].name;
   return list;
 }
 

@@ -130,9 +130,9 @@ class Reader : private JsonChecks<Reader> {
                               ": " + what);
   }
 
-  template <class E, std::size_t N>
-  E named(const json& j, const std::string& path, const Named<E> (&table)[N],
-          const char* what) const {
+  template <class Table>
+  NamedValue<Table> named(const json& j, const std::string& path, const Table& table,
+                          const char* what) const {
     const std::string name = string(j, path);
     const auto value = lookup(table, name);
     if (!value)
