@@ -29,6 +29,8 @@ struct DiffOptions {
 
 /// Dashes drawn along each of their rays (RayTreeGeometry draws whole segments only).
 constexpr int kDashes = 12;
+/// Above this many rays theirs are drawn solid: the picture stays within 12 x this many lines.
+constexpr std::size_t kMostDashedRays = 50000;
 
 /// One drawing of both trees: the engine's rays as they are, then each of theirs cut into
 /// kDashes pieces (extra roots) so it reads as dashed. The verdict colours say which is
@@ -38,18 +40,20 @@ RayTree bothTrees(const RayTree& ours, const RayTree& theirs, int differing,
                   std::vector<int>& verdicts) {
   RayTree both = ours;
   verdicts.assign(ours.segments.size(), int(Verdict::NotJudged));
+  const int dashes = theirs.segments.size() > kMostDashedRays ? 1 : kDashes;
   for (const RaySegment& s : theirs.segments) {
     const bool wrong = s.id == differing;
     const bool before = differing < 0 || s.id < differing;
-    for (int d = 0; d < kDashes; ++d) {
+    for (int d = 0; d < dashes; ++d) {
       RaySegment piece = s;
       piece.id = int(both.segments.size());
       piece.parent = -1;
       piece.firstChild = -1;
       piece.childCount = 0;
-      piece.origin = s.origin + (double(d) / kDashes) * (s.endPoint - s.origin);
-      piece.endPoint = s.origin + (double(d) + 0.55) / kDashes * (s.endPoint - s.origin);
-      piece.hit = s.hit && d == kDashes - 1;
+      piece.origin = s.origin + (double(d) / dashes) * (s.endPoint - s.origin);
+      const double end = dashes == 1 ? 1.0 : (double(d) + 0.55) / dashes;
+      piece.endPoint = s.origin + end * (s.endPoint - s.origin);
+      piece.hit = s.hit && d == dashes - 1;
       piece.kind = s.kind == RayKind::Shadow ? RayKind::Camera : s.kind;  // no blocked tail
       both.segments.push_back(piece);
       verdicts.push_back(int(wrong    ? Verdict::WrongHit
@@ -92,10 +96,15 @@ int runDiff(DiffOptions o, const std::string& topLevelScene) {
     return kExitRuntimeError;
   }
   const Scene scene = o.common.loadWithSets(topLevelScene);
-  if (o.pixel.first < 0) o.pixel = {theirs.pixelX, theirs.pixelY};
+  const bool fromFile = o.pixel.first < 0;
+  if (fromFile) o.pixel = {theirs.pixelX, theirs.pixelY};
   if (const auto error = pixelUsageError(o.pixel.first, o.pixel.second, scene, "--pixel")) {
-    std::cerr << "raylab diff: " << *error << " (" << printable(o.theirs) << ")" << std::endl;
-    return kExitRuntimeError;
+    // A pixel from the file is the file's problem (exit 1); one typed with --pixel, usage (2).
+    if (fromFile)
+      std::cerr << "raylab diff: " << printable(o.theirs) << ": /pixel: " << *error << std::endl;
+    else
+      std::cerr << "raylab diff: " << *error << std::endl;
+    return fromFile ? kExitRuntimeError : kExitUsage;
   }
   RenderSettings settings = o.common.settings(scene);
   if (!o.common.algorithm && !info.algorithm.empty()) {

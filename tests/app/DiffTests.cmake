@@ -75,3 +75,12 @@ raylab_add_cli_test(app.AnimateUnknownColouringIsNamed CODE 2
   STDERR "unknown colouring 'rainbow': use energy, kind or depth"
   NO_FILE ${out}/app_animate_rainbow LABELS app
   COMMAND ${raylab_exe} animate --pixel 10 10 --colour rainbow --out ${out}/app_animate_rainbow)
+# A pixel outside the scene's image: from the file, the file's place (exit 1); typed, usage (2).
+raylab_add_cli_test(app.DiffPixelOfTheFileOutsideTheImage CODE 1
+  STDERR "diff-one-ray\\.json: /pixel: --pixel 2 2 is outside the 2x2 image"
+  LABELS app COMMAND ${raylab_exe} diff ${CMAKE_CURRENT_SOURCE_DIR}/diff-one-ray.json
+                     --scene ${one_sphere} --set /camera/width=2 --set /camera/height=2)
+raylab_add_cli_test(app.DiffTypedPixelOutsideTheImage CODE 2
+  STDERR "^raylab diff: --pixel 9 0 is outside the 5x5 image"
+  LABELS app COMMAND ${raylab_exe} diff ${CMAKE_CURRENT_SOURCE_DIR}/diff-one-ray.json
+                     --scene ${one_sphere} --pixel 9 0)
