@@ -53,9 +53,9 @@ if(RAYLAB_BUILD_PYTHON)
 python3 (<< ${python_major}.${python_next}), ${raylab_runtime_depends}")
 endif()
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "${raylab_runtime_depends}")
-# The window's standard dialogs in Chinese; VTK's Python package for raylab's polydata.
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "qttranslations5-l10n, python3-vtk9")
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "ffmpeg")
+# The window's standard dialogs in Chinese; VTK's Python package for raylab's polydata;
+# ffmpeg for `raylab animate --video`.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "qttranslations5-l10n, python3-vtk9, ffmpeg")
 # Python writes __pycache__ folders into the package's folder when root imports it: remove
 # them before the package's files, so that removing it leaves no folder behind.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_CONTROL_EXTRA ${PROJECT_SOURCE_DIR}/packaging/debian/prerm)

@@ -27,6 +27,7 @@ packages=(
   jupyter-nbconvert python3-ipykernel                 # the example notebook, run headless
   help2man desktop-file-utils appstream               # man page; desktop files' checks
   debootstrap librsvg2-bin                            # package test's fresh root; icon PNGs
+  ffmpeg                                              # animate --video and its test (ffprobe)
 )
 
 missing=()

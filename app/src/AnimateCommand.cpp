@@ -13,6 +13,8 @@
 #include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -95,16 +97,50 @@ std::string shellQuote(const std::string& text) {
   return quoted + "'";
 }
 
+/// The prefix of the new videos made beside `target`: ".STEM.raylab-new-"; the process id
+/// and the extension follow.
+std::string newVideoPrefix(const std::filesystem::path& target) {
+  return "." + target.stem().string() + ".raylab-new-";
+}
+
+/// Removes the new videos beside `target` whose process no longer runs (killed with -9 while
+/// ffmpeg wrote): half a video nobody will finish.
+void removeStaleVideos(const std::filesystem::path& target) {
+  namespace fs = std::filesystem;
+  const std::string prefix = newVideoPrefix(target);
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  for (fs::directory_iterator it(parent, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string entry = it->path().filename().string();
+    std::error_code ignored;
+    if (entry.rfind(prefix, 0) != 0 || it->symlink_status(ignored).type() != fs::file_type::regular)
+      continue;  // not ours (a frames folder beside it has its own cleaning)
+    const long pid = std::strtol(entry.c_str() + prefix.size(), nullptr, 10);
+    if (pid <= 0 || (::kill(pid_t(pid), 0) != 0 && errno == ESRCH)) fs::remove(it->path(), ignored);
+  }
+}
+
+/// How ffmpeg ended, for a message: "exit status N" or "stopped by signal N" (Ctrl-C: 2).
+std::string howItEnded(int status) {
+  if (status == -1) return "could not be started";
+  if (WIFSIGNALED(status)) return "stopped by signal " + std::to_string(WTERMSIG(status));
+  const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  // The shell between says 128 + N for a program stopped by signal N.
+  if (code > 128 && code <= 128 + 64) return "stopped by signal " + std::to_string(code - 128);
+  return "exit status " + std::to_string(code);
+}
+
 /// Encodes dir/frame_*.png to `video` with ffmpeg: into a new file beside it (same
 /// extension: ffmpeg picks the format by it), renamed over `video` only when ffmpeg
-/// succeeds, so a failed encoding leaves an earlier video as it was.
+/// succeeds, so a failed or interrupted encoding leaves an earlier video as it was.
 void encodeVideo(const std::string& ffmpeg, const std::filesystem::path& dir, int fps,
                  const std::string& video, const std::string& framesFolder) {
   namespace fs = std::filesystem;
   const fs::path target(video);
+  removeStaleVideos(target);
   const fs::path temp =
-      target.parent_path() / ("." + target.stem().string() + ".raylab-new-" +
-                              std::to_string(::getpid()) + target.extension().string());
+      target.parent_path() /
+      (newVideoPrefix(target) + std::to_string(::getpid()) + target.extension().string());
   const std::string command =
       shellQuote(ffmpeg) + " -y -loglevel error -framerate " + std::to_string(fps) +
       " -pattern_type glob -i " + shellQuote((dir / "frame_*.png").string()) +
@@ -113,8 +149,7 @@ void encodeVideo(const std::string& ffmpeg, const std::filesystem::path& dir, in
   std::error_code ec;
   if (status != 0 || !fs::exists(temp, ec) || std::rename(temp.c_str(), video.c_str()) != 0) {
     fs::remove(temp, ec);
-    throw AnimateError(video + ": ffmpeg failed (exit status " +
-                       std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) +
+    throw AnimateError(video + ": ffmpeg failed (" + howItEnded(status) +
                        "); the video was not changed; the PNG frames are in " + framesFolder);
   }
 }

@@ -83,3 +83,16 @@ if(RAYLAB_ENABLE_RENDERING_TESTS)
             "d=$0 r=$1 && rm -rf \"$d\" && \"$r\" animate --pixel 5 5 --size 32x24 --frames 0:5 --out \"$d\" > /dev/null && \"$r\" animate --pixel 5 5 --size 32x24 --frames 0:2 --out \"$d\" > /dev/null && set -- \"$d\"/* && echo $#"
             ${out}/app_stranger_frames ${raylab_exe})
 endif()
+# 13, the video: with the real ffmpeg, the video of a run into an earlier run's folder has
+# this run's frames only (ffprobe counts them); a killed ffmpeg, Ctrl-C and kill -9 during
+# the encoding leave the earlier video intact; no ffmpeg on PATH is a clear error. Skipped,
+# saying why, only where ffmpeg is not installed (label "video").
+if(RAYLAB_ENABLE_RENDERING_TESTS)
+  add_test(NAME app.Stranger.AnimateVideoHasThisRunsFramesOnly
+    COMMAND ${RAYLAB_WITH_DISPLAY} ${CMAKE_CURRENT_SOURCE_DIR}/AnimateVideo.sh ${raylab_exe}
+            ${out}/app_stranger_video)
+  set_tests_properties(app.Stranger.AnimateVideoHasThisRunsFramesOnly PROPERTIES
+    LABELS "app;render;video" TIMEOUT 300 SKIP_RETURN_CODE 77
+    SKIP_REGULAR_EXPRESSION "SKIPPED: ffmpeg/ffprobe are not on PATH"
+    PASS_REGULAR_EXPRESSION "no ffmpeg: a clear error, the video and its frames intact")
+endif()
