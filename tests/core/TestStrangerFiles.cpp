@@ -17,9 +17,11 @@
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Sphere.h"
 #include "raylab/core/Text.h"
+#include "raylab/core/TriangleMesh.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -521,6 +523,61 @@ TEST(StrangerFiles, 15_ASetPlaceThatIsNotUtf8IsRefused) {
   EXPECT_THAT(errorOf([&] { edit::setValue(scene, "/render/\x1b[2J", "1", "s.json"); }),
               HasSubstr("/render/\\x1b[2J"));
   EXPECT_EQ(edit::setValue(scene, "/render/max_depth", "3", "s.json").render.maxDepth, 3);
+}
+
+TEST(StrangerFiles, 16_LessonStepsShareTheirMeshesData) {
+  // Each step with scene changes reads its scene again: the mesh came from the mesh cache,
+  // but each step held its own copy of vertices, triangles, BVH and normals (40 steps over
+  // 200,000 triangles: 1.3 GB). Now the steps share them; an edit changes only its mesh.
+  const fs::path dir = testDir();
+  const json step = json::parse(
+      R"({"title": {"en": "T", "zh": "题"}, "text": {"en": "T", "zh": "文"}, "view": "image"})");
+  json grey = step, lighter = step, moved = step;
+  grey["scene_changes"] = {{{"material", "white"}, {"set", {{"colour", {0.5, 0.5, 0.5}}}}}};
+  lighter["scene_changes"] = {{{"material", "white"}, {"set", {{"colour", {0.6, 0.6, 0.6}}}}}};
+  moved["scene_changes"] = {{{"object", "gem"}, {"translate", {0, 1, 0}}}};
+  const fs::path lessonFile = writeLesson(dir, json::array({grey, lighter, moved}));
+  writeFile(dir / "gem.obj",
+            "v 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\n"
+            "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\n"
+            "f 1 4 6\n");
+  json scene = json::parse(kScene);
+  scene["objects"].push_back(json::parse(R"({"name": "gem", "material": "white",
+      "shape": {"type": "mesh", "file": "gem.obj", "normals": "smooth", "crease_angle": 80},
+      "transform": [{"scale": [0.5, 0.5, 0.5]}, {"translate": [2, 0.5, 0]}]})"));
+  writeFile(dir / "scene.json", scene.dump());
+  const Lesson lesson = LessonIO::load(lessonFile);
+  const auto gem = [](const Scene& s) -> const TriangleMesh& {
+    return dynamic_cast<const TriangleMesh&>(*s.objects.at(2).shape);
+  };
+  const TriangleMesh& first = gem(lesson.sceneOfStep(0));
+  const TriangleMesh& second = gem(lesson.sceneOfStep(1));
+  const TriangleMesh& third = gem(lesson.sceneOfStep(2));
+  ASSERT_TRUE(first.hasNormals());
+  EXPECT_NE(&first, &second);                        // two scenes, two objects...
+  EXPECT_EQ(&first.vertices(), &second.vertices());  // ...one mesh's data
+  EXPECT_EQ(&first.triangles(), &second.triangles());
+  EXPECT_EQ(&first.bvh(), &second.bvh());
+  EXPECT_EQ(&first.normals(), &second.normals());
+  EXPECT_EQ(&first.vertices(), &gem(*lesson.scene).vertices());
+  // The moved mesh has data of its own, one unit higher.
+  EXPECT_NE(&third.vertices(), &first.vertices());
+  EXPECT_NEAR(third.bounds().lower.y, first.bounds().lower.y + 1.0, 1e-12);
+
+  // Editing a copy leaves the original and the other step as they were.
+  const std::vector<Point3> before = first.vertices();
+  const std::vector<Normal3> normalsBefore = first.normals();
+  TriangleMesh edited = first;
+  EXPECT_EQ(&edited.vertices(), &first.vertices());
+  edited.apply(glm::translate(Mat4(1.0), Vec3(0, 0, 3)));
+  edited.clearNormals();
+  EXPECT_NE(&edited.vertices(), &first.vertices());
+  EXPECT_EQ(first.vertices(), before);
+  EXPECT_EQ(first.normals(), normalsBefore);
+  EXPECT_TRUE(first.hasNormals());
+  EXPECT_EQ(&first.vertices(), &second.vertices());
+  EXPECT_NEAR(edited.bounds().lower.z - first.bounds().lower.z, 3.0, 1e-12);
+  EXPECT_FALSE(edited.hasNormals());
 }
 
 }  // namespace

@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <mutex>
 #include <sstream>
 #include <utility>
 
@@ -25,26 +28,105 @@ const Vec3 kParityDirections[3] = {
 
 }  // namespace
 
+/// The results of edits of one Geometry or Shading, kept while some mesh holds them: the
+/// same edit of the same data (every step of a lesson moves its mesh by the same matrix)
+/// gives the same shared result instead of a copy each. The key is the edit's numbers,
+/// bit for bit (a matrix; a crease angle), and a tag telling the edits apart. A result
+/// asked to be held (crease normals, an intermediate that the next edit, apply, replaces
+/// at once) lives as long as the data, four of them at most.
+struct TriangleMesh::Memo {
+  using Key = std::array<std::uint64_t, 17>;
+  static constexpr std::size_t kMaxEntries = 16;
+  static constexpr int kMaxHeld = 4;
+
+  struct Entry {
+    Key key;
+    std::weak_ptr<const void> result;
+    std::shared_ptr<const void> held;  ///< Set for a held result.
+  };
+
+  static Key key(const double* numbers, std::size_t count, std::uint64_t tag) {
+    Key k{};
+    std::memcpy(k.data(), numbers, count * sizeof(double));
+    k[16] = tag;
+    return k;
+  }
+
+  /// The result kept for `k`, or `make()`'s, then kept (the oldest dropped past 16).
+  template <class T, class Make>
+  std::shared_ptr<const T> get(const Key& k, bool hold, Make&& make) {
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      for (const Entry& e : entries)
+        if (e.key == k)
+          if (auto kept = e.result.lock()) return std::static_pointer_cast<const T>(kept);
+    }
+    std::shared_ptr<const T> made = make();
+    const std::lock_guard<std::mutex> lock(mutex);
+    entries.erase(std::remove_if(entries.begin(), entries.end(),
+                                 [&](const Entry& e) { return e.key == k || e.result.expired(); }),
+                  entries.end());
+    if (entries.size() >= kMaxEntries) entries.erase(entries.begin());
+    int held = hold ? 1 : 0;
+    for (auto e = entries.rbegin(); e != entries.rend(); ++e)
+      if (e->held && ++held > kMaxHeld) e->held.reset();
+    entries.push_back(Entry{k, made, hold ? made : nullptr});
+    return made;
+  }
+
+  std::mutex mutex;
+  std::vector<Entry> entries;
+};
+
+std::shared_ptr<const TriangleMesh::Geometry> TriangleMesh::makeGeometry(
+    std::vector<Point3> vertices, std::vector<Index3> triangles) {
+  auto g = std::make_shared<Geometry>();
+  g->bvh = std::make_shared<const Bvh>(vertices, triangles);
+  // The running sum of triangle areas: the CDF that area sampling inverts.
+  g->areaCdf.resize(triangles.size());
+  double sum = 0.0;
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
+    const Index3& tri = triangles[i];
+    const Point3& p0 = vertices[tri[0]];
+    sum += 0.5 * glm::length(glm::cross(vertices[tri[1]] - p0, vertices[tri[2]] - p0));
+    g->areaCdf[i] = sum;
+  }
+  g->area = sum;
+  g->vertices = std::move(vertices);
+  g->triangles = std::move(triangles);
+  g->edits = std::make_shared<Memo>();
+  return g;
+}
+
+std::shared_ptr<const TriangleMesh::Shading> TriangleMesh::makeShading(
+    std::vector<Normal3> normals, std::vector<Index3> indices) {
+  auto shading = std::make_shared<Shading>();
+  shading->normals = std::move(normals);
+  shading->indices = std::move(indices);
+  shading->edits = std::make_shared<Memo>();
+  return shading;
+}
+
 TriangleMesh::TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> triangles)
-    : m_vertices(std::move(vertices)), m_triangles(std::move(triangles)) {
+    : m_shading(makeShading({}, {})) {
   // Validate: finite vertices, indices in range.
-  for (std::size_t i = 0; i < m_vertices.size(); ++i) {
-    const Point3& p = m_vertices[i];
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    const Point3& p = vertices[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw InvalidGeometry("triangle mesh: vertex " + std::to_string(i) +
                             " is not finite: " + raylab::toString(p));
   }
-  const long long n = static_cast<long long>(m_vertices.size());
-  for (std::size_t i = 0; i < m_triangles.size(); ++i) {
+  const long long n = static_cast<long long>(vertices.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
-      const int index = m_triangles[i][k];
+      const int index = triangles[i][k];
       if (index < 0 || index >= n)
         throw InvalidGeometry("triangle mesh: triangle " + std::to_string(i) +
                               " has vertex index " + std::to_string(index) + " out of range [0, " +
                               std::to_string(n) + ") (" + std::to_string(n) + " vertices)");
     }
   }
-  rebuild();
+  m_geometry = makeGeometry(std::move(vertices), std::move(triangles));
 }
 
 TriangleMesh::TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> triangles,
@@ -55,9 +137,9 @@ TriangleMesh::TriangleMesh(std::vector<Point3> vertices, std::vector<Index3> tri
 
 void TriangleMesh::setNormals(std::vector<Normal3> normals, std::vector<Index3> normalIndices) {
   // Validate: one index triple per triangle, indices in range, normals finite and not zero.
-  if (normalIndices.size() != m_triangles.size())
+  if (normalIndices.size() != triangleCount())
     throw InvalidGeometry("triangle mesh: " + std::to_string(normalIndices.size()) +
-                          " normal index triples for " + std::to_string(m_triangles.size()) +
+                          " normal index triples for " + std::to_string(triangleCount()) +
                           " triangles (one per triangle is needed)");
   for (std::size_t i = 0; i < normals.size(); ++i) {
     const Normal3& n = normals[i];
@@ -77,46 +159,51 @@ void TriangleMesh::setNormals(std::vector<Normal3> normals, std::vector<Index3> 
                               " has normal index " + std::to_string(index) + " out of range [0, " +
                               std::to_string(count) + ") (" + std::to_string(count) + " normals)");
     }
-  m_normals = std::move(normals);
-  m_normalIndices = std::move(normalIndices);
+  m_shading = makeShading(std::move(normals), std::move(normalIndices));
 }
 
 void TriangleMesh::clearNormals() {
-  m_normals.clear();
-  m_normalIndices.clear();
+  if (hasNormals()) m_shading = makeShading({}, {});
 }
 
 void TriangleMesh::computeCreaseNormals(double creaseAngle) {
   if (!(creaseAngle >= 0.0 && creaseAngle <= kPi))
     throw InvalidGeometry("triangle mesh: crease angle " + std::to_string(creaseAngle) +
                           " rad is outside [0, pi]");
-  const std::size_t triangleCount = m_triangles.size();
+  m_shading = m_geometry->edits->get<Shading>(Memo::key(&creaseAngle, 1, 0), true, [&] {
+    return creaseNormals(m_geometry->vertices, m_geometry->triangles, creaseAngle);
+  });
+}
+
+std::shared_ptr<const TriangleMesh::Shading> TriangleMesh::creaseNormals(
+    const std::vector<Point3>& vertices, const std::vector<Index3>& triangles, double creaseAngle) {
+  const std::size_t triangleCount = triangles.size();
   // Each triangle's unit normal, and its angle at each corner (the averaging weight).
   std::vector<Normal3> faceNormal(triangleCount, Normal3(0.0));
   std::vector<std::array<double, 3>> cornerAngle(triangleCount, {0.0, 0.0, 0.0});
   for (std::size_t t = 0; t < triangleCount; ++t) {
-    const Index3& tri = m_triangles[t];
-    const Vec3 cross = glm::cross(m_vertices[tri[1]] - m_vertices[tri[0]],
-                                  m_vertices[tri[2]] - m_vertices[tri[0]]);
+    const Index3& tri = triangles[t];
+    const Vec3 cross =
+        glm::cross(vertices[tri[1]] - vertices[tri[0]], vertices[tri[2]] - vertices[tri[0]]);
     const double length = glm::length(cross);
     if (length > 0.0 && std::isfinite(length)) faceNormal[t] = cross / length;
     for (int k = 0; k < 3; ++k) {
-      const Vec3 a = m_vertices[tri[(k + 1) % 3]] - m_vertices[tri[k]];
-      const Vec3 b = m_vertices[tri[(k + 2) % 3]] - m_vertices[tri[k]];
+      const Vec3 a = vertices[tri[(k + 1) % 3]] - vertices[tri[k]];
+      const Vec3 b = vertices[tri[(k + 2) % 3]] - vertices[tri[k]];
       const double la = glm::length(a), lb = glm::length(b);
       if (la > 0.0 && lb > 0.0)
         cornerAngle[t][k] = std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0));
     }
   }
   // The corners around each vertex (compressed rows: vertex -> (triangle, corner)).
-  std::vector<std::size_t> start(m_vertices.size() + 1, 0);
-  for (const Index3& tri : m_triangles)
+  std::vector<std::size_t> start(vertices.size() + 1, 0);
+  for (const Index3& tri : triangles)
     for (int k = 0; k < 3; ++k) ++start[std::size_t(tri[k]) + 1];
-  for (std::size_t v = 0; v < m_vertices.size(); ++v) start[v + 1] += start[v];
+  for (std::size_t v = 0; v < vertices.size(); ++v) start[v + 1] += start[v];
   std::vector<std::pair<int, int>> corners(start.back());
   std::vector<std::size_t> fill(start.begin(), start.end() - 1);
   for (std::size_t t = 0; t < triangleCount; ++t)
-    for (int k = 0; k < 3; ++k) corners[fill[std::size_t(m_triangles[t][k])]++] = {int(t), k};
+    for (int k = 0; k < 3; ++k) corners[fill[std::size_t(triangles[t][k])]++] = {int(t), k};
 
   // Per corner: the angle-weighted sum of the neighbours within the crease angle (a small
   // tolerance keeps coplanar neighbours together at 0); equal normals at a vertex are
@@ -124,7 +211,7 @@ void TriangleMesh::computeCreaseNormals(double creaseAngle) {
   const double cosCrease = std::cos(creaseAngle) - 1e-12;
   std::vector<Normal3> normals;
   std::vector<Index3> indices(triangleCount, Index3{0, 0, 0});
-  for (std::size_t v = 0; v < m_vertices.size(); ++v) {
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
     const std::size_t firstNormal = normals.size();
     for (std::size_t c = start[v]; c < start[v + 1]; ++c) {
       const auto [t, k] = corners[c];
@@ -149,101 +236,75 @@ void TriangleMesh::computeCreaseNormals(double creaseAngle) {
       indices[std::size_t(t)][std::size_t(k)] = index;
     }
   }
-  m_normals = std::move(normals);
-  m_normalIndices = std::move(indices);
+  return makeShading(std::move(normals), std::move(indices));
 }
 
 Normal3 TriangleMesh::shadingNormal(int triangle, double b1, double b2) const {
-  const Index3& tri = m_triangles[static_cast<std::size_t>(triangle)];
-  const Point3& p0 = m_vertices[tri[0]];
-  const Normal3 ng = glm::normalize(glm::cross(m_vertices[tri[1]] - p0, m_vertices[tri[2]] - p0));
-  if (m_normalIndices.empty()) return ng;
+  const std::vector<Point3>& vertices = m_geometry->vertices;
+  const Index3& tri = m_geometry->triangles[static_cast<std::size_t>(triangle)];
+  const Point3& p0 = vertices[tri[0]];
+  const Normal3 ng = glm::normalize(glm::cross(vertices[tri[1]] - p0, vertices[tri[2]] - p0));
+  if (!hasNormals()) return ng;
   // Interpolate the corner normals with the barycentrics, normalise, and turn the result
   // to the geometric normal's side.
-  const Index3& ni = m_normalIndices[static_cast<std::size_t>(triangle)];
-  const Vec3 sum = (1.0 - b1 - b2) * m_normals[std::size_t(ni[0])] +
-                   b1 * m_normals[std::size_t(ni[1])] + b2 * m_normals[std::size_t(ni[2])];
+  const Index3& ni = m_shading->indices[static_cast<std::size_t>(triangle)];
+  const std::vector<Normal3>& normals = m_shading->normals;
+  const Vec3 sum = (1.0 - b1 - b2) * normals[std::size_t(ni[0])] +
+                   b1 * normals[std::size_t(ni[1])] + b2 * normals[std::size_t(ni[2])];
   const double length = glm::length(sum);
   if (!(length > 0.0) || !std::isfinite(length)) return ng;
   const Normal3 ns = sum / length;
   return glm::dot(ns, ng) < 0.0 ? -ns : ns;
 }
 
-TriangleMesh::TriangleMesh(const TriangleMesh& other)
-    : m_vertices(other.m_vertices),
-      m_triangles(other.m_triangles),
-      m_normals(other.m_normals),
-      m_normalIndices(other.m_normalIndices),
-      m_bvh(std::make_unique<Bvh>(*other.m_bvh)),
-      m_areaCdf(other.m_areaCdf),
-      m_area(other.m_area) {}
-
-TriangleMesh& TriangleMesh::operator=(const TriangleMesh& other) {
-  if (this != &other) {
-    m_vertices = other.m_vertices;
-    m_triangles = other.m_triangles;
-    m_normals = other.m_normals;
-    m_normalIndices = other.m_normalIndices;
-    m_bvh = std::make_unique<Bvh>(*other.m_bvh);
-    m_areaCdf = other.m_areaCdf;
-    m_area = other.m_area;
-  }
-  return *this;
+// Copies share the data; a moved-from mesh keeps it too (its data is never changed).
+TriangleMesh::TriangleMesh(const TriangleMesh& other) = default;
+TriangleMesh& TriangleMesh::operator=(const TriangleMesh& other) = default;
+TriangleMesh::TriangleMesh(TriangleMesh&& other) noexcept : TriangleMesh(std::as_const(other)) {}
+TriangleMesh& TriangleMesh::operator=(TriangleMesh&& other) noexcept {
+  return *this = std::as_const(other);
 }
-
-TriangleMesh::TriangleMesh(TriangleMesh&&) noexcept = default;
-TriangleMesh& TriangleMesh::operator=(TriangleMesh&&) noexcept = default;
 TriangleMesh::~TriangleMesh() = default;
 
-void TriangleMesh::rebuild() {
-  m_bvh = std::make_unique<Bvh>(m_vertices, m_triangles);
-  // The running sum of triangle areas: the CDF that area sampling inverts.
-  m_areaCdf.resize(m_triangles.size());
-  double sum = 0.0;
-  for (std::size_t i = 0; i < m_triangles.size(); ++i) {
-    const Index3& tri = m_triangles[i];
-    const Point3& p0 = m_vertices[tri[0]];
-    sum += 0.5 * glm::length(glm::cross(m_vertices[tri[1]] - p0, m_vertices[tri[2]] - p0));
-    m_areaCdf[i] = sum;
-  }
-  m_area = sum;
-}
-
-double TriangleMesh::area() const { return m_area; }
+double TriangleMesh::area() const { return m_geometry->area; }
 
 ShapeSample TriangleMesh::sampleArea(const Vec2& u) const {
-  if (!(m_area > 0.0))
+  const double area = m_geometry->area;
+  const std::vector<double>& cdf = m_geometry->areaCdf;
+  if (!(area > 0.0))
     throw InvalidGeometry("triangle mesh has no area to sample (" + toString() + ")");
   // Pick triangle i with probability area_i / area: the first running sum above
   // u.x * area (zero-area triangles are never picked).
-  const double target = u.x * m_area;
-  auto it = std::upper_bound(m_areaCdf.begin(), m_areaCdf.end(), target);
-  if (it == m_areaCdf.end()) it = std::lower_bound(m_areaCdf.begin(), m_areaCdf.end(), m_area);
-  const std::size_t i = static_cast<std::size_t>(it - m_areaCdf.begin());
-  const double before = i == 0 ? 0.0 : m_areaCdf[i - 1];
+  const double target = u.x * area;
+  auto it = std::upper_bound(cdf.begin(), cdf.end(), target);
+  if (it == cdf.end()) it = std::lower_bound(cdf.begin(), cdf.end(), area);
+  const std::size_t i = static_cast<std::size_t>(it - cdf.begin());
+  const double before = i == 0 ? 0.0 : cdf[i - 1];
   // Reuse u.x, rescaled to [0, 1) within the chosen triangle's interval.
-  const double reused = std::clamp((target - before) / (m_areaCdf[i] - before), 0.0, 1.0);
+  const double reused = std::clamp((target - before) / (cdf[i] - before), 0.0, 1.0);
   const Vec2 b = sampleUniformTriangle({reused, u.y});
-  const Index3& tri = m_triangles[i];
-  const Point3& p0 = m_vertices[tri[0]];
-  const Point3& p1 = m_vertices[tri[1]];
-  const Point3& p2 = m_vertices[tri[2]];
+  const Index3& tri = triangles()[i];
+  const Point3& p0 = vertices()[tri[0]];
+  const Point3& p1 = vertices()[tri[1]];
+  const Point3& p2 = vertices()[tri[2]];
   ShapeSample s;
   s.p = (1.0 - b.x - b.y) * p0 + b.x * p1 + b.y * p2;
   s.n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
-  s.pdfArea = 1.0 / m_area;
+  s.pdfArea = 1.0 / area;
   return s;
 }
 
-double TriangleMesh::pdfArea(const Point3&) const { return m_area > 0.0 ? 1.0 / m_area : 0.0; }
+double TriangleMesh::pdfArea(const Point3&) const {
+  return m_geometry->area > 0.0 ? 1.0 / m_geometry->area : 0.0;
+}
 
-std::optional<Hit> TriangleMesh::intersect(const Ray& ray) const { return m_bvh->intersect(ray); }
+std::optional<Hit> TriangleMesh::intersect(const Ray& ray) const { return bvh().intersect(ray); }
 
 SurfaceInteraction TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const {
-  const Index3& tri = m_triangles[static_cast<std::size_t>(hit.primitive)];
-  const Point3& p0 = m_vertices[tri[0]];
-  const Point3& p1 = m_vertices[tri[1]];
-  const Point3& p2 = m_vertices[tri[2]];
+  const Index3& tri = triangles()[static_cast<std::size_t>(hit.primitive)];
+  const Point3& p0 = vertices()[tri[0]];
+  const Point3& p1 = vertices()[tri[1]];
+  const Point3& p2 = vertices()[tri[2]];
   SurfaceInteraction si;
   si.t = hit.t;
   // The barycentric point lies on the triangle up to rounding, unlike ray.at(t).
@@ -253,7 +314,7 @@ SurfaceInteraction TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const
   si.pError = kRoundingGamma<7> * (absolute(b0 * p0) + absolute(b1 * p1) + absolute(b2 * p2));
   si.n = glm::normalize(glm::cross(p1 - p0, p2 - p0));
   si.frontFace = glm::dot(ray.direction, si.n) < 0.0;
-  if (!m_normalIndices.empty()) {
+  if (!!hasNormals()) {
     // Smooth shading: the interpolated normal, unless the ray arrives between the two
     // surfaces (on the back of the shading surface, in front of the geometric one, or the
     // other way round): such a hit shades flat.
@@ -266,34 +327,34 @@ SurfaceInteraction TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const
 }
 
 std::vector<Crossing> TriangleMesh::intersectAll(const Ray& ray) const {
-  const std::vector<Hit> hits = m_bvh->intersectAll(ray);
+  const std::vector<Hit> hits = bvh().intersectAll(ray);
   std::vector<Crossing> crossings;
   crossings.reserve(hits.size());
   for (const Hit& h : hits) {
-    const Index3& tri = m_triangles[static_cast<std::size_t>(h.primitive)];
-    const Point3& p0 = m_vertices[tri[0]];
+    const Index3& tri = triangles()[static_cast<std::size_t>(h.primitive)];
+    const Point3& p0 = vertices()[tri[0]];
     // Entering when the ray meets the front (outer) side: dot(direction, normal) < 0.
-    const Vec3 n = glm::cross(m_vertices[tri[1]] - p0, m_vertices[tri[2]] - p0);
+    const Vec3 n = glm::cross(vertices()[tri[1]] - p0, vertices()[tri[2]] - p0);
     crossings.push_back(Crossing{h.t, glm::dot(ray.direction, n) < 0.0, h.primitive});
   }
   return crossings;
 }
 
 Normal3 TriangleMesh::normal(const Point3& p) const {
-  const int id = m_bvh->closestTriangle(p);
+  const int id = bvh().closestTriangle(p);
   if (id < 0) return Normal3(0.0);
-  const Index3& tri = m_triangles[static_cast<std::size_t>(id)];
-  const Point3& p0 = m_vertices[tri[0]];
-  return glm::normalize(glm::cross(m_vertices[tri[1]] - p0, m_vertices[tri[2]] - p0));
+  const Index3& tri = triangles()[static_cast<std::size_t>(id)];
+  const Point3& p0 = vertices()[tri[0]];
+  return glm::normalize(glm::cross(vertices()[tri[1]] - p0, vertices()[tri[2]] - p0));
 }
 
 bool TriangleMesh::inside(const Point3& p) const {
-  if (!m_bvh->bounds().contains(p)) return false;
+  if (!bvh().bounds().contains(p)) return false;
   // Count crossings of a ray from p (parity: odd = inside a closed mesh). A ray through
   // an edge or a vertex would count its triangles twice; retry with another direction.
   int parity = 0;
   for (const Vec3& d : kParityDirections) {
-    const std::vector<Hit> hits = m_bvh->intersectAll(Ray{p, d, 0.0, kInfinity, 0.0});
+    const std::vector<Hit> hits = bvh().intersectAll(Ray{p, d, 0.0, kInfinity, 0.0});
     bool touchesEdge = false;
     for (const Hit& h : hits) {
       const double b0 = 1.0 - h.uv.x - h.uv.y;
@@ -310,26 +371,38 @@ void TriangleMesh::apply(const Mat4& m) {
   if (!isAffine(m) || det == 0.0 || !std::isfinite(det))
     throw InvalidGeometry("triangle mesh: apply() needs an invertible affine matrix");
   // Transform the vertices; a mirroring map (det < 0) would turn the triangles
-  // clockwise seen from outside, so swap two indices to keep normals outward.
+  // clockwise seen from outside, so swap two indices to keep normals outward. The same
+  // matrix on the same data gives the result made before, while a mesh holds it.
   const Transform t(m);
-  for (Point3& p : m_vertices) p = t.transformPoint(p);
-  // Normals go through the inverse transpose (they stay outward, mirrored or not).
-  for (Normal3& n : m_normals) n = glm::normalize(t.transformNormal(n));
-  if (det < 0.0) {
-    for (Index3& tri : m_triangles) std::swap(tri[1], tri[2]);
-    for (Index3& tri : m_normalIndices) std::swap(tri[1], tri[2]);
-  }
-  rebuild();
+  const Memo::Key key = Memo::key(&m[0][0], 16, 1);
+  m_geometry = m_geometry->edits->get<Geometry>(key, false, [&] {
+    std::vector<Point3> vertices = m_geometry->vertices;
+    std::vector<Index3> triangles = m_geometry->triangles;
+    for (Point3& p : vertices) p = t.transformPoint(p);
+    if (det < 0.0)
+      for (Index3& tri : triangles) std::swap(tri[1], tri[2]);
+    return makeGeometry(std::move(vertices), std::move(triangles));
+  });
+  if (!hasNormals()) return;
+  m_shading = m_shading->edits->get<Shading>(key, false, [&] {
+    // Normals go through the inverse transpose (they stay outward, mirrored or not).
+    std::vector<Normal3> normals = m_shading->normals;
+    std::vector<Index3> indices = m_shading->indices;
+    for (Normal3& n : normals) n = glm::normalize(t.transformNormal(n));
+    if (det < 0.0)
+      for (Index3& tri : indices) std::swap(tri[1], tri[2]);
+    return makeShading(std::move(normals), std::move(indices));
+  });
 }
 
-Bounds3 TriangleMesh::bounds() const { return m_bvh->bounds(); }
+Bounds3 TriangleMesh::bounds() const { return bvh().bounds(); }
 
 std::unique_ptr<Shape> TriangleMesh::clone() const { return std::make_unique<TriangleMesh>(*this); }
 
 std::string TriangleMesh::toString() const {
   std::ostringstream out;
-  out << "TriangleMesh[vertices=" << m_vertices.size() << ", triangles=" << m_triangles.size()
-      << (hasNormals() ? ", normals=" + std::to_string(m_normals.size()) : std::string())
+  out << "TriangleMesh[vertices=" << vertices().size() << ", triangles=" << triangles().size()
+      << (hasNormals() ? ", normals=" + std::to_string(normals().size()) : std::string())
       << ", bounds=" << bounds().toString() << "]";
   return out.str();
 }

@@ -26,6 +26,13 @@ class Bvh;
  * the geometric normal's side; n stays the triangle's own normal, so hits, inside/outside,
  * ray offsets and the exact oracle do not change. Where the ray arrives between the two
  * surfaces (its direction on different sides of n and ns), the hit shades flat (ns = 0).
+ *
+ * Copies share the immutable data (vertices, triangles, BVH, corner normals): a lesson's
+ * steps each hold a copy of a scene, and with a 200,000-triangle mesh each copy held its
+ * own 30 MB (issue 38). An edit (apply, setNormals, computeCreaseNormals, clearNormals) gives
+ * the edited mesh new data and leaves its copies as they were. The same edit of the same
+ * data gives the same shared result (a mesh moved by the same matrix, or smoothed with the
+ * same crease angle, in every step of a lesson is stored once).
  */
 class TriangleMesh final : public Shape {
  public:
@@ -61,10 +68,10 @@ class TriangleMesh final : public Shape {
   ShapeSample sampleArea(const Vec2& u) const override;
   double pdfArea(const Point3& p) const override;
 
-  const std::vector<Point3>& vertices() const { return m_vertices; }
-  const std::vector<Index3>& triangles() const { return m_triangles; }
-  std::size_t triangleCount() const { return m_triangles.size(); }
-  const Bvh& bvh() const { return *m_bvh; }
+  const std::vector<Point3>& vertices() const { return m_geometry->vertices; }
+  const std::vector<Index3>& triangles() const { return m_geometry->triangles; }
+  std::size_t triangleCount() const { return m_geometry->triangles.size(); }
+  const Bvh& bvh() const { return *m_geometry->bvh; }
 
   /// Sets the corner normals (see the constructor). Throws InvalidGeometry naming the
   /// triangle or normal when there is not one index triple per triangle, an index is out
@@ -82,11 +89,11 @@ class TriangleMesh final : public Shape {
   /// Drops the corner normals: every triangle shades flat.
   void clearNormals();
   /// True when the mesh has corner normals (smooth shading).
-  bool hasNormals() const { return !m_normalIndices.empty(); }
+  bool hasNormals() const { return !m_shading->indices.empty(); }
   /// The unit corner normals, world space (empty for a flat mesh).
-  const std::vector<Normal3>& normals() const { return m_normals; }
+  const std::vector<Normal3>& normals() const { return m_shading->normals; }
   /// Per triangle, the indices of its three corners' normals in normals().
-  const std::vector<Index3>& normalIndices() const { return m_normalIndices; }
+  const std::vector<Index3>& normalIndices() const { return m_shading->indices; }
   /// The shading normal of triangle `triangle` at barycentrics (b1, b2) (point b0 p0 +
   /// b1 p1 + b2 p2, b0 = 1 - b1 - b2): b0 n0 + b1 n1 + b2 n2 normalised, turned to the
   /// triangle's geometric normal's side; the geometric normal for a flat mesh, or when
@@ -94,15 +101,31 @@ class TriangleMesh final : public Shape {
   Normal3 shadingNormal(int triangle, double b1, double b2) const;
 
  private:
-  void rebuild();
-
-  std::vector<Point3> m_vertices;
-  std::vector<Index3> m_triangles;
-  std::vector<Normal3> m_normals;       ///< Unit corner normals (smooth shading), world.
-  std::vector<Index3> m_normalIndices;  ///< Per triangle, its corners' normals; empty: flat.
-  std::unique_ptr<Bvh> m_bvh;
-  std::vector<double> m_areaCdf;  ///< Running sum of triangle areas (unnormalised).
-  double m_area = 0.0;            ///< Total area, world units^2.
+  struct Memo;
+  struct Geometry {
+    std::vector<Point3> vertices;
+    std::vector<Index3> triangles;
+    std::shared_ptr<const Bvh> bvh;
+    std::vector<double> areaCdf;  ///< Running sum of triangle areas (unnormalised).
+    double area = 0.0;            ///< Total area, world units^2.
+    std::shared_ptr<Memo> edits;  ///< The results of apply and computeCreaseNormals.
+  };
+  struct Shading {
+    std::vector<Normal3> normals;  ///< Unit corner normals (smooth shading), world.
+    std::vector<Index3> indices;   ///< Per triangle, its corners' normals; empty: flat.
+    std::shared_ptr<Memo> edits;   ///< The results of apply.
+  };
+  static std::shared_ptr<const Geometry> makeGeometry(std::vector<Point3> vertices,
+                                                      std::vector<Index3> triangles);
+  static std::shared_ptr<const Shading> makeShading(std::vector<Normal3> normals,
+                                                    std::vector<Index3> indices);
+  static std::shared_ptr<const Shading> creaseNormals(const std::vector<Point3>& vertices,
+                                                      const std::vector<Index3>& triangles,
+                                                      double creaseAngle);
+  /// Vertices and triangles with what follows from them; shared by copies, never changed.
+  std::shared_ptr<const Geometry> m_geometry;
+  /// The corner normals (smooth shading); shared by copies, never changed.
+  std::shared_ptr<const Shading> m_shading;
 };
 
 }  // namespace raylab
