@@ -307,12 +307,17 @@ ojson writeBox(const SceneObject& object, const std::string&, ojson&) {
   return box.add("matrix", toJson(b.worldFromBox().matrix())).take();
 }
 
+ojson boxExample(const Point3& p, double size, const Vec3&, const Vec3&) {
+  return {{"type", "box"}, {"centre", toJson(p)}, {"size", toJson(Vec3(size))}};
+}
+
 }  // namespace
 
 namespace detail {
 const ShapeFormat& boxFormat() {
   static const ShapeFormat format{
-      ShapeKind::Box, "box", {"type", "centre", "size", "axes", "matrix"}, readBox, writeBox};
+      ShapeKind::Box, "box",    {"type", "centre", "size", "axes", "matrix"},
+      readBox,        writeBox, boxExample};
   return format;
 }
 }  // namespace detail

@@ -133,12 +133,16 @@ ojson writePlane(const SceneObject& object, const std::string&, ojson&) {
       .take();
 }
 
+ojson planeExample(const Point3& p, double, const Vec3&, const Vec3&) {
+  return {{"type", "plane"}, {"point", toJson(p)}, {"normal", toJson(Vec3(0, 1, 0))}};
+}
+
 }  // namespace
 
 namespace detail {
 const ShapeFormat& planeFormat() {
-  static const ShapeFormat format{
-      ShapeKind::Plane, "plane", {"type", "point", "normal"}, readPlane, writePlane};
+  static const ShapeFormat format{ShapeKind::Plane, "plane",    {"type", "point", "normal"},
+                                  readPlane,        writePlane, planeExample};
   return format;
 }
 }  // namespace detail

@@ -127,12 +127,20 @@ ojson writeQuad(const SceneObject& object, const std::string&, ojson&) {
       .take();
 }
 
+/// Edges along the camera's right and up: the normal u x v faces the camera.
+ojson quadExample(const Point3& p, double size, const Vec3& right, const Vec3& up) {
+  return {{"type", "quad"},
+          {"corner", toJson(p - 0.5 * size * (right + up))},
+          {"u", toJson(size * right)},
+          {"v", toJson(size * up)}};
+}
+
 }  // namespace
 
 namespace detail {
 const ShapeFormat& quadFormat() {
-  static const ShapeFormat format{
-      ShapeKind::Quad, "quad", {"type", "corner", "u", "v"}, readQuad, writeQuad};
+  static const ShapeFormat format{ShapeKind::Quad, "quad",    {"type", "corner", "u", "v"},
+                                  readQuad,        writeQuad, quadExample};
   return format;
 }
 }  // namespace detail

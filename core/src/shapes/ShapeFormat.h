@@ -37,6 +37,11 @@ struct ShapeFormat {
   /// transform its keys cannot hold goes to `transform` (left untouched otherwise).
   nlohmann::ordered_json (*write)(const SceneObject& object, const std::string& sceneDir,
                                   nlohmann::ordered_json& transform);
+  /// The JSON object of a new one added from the window or Python (edit::addShape): about
+  /// `size` across at `p`, facing the camera, whose right and up are `right` and `up`;
+  /// nullptr for a shape made otherwise (a mesh, from its file).
+  nlohmann::ordered_json (*example)(const Point3& p, double size, const Vec3& right,
+                                    const Vec3& up);
 };
 
 /// Every built-in shape's format, in the order of ShapeKind.

@@ -285,12 +285,17 @@ ojson writeSphere(const SceneObject& object, const std::string&, ojson& transfor
       .take();
 }
 
+ojson sphereExample(const Point3& p, double size, const Vec3&, const Vec3&) {
+  return {{"type", "sphere"}, {"centre", toJson(p)}, {"radius", 0.5 * size}};
+}
+
 }  // namespace
 
 namespace detail {
 const ShapeFormat& sphereFormat() {
   static const ShapeFormat format{
-      ShapeKind::Sphere, "sphere", {"type", "centre", "radius", "m", "n"}, readSphere, writeSphere};
+      ShapeKind::Sphere, "sphere",    {"type", "centre", "radius", "m", "n"},
+      readSphere,        writeSphere, sphereExample};
   return format;
 }
 }  // namespace detail

@@ -126,12 +126,19 @@ ojson writeTriangle(const SceneObject& object, const std::string&, ojson&) {
       .take();
 }
 
+ojson triangleExample(const Point3& p, double size, const Vec3& right, const Vec3& up) {
+  return {{"type", "triangle"},
+          {"vertices", ojson::array({toJson(p + size * (-0.5 * right - 0.4 * up)),
+                                     toJson(p + size * (0.5 * right - 0.4 * up)),
+                                     toJson(p + size * 0.6 * up)})}};
+}
+
 }  // namespace
 
 namespace detail {
 const ShapeFormat& triangleFormat() {
-  static const ShapeFormat format{
-      ShapeKind::Triangle, "triangle", {"type", "vertices"}, readTriangle, writeTriangle};
+  static const ShapeFormat format{ShapeKind::Triangle, "triangle",    {"type", "vertices"},
+                                  readTriangle,        writeTriangle, triangleExample};
   return format;
 }
 }  // namespace detail

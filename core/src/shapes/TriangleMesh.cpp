@@ -439,7 +439,8 @@ const ShapeFormat& meshFormat() {
                                   "mesh",
                                   {"type", "file", "normals", "crease_angle"},
                                   readMesh,
-                                  writeMesh};
+                                  writeMesh,
+                                  nullptr};
   return format;
 }
 }  // namespace detail
