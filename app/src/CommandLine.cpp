@@ -93,10 +93,9 @@ int runCommandLine(int argc, char** argv) {
   cli.add_option("--select", select, "Select this object (by name) when the window opens");
   std::string windowAlgorithm;
   cli.add_option("--algorithm", windowAlgorithm,
-                 "Algorithm of the ray-tree panel: raycast, whitted, distributed or path")
+                 "Algorithm of the ray-tree panel: " + algorithmWordList())
       ->check([](const std::string& name) {
-        return parseAlgorithm(name) ? std::string()
-                                    : "must be raycast, whitted, distributed or path";
+        return parseAlgorithm(name) ? std::string() : "must be " + algorithmWordList();
       });
   std::vector<int> tracePixel;
   CLI::Option* traceOption =

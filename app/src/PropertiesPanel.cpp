@@ -4,9 +4,11 @@
 
 #include "EditPanel.h"
 #include "SceneDocument.h"
+#include "UiWords.h"
 
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Exception.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/SceneEdit.h"
 
 #include <nlohmann/json.hpp>
@@ -137,8 +139,20 @@ QString label(const std::string& key) {
   return QCoreApplication::translate("SceneKeys", text.toUtf8().constData());
 }
 
-/// A value of a list ("raycast"), in the window's language.
-QString valueLabel(const char* value) { return QCoreApplication::translate("SceneValues", value); }
+/// A value of a list ("raycast"), in the window's language. An algorithm's and a shape's
+/// words come from the phrase table (`algorithm.<word>`, `shape.<word>`; an algorithm in
+/// English is its word as the file writes it), the other values from Qt's translation
+/// (SceneWords.h).
+QString valueLabel(const char* value) {
+  const Language language = uiLanguage();
+  if (parseAlgorithm(value))
+    return language == Language::English
+               ? QString::fromLatin1(value)
+               : QString::fromStdString(phrase("algorithm." + std::string(value), language));
+  const std::string shapeKey = "shape." + std::string(value);
+  if (hasPhrase(shapeKey)) return QString::fromStdString(phrase(shapeKey, language));
+  return QCoreApplication::translate("SceneValues", value);
+}
 
 bool isNumberTriple(const json& v) {
   return v.is_array() && v.size() == 3 && v[0].is_number() && v[1].is_number() && v[2].is_number();

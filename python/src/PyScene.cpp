@@ -258,19 +258,12 @@ traces work on the scene as it was when they started.)");
       .def(
           "add_shape",
           [](SceneHandle& h, const std::string& kind) {
-            static const std::vector<std::pair<std::string, edit::NewShape>> kinds = {
-                {"sphere", edit::NewShape::Sphere},
-                {"box", edit::NewShape::Box},
-                {"plane", edit::NewShape::Plane},
-                {"quad", edit::NewShape::Quad},
-                {"triangle", edit::NewShape::Triangle}};
-            for (const auto& [word, shape] : kinds)
-              if (word == kind) {
-                apply(h, [&](const Scene& s) { return edit::addShape(s, shape, h.origin); });
-                return h.scene->objects.back().name;
-              }
-            throw py::value_error("unknown shape '" + kind +
-                                  "': use sphere, box, plane, quad or triangle");
+            const std::optional<edit::NewShape> shape = edit::newShapeKind(kind);
+            if (!shape)
+              throw py::value_error("unknown shape '" + kind + "': use " +
+                                    edit::newShapeWordList());
+            apply(h, [&](const Scene& s) { return edit::addShape(s, *shape, h.origin); });
+            return h.scene->objects.back().name;
           },
           py::arg("kind"),
           "Adds a sphere, box, plane, quad or triangle where the camera looks; returns its name.")
