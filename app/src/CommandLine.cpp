@@ -3,6 +3,7 @@
 #include "AnimateCommand.h"
 #include "CheckCommand.h"
 #include "CompareCommand.h"
+#include "DiffCommand.h"
 #include "ExitCodes.h"
 #include "InstalledData.h"
 #include "LessonCommand.h"
@@ -246,7 +247,7 @@ int runCommandLine(int argc, char** argv) {
   const std::vector<Subcommand> subcommands = {
       addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
       addCompareCommand(cli),  addPlotCommand(cli),   addAnimateCommand(cli),
-      addLessonCommand(cli),   addCheckCommand(cli),
+      addLessonCommand(cli),   addCheckCommand(cli),  addDiffCommand(cli),
   };
   if (const std::optional<int> exitCode = parse(cli, argc, argv)) return *exitCode;
 

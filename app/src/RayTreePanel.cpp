@@ -6,6 +6,7 @@
 #include "UiWords.h"
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
@@ -49,7 +50,7 @@ PixelTrace asOneTrace(const GridTrace& grid, Algorithm algorithm) {
   one.algorithm = algorithm;
   one.tree = grid.combined;
   for (const PixelTrace& t : grid.traces) {
-    one.stepTexts.insert(one.stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
+    one.steps.insert(one.steps.end(), t.steps.begin(), t.steps.end());
     one.counts += t.counts;
   }
   return one;
@@ -295,8 +296,8 @@ void RayTreePanel::markCrossings() {
   const std::vector<SceneCrossing> crossings =
       sceneCrossings(m_document.scene(), ray.origin, ray.direction, ray.time);
   m_view.setCrossings(crossings, ray.origin, ray.direction);
-  m_crossingsText = QString::fromStdString(
-      raylab::crossingsText(m_document.scene(), crossings, currentLanguage() == kChinese));
+  m_crossingsText =
+      QString::fromStdString(raylab::crossingsText(m_document.scene(), crossings, uiLanguage()));
   m_crossingsLabel->setText(m_crossingsText.trimmed());
   m_crossingsLabel->show();
 }
@@ -413,11 +414,6 @@ void RayTreePanel::setRootRay(std::optional<Ray> ray) { m_root = std::move(ray);
 const RayTree& RayTreePanel::tree() const {
   static const RayTree kNone;
   return m_trace ? m_trace->tree : kNone;
-}
-
-const std::vector<std::string>& RayTreePanel::stepTexts() const {
-  static const std::vector<std::string> kNone;
-  return m_trace ? m_trace->stepTexts : kNone;
 }
 
 void RayTreePanel::trace() {
@@ -705,8 +701,8 @@ void RayTreePanel::showFrame() {
 
   // The picture and the status line: functions of the frame number only.
   m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), m_frame));
-  setStatus(stepCaption(*m_trace, animation(), m_frame, objectNamesOf(m_document.scene()),
-                        pointLightNamesOf(m_document.scene())));
+  setStatus(QString::fromStdString(vis::stepCaption(*m_trace, animation(), m_frame,
+                                                    shownNames(m_document.scene()), uiLanguage())));
   emit viewChanged();
 }
 

@@ -5,11 +5,13 @@
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Limits.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/RayWords.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
@@ -205,7 +207,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     const std::vector<SceneCrossing> all =
         sceneCrossings(scene, ray.origin, ray.direction, ray.time);
     view->setCrossings(all, ray.origin, ray.direction);
-    crossings = crossingsText(scene, all);
+    crossings = crossingsText(scene, all, Language::English);
   }
   const SrgbImage picture = view->renderOffscreen(width, height);
 
@@ -226,13 +228,14 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   else
     std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample;
   std::cout << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
-            << printable(trace.summary()) << std::endl;
+            << printable(traceSummary(trace, Language::English)) << std::endl;
   // Object, material and light names come from the file: printed with their control
   // characters escaped (issue 38).
   if (options.allHits)
     std::cout << "every surface the camera ray crosses:\n" << printable(crossings);
   if (options.inspect >= 0)
-    std::cout << printable(RayInspector::inspect(scene, tree, options.inspect).toString());
+    std::cout << printable(
+        inspectorText(RayInspector::inspect(scene, tree, options.inspect), Language::English));
   if (tree.truncated) std::cerr << "raylab: warning: " << printable(tree.message) << std::endl;
   return kExitOk;
 }
@@ -263,7 +266,7 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
       ->check(CLI::Validator(checkSize, "WxH"))
       ->each([this](const std::string& text) { imageSize = parseSize(text); });
   command->add_option("--colour,--color", colour, "Ray colours: energy, kind or depth")
-      ->check(CLI::IsMember({"energy", "kind", "depth"}))
+      ->check(CLI::Validator(colourUsageError, "energy|kind|depth"))
       ->capture_default_str();
   command
       ->add_option("--kinds", kinds,
@@ -367,6 +370,18 @@ vis::RayTreeStyle RayTreeOptions::style() const {
 
 std::pair<int, int> RayTreeOptions::pictureSize() const {
   return common.size.value_or(m_defaultSize);
+}
+
+std::string colourUsageError(const std::string& name) {
+  // A plain trace has no verdicts: every ray would be grey. The verdict colouring belongs to
+  // a tree traced with a student's code, which `raylab check` and Python draw.
+  if (name == "verdict")
+    return "the verdict colouring needs a student's code judged ray by ray, which a plain "
+           "trace has not: run `raylab check EXERCISE FILE.py --out DIR` (DIR/tree.png, your tree "
+           "by verdict) or Python's raylab.student.trace(...) and raylab.student.save_view(...); "
+           "here use energy, kind or depth";
+  if (name == "energy" || name == "kind" || name == "depth") return {};
+  return "unknown colouring '" + name + "': use energy, kind or depth";
 }
 
 std::optional<std::string> pixelUsageError(int x, int y, const Scene& scene,
