@@ -369,6 +369,27 @@ chooses the random numbers. The GIL is released.)");
 }
 
 /// raylab.Stepper: the engine advanced one ray at a time.
+/// Stepper.tree(): the tree so far as a Trace, a snapshot later steps do not change.
+std::shared_ptr<TraceData> treeSoFar(const StepperHandle& h) {
+  auto data = std::make_shared<TraceData>();
+  data->scene = h.scene;
+  data->settings = h.tracer->settings();
+  PixelTrace& t = data->trace;
+  t.algorithm = data->settings.algorithm;
+  t.tree = h.stepper->tree();
+  t.x = t.tree.pixelX;
+  t.y = t.tree.pixelY;
+  t.sample = t.tree.sample;
+  // The steps taken; a ray still queued is told from the tree (it waits).
+  t.steps = h.steps;
+  t.steps.resize(t.tree.segments.size());
+  for (const RaySegment& s : t.tree.segments)
+    if (t.steps[std::size_t(s.id)].ray != s.id) t.steps[std::size_t(s.id)] = stepEventOf(s);
+  t.counts = h.stepper->counts();
+  t.estimate = h.stepper->estimate();
+  return data;
+}
+
 void bindStepper(py::module_& m) {
   py::class_<StepperHandle>(m, "Stepper", R"(The engine of the four algorithms for one pixel
 sample, advanced one ray at a time: the real algorithm, not a replay (core's Stepper).)")
@@ -422,29 +443,8 @@ sample, advanced one ray at a time: the real algorithm, not a replay (core's Ste
                              [](const StepperHandle& h) { return h.stepper->estimate(); })
       .def_property_readonly("rays_by_kind",
                              [](const StepperHandle& h) { return countsDict(h.stepper->counts()); })
-      .def(
-          "tree",
-          [](const StepperHandle& h) {
-            auto data = std::make_shared<TraceData>();
-            data->scene = h.scene;
-            data->settings = h.tracer->settings();
-            PixelTrace& t = data->trace;
-            t.algorithm = data->settings.algorithm;
-            t.tree = h.stepper->tree();
-            t.x = t.tree.pixelX;
-            t.y = t.tree.pixelY;
-            t.sample = t.tree.sample;
-            // The steps taken; a ray still queued is told from the tree (it waits).
-            t.steps = h.steps;
-            t.steps.resize(t.tree.segments.size());
-            for (const RaySegment& s : t.tree.segments)
-              if (t.steps[std::size_t(s.id)].ray != s.id)
-                t.steps[std::size_t(s.id)] = stepEventOf(s);
-            t.counts = h.stepper->counts();
-            t.estimate = h.stepper->estimate();
-            return data;
-          },
-          "The tree so far, as a Trace (a snapshot: later steps do not change it).")
+      .def("tree", &treeSoFar,
+           "The tree so far, as a Trace (a snapshot: later steps do not change it).")
       .def("__iter__", [](py::object self) { return self; })
       .def("__next__", [](StepperHandle& h) {
         if (!h.step()) throw py::stop_iteration();
