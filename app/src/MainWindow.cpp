@@ -45,7 +45,6 @@ namespace raylab::app {
 
 namespace {
 
-
 std::unique_ptr<SceneDocument> newDocument(const Scene& scene) {
   auto document = std::make_unique<SceneDocument>();
   document->adopt(scene, {});
@@ -182,7 +181,6 @@ void MainWindow::fillLessonsMenu() {
   back->setEnabled(m_lessonPanel->lesson() != nullptr);
   connect(back, &QAction::triggered, m_lessonPanel, &LessonPanel::back);
 }
-
 
 MainWindow::~MainWindow() {
   m_rayPanel->pause();
