@@ -45,7 +45,6 @@ namespace raylab::app {
 
 namespace {
 
-
 std::unique_ptr<SceneDocument> newDocument(const Scene& scene) {
   auto document = std::make_unique<SceneDocument>();
   document->adopt(scene, {});
@@ -104,8 +103,8 @@ void MainWindow::connectPanels() {
     if (m_rayPanel->showsGrid())
       m_renderPanel->imageView()->setMarkedPixel(-1, -1);
     else
-      m_renderPanel->imageView()->setMarkedPixel(m_rayPanel->pixelXBox()->value(),
-                                                 m_rayPanel->pixelYBox()->value());
+      m_renderPanel->imageView()->setMarkedPixel(*m_rayPanel->viewState().pixelX,
+                                                 *m_rayPanel->viewState().pixelY);
   });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this, status);
   connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this](int id) {
@@ -184,7 +183,6 @@ void MainWindow::fillLessonsMenu() {
   back->setEnabled(m_lessonPanel->lesson() != nullptr);
   connect(back, &QAction::triggered, m_lessonPanel, &LessonPanel::back);
 }
-
 
 MainWindow::~MainWindow() {
   m_rayPanel->pause();

@@ -9,21 +9,11 @@
 
 #include <QWidget>
 
-#include <array>
 #include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
-
-class QCheckBox;
-class QComboBox;
-class QDoubleSpinBox;
-class QLabel;
-class QPushButton;
-class QSlider;
-class QSpinBox;
-class QTimer;
 
 namespace raylab::vis {
 class SceneView;
@@ -32,26 +22,27 @@ class SceneView;
 namespace raylab::app {
 
 class SceneDocument;
+class TraceGroup;
+class StyleGroup;
+class AnimationGroup;
 
 /**
  * \brief The ray-tree panel: trace one pixel sample with the chosen algorithm, draw its
  * tree in the 3D view, and play the bounce animation.
  *
  * Tracing is core's tracePixel (the real algorithm, one ray at a time); the panel keeps
- * the PixelTrace and shares its tree with the view. It holds widgets and bindings only:
- * the captions come from vis::stepCaption, the reveal from vis::revealFrame. The picture is always
- * a function of the frame number: `setFrame(n)` shows `vis::revealFrame(tree, animation(), n)`;
- * Play only starts a QTimer whose ticks add `speed` frames to that number, Step forward / back jump
- * to the next / previous step boundary (a multiple of framesPerStep), and the frame slider sets it
- * directly. Colouring, filters and toggles redraw the tree with another vis::RayTreeStyle.
+ * the PixelTrace and shares its tree with the view. Its three groups are small widgets of
+ * their own (app/src/raytree/): TraceGroup (what is traced), StyleGroup (how it is drawn),
+ * AnimationGroup (the frame, the timer, the transport). Nothing outside reaches into them:
+ * the window, the lesson player and tests set the panel's part of the vis::TreeViewState
+ * (applyState, setTreeStyle, setAnimation, setFrame) and read it back (viewState). The
+ * picture is always a function of the frame number: AnimationGroup reports every frame and
+ * the panel shows `vis::revealFrame(tree, animation(), frame)` with vis::stepCaption.
  */
 class RayTreePanel : public QWidget {
   Q_OBJECT
 
  public:
-  /// Interval of the animation timer, ms (25 ticks per second).
-  static constexpr int kTickMs = 40;
-
   /// A panel drawing into `view`, tracing `document`'s scene (both must outlive it).
   RayTreePanel(vis::SceneView& view, const SceneDocument& document, QWidget* parent = nullptr);
   ~RayTreePanel() override;
@@ -118,7 +109,7 @@ class RayTreePanel : public QWidget {
 
   /// \name The bounce animation (frame 0 shows nothing, frameCount() - 1 the whole tree).
   /// @{
-  int frame() const { return m_frame; }
+  int frame() const;
   int frameCount() const;
   void setFrame(int frame);
   void play();
@@ -150,39 +141,20 @@ class RayTreePanel : public QWidget {
   /// Rays of the tree shown that the filters (kinds, depth, energy, reaching light) hide.
   int hiddenRays() const;
 
-  /// \name Controls, for tests and for the window's option handling.
-  /// @{
-  QComboBox* algorithmBox() const { return m_algorithm; }
-  QSpinBox* pixelXBox() const { return m_pixelX; }
-  QSpinBox* pixelYBox() const { return m_pixelY; }
-  QSpinBox* sampleBox() const { return m_sample; }
-  QSpinBox* bundleBox() const { return m_bundle; }
-  QCheckBox* allHitsBox() const { return m_allHits; }
   /// With "Every hit along the ray" on: the crossings marked, one line each.
   const QString& crossingsText() const { return m_crossingsText; }
-  QPushButton* traceButton() const { return m_traceButton; }
-  QComboBox* colouringBox() const { return m_colouring; }
-  QCheckBox* kindBox(RayKind kind) const { return m_kinds[std::size_t(kind)]; }
-  QSpinBox* maxDepthBox() const { return m_maxDepth; }
-  QCheckBox* reachesLightBox() const { return m_reachesLight; }
-  QDoubleSpinBox* minEnergyBox() const { return m_minEnergy; }
-  QCheckBox* hitPointsBox() const { return m_hitPoints; }
-  QCheckBox* normalsBox() const { return m_normals; }
-  QCheckBox* arrowsBox() const { return m_arrows; }
-  QCheckBox* legendBox() const { return m_legend; }
-  QPushButton* playButton() const { return m_play; }
-  QPushButton* pauseButton() const { return m_pause; }
-  QPushButton* stepForwardButton() const { return m_stepForward; }
-  QPushButton* stepBackButton() const { return m_stepBack; }
-  QSlider* speedSlider() const { return m_speed; }
-  QSpinBox* acrossBox() const { return m_across; }
-  QSpinBox* downBox() const { return m_down; }
-  QPushButton* simulateButton() const { return m_simulateButton; }
-  QComboBox* orderBox() const { return m_order; }
-  QSpinBox* raysPerStepBox() const { return m_raysPerStep; }
-  QSlider* frameSlider() const { return m_frameSlider; }
-  QTimer* timer() const { return m_timer; }
-  /// @}
+  /// Simulate's grid (rays across and down), as `raylab --simulate` chooses it.
+  void setGrid(int across, int down);
+  /// Sets the colouring, filters and toggles (the line width and language stay the panel's).
+  void setTreeStyle(const vis::RayTreeStyle& style);
+  /// Sets the reveal order and rays per step.
+  void setAnimation(const vis::AnimationSettings& settings);
+  /// \name Test-only: a control by its object name (e.g. "trace", "play", "kind-shadow"),
+  /// to click it as a user would. The window never reaches into the panel's widgets.
+  template <typename Widget>
+  Widget* controlForTest(const char* name) const {
+    return findChild<Widget*>(QString::fromLatin1(name));
+  }
 
  signals:
   /// The view's picture changed: the window should render.
@@ -195,20 +167,16 @@ class RayTreePanel : public QWidget {
   void statusChanged(const QString& text);
 
  private:
-  QWidget* buildTraceGroup();
-  QWidget* buildStyleGroup();
-  QWidget* buildAnimationGroup();
   /// Redraws the tree with the controls' style and the current frame.
   void restyle();
-  /// m_traceInfo: `summary`, then the filters' line (showTraceInfo).
+  /// The trace summary under Trace: `summary`, then the filters' line (showTraceInfo).
   void setTraceInfo(const QString& summary);
   void showTraceInfo();
-  /// Shows frame m_frame (reveal, slider, labels, status).
-  void showFrame();
+  /// Shows frame `frame` (reveal, status line); nothing without a tree.
+  void showFrame(int frame);
   void setStatus(const QString& text);
   /// Shows m_trace whole, nothing selected.
   void showTrace();
-  void updateFrameControls();
   /// Marks the crossings of the selected ray (the camera ray when none) when "Every hit
   /// along the ray" is on, clears them otherwise.
   void markCrossings();
@@ -227,49 +195,16 @@ class RayTreePanel : public QWidget {
   std::shared_ptr<const PixelTrace> m_trace;
   std::optional<Ray> m_root;              ///< Traced in place of the pixel's camera ray, when set.
   bool m_grid = false;                    ///< m_trace is a Simulate grid.
-  double m_phase = 0.0;                   ///< Fraction of a frame the animation has moved on.
   double m_lineScale = 1.0;               ///< Ray width factor (presentation mode).
   std::atomic<bool>* m_cancel = nullptr;  ///< The running trace's cancel flag.
-  QPushButton* m_cancelButton = nullptr;
-  int m_frame = 0;
   int m_selected = -1;
   QString m_status;
-
-  QComboBox* m_algorithm = nullptr;
-  QSpinBox* m_pixelX = nullptr;
-  QSpinBox* m_pixelY = nullptr;
-  QSpinBox* m_sample = nullptr;
-  QSpinBox* m_bundle = nullptr;
-  QCheckBox* m_allHits = nullptr;
   QString m_crossingsText;
-  QLabel* m_crossingsLabel = nullptr;
-  QPushButton* m_traceButton = nullptr;
-  QLabel* m_traceInfo = nullptr;
-  QString m_traceSummary;  ///< m_traceInfo's text before the filters' line (showTraceInfo).
-  QComboBox* m_colouring = nullptr;
-  std::array<QCheckBox*, kRayKindCount> m_kinds{};
-  QSpinBox* m_maxDepth = nullptr;
-  QCheckBox* m_reachesLight = nullptr;
-  QDoubleSpinBox* m_minEnergy = nullptr;
-  QCheckBox* m_hitPoints = nullptr;
-  QCheckBox* m_normals = nullptr;
-  QCheckBox* m_arrows = nullptr;
-  QCheckBox* m_legend = nullptr;
-  QPushButton* m_play = nullptr;
-  QPushButton* m_pause = nullptr;
-  QPushButton* m_stepForward = nullptr;
-  QPushButton* m_stepBack = nullptr;
-  QSlider* m_speed = nullptr;
-  QSpinBox* m_across = nullptr;
-  QSpinBox* m_down = nullptr;
-  QPushButton* m_simulateButton = nullptr;
-  QLabel* m_speedLabel = nullptr;
-  QComboBox* m_order = nullptr;
-  QSpinBox* m_raysPerStep = nullptr;
-  QSlider* m_frameSlider = nullptr;
-  QLabel* m_frameLabel = nullptr;
-  QLabel* m_statusLabel = nullptr;
-  QTimer* m_timer = nullptr;
+  QString m_traceSummary;  ///< The summary's text before the filters' line (showTraceInfo).
+
+  TraceGroup* m_traceGroup = nullptr;
+  StyleGroup* m_styleGroup = nullptr;
+  AnimationGroup* m_animationGroup = nullptr;
 };
 
 }  // namespace raylab::app

@@ -89,8 +89,7 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   RayTreePanel& panel = *window->rayTreePanel();
   if (options.algorithm) panel.setAlgorithm(*options.algorithm);
   if (options.simulate) {
-    panel.acrossBox()->setValue(options.simulate->first);
-    panel.downBox()->setValue(options.simulate->second);
+    panel.setGrid(options.simulate->first, options.simulate->second);
     panel.simulate();
   }
   if (options.trace) {

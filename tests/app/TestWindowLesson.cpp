@@ -186,7 +186,7 @@ TEST_F(WindowLessonTest, 08_BundleAllHitsAndSamplesSteps) {
   for (const RaySegment& s : rays.tree().segments) cameraRays += s.kind == RayKind::Camera;
   EXPECT_EQ(cameraRays, b.bundle);
   EXPECT_EQ(rays.tree().segments.size(), expected.combined.segments.size());
-  EXPECT_EQ(rays.bundleBox()->value(), b.bundle);
+  EXPECT_EQ(rays.viewState().bundle, b.bundle);
 
   const QString two =
       QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/02-intersections-and-exactness.json");
@@ -195,8 +195,8 @@ TEST_F(WindowLessonTest, 08_BundleAllHitsAndSamplesSteps) {
   const int hits = firstStep(lesson2, [](const LessonStep& st) { return st.allHits; });
   m_window->lessonPanel()->showStep(hits);
   settle();
-  EXPECT_EQ(rays.bundleBox()->value(), 1);  // the next lesson's steps draw one sample
-  EXPECT_TRUE(rays.allHitsBox()->isChecked());
+  EXPECT_EQ(rays.viewState().bundle, 1);  // the next lesson's steps draw one sample
+  EXPECT_TRUE(rays.viewState().allHits);
   EXPECT_GE(m_window->sceneView().crossingCount(), 2);
   EXPECT_TRUE(rays.crossingsText().contains(QStringLiteral("enters 'sphere'")))
       << rays.crossingsText().toStdString();
@@ -713,7 +713,7 @@ TEST_F(WindowLessonTest, 23_TheLanguageSwitchKeepsTheLessonAndItsStep) {
 
 TEST_F(WindowLessonTest, 24_TheLanguageSwitchKeepsTheTreeItsColoursAndFrame) {
   RayTreePanel& rays = traceCube();
-  rays.colouringBox()->setCurrentIndex(rays.colouringBox()->findData(QStringLiteral("kind")));
+  restyle(rays, [](vis::RayTreeStyle& s) { s.colouring = vis::RayColouring::Kind; });
   rays.setFrame(rays.frameCount() / 2);
   const int frame = rays.frame();
   const std::size_t segments = rays.tree().segments.size();
@@ -723,7 +723,7 @@ TEST_F(WindowLessonTest, 24_TheLanguageSwitchKeepsTheTreeItsColoursAndFrame) {
   RayTreePanel& after = *m_window->rayTreePanel();
   EXPECT_EQ(after.tree().segments.size(), segments);
   EXPECT_EQ(after.frame(), frame);
-  EXPECT_EQ(after.colouringBox()->currentData().toString(), QStringLiteral("kind"));
+  EXPECT_EQ(after.treeStyle().colouring, vis::RayColouring::Kind);
   EXPECT_EQ(after.algorithm(), Algorithm::Whitted);
 }
 

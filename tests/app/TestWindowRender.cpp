@@ -172,8 +172,8 @@ TEST_F(WindowRenderTest, 05_ClickingAPixelTracesTheCliTree) {
   settle();
   EXPECT_EQ(view->markedPixel(), QPoint(90, 100));
   RayTreePanel& rays = *m_window->rayTreePanel();
-  EXPECT_EQ(rays.pixelXBox()->value(), 90);
-  EXPECT_EQ(rays.pixelYBox()->value(), 100);
+  EXPECT_EQ(rays.viewState().pixelX, 90);
+  EXPECT_EQ(rays.viewState().pixelY, 100);
   EXPECT_EQ(rays.algorithm(), Algorithm::Whitted);
   // The tree equals `raylab trace 90 100 --algorithm whitted`'s (core tracePixel).
   const Scene scene = defaultScene();

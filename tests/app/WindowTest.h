@@ -180,9 +180,18 @@ class WindowTest : public ::testing::Test {
     const auto [x, y] = pixelOn(defaultScene(), "blue cube");
     panel.setAlgorithm(Algorithm::Whitted);
     panel.setPixel(x, y);
-    panel.traceButton()->click();
+    panel.controlForTest<QPushButton>("trace")->click();
     settle();
     return panel;
+  }
+
+  /// Changes the panel's style (its part of the view state), as a lesson step or the
+  /// language switch does: `change` edits the style the panel draws with now.
+  template <typename Change>
+  static void restyle(RayTreePanel& panel, Change change) {
+    vis::RayTreeStyle style = panel.treeStyle();
+    change(style);
+    panel.setTreeStyle(style);
   }
 
   static inline QApplication* s_app = nullptr;

@@ -177,7 +177,8 @@ void MainWindow::saveLayout() {
   s.setValue(QStringLiteral("algorithm"), QString::fromLatin1(toString(m_rayPanel->algorithm())));
   s.setValue(QStringLiteral("renderAlgorithm"),
              QString::fromLatin1(toString(m_renderPanel->algorithm())));
-  s.setValue(QStringLiteral("rayColouring"), m_rayPanel->colouringBox()->currentData());
+  s.setValue(QStringLiteral("rayColouring"),
+             QString::fromLatin1(vis::toString(m_rayPanel->treeStyle().colouring)));
 }
 
 void MainWindow::restoreLayout() {
@@ -193,9 +194,12 @@ void MainWindow::restoreLayout() {
   if (const auto a =
           parseAlgorithm(s.value(QStringLiteral("renderAlgorithm")).toString().toStdString()))
     m_renderPanel->setAlgorithm(*a);
-  const int colouring =
-      m_rayPanel->colouringBox()->findData(s.value(QStringLiteral("rayColouring")));
-  if (colouring >= 0) m_rayPanel->colouringBox()->setCurrentIndex(colouring);
+  if (const auto colouring =
+          vis::parseColouring(s.value(QStringLiteral("rayColouring")).toString().toStdString())) {
+    vis::RayTreeStyle style = m_rayPanel->treeStyle();
+    style.colouring = *colouring;
+    m_rayPanel->setTreeStyle(style);
+  }
 }
 
 void MainWindow::showImageTab(QWidget* tab) {
