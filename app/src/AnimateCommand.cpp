@@ -5,17 +5,13 @@
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
+#include "raylab/core/RayWords.h"
 
 #include "raylab/core/AtomicFolder.h"
 #include "raylab/core/Exception.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
-
-#if RAYLAB_WITH_GUI
-#include "Language.h"
-#include "UiWords.h"
-#endif
 
 #include <cstdio>
 #include <cstdlib>
@@ -49,28 +45,15 @@ struct AnimateOptions {
   bool captions = true;  ///< --captions: the narration of each frame along its bottom.
 };
 
-/// The caption of a frame in language `lang`: the narration of vis::stepCaption, or in
-/// Chinese the window's (UiWords::stepCaption) when this build has the window.
+/// The caption of a frame in language `lang` (vis::stepCaption), the scene's names as a
+/// reader of that language sees them.
 std::function<std::string(int)> captionsIn(const std::string& lang, const Scene& scene,
                                            const PixelTrace& trace,
                                            const vis::AnimationSettings& animation) {
-#if RAYLAB_WITH_GUI
-  if (lang == "zh") {
-    if (!installLanguageHeadless(kChinese))
-      throw AnimateError("--lang zh: the Chinese translation (raylab_zh_CN.qm) was not found");
-    return [&trace, animation, names = objectNamesOf(scene),
-            lights = pointLightNamesOf(scene)](int frame) {
-      return stepCaption(trace, animation, frame, names, lights).toStdString();
-    };
-  }
-#else
-  if (lang == "zh")
-    throw AnimateError(
-        "--lang zh: Chinese captions need the window's translations, and this "
-        "build has no window");
-  (void)scene;
-#endif
-  return [&trace, animation](int frame) { return vis::stepCaption(trace, animation, frame); };
+  const Language language = parseLanguage(lang).value_or(Language::English);
+  return [&trace, animation, language, names = sceneNames(scene, language)](int frame) {
+    return vis::stepCaption(trace, animation, frame, names, language);
+  };
 }
 
 /// Parses "A:B" (A <= B, both >= 0); nothing when malformed.
@@ -234,7 +217,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   std::cout << frames.size() << " of " << total << " frames (" << first << ".." << last
             << (options.every > 1 ? ", every " + std::to_string(options.every) : std::string())
             << "), " << toString(animation.order) << " order, " << toString(settings.algorithm)
-            << ": " << trace.summary() << std::endl;
+            << ": " << traceSummary(trace, Language::English) << std::endl;
   return kExitOk;
 }
 

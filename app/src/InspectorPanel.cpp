@@ -1,9 +1,9 @@
 #include "InspectorPanel.h"
 
-#include "InspectorWords.h"
 #include "Language.h"
 #include "UiWords.h"
 
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/vis/SceneView.h"
 
@@ -93,9 +93,9 @@ void InspectorPanel::showSegment(int id) {
   // The objects and materials by the names the reader sees (Chinese display names in zh).
   const RayInspection inspection = RayInspector::inspect(
       sceneAsShown(m_view.scene(), currentLanguage() == kChinese), m_view.rayTree(), id, exact);
-  const QString values = inspectorText(
-      inspection.rayText() + (exact ? "\n" + inspection.oracleText() : ""), m_view.rayTree(), id,
-      objectNamesOf(m_view.scene()), pointLightNamesOf(m_view.scene()));
+  const Language language = uiLanguage();
+  const QString values = QString::fromStdString(
+      rayText(inspection, language) + (exact ? "\n" + oracleText(inspection, language) : ""));
   m_text->setPlainText(
       inWords(inspection) + QStringLiteral("\n") + values +
       (exact ? QString()

@@ -11,8 +11,10 @@
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Exception.h"
 #include "raylab/core/Image.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/LessonAliases.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
@@ -28,13 +30,6 @@
 #include "raylab/vis/SceneView.h"
 #include "raylab/vis/TreeViewState.h"
 #include "raylab/vis/ViewCamera.h"
-
-#if RAYLAB_WITH_GUI
-#include "InspectorWords.h"
-#include "Language.h"
-#include "UiWords.h"
-
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +84,6 @@ std::string needsNote(const Lesson& lesson) {
 
 int runList(const LessonOptions& o) {
   const Language language = *parseLanguage(o.lang);
-  const bool zh = language == Language::Chinese;
   int failed = 0;
   std::vector<Lesson> lessons;
   for (const std::string& path : LessonIO::list(o.dir)) {
@@ -111,8 +105,8 @@ int runList(const LessonOptions& o) {
     const std::string id = printable(lesson.id);
     std::cout << id << std::string(idWidth - id.size() + 2, ' ')
               << printable(lesson.title.in(language)) << "  ("
-              << (zh ? std::to_string(steps) + " 步"
-                     : std::to_string(steps) + (steps == 1 ? " step" : " steps"))
+              << phrase(steps == 1 ? "lesson.list.steps.one" : "lesson.list.steps.many", language,
+                        {{"count", std::to_string(steps)}})
               << ")\n";
   }
   if (lessons.empty() && failed == 0)
@@ -177,23 +171,12 @@ std::pair<int, int> fitInside(std::pair<int, int> size, std::pair<int, int> cap)
   return {std::max(1, int(size.first * scale + 0.5)), std::max(1, int(size.second * scale + 0.5))};
 }
 
-/// The inspector's lines of ray `id` of `tree` in `language`: Chinese through the window's
-/// translation of them (InspectorWords) when this build has the window, else English.
+/// The inspector's lines of ray `id` of `tree` in `language` (the phrase table's words).
 std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Language language,
                            bool exactness) {
   const RayInspection inspection = RayInspector::inspect(scene, tree, id, exactness);
-  const std::string english =
-      inspection.rayText() + (exactness ? "\n" + inspection.oracleText() : std::string());
-#if RAYLAB_WITH_GUI
-  if (language == Language::Chinese) {
-    static const bool chinese = installLanguageHeadless(kChinese);
-    if (chinese) {
-      return inspectorText(english, tree, id, objectNamesOf(scene), pointLightNamesOf(scene))
-          .toStdString();
-    }
-  }
-#endif
-  return english;
+  return rayText(inspection, language) +
+         (exactness ? "\n" + oracleText(inspection, language) : std::string());
 }
 
 /// What one step's picture is, and what the handout says beside it.
@@ -228,9 +211,8 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, Langu
       result.inspectorText = inspectorLines(shown, *tree, id, language, step.exactness);
     if (state.allHits) {
       const RaySegment& ray = tree->segments.at(std::size_t(id));
-      result.crossingsText =
-          crossingsText(shown, sceneCrossings(scene, ray.origin, ray.direction, ray.time),
-                        language == Language::Chinese);
+      result.crossingsText = crossingsText(
+          shown, sceneCrossings(scene, ray.origin, ray.direction, ray.time), language);
     }
   }
   // A mesh's BVH boxes (lesson 8), said in words under the picture.
@@ -244,12 +226,8 @@ StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, Langu
 /// The handout's note under a picture that --max-spp made with fewer samples than the step
 /// asks for (its text may describe the noise at `asked`).
 std::string cappedNote(int used, int asked, Language language) {
-  if (language == Language::Chinese)
-    return "此图按每像素 " + std::to_string(used) +
-           " 个样本渲染（受 --max-spp 限制），本步原本使用 " + std::to_string(asked) +
-           " 个；正文描述的是后者。";
-  return "Rendered at " + std::to_string(used) + " samples per pixel (capped by --max-spp); the " +
-         "step asks for " + std::to_string(asked) + ", which the text describes.";
+  return phrase("lesson.handout.capped", language,
+                {{"used", std::to_string(used)}, {"asked", std::to_string(asked)}});
 }
 
 /// The step's algorithm's image: the scene's size fitted inside `cap`, at most 64 spp
@@ -281,9 +259,10 @@ StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int ma
     return o.shape->kind() == ShapeKind::TriangleMesh;
   });
   if (meshes)
-    result.caption =
-        vis::searchCaption(settings, language) + (language == Language::Chinese ? "" : " ") +
-        vis::speedCaption(renderer.stats().rays.total(), renderer.stats().seconds, language);
+    result.caption = phrase("lesson.handout.search_speed", language,
+                            {{"search", vis::searchCaption(settings, language)},
+                             {"speed", vis::speedCaption(renderer.stats().rays.total(),
+                                                         renderer.stats().seconds, language)}});
   return result;
 }
 
@@ -357,11 +336,12 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
   const std::vector<std::string>& missing = step.needs;
   if (!missing.empty()) {
     StepPicture result = scenePicture(step, picture, language);
-    result.note = std::string(words.missing) + (language == Language::Chinese ? "：" : ": ");
+    std::string list;
     for (std::size_t i = 0; i < missing.size(); ++i)
-      result.note += (i ? ", `" : "`") + missing[i] + "`";
-    result.note += language == Language::Chinese ? "。此处显示的是场景视图。"
-                                                 : ". The picture shows the scene view instead.";
+      list += (i ? phrase("lesson.handout.missing.separator", language) : std::string()) + "`" +
+              missing[i] + "`";
+    result.note =
+        phrase("lesson.handout.missing", language, {{"missing", words.missing}, {"list", list}});
     return result;
   }
   switch (step.view) {

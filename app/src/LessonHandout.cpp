@@ -2,27 +2,24 @@
 // teacher (the key, notes, plan) or the student (--student: none of them).
 #include "LessonHandout.h"
 
+#include "raylab/core/Phrases.h"
 #include "raylab/core/Text.h"
 
+#include <array>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace raylab::app {
 
 namespace {
 
-/// `pattern` with %1, %2, %3 replaced by `a`, `b`, `c`.
-std::string fill(std::string pattern, const std::string& a, const std::string& b,
-                 const std::string& c) {
-  const std::pair<const char*, const std::string*> args[] = {{"%1", &a}, {"%2", &b}, {"%3", &c}};
-  for (const auto& [mark, value] : args) {
-    const std::size_t at = pattern.find(mark);
-    if (at != std::string::npos) pattern.replace(at, 2, *value);
-  }
-  return pattern;
+/// "**Question:** " (or the block form, "**Question:**\n\n"; or italic): a label in bold.
+std::string label(const char* form, const char* key, Language language) {
+  return phrase(form, language, {{"label", phrase(key, language)}});
 }
 
 /// The command line that shows a "change a value" step's effect: the step's tree (or its
@@ -44,14 +41,14 @@ std::string tryCommand(const Lesson& lesson, const LessonStep& step) {
 
 /// A "change a value" step's task: the value, the prediction, the command to run.
 std::string tryValueSection(const Lesson& lesson, const LessonStep& step, Language language) {
-  const HandoutWords& words = handoutWords(language);
-  const bool zh = language == Language::Chinese;
   const LessonTryValue& t = *step.tryValue;
   const std::string command = tryCommand(lesson, step);
   const std::string fence = markdownFence(command);
-  return "**" + std::string(words.tryValue) + (zh ? "：** " : ":** ") +
-         fill(words.tryTask, (zh ? "" : "the ") + markdownText(t.label.in(language), true),
-              formatNumber(t.original), formatNumber(t.value)) +
+  return label("handout.try_label", "handout.try_value", language) +
+         phrase("handout.try_task", language,
+                {{"label", markdownText(t.label.in(language), true)},
+                 {"from", formatNumber(t.original)},
+                 {"to", formatNumber(t.value)}}) +
          "\n\n" + fence + "\n" + command + "\n" + fence + "\n\n";
 }
 
@@ -59,8 +56,7 @@ std::string tryValueSection(const Lesson& lesson, const LessonStep& step, Langua
 /// (LessonQuestion::shownOrder, as the window shows them), lettered A, B, ...
 std::string questionSection(const LessonQuestion& q, Language language) {
   const HandoutWords& words = handoutWords(language);
-  const bool zh = language == Language::Chinese;
-  std::string md = "**" + std::string(words.question) + (zh ? "：**" : ":** ") +
+  std::string md = label("handout.bold_label", "handout.question", language) +
                    markdownText(q.prompt.in(language)) + "\n\n";
   if (q.type == LessonQuestion::Type::Choice) {
     for (std::size_t k = 0; k < q.shownOrder.size(); ++k)
@@ -76,28 +72,27 @@ std::string questionSection(const LessonQuestion& q, Language language) {
 /// " (3 min)" in the teacher's handout, for a step with planned minutes.
 std::string minutesNote(const LessonStep& step, Language language, bool student) {
   if (student || step.minutes <= 0.0) return {};
-  const bool zh = language == Language::Chinese;
-  return (zh ? "（" : " (") + formatNumber(step.minutes) + (zh ? " " : " ") +
-         handoutWords(language).minutes + (zh ? "）" : ")");
+  return phrase(
+      "handout.minutes_note", language,
+      {{"minutes", formatNumber(step.minutes)}, {"unit", phrase("handout.minutes", language)}});
 }
 
 /// The objectives for everyone; for the teacher also the plan and the misconceptions.
 std::string kitSection(const Lesson& lesson, Language language, bool student) {
   const HandoutWords& words = handoutWords(language);
-  const bool zh = language == Language::Chinese;
   std::string md;
   if (!lesson.objectives.empty()) {
-    md += "**" + std::string(words.objectives) + (zh ? "：**\n\n" : ":**\n\n");
+    md += label("handout.bold_block", "handout.objectives", language);
     for (const LocalText& o : lesson.objectives)
       md += "- " + markdownText(o.in(language), true) + "\n";
     md += "\n";
   }
   if (student) return md;
   if (lesson.minutes() > 0.0)
-    md += "**" + std::string(words.plan) + (zh ? "：**" : ":** ") + formatNumber(lesson.minutes()) +
+    md += label("handout.bold_label", "handout.plan", language) + formatNumber(lesson.minutes()) +
           " " + words.minutes + "\n\n";
   if (!lesson.misconceptions.empty()) {
-    md += "**" + std::string(words.misconceptions) + (zh ? "：**\n\n" : ":**\n\n");
+    md += label("handout.bold_block", "handout.misconceptions", language);
     for (const LocalText& m : lesson.misconceptions)
       md += "- " + markdownText(m.in(language), true) + "\n";
     md += "\n";
@@ -116,39 +111,30 @@ std::string formatNumber(double value) {
 }
 
 const HandoutWords& handoutWords(Language language) {
-  static const HandoutWords en{"Step",
-                               "Question",
-                               "Teacher's answers",
-                               "Answer",
-                               "Answer with a number.",
-                               "Teacher's notes",
-                               "The selected ray in the inspector",
-                               "This step needs a feature still to come",
-                               "Every surface the ray crosses",
-                               "Predict first: answer before you look at the picture below.",
-                               "Change a value",
-                               "Set %1 from %2 to %3. Predict what changes, then run:",
-                               "After this lesson you can",
-                               "Lesson plan",
-                               "min",
-                               "Misconceptions to watch for"};
-  static const HandoutWords zh{"第",
-                               "问题",
-                               "教师答案",
-                               "答案",
-                               "请填写一个数值。",
-                               "教师备注",
-                               "检查器中选中的光线",
-                               "本步骤需要一个尚未实现的功能",
-                               "光线穿过的所有表面",
-                               "先预测：请在看下面的图之前作答。",
-                               "改一个参数",
-                               "把%1从 %2 改为 %3。先预测会发生什么变化，再运行：",
-                               "学完本课，你能够",
-                               "教学安排",
-                               "分钟",
-                               "需要留意的常见误解"};
-  return language == Language::Chinese ? zh : en;
+  // The phrase table's words, made once per language and kept for the program's life.
+  static const char* const keys[] = {
+      "handout.step",          "handout.question", "handout.answers",       "handout.answer",
+      "handout.number_answer", "handout.notes",    "handout.inspector",     "handout.missing",
+      "handout.crossings",     "handout.predict",  "handout.try_value",     "handout.objectives",
+      "handout.plan",          "handout.minutes",  "handout.misconceptions"};
+  static const auto texts = [] {
+    std::array<std::vector<std::string>, 2> all;
+    for (std::size_t l = 0; l < all.size(); ++l)
+      for (const char* key : keys) all[l].push_back(phrase(key, Language(l)));
+    return all;
+  }();
+  static const auto words = [] {
+    std::array<HandoutWords, 2> all{};
+    for (std::size_t l = 0; l < all.size(); ++l) {
+      const std::vector<std::string>& t = texts[l];
+      all[l] =
+          HandoutWords{t[0].c_str(),  t[1].c_str(),  t[2].c_str(),  t[3].c_str(),  t[4].c_str(),
+                       t[5].c_str(),  t[6].c_str(),  t[7].c_str(),  t[8].c_str(),  t[9].c_str(),
+                       t[10].c_str(), t[11].c_str(), t[12].c_str(), t[13].c_str(), t[14].c_str()};
+    }
+    return all;
+  }();
+  return words[std::size_t(language)];
 }
 
 std::string handoutHead(const Lesson& lesson, Language language, bool student) {
@@ -164,9 +150,11 @@ std::string handoutStep(const Lesson& lesson, std::size_t index, const PictureWo
                         const std::string& png, Language language, bool student) {
   const LessonStep& step = lesson.steps[index];
   const HandoutWords& words = handoutWords(language);
-  const bool zh = language == Language::Chinese;
-  std::string md = "## " + std::string(words.step) + " " + std::to_string(index + 1) +
-                   (zh ? " 步：" : ". ") + markdownText(step.title.in(language), true) +
+  std::string md = "## " +
+                   phrase("handout.step_heading", language,
+                          {{"step", words.step},
+                           {"number", std::to_string(index + 1)},
+                           {"title", markdownText(step.title.in(language), true)}}) +
                    minutesNote(step, language, student) + "\n\n";
   md += markdownText(step.text.in(language)) + "\n\n";
   if (step.tryValue) md += tryValueSection(lesson, step, language);
@@ -193,16 +181,19 @@ std::string handoutStep(const Lesson& lesson, std::size_t index, const PictureWo
 /// The answers and teacher's notes of every step, at the end of the handout.
 std::string handoutAnswers(const Lesson& lesson, Language language) {
   const HandoutWords& words = handoutWords(language);
-  const bool zh = language == Language::Chinese;
   std::string md = "## " + std::string(words.answers) + "\n\n";
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
     const LessonStep& step = lesson.steps[i];
     if (!step.question && step.teacherNotes.empty()) continue;
-    md += "### " + std::string(words.step) + " " + std::to_string(i + 1) + (zh ? " 步：" : ". ") +
-          markdownText(step.title.in(language), true) + "\n\n";
+    md += "### " +
+          phrase("handout.step_heading", language,
+                 {{"step", words.step},
+                  {"number", std::to_string(i + 1)},
+                  {"title", markdownText(step.title.in(language), true)}}) +
+          "\n\n";
     if (step.question) {
       const LessonQuestion& q = *step.question;
-      md += "**" + std::string(words.answer) + (zh ? "：**" : ":** ");
+      md += label("handout.bold_label", "handout.answer", language);
       if (q.type == LessonQuestion::Type::Choice)
         md += std::string(1, char('A' + q.shownAnswer())) + ". " +
               markdownText(q.choices.at(q.answerIndex).in(language), true);
@@ -212,7 +203,7 @@ std::string handoutAnswers(const Lesson& lesson, Language language) {
       md += "\n\n" + markdownText(q.explanation.in(language)) + "\n\n";
     }
     if (!step.teacherNotes.empty())
-      md += "*" + std::string(words.notes) + (zh ? "：*" : ":* ") +
+      md += label("handout.italic_label", "handout.notes", language) +
             markdownText(step.teacherNotes.in(language)) + "\n\n";
   }
   return md;

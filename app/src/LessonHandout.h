@@ -20,13 +20,12 @@ struct HandoutWords {
   const char* crossings;
   const char* predict;     ///< Before the picture of a "predict" question.
   const char* tryValue;    ///< A "change a value" task's heading.
-  const char* tryTask;     ///< "Set %s from %s to %s, predict, then run:".
   const char* objectives;  ///< "After this lesson you can".
   const char* plan;        ///< The teacher's plan: minutes per step.
   const char* minutes;     ///< "min".
   const char* misconceptions;
 };
-/// The handout's words in `language`.
+/// The handout's words in `language` (the phrase table's `handout.*`).
 const HandoutWords& handoutWords(Language language);
 
 /// What the handout says beside a step's picture (besides the step's own text).

@@ -146,20 +146,18 @@ void MainWindow::fillLessonsMenu() {
     // The title from the file (cached: the menu is filled each time it opens). Only the
     // title is read: loading every lesson's scene and meshes took a tenth of the window's
     // start-up (issue 16); a lesson that does not load says so when opened.
-    static QHash<QString, QPair<QString, QString>> titles;
+    static QHash<QString, LocalText> titles;
     if (!titles.contains(path)) {
       try {
-        const LocalText title = LessonIO::readTitle(path.toStdString());
-        titles.insert(path, {QString::fromStdString(title.en), QString::fromStdString(title.zh)});
+        titles.insert(path, LessonIO::readTitle(path.toStdString()));
       } catch (const std::exception&) {
-        titles.insert(path,
-                      {QFileInfo(path).completeBaseName(), QFileInfo(path).completeBaseName()});
+        const std::string name = QFileInfo(path).completeBaseName().toStdString();
+        titles.insert(path, LocalText{name, name});
       }
     }
     const auto& title = titles[path];
-    QAction* a = m_lessonsMenu->addAction(
-        QStringLiteral("%1  %2").arg(QFileInfo(path).completeBaseName().left(2),
-                                     language == Language::Chinese ? title.second : title.first));
+    QAction* a = m_lessonsMenu->addAction(QStringLiteral("%1  %2").arg(
+        QFileInfo(path).completeBaseName().left(2), QString::fromStdString(title.in(language))));
     a->setToolTip(path);
     connect(a, &QAction::triggered, this, [this, path] { openLesson(path); });
   }

@@ -11,6 +11,7 @@
 #include "raytree/StyleGroup.h"
 #include "raytree/TraceGroup.h"
 
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
@@ -67,8 +68,8 @@ void RayTreePanel::markCrossings() {
   const std::vector<SceneCrossing> crossings =
       sceneCrossings(m_document.scene(), ray.origin, ray.direction, ray.time);
   m_view.setCrossings(crossings, ray.origin, ray.direction);
-  m_crossingsText = QString::fromStdString(
-      raylab::crossingsText(m_document.scene(), crossings, currentLanguage() == kChinese));
+  m_crossingsText =
+      QString::fromStdString(raylab::crossingsText(m_document.scene(), crossings, uiLanguage()));
   m_styleGroup->setCrossings(m_crossingsText.trimmed());
 }
 
@@ -92,11 +93,6 @@ void RayTreePanel::setRootRay(std::optional<Ray> ray) { m_root = std::move(ray);
 const RayTree& RayTreePanel::tree() const {
   static const RayTree kNone;
   return m_trace ? m_trace->tree : kNone;
-}
-
-const std::vector<std::string>& RayTreePanel::stepTexts() const {
-  static const std::vector<std::string> kNone;
-  return m_trace ? m_trace->stepTexts : kNone;
 }
 
 vis::RayTreeStyle RayTreePanel::treeStyle() const {
@@ -172,8 +168,8 @@ void RayTreePanel::showFrame(int frame) {
   if (!m_trace) return;
   // The picture and the status line: functions of the frame number only.
   m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), frame));
-  setStatus(stepCaption(*m_trace, animation(), frame, objectNamesOf(m_document.scene()),
-                        pointLightNamesOf(m_document.scene())));
+  setStatus(QString::fromStdString(vis::stepCaption(*m_trace, animation(), frame,
+                                                    shownNames(m_document.scene()), uiLanguage())));
   emit viewChanged();
 }
 

@@ -81,8 +81,6 @@ class RayTreePanel : public QWidget {
   bool showsGrid() const { return m_trace && m_grid; }
   /// The tree shown (empty before the first trace).
   const RayTree& tree() const;
-  /// What each processed ray did, by ray id (the stepper's narration).
-  const std::vector<std::string>& stepTexts() const;
 
   /// \name The panel's part of the view state (vis::TreeViewState; RayTreePanelState.cpp)
   /// @{

@@ -32,7 +32,7 @@ PixelTrace asOneTrace(const GridTrace& grid, Algorithm algorithm) {
   one.algorithm = algorithm;
   one.tree = grid.combined;
   for (const PixelTrace& t : grid.traces) {
-    one.stepTexts.insert(one.stepTexts.end(), t.stepTexts.begin(), t.stepTexts.end());
+    one.steps.insert(one.steps.end(), t.steps.begin(), t.steps.end());
     one.counts += t.counts;
   }
   return one;

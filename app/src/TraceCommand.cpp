@@ -5,11 +5,13 @@
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Limits.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/RayWords.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
@@ -205,7 +207,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     const std::vector<SceneCrossing> all =
         sceneCrossings(scene, ray.origin, ray.direction, ray.time);
     view->setCrossings(all, ray.origin, ray.direction);
-    crossings = crossingsText(scene, all);
+    crossings = crossingsText(scene, all, Language::English);
   }
   const SrgbImage picture = view->renderOffscreen(width, height);
 
@@ -226,13 +228,14 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   else
     std::cout << "pixel (" << o.pixel.first << ", " << o.pixel.second << ") sample " << o.sample;
   std::cout << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
-            << printable(trace.summary()) << std::endl;
+            << printable(traceSummary(trace, Language::English)) << std::endl;
   // Object, material and light names come from the file: printed with their control
   // characters escaped (issue 38).
   if (options.allHits)
     std::cout << "every surface the camera ray crosses:\n" << printable(crossings);
   if (options.inspect >= 0)
-    std::cout << printable(RayInspector::inspect(scene, tree, options.inspect).toString());
+    std::cout << printable(
+        inspectorText(RayInspector::inspect(scene, tree, options.inspect), Language::English));
   if (tree.truncated) std::cerr << "raylab: warning: " << printable(tree.message) << std::endl;
   return kExitOk;
 }

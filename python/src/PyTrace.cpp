@@ -7,6 +7,7 @@
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/RayWords.h"
 #include "raylab/core/Tracer.h"
 
 #include <pybind11/stl.h>
@@ -156,25 +157,33 @@ struct StepperHandle {
   std::shared_ptr<const Scene> scene;
   std::unique_ptr<Tracer> tracer;
   std::unique_ptr<Stepper> stepper;
-  std::vector<std::string> stepTexts;  ///< By ray id, as tracePixel keeps them.
+  std::vector<StepEvent> steps;  ///< By ray id, as tracePixel keeps them.
 
   bool step() {
     if (!stepper->step()) return false;
     const StepEvent& event = stepper->lastEvent();
     if (event.ray >= 0) {
-      if (std::size_t(event.ray) >= stepTexts.size()) stepTexts.resize(std::size_t(event.ray) + 1);
-      stepTexts[std::size_t(event.ray)] = event.text;
+      if (std::size_t(event.ray) >= steps.size()) steps.resize(std::size_t(event.ray) + 1);
+      steps[std::size_t(event.ray)] = event;
     }
     return true;
   }
 };
 
-py::dict eventDict(const StepEvent& e) {
+/// What each step of `trace` did, in English words (the phrase table's narration).
+std::vector<std::string> stepTexts(const PixelTrace& trace, const Scene& scene) {
+  const SceneNames names = sceneNames(scene, Language::English);
+  std::vector<std::string> texts;
+  for (const StepEvent& e : trace.steps) texts.push_back(narrateStep(e, names, Language::English));
+  return texts;
+}
+
+py::dict eventDict(const StepEvent& e, const Scene& scene) {
   py::dict out;
   out["ray"] = e.ray;
   out["end_reason"] = RayTreeJson::endReasonName(e.end);
   out["spawned"] = e.spawned;
-  out["text"] = e.text;
+  out["text"] = narrateStep(e, sceneNames(scene, Language::English), Language::English);
   return out;
 }
 
@@ -236,7 +245,10 @@ JSON dump (raylab trace --json) under the same names. It keeps its trace alive.)
           "Luminance of throughput * radiance: the share of the pixel's light.")
       .def_property_readonly(
           "step_text",
-          [](const SegmentRef& r) { return r.data->trace.stepTexts[std::size_t(r.index)]; },
+          [](const SegmentRef& r) {
+            return narrateStep(r.data->trace.steps[std::size_t(r.index)],
+                               sceneNames(*r.data->scene, Language::English), Language::English);
+          },
           "What the engine's step of this ray did, in words.")
       .def_property_readonly("children",
                              [](const SegmentRef& r) {
@@ -276,7 +288,8 @@ Made by raylab.trace or Stepper.tree().)")
       .def_property_readonly("depth", [](const TraceData& d) { return d.trace.depth(); })
       .def_property_readonly("truncated", [](const TraceData& d) { return d.trace.tree.truncated; })
       .def_property_readonly("message", [](const TraceData& d) { return d.trace.tree.message; })
-      .def_property_readonly("step_texts", [](const TraceData& d) { return d.trace.stepTexts; })
+      .def_property_readonly("step_texts",
+                             [](const TraceData& d) { return stepTexts(d.trace, *d.scene); })
       .def_property_readonly("segments",
                              [](const std::shared_ptr<TraceData>& d) {
                                std::vector<SegmentRef> out;
@@ -292,7 +305,7 @@ Made by raylab.trace or Stepper.tree().)")
              if (i < 0 || i >= n) throw py::index_error("segment index out of range");
              return SegmentRef{d, i};
            })
-      .def("summary", [](const TraceData& d) { return d.trace.summary(); })
+      .def("summary", [](const TraceData& d) { return traceSummary(d.trace, Language::English); })
       .def(
           "to_json",
           [](const TraceData& d) {
@@ -311,7 +324,7 @@ times, parents, depths, objects, hits (N); kinds and end_reasons (N strings).)")
       .def("__repr__", [](const TraceData& d) {
         return "<raylab.Trace " + std::string(toString(d.trace.algorithm)) + " pixel (" +
                std::to_string(d.trace.x) + ", " + std::to_string(d.trace.y) +
-               "): " + d.trace.summary() + ">";
+               "): " + traceSummary(d.trace, Language::English) + ">";
       });
 
   m.def(
@@ -377,12 +390,13 @@ sample, advanced one ray at a time: the real algorithm, not a replay (core's Ste
           "reset",
           [](StepperHandle& h) {
             h.stepper->reset();
-            h.stepTexts.clear();
+            h.steps.clear();
           },
           "Back to before the first step (same pixel, sample and seed).")
       .def_property_readonly("done", [](const StepperHandle& h) { return h.stepper->done(); })
       .def_property_readonly(
-          "last_event", [](const StepperHandle& h) { return eventDict(h.stepper->lastEvent()); },
+          "last_event",
+          [](const StepperHandle& h) { return eventDict(h.stepper->lastEvent(), *h.scene); },
           "What the last step did: ray, end_reason, spawned, text.")
       .def_property_readonly(
           "queue",
@@ -408,8 +422,12 @@ sample, advanced one ray at a time: the real algorithm, not a replay (core's Ste
             t.x = t.tree.pixelX;
             t.y = t.tree.pixelY;
             t.sample = t.tree.sample;
-            t.stepTexts = h.stepTexts;
-            t.stepTexts.resize(t.tree.segments.size());
+            // The steps taken; a ray still queued is told from the tree (it waits).
+            t.steps = h.steps;
+            t.steps.resize(t.tree.segments.size());
+            for (const RaySegment& s : t.tree.segments)
+              if (t.steps[std::size_t(s.id)].ray != s.id)
+                t.steps[std::size_t(s.id)] = stepEventOf(s);
             t.counts = h.stepper->counts();
             t.estimate = h.stepper->estimate();
             return data;
@@ -418,7 +436,7 @@ sample, advanced one ray at a time: the real algorithm, not a replay (core's Ste
       .def("__iter__", [](py::object self) { return self; })
       .def("__next__", [](StepperHandle& h) {
         if (!h.step()) throw py::stop_iteration();
-        return eventDict(h.stepper->lastEvent());
+        return eventDict(h.stepper->lastEvent(), *h.scene);
       });
 }
 

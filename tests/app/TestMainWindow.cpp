@@ -4,6 +4,8 @@
 // with GLX (QVTKOpenGLNativeWidget needs real OpenGL): runs under xvfb with xcb.
 #include "WindowTest.h"
 
+#include "raylab/core/InspectorWords.h"
+
 #include <QMenuBar>
 
 namespace raylab::app {
@@ -229,7 +231,8 @@ TEST_F(MainWindowTest, 09_ClickingARayInspectsIt) {
   EXPECT_NE(text.find("Ray #0: camera ray, depth 0"), std::string::npos) << text;
   EXPECT_NE(text.find("object      'blue cube'\n  material    'blue' (glossy)"), std::string::npos)
       << text;
-  EXPECT_NE(text.find(expected.rayText().substr(0, 200)), std::string::npos) << text;
+  EXPECT_NE(text.find(rayText(expected, Language::English).substr(0, 200)), std::string::npos)
+      << text;
   EXPECT_NE(text.find("Exact oracle (CGAL) on 'blue cube'"), std::string::npos);
   EXPECT_NE(text.find("agrees with double precision"), std::string::npos) << text;
 

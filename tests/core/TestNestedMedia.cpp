@@ -6,6 +6,7 @@
 #include "raylab/core/NestedMedia.h"
 
 #include "TransportScenes.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Tracer.h"
@@ -205,13 +206,21 @@ TEST(NestedVolumes, 03_TheInspectorListsTheMediaAndThePair) {
   const std::vector<const RaySegment*> chain = refractionChain(stepper.tree());
   ASSERT_EQ(chain.size(), 4u);
   const RayInspection in = RayInspector::inspect(scene, stepper.tree(), chain[1]->id, false);
-  EXPECT_EQ(in.media,
+  // The inspector's row of a field, in English.
+  const auto row = [](const RayInspection& r, const std::string& field) {
+    for (const InspectorRow& line : inspectorRows(r, Language::English))
+      if (line.field == field) return line.value;
+    return std::string("(no row)");
+  };
+  EXPECT_EQ(row(in, "inside"),
             "'glass ball' (n 1.5, priority 2), 'water ball' (n 1.33, priority 1): n = 1.5");
-  EXPECT_EQ(in.indices, "1.5 -> 1.33 (leaving 'glass ball')");
-  EXPECT_THAT(in.rayText(), ::testing::HasSubstr("inside      'glass ball'"));
+  EXPECT_EQ(row(in, "indices"), "1.5 -> 1.33 (leaving 'glass ball')");
+  EXPECT_THAT(rayText(in, Language::English), ::testing::HasSubstr("inside      'glass ball'"));
+  EXPECT_THAT(rayText(in, Language::Chinese),
+              ::testing::HasSubstr("所在介质  “glass ball” (n 1.5, 优先级 2)"));
   const RayInspection first = RayInspector::inspect(scene, stepper.tree(), 0, false);
-  EXPECT_EQ(first.media, "none (air)");
-  EXPECT_EQ(first.indices, "1 -> 1.5 (entering 'glass ball')");
+  EXPECT_EQ(row(first, "inside"), "none (air)");
+  EXPECT_EQ(row(first, "indices"), "1 -> 1.5 (entering 'glass ball')");
   // A camera inside the water starts in it.
   Scene under = overlappingBalls();
   under.camera.position = Point3(1.2, 0, 0);

@@ -1,6 +1,7 @@
 // The ray inspector: a recorded segment read against its scene (geometry, material,
 // energy, why it ended) and its hit checked by the exact oracle, on a hand-made scene
 // whose numbers are derived beside the assertions.
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/RayInspector.h"
 
 #include "TransportScenes.h"
@@ -59,6 +60,14 @@ RayTree traceTree(const Scene& scene, Algorithm algorithm, int x, int y, int sam
   return stepper.tree();
 }
 
+/// The oracle check's rows and notes as one text (InspectorWords.h).
+std::string said(const OracleCheck& check) {
+  std::string text;
+  for (const InspectorRow& row : oracleRows(check, Language::English))
+    text += row.field + " " + row.value + "\n";
+  return text;
+}
+
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
@@ -68,7 +77,7 @@ TEST(RayInspector, 01_CameraRayHitsTheBallAtFour) {
   const RayTree tree = traceTree(scene, Algorithm::RayCasting, 5, 5);
   ASSERT_GE(tree.segments.size(), 2u);
   const RayInspection r = RayInspector::inspect(scene, tree, 0);
-  const std::string text = r.toString();
+  const std::string text = inspectorText(r, Language::English);
   EXPECT_EQ(r.segment.kind, RayKind::Camera);
   EXPECT_EQ(r.segment.depth, 0);
   EXPECT_EQ(r.segment.parent, -1);
@@ -82,7 +91,9 @@ TEST(RayInspector, 01_CameraRayHitsTheBallAtFour) {
   ASSERT_TRUE(r.material.has_value());
   EXPECT_EQ(r.material->name, "red");
   EXPECT_EQ(r.material->type, MaterialType::Diffuse);
-  EXPECT_TRUE(contains(r.material->parameters, "albedo (0.7, 0.1, 0.1)")) << r.material->parameters;
+  EXPECT_TRUE(contains(materialParameters(r.material->material, Language::English),
+                       "albedo (0.7, 0.1, 0.1)"))
+      << materialParameters(r.material->material, Language::English);
   EXPECT_EQ(r.segment.endReason, EndReason::Spawned);  // its shadow ray to the lamp
   EXPECT_EQ(r.segment.childCount, 1);
   // The camera ray's energy is the pixel's estimate: the lamp lights the ball.
@@ -116,9 +127,9 @@ TEST(RayInspector, 02_ExactOracleAgreesWithinTheBound) {
   EXPECT_LE(std::abs(check.comparison.floating->t - check.comparison.exact.t), check.tBound);
   EXPECT_NEAR(check.comparison.exact.cosine, 1.0, 1e-12);  // head-on
   EXPECT_TRUE(check.agrees);
-  EXPECT_TRUE(check.notes.empty()) << check.toString();
+  EXPECT_TRUE(check.notes.empty()) << said(check);
   EXPECT_EQ(check.recordedDistance, r.distance);
-  const std::string text = r.toString();
+  const std::string text = inspectorText(r, Language::English);
   EXPECT_TRUE(contains(text, "Exact oracle (CGAL) on 'ball'")) << text;
   EXPECT_TRUE(contains(text, "exact       Hit, t = 4\n")) << text;
   EXPECT_TRUE(contains(text, "verdict     agrees with double precision")) << text;
@@ -131,7 +142,7 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   const RayTree tree = traceTree(open, Algorithm::RayCasting, 5, 5);
   ASSERT_EQ(tree.segments.size(), 2u);
   const RayInspection shadow = RayInspector::inspect(open, tree, 1);
-  const std::string text = shadow.toString();
+  const std::string text = inspectorText(shadow, Language::English);
   EXPECT_EQ(shadow.segment.kind, RayKind::Shadow);
   EXPECT_EQ(shadow.segment.parent, 0);
   EXPECT_EQ(shadow.segment.endReason, EndReason::ReachedLight);
@@ -155,14 +166,14 @@ TEST(RayInspector, 03_ShadowRayNamesItsLightOrItsBlocker) {
   const RayTree blockedTree = traceTree(closed, Algorithm::RayCasting, 5, 5);
   ASSERT_EQ(blockedTree.segments.size(), 2u);
   const RayInspection blocked = RayInspector::inspect(closed, blockedTree, 1);
-  const std::string blockedText = blocked.toString();
+  const std::string blockedText = inspectorText(blocked, Language::English);
   EXPECT_EQ(blocked.segment.endReason, EndReason::Occluded);
   EXPECT_TRUE(blocked.segment.hit);
   EXPECT_EQ(blocked.objectName, "blocker");
   EXPECT_EQ(blocked.energy, 0.0);
   ASSERT_TRUE(blocked.oracle.has_value());
   EXPECT_EQ(blocked.oracle->comparison.exact.classification, ExactClass::Hit);
-  EXPECT_TRUE(blocked.oracle->agrees) << blocked.oracle->toString();
+  EXPECT_TRUE(blocked.oracle->agrees) << said(*blocked.oracle);
   EXPECT_TRUE(contains(blockedText, "blocked by 'blocker' before reaching the light 'lamp'"))
       << blockedText;
   EXPECT_TRUE(contains(blockedText, "blocked at")) << blockedText;
@@ -178,7 +189,7 @@ TEST(RayInspector, 04_EscapedRayHitsNothing) {
   const RayTree tree = traceTree(scene, Algorithm::RayCasting, 0, 0);
   ASSERT_EQ(tree.segments.size(), 1u);
   const RayInspection r = RayInspector::inspect(scene, tree, 0);
-  const std::string text = r.toString();
+  const std::string text = inspectorText(r, Language::English);
   EXPECT_EQ(r.segment.endReason, EndReason::Escaped);
   EXPECT_FALSE(r.segment.hit);
   EXPECT_EQ(r.segment.object, -1);
@@ -201,8 +212,8 @@ TEST(RayInspector, 05_OracleSaysWhenTheRayIsDegenerate) {
   EXPECT_EQ(tangent.comparison.exact.t, 5.0);
   EXPECT_FALSE(tangent.agrees);
   ASSERT_FALSE(tangent.notes.empty());
-  EXPECT_TRUE(contains(tangent.toString(), "Exactly tangent")) << tangent.toString();
-  EXPECT_TRUE(contains(tangent.toString(), "differs from double precision:"));
+  EXPECT_TRUE(contains(said(tangent), "Exactly tangent")) << said(tangent);
+  EXPECT_TRUE(contains(said(tangent), "differs from double precision:"));
 
   // The blocker spans x in [-0.5, 0.5], y in [2, 3], z in [-2.5, -1.5]: the line
   // x = 0.5, y = 3 runs along its top right edge.
@@ -210,7 +221,7 @@ TEST(RayInspector, 05_OracleSaysWhenTheRayIsDegenerate) {
                                                   Point3(0.5, 3, -1.5));
   EXPECT_NE(edge.comparison.exact.classification, ExactClass::Hit);
   EXPECT_FALSE(edge.agrees);
-  EXPECT_FALSE(edge.notes.empty()) << edge.toString();
+  EXPECT_FALSE(edge.notes.empty()) << said(edge);
 }
 
 TEST(RayInspector, 06_MovingObjectIsMetInItsFrame) {
@@ -222,8 +233,8 @@ TEST(RayInspector, 06_MovingObjectIsMetInItsFrame) {
       RayInspector::checkHit(scene, 0, Point3(0.0), Vec3(0, 0, -1), 0.5, Point3(0, 0, -3));
   EXPECT_EQ(check.ray.origin, Point3(0, 0, -1));  // moved back by 0.5 * (0, 0, 2)
   EXPECT_EQ(check.comparison.exact.t, 3.0);
-  EXPECT_TRUE(check.agrees) << check.toString();
-  EXPECT_TRUE(check.notes.empty()) << check.toString();
+  EXPECT_TRUE(check.agrees) << said(check);
+  EXPECT_TRUE(check.notes.empty()) << said(check);
 }
 
 TEST(RayInspector, 07_SampledDirectionsShowTheirPdf) {
@@ -237,8 +248,10 @@ TEST(RayInspector, 07_SampledDirectionsShowTheirPdf) {
       const RayInspection r = RayInspector::inspect(scene, tree, s.id, false);
       EXPECT_GT(r.segment.pdf, 0.0);
       EXPECT_LE(r.segment.pdf, 1.0 / kPi + 1e-12);  // cos / pi <= 1 / pi
-      EXPECT_TRUE(contains(r.toString(), " per sr")) << r.toString();
-      EXPECT_TRUE(contains(r.toString(), "Exact oracle: not computed") || !r.segment.hit);
+      EXPECT_TRUE(contains(inspectorText(r, Language::English), " per sr"))
+          << inspectorText(r, Language::English);
+      EXPECT_TRUE(contains(inspectorText(r, Language::English), "Exact oracle: not computed") ||
+                  !r.segment.hit);
       found = true;
       break;
     }
@@ -263,7 +276,8 @@ TEST(RayInspector, 08_MaterialParametersFollowTheType) {
     scene.objects[0].material = m;
     const RayInspection r = RayInspector::inspect(scene, tree, 0, false);
     ASSERT_TRUE(r.material.has_value());
-    EXPECT_TRUE(contains(r.material->parameters, expected[m])) << r.material->parameters;
+    EXPECT_TRUE(contains(materialParameters(r.material->material, Language::English), expected[m]))
+        << materialParameters(r.material->material, Language::English);
   }
   EXPECT_TRUE(RayInspector::inspect(scene, tree, 0, false).material->emitter);
 }
@@ -304,17 +318,17 @@ TEST(RayInspector, 10_SceneCrossingsListEveryHitInOrder) {
   }
   EXPECT_TRUE(c[0].closed);
   EXPECT_FALSE(c[2].closed);
-  EXPECT_EQ(crossingsText(scene, c),
+  EXPECT_EQ(crossingsText(scene, c, Language::English),
             "t = 4  enters 'ball'\nt = 6  leaves 'ball'\nt = 10  crosses the front of "
             "'wall'\nt = 14  enters 'mover'\nt = 16  leaves 'mover'\n");
-  EXPECT_NE(crossingsText(scene, c, true).find("进入“ball”"), std::string::npos);
+  EXPECT_NE(crossingsText(scene, c, Language::Chinese).find("进入“ball”"), std::string::npos);
   // At most maxCount, the nearest; a ray starting inside the ball has only its exit.
   EXPECT_EQ(sceneCrossings(scene, Point3(0.0), Vec3(0, 0, -1), 0.5, 2).size(), 2u);
   const auto inside = sceneCrossings(scene, Point3(0, 0, -5), Vec3(0, 0, -1), 0.5);
   ASSERT_FALSE(inside.empty());
   EXPECT_NEAR(inside[0].t, 1.0, 1e-12);
   EXPECT_FALSE(inside[0].entering);
-  EXPECT_EQ(crossingsText(scene, {}), "The ray crosses no surface.\n");
+  EXPECT_EQ(crossingsText(scene, {}, Language::English), "The ray crosses no surface.\n");
 }
 
 }  // namespace

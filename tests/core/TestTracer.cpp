@@ -5,8 +5,10 @@
 #include "raylab/core/Tracer.h"
 
 #include "TransportScenes.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
+#include "raylab/core/RayWords.h"
 #include "raylab/core/SpawnRule.h"
 
 #include <gtest/gtest.h>
@@ -50,11 +52,11 @@ TEST(Tracer, 01_RayCountsAddAndTotal) {
   EXPECT_EQ(RayCounts{}.total(), 0u);
 }
 
-// One vocabulary for how a ray ended: every reason has its own JSON name, label and
-// clause, the JSON name reads back as the same reason, and describeEnd names the object
-// hit and the children spawned.
+// One vocabulary for how a ray ended: every reason has its own JSON name and label, and
+// the JSON name reads back as the same reason (the phrase table's words for people are
+// tested in TestPhrases).
 TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
-  std::set<std::string> jsonNames, labels, clauses;
+  std::set<std::string> jsonNames, labels;
   for (int r = 0; r <= int(EndReason::Stopped); ++r) {
     const EndReasonWords& w = words(EndReason(r));
     EXPECT_EQ(w.reason, EndReason(r));
@@ -62,42 +64,10 @@ TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
     EXPECT_STREQ(toString(EndReason(r)), w.label);
     jsonNames.insert(w.json);
     labels.insert(w.label);
-    clauses.insert(w.clause);
   }
   EXPECT_EQ(jsonNames.size(), std::size_t(EndReason::Stopped) + 1);
   EXPECT_EQ(labels.size(), jsonNames.size());
-  EXPECT_EQ(clauses.size(), jsonNames.size());
   EXPECT_FALSE(endReasonFromJson("hit a light"));  // a label is not a JSON name
-
-  const std::vector<std::string> names = {"floor", "lamp"};
-  RaySegment s;
-  s.object = 0;
-  s.hit = true;
-  s.endReason = EndReason::Spawned;
-  s.firstChild = 4;
-  s.childCount = 2;
-  EXPECT_EQ(describeEnd(s, names), "hit 'floor' and spawned 2 rays (#4..#5)");
-  s.object = 1;
-  s.endReason = EndReason::HitLight;
-  EXPECT_EQ(describeEnd(s, names), "hit the light 'lamp': the path ends there");
-  s.endReason = EndReason::Occluded;
-  EXPECT_EQ(describeEnd(s, names), "was blocked by 'lamp' before reaching its light");
-  // A shadow ray's light by name: an area light (an object), a point light.
-  s.object = 0;
-  s.lightObject = 1;
-  EXPECT_EQ(describeEnd(s, names), "was blocked by 'floor' before reaching the light 'lamp'");
-  s.lightObject = -1;
-  s.pointLight = 0;
-  EXPECT_EQ(describeEnd(s, names, {"key"}),
-            "was blocked by 'floor' before reaching the light 'key'");
-  EXPECT_EQ(describeEnd(s, names), "was blocked by 'floor' before reaching its light");
-  s.endReason = EndReason::ReachedLight;
-  EXPECT_EQ(describeEnd(s, names, {"key"}),
-            "reached the light 'key' unblocked and delivers its radiance");
-  s.pointLight = -1;
-  s.object = -1;
-  s.endReason = EndReason::Escaped;
-  EXPECT_EQ(describeEnd(s, names), words(EndReason::Escaped).clause);
   EXPECT_EQ(SpawnRule::create(settingsFor(Algorithm::Whitted, 1))->kind(), Algorithm::Whitted);
 }
 
@@ -204,15 +174,16 @@ TEST(Tracer, 05_StepperExposesQueueTreeAndEvents) {
   EXPECT_EQ(stepper.queue().front().kind, RayKind::Camera);
   ASSERT_EQ(stepper.tree().segments.size(), 1u);
   EXPECT_EQ(stepper.tree().segments[0].endReason, EndReason::Pending);
-  EXPECT_FALSE(stepper.lastEvent().text.empty());
+  EXPECT_EQ(stepper.lastEvent().ray, -1);
+  EXPECT_EQ(stepper.lastEvent().end, EndReason::Pending);
 
   // The first step processes the camera ray.
   ASSERT_TRUE(stepper.step());
   EXPECT_EQ(stepper.lastEvent().ray, 0);
   EXPECT_EQ(stepper.lastEvent().end, stepper.tree().segments[0].endReason);
   EXPECT_EQ(std::size_t(stepper.lastEvent().spawned), stepper.queue().size());
-  EXPECT_NE(stepper.lastEvent().text.find("camera ray #0"), std::string::npos)
-      << stepper.lastEvent().text;
+  EXPECT_EQ(stepper.lastEvent().kind, RayKind::Camera);
+  EXPECT_EQ(stepper.lastEvent().firstChild, stepper.queue().empty() ? -1 : 1);
   EXPECT_EQ(stepper.tree().segments.size(), 1u + stepper.queue().size());
   for (const QueuedRay& q : stepper.queue()) EXPECT_EQ(q.parent, 0);
 
@@ -449,18 +420,23 @@ TEST(Tracer, 08b_BushyGlossyRoomEndsAtTheBudget) {
   EXPECT_NE(trace.tree.message.find("ray budget reached"), std::string::npos) << trace.tree.message;
   expectFinishedTree(trace.tree, "glossy room");
   expectNearRelative(trace.estimate, trace.tree.estimate(), "glossy room");
-  // A ray that could not spawn says so in its step text.
+  // A ray that could not spawn says so in its step: no children, and how many it wanted.
   const auto stopped =
       std::find_if(trace.tree.segments.begin(), trace.tree.segments.end(),
                    [](const auto& s) { return s.endReason == EndReason::Stopped; });
   ASSERT_NE(stopped, trace.tree.segments.end());
-  EXPECT_NE(trace.stepTexts[std::size_t(stopped->id)].find(
-                "tracing stopped here (ray budget reached, or cancelled): its children were "
-                "not traced"),
+  const StepEvent& step = trace.steps[std::size_t(stopped->id)];
+  EXPECT_EQ(step.ray, stopped->id);
+  EXPECT_EQ(step.end, EndReason::Stopped);
+  EXPECT_EQ(step.spawned, 0);
+  EXPECT_GT(step.wanted, 0);
+  const std::string said =
+      narrateStep(step, sceneNames(scene, Language::English), Language::English);
+  EXPECT_NE(said.find("tracing stopped here (ray budget reached, or cancelled): its children were "
+                      "not traced ("),
             std::string::npos)
-      << trace.stepTexts[std::size_t(stopped->id)];
-  EXPECT_NE(trace.stepTexts[std::size_t(stopped->id)].find("would have been spawned"),
-            std::string::npos);
+      << said;
+  EXPECT_NE(said.find("would have been spawned)"), std::string::npos) << said;
 }
 
 // A trace can be cancelled from another thread (the window's Cancel): a flag set before
@@ -495,7 +471,7 @@ TEST(Tracer, 08c_TracePixelCanBeCancelledFromAnotherThread) {
   EXPECT_TRUE(during.tree.truncated);
   EXPECT_EQ(during.tree.message.rfind("cancelled after ", 0), 0u) << during.tree.message;
   EXPECT_LT(during.tree.segments.size(), limits.memoryBudget / sizeof(RaySegment));
-  EXPECT_EQ(during.stepTexts.size(), during.tree.segments.size());
+  EXPECT_EQ(during.steps.size(), during.tree.segments.size());
   EXPECT_EQ(during.counts.total(), during.tree.segments.size());
   expectFinishedTree(during.tree, "cancelled");
   expectNearRelative(during.estimate, during.tree.estimate(), "cancelled");
@@ -523,7 +499,8 @@ TEST(Tracer, 09_TraceIsDeterministic) {
 
 // One traced pixel (tracePixel), as the window, `trace`, `animate` and `compare` use it:
 // its estimate is the image renderer's value bit for bit, every recorded ray has its step
-// text (the engine's narration), and the summary counts the rays of the tree.
+// (the facts the front ends narrate: the ray, its kind, end, object and children), and the
+// summary counts the rays of the tree.
 TEST(Tracer, 10_PixelTraceIsTheRenderersSampleWithItsNarration) {
   const Scene scene = allMaterialsScene();
   for (Algorithm algorithm : kAllAlgorithms) {
@@ -534,19 +511,24 @@ TEST(Tracer, 10_PixelTraceIsTheRenderersSampleWithItsNarration) {
     const PixelTrace trace = tracePixel(scene, settings, 8, 6, 1);
     EXPECT_EQ(trace.estimate, tracer.trace(8, 6, 1)) << toString(algorithm);
     EXPECT_EQ(trace.algorithm, algorithm);
-    ASSERT_EQ(trace.stepTexts.size(), trace.tree.segments.size());
-    for (std::size_t i = 0; i < trace.stepTexts.size(); ++i) {
+    ASSERT_EQ(trace.steps.size(), trace.tree.segments.size());
+    const SceneNames names = sceneNames(scene, Language::English);
+    for (std::size_t i = 0; i < trace.steps.size(); ++i) {
       const RaySegment& seg = trace.tree.segments[i];
+      const StepEvent& step = trace.steps[i];
+      EXPECT_EQ(step.ray, seg.id);
+      EXPECT_EQ(step.kind, seg.kind);
+      EXPECT_EQ(step.end, seg.endReason);
+      EXPECT_EQ(step.object, seg.object);
+      EXPECT_EQ(step.firstChild, seg.firstChild);
+      EXPECT_EQ(step.spawned, seg.childCount);
+      const std::string said = narrateStep(step, names, Language::English);
       const std::string subject =
           std::string(toString(seg.kind)) + " ray #" + std::to_string(seg.id) + " ";
-      EXPECT_EQ(trace.stepTexts[i].rfind(subject, 0), 0u) << trace.stepTexts[i];
-      EXPECT_NE(
-          trace.stepTexts[i].find(describeEnd(seg, tracer.objectNames(), tracer.pointLightNames())),
-          std::string::npos)
-          << trace.stepTexts[i];
+      EXPECT_EQ(said, subject + endClause(stepEventOf(seg), names, Language::English));
     }
     EXPECT_EQ(trace.counts.total(), trace.tree.segments.size());
-    const std::string summary = trace.summary();
+    const std::string summary = traceSummary(trace, Language::English);
     EXPECT_EQ(summary.rfind(std::to_string(trace.tree.segments.size()) + " ray", 0), 0u) << summary;
     EXPECT_NE(summary.find("depth " + std::to_string(trace.depth())), std::string::npos);
   }
@@ -739,7 +721,13 @@ TEST(Tracer, 14_WhittedWeighsAPhongGlassBallsRaysByFresnel) {
     EXPECT_EQ(t.kind, RayKind::Refraction);
     EXPECT_NEAR(r.weight.x, c.reflected, 1e-7);
     EXPECT_NEAR(t.weight.x, c.refracted, 1e-7);
-    EXPECT_EQ(RayInspector::inspect(scene, tree, r.id, false).weightNote, c.note);
+    // The inspector's weight row: "(w, w, w) = " and the note.
+    std::string weight;
+    for (const InspectorRow& row :
+         inspectorRows(RayInspector::inspect(scene, tree, r.id, false), Language::English))
+      if (row.field == "weight") weight = row.value;
+    const std::size_t equals = weight.find(" = ");
+    EXPECT_EQ(equals == std::string::npos ? std::string() : weight.substr(equals + 3), c.note);
   }
 }
 

@@ -4,6 +4,7 @@
 // anything else (another exception, a sanitizer report, a timeout, a huge allocation) is a
 // finding.
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/RayWords.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -17,8 +18,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     tree.propagate();
     (void)tree.estimate();
     (void)tree.toString();
+    const raylab::SceneNames names{info.objectNames, {}};
     for (const raylab::RaySegment& s : tree.segments)
-      (void)raylab::describeEnd(s, info.objectNames);
+      (void)raylab::narrateRay(tree, s.id, names, raylab::Language::English);
   } catch (const raylab::RayTreeJson::Error&) {
   }
   return 0;

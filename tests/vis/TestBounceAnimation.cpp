@@ -84,13 +84,26 @@ TEST(BounceAnimation, 03_CaptionsTellWhatEachStepDoes) {
   processing.order = RevealOrder::Processing;
   processing.framesPerStep = 4;
   const int last = frameCount(trace.tree, processing) - 1;
+  const SceneNames names = sceneNames(materialsScene(), Language::English);
+  const auto stepCaption = [&](const PixelTrace& t, const AnimationSettings& a, int frame) {
+    return vis::stepCaption(t, a, frame, names);
+  };
+  const auto said = [&](int id) {
+    return narrateStep(trace.steps[std::size_t(id)], names, Language::English);
+  };
   EXPECT_NE(stepCaption(trace, processing, 0).find("nothing revealed"), std::string::npos);
   EXPECT_EQ(stepCaption(trace, processing, 1),
-            "Step 1 of " + std::to_string(last / 4) + ": " + trace.stepTexts[0] + ".");
+            "Step 1 of " + std::to_string(last / 4) + ": " + said(0) + ".");
+  EXPECT_EQ(said(0).rfind("camera ray #0 hit '", 0), 0u) << said(0);
   EXPECT_EQ(stepCaption(trace, processing, 4 + 2).find("Step 2 of"), 0u);
-  EXPECT_NE(stepCaption(trace, processing, 4 + 2).find(trace.stepTexts[1]), std::string::npos);
+  EXPECT_NE(stepCaption(trace, processing, 4 + 2).find(said(1)), std::string::npos);
   const std::string end = stepCaption(trace, processing, last);
   EXPECT_EQ(end.substr(end.size() - 24), "The whole tree is shown.");
+  // In Chinese, from the same phrase table.
+  const std::string zh = vis::stepCaption(
+      trace, processing, 1, sceneNames(materialsScene(), Language::Chinese), Language::Chinese);
+  EXPECT_EQ(zh.rfind("第 1 步（共 " + std::to_string(last / 4) + " 步）：相机光线 #0 击中“", 0), 0u)
+      << zh;
 
   // Depth 1 of the Whitted glass tree: its rays counted by kind, as in the tree.
   const AnimationSettings depth = settings();

@@ -1,5 +1,7 @@
 #include "raylab/vis/BounceAnimation.h"
 
+#include "raylab/core/Phrases.h"
+
 #include <algorithm>
 #include <array>
 #include <climits>
@@ -66,29 +68,33 @@ RevealFrame revealFrame(const RayTree& tree, const AnimationSettings& settings, 
   return out;
 }
 
-std::string stepCaption(const PixelTrace& trace, const AnimationSettings& settings, int frame) {
+std::string stepCaption(const PixelTrace& trace, const AnimationSettings& settings, int frame,
+                        const SceneNames& names, Language language) {
   const RayTree& tree = trace.tree;
-  if (tree.segments.empty()) return "No ray tree yet.";
+  if (tree.segments.empty()) return phrase("caption.no_tree", language);
   const int perFrame = std::max(1, settings.framesPerStep);
   const int last = frameCount(tree, settings) - 1;
   frame = std::clamp(frame, 0, last);
   const int steps = last / perFrame;
-  if (frame == 0) return "Frame 0: nothing revealed yet. Press Play or Step.";
+  if (frame == 0) return phrase("caption.frame_zero", language);
   const int step = (frame - 1) / perFrame;
 
   std::string text;
   if (settings.order == RevealOrder::Processing) {
-    // The engine's own words for the ray (or the first of the rays) leaving now.
+    // What the engine did with the ray (or the first of the rays) leaving now.
     const int perStep = std::max(1, settings.raysPerStep);
     const int first = step * perStep;
     const int end = std::min(int(tree.segments.size()), first + perStep);
-    const std::string what = std::size_t(first) < trace.stepTexts.size()
-                                 ? trace.stepTexts[std::size_t(first)]
-                                 : std::string("ray #") + std::to_string(first);
-    text = "Step " + std::to_string(step + 1) + " of " + std::to_string(steps) + ": ";
-    text += end - first == 1 ? what + "."
-                             : "rays #" + std::to_string(first) + "..#" + std::to_string(end - 1) +
-                                   "; first: " + what + ".";
+    const std::string what =
+        std::size_t(first) < trace.steps.size()
+            ? narrateStep(trace.steps[std::size_t(first)], names, language)
+            : phrase("caption.step.unrecorded", language, {{"id", std::to_string(first)}});
+    text = phrase(end - first == 1 ? "caption.step.one" : "caption.step.many", language,
+                  {{"step", std::to_string(step + 1)},
+                   {"steps", std::to_string(steps)},
+                   {"first", std::to_string(first)},
+                   {"last", std::to_string(end - 1)},
+                   {"what", what}});
   } else {
     // Every ray of this depth travels at once: count them by kind.
     std::array<int, kRayKindCount> byKind{};
@@ -98,16 +104,13 @@ std::string stepCaption(const PixelTrace& trace, const AnimationSettings& settin
         ++byKind[std::size_t(s.kind)];
         ++count;
       }
-    std::string parts;
-    for (int k = 0; k < kRayKindCount; ++k)
-      if (byKind[std::size_t(k)] > 0)
-        parts += (parts.empty() ? "" : ", ") + std::to_string(byKind[std::size_t(k)]) + " " +
-                 toString(RayKind(k));
-    text = "Depth " + std::to_string(step) + " of " + std::to_string(steps - 1) + ": " +
-           std::to_string(count) + (count == 1 ? " ray travels (" : " rays travel (") + parts +
-           ").";
+    text = phrase(count == 1 ? "caption.depth.one" : "caption.depth.many", language,
+                  {{"depth", std::to_string(step)},
+                   {"deepest", std::to_string(steps - 1)},
+                   {"count", std::to_string(count)},
+                   {"kinds", kindCounts(byKind, language, true)}});
   }
-  if (frame == last) text += " The whole tree is shown.";
+  if (frame == last) text += phrase("caption.whole_tree", language);
   return text;
 }
 

@@ -1,6 +1,7 @@
 #include "BvhActors.h"
 
 #include "raylab/core/Lesson.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/TriangleMesh.h"
 
 #include "LegendText.h"
@@ -238,17 +239,18 @@ void BvhActors::build(const Scene& scene, const BvhStyle& newStyle) {
 
   // The legend: which colour is which level, and with a ray the greys of the boxes it
   // passed by or met only beyond its nearest hit.
-  const bool zh = style.language == Language::Chinese;
+  const Language language = style.language;
   std::vector<std::pair<std::string, Vec3>> rows;
   if (summary.boxes > 0) {
-    rows.emplace_back(zh ? "包围盒层级" : "box level", Vec3(0.95));
+    rows.emplace_back(phrase("legend.bvh.level", language), Vec3(0.95));
     const int last = std::min({style.lastLevel, summary.depth, style.firstLevel + 7});
     for (int level = std::max(0, style.firstLevel); level <= last; ++level)
-      rows.emplace_back((zh ? "第 " : "level ") + std::to_string(level) + (zh ? " 层" : ""),
-                        bvhLevelColour(level));
+      rows.emplace_back(
+          phrase("legend.bvh.level_number", language, {{"level", std::to_string(level)}}),
+          bvhLevelColour(level));
     if (style.ray) {
-      rows.emplace_back(zh ? "未命中" : "missed", bvhMissedColour());
-      rows.emplace_back(zh ? "已剔除" : "culled", bvhCulledColour());
+      rows.emplace_back(phrase("legend.bvh.missed", language), bvhMissedColour());
+      rows.emplace_back(phrase("legend.bvh.culled", language), bvhCulledColour());
     }
   }
   for (std::size_t i = 0; i < legend.size(); ++i) {

@@ -4,6 +4,7 @@
 #include "VtkImage.h"
 
 #include "raylab/core/Check.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/vis/ComparisonCaptions.h"
 #include "raylab/vis/ComparisonView.h"
 #include "raylab/vis/Display.h"
@@ -181,11 +182,8 @@ void ConvergencePlot::build() {
   // Step 3: log-log axes a little wider than the data (whole decades when they fit).
   vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
   vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
-  const bool zh = m_language == Language::Chinese;
-  bottom->SetTitle(samples ? (zh ? "每像素采样数" : "samples per pixel")
-                           : (zh ? "渲染时间（秒）" : "render time (s)"));
-  left->SetTitle(zh ? "误差（与路径追踪参考图像的均方根误差）"
-                    : "error (RMSE against path-traced reference)");
+  bottom->SetTitle(phrase(samples ? "plot.axis.samples" : "plot.axis.time", m_language));
+  left->SetTitle(phrase("plot.axis.error", m_language));
   for (vtkAxis* axis : {bottom, left}) {
     axis->SetLogScale(true);
     axis->SetGridVisible(true);
@@ -196,16 +194,16 @@ void ConvergencePlot::build() {
     left->SetBehavior(vtkAxis::FIXED);
     left->SetUnscaledRange(yMin / 1.5, yMax * 1.5);
   }
-  std::string title = zh ? "收敛曲线" : "Convergence";
-  const std::string& name =
-      zh && !m_result.sceneNameZh.empty() ? m_result.sceneNameZh : m_result.sceneName;
-  if (!name.empty()) title += (zh ? "：" : ": ") + name;
-  title += (zh ? "（" : " (") + std::to_string(m_result.width) + "x" +
-           std::to_string(m_result.height) + (zh ? "，" : ", ") +
-           (m_result.compare.equalTime() ? (zh ? "等时间" : "equal time")
-                                         : (zh ? "等采样数" : "equal samples")) +
-           (zh ? "）" : ")");
-  chart->SetTitle(title);
+  const LocalText sceneName{
+      m_result.sceneName, m_result.sceneNameZh.empty() ? m_result.sceneName : m_result.sceneNameZh};
+  const std::string& name = sceneName.in(m_language);
+  chart->SetTitle(
+      phrase(name.empty() ? "plot.title" : "plot.title.named", m_language,
+             {{"scene", name},
+              {"size", std::to_string(m_result.width) + "x" + std::to_string(m_result.height)},
+              {"budget", phrase(m_result.compare.equalTime() ? "plot.budget.equal_time"
+                                                             : "plot.budget.equal_samples",
+                                m_language)}}));
   useFontFor(chart->GetTitleProperties(), m_language);
   for (vtkAxis* axis : {bottom, left}) {
     useFontFor(axis->GetTitleProperties(), m_language);

@@ -2,6 +2,7 @@
 
 #include "LegendText.h"
 #include "TextFonts.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/StudentHooks.h"
 #include "raylab/vis/ComparisonCaptions.h"
 
@@ -223,18 +224,19 @@ void RayTreeActors::updateLegend() {
     entry->GetTextProperty()->SetColor(colour.x, colour.y, colour.z);
   };
   // The legend's words in the style's language.
-  const bool zh = style.language == Language::Chinese;
+  const Language language = style.language;
+  const auto say = [&](const char* key) { return phrase(key, language); };
   useFontFor(m_legendTitle->GetTextProperty(), style.language);
   for (auto& entry : m_legendEntries) useFontFor(entry->GetTextProperty(), style.language);
-  const char* energyWords[2][3] = {{"high", "medium", "low / none"}, {"高", "中", "低 / 无"}};
+  const char* energyWords[3] = {"legend.energy.high", "legend.energy.medium", "legend.energy.low"};
   for (std::size_t i = 0; i < m_energyWords.size(); ++i) {
     useFontFor(m_energyWords[i]->GetTextProperty(), style.language);
-    m_energyWords[i]->SetInput(energyWords[zh ? 1 : 0][i]);
+    m_energyWords[i]->SetInput(say(energyWords[i]).c_str());
   }
   switch (style.colouring) {
     case RayColouring::Energy: {
       // The shared log scale: grey at `low`, green at the geometric mean, blue at `high`.
-      m_legendTitle->SetInput(zh ? "光线能量" : "ray energy");
+      m_legendTitle->SetInput(say("legend.energy").c_str());
       vtkNew<vtkLookupTable> table;
       const int n = 256;
       table->SetNumberOfTableValues(n);
@@ -251,17 +253,16 @@ void RayTreeActors::updateLegend() {
       break;
     }
     case RayColouring::Kind:
-      m_legendTitle->SetInput(zh ? "光线类型" : "ray kind");
+      m_legendTitle->SetInput(say("legend.kind").c_str());
       for (int k = 0; k < kRayKindCount; ++k)
         addEntry(rayKindName(RayKind(k), style.language), kindColour(RayKind(k)));
       break;
     case RayColouring::Depth: {
-      m_legendTitle->SetInput(zh ? "深度" : "depth");
+      m_legendTitle->SetInput(say("legend.depth").c_str());
       const int deepest = geometry.deepest;
       const int every = deepest / kLegendEntries + 1;
       for (int d = 0; d <= deepest && m_legendEntryCount < kLegendEntries; d += every)
-        addEntry(d == 0 ? (zh ? "0（相机）" : "0 (camera)") : std::to_string(d),
-                 depthColour(d, deepest));
+        addEntry(d == 0 ? say("legend.depth.camera") : std::to_string(d), depthColour(d, deepest));
       break;
     }
     case RayColouring::Verdict: {

@@ -9,6 +9,7 @@
 #include "VtkImage.h"
 
 #include "raylab/core/Check.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/Plane.h"
 #include "raylab/core/SceneIntersector.h"
 #include "raylab/core/Shape.h"
@@ -339,9 +340,9 @@ void SceneView::clearSampleCloud() {
 bool SceneView::showsSampleCloud() const { return !m_impl->cloud.empty(); }
 
 std::string sampleAxisLabel(LessonSamples::Sampler sampler, Language language) {
-  const bool zh = language == Language::Chinese;
-  if (sampler == LessonSamples::Sampler::Phong) return zh ? "镜面反射方向" : "mirror direction";
-  return zh ? "法线" : "normal";
+  return phrase(
+      sampler == LessonSamples::Sampler::Phong ? "sample_axis.mirror" : "sample_axis.normal",
+      language);
 }
 
 void SceneView::setCaption(const std::string& text, Language language) {

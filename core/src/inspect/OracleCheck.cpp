@@ -1,5 +1,4 @@
 // The exact oracle beside the double-precision hit of one recorded ray (RayInspector.h).
-#include "inspect/InspectorFormat.h"
 #include "raylab/core/Check.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Shape.h"
@@ -9,8 +8,6 @@
 #include <limits>
 
 namespace raylab {
-
-using inspect::number;
 
 OracleCheck RayInspector::checkHit(const Scene& scene, int object, const Point3& origin,
                                    const Vec3& direction, double time, const Point3& hitPoint) {
@@ -43,27 +40,19 @@ OracleCheck RayInspector::checkHit(const Scene& scene, int object, const Point3&
   check.tBound = 8.0 * eps * (std::abs(t) + glm::length(check.ray.origin) + shapeSize) / cosine;
 
   // Say where the oracle disagrees or warns.
-  const std::string name = "'" + o.name + "'";
-  if (!check.comparison.agree) {
-    check.notes.push_back(
-        exact.hit()
-            ? "The exact oracle says the ray hits " + name + " but double precision misses it."
-            : "The exact oracle says the ray misses " + name + " but double precision hits it.");
-  }
+  using Kind = OracleNote::Kind;
+  check.objectName = o.name;
+  if (!check.comparison.agree)
+    check.notes.push_back({exact.hit() ? Kind::HitsButDoubleMisses : Kind::MissesButDoubleHits});
   switch (exact.classification) {
     case ExactClass::Tangent:
-      check.notes.push_back("Exactly tangent: the ray touches " + name +
-                            " without crossing it; doubles cannot decide this reliably.");
+      check.notes.push_back({Kind::Tangent});
       break;
     case ExactClass::ThroughEdge:
-      check.notes.push_back(
-          "The exact hit lies on an edge: a neighbouring face could be hit "
-          "instead in doubles.");
+      check.notes.push_back({Kind::ThroughEdge});
       break;
     case ExactClass::ThroughVertex:
-      check.notes.push_back(
-          "The exact hit lies on a vertex: a neighbouring face could be hit "
-          "instead in doubles.");
+      check.notes.push_back({Kind::ThroughVertex});
       break;
     case ExactClass::Miss:
     case ExactClass::Hit:
@@ -71,20 +60,15 @@ OracleCheck RayInspector::checkHit(const Scene& scene, int object, const Point3&
   }
   if (check.comparison.agree && floating) {
     if (check.comparison.tError > check.tBound)
-      check.notes.push_back("The double t is off by " + number(check.comparison.tError, 3) +
-                            ", more than the usual bound " + number(check.tBound, 3) +
-                            " (a grazing ray or an ill-conditioned transform).");
+      check.notes.push_back({Kind::TError, check.comparison.tError, check.tBound});
     if (exact.primitive >= 0 && floating->primitive >= 0 && exact.primitive != floating->primitive)
-      check.notes.push_back("The exact oracle hits primitive " + std::to_string(exact.primitive) +
-                            ", double precision primitive " + std::to_string(floating->primitive) +
-                            ".");
+      check.notes.push_back(
+          {Kind::Primitives, double(exact.primitive), double(floating->primitive)});
     // The tree's hit should be this object's nearest hit: else another object or the
     // origin offset moved it (worth telling, not an error of the oracle).
     const double recordedError = std::abs(check.recordedDistance - exact.t);
     if (recordedError > 1e-6 * std::max(1.0, exact.t))
-      check.notes.push_back("The recorded hit is " + number(check.recordedDistance) +
-                            " along the ray, the object's nearest exact hit " + number(exact.t) +
-                            ".");
+      check.notes.push_back({Kind::RecordedHit, check.recordedDistance, exact.t});
   }
   check.agrees = check.comparison.agree && exact.classification != ExactClass::Tangent &&
                  exact.classification != ExactClass::ThroughEdge &&

@@ -1,5 +1,4 @@
 // One recorded ray read against its scene (RayInspector::inspect).
-#include "inspect/InspectorFormat.h"
 #include "raylab/core/Fresnel.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Shape.h"
@@ -12,31 +11,30 @@ namespace raylab {
 namespace {
 
 /// Why a Reflection / Refraction child of a Fresnel-weighted Mirror, Phong or BlinnPhong hit
-/// has its weight: "kr R = 0.5 x 0.04 = 0.02 (Fresnel, incidence 0 degrees)"; "" otherwise.
-std::string rateWeightNote(const Scene& scene, const RayTree& tree, const RaySegment& s) {
-  if (s.parent < 0 || (s.kind != RayKind::Reflection && s.kind != RayKind::Refraction)) return "";
+/// has its weight (kr R or kt (1 - R)); nothing for other rays.
+std::optional<RateWeight> rateWeightOf(const Scene& scene, const RayTree& tree,
+                                       const RaySegment& s) {
+  if (s.parent < 0 || (s.kind != RayKind::Reflection && s.kind != RayKind::Refraction)) return {};
   const RaySegment& p = tree.segments[std::size_t(s.parent)];
-  if (!p.hit || p.object < 0 || p.object >= int(scene.objects.size())) return "";
+  if (!p.hit || p.object < 0 || p.object >= int(scene.objects.size())) return {};
   const int material = scene.objects[std::size_t(p.object)].material;
-  if (material < 0 || material >= int(scene.materials.size())) return "";
+  if (material < 0 || material >= int(scene.materials.size())) return {};
   const Material& m = scene.materials[std::size_t(material)];
-  if (!m.hasRates() || m.rateFresnel == FresnelModel::None) return "";
+  if (!m.hasRates() || m.rateFresnel == FresnelModel::None) return {};
   // The incidence at the parent's hit, on the side it came from.
   const Normal3 n = isZero(p.shadingNormal) ? p.normal : p.shadingNormal;
   const double cosI = std::abs(glm::dot(p.direction, n));
   const bool entering = glm::dot(p.direction, p.normal) < 0.0;
   const double eta = entering ? 1.0 / m.relativeIor() : m.relativeIor();
   const double R = fresnel::reflectance(m.rateFresnel, cosI, eta);
-  const bool reflected = s.kind == RayKind::Reflection;
-  const double rate = reflected ? m.reflectionRate : m.refractionRate;
-  const double share = reflected ? R : 1.0 - R;
-  const std::string degrees =
-      inspect::number(std::acos(std::min(1.0, cosI)) * 180.0 / kPi, 4) + " degrees";
-  return std::string(reflected ? "kr R = " : "kt (1 - R) = ") + inspect::number(rate, 4) + " x " +
-         inspect::number(share, 4) + " = " + inspect::number(rate * share, 4) +
-         (m.type == MaterialType::Mirror ? " times the tint" : "") +
-         (m.rateFresnel == FresnelModel::Schlick ? " (Schlick's Fresnel" : " (Fresnel") +
-         ", incidence " + degrees + ")";
+  RateWeight w;
+  w.reflected = s.kind == RayKind::Reflection;
+  w.rate = w.reflected ? m.reflectionRate : m.refractionRate;
+  w.share = w.reflected ? R : 1.0 - R;
+  w.timesTint = m.type == MaterialType::Mirror;
+  w.model = m.rateFresnel;
+  w.incidence = std::acos(std::min(1.0, cosI)) * 180.0 / kPi;
+  return w;
 }
 
 }  // namespace
@@ -62,33 +60,32 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
     r.objectName = o.name;
     if (o.material >= 0 && o.material < int(scene.materials.size())) {
       const Material& m = scene.materials[std::size_t(o.material)];
-      r.material = MaterialSummary{m.name, m.type, inspect::materialParameters(m), m.isEmitter()};
+      r.material = MaterialSummary{m.name, m.type, m.isEmitter(), m};
       // A textured colour: the texel the algorithms shaded this hit with.
       if (m.texture.active() && s.hit && s.kind != RayKind::Shadow)
-        r.material->parameters +=
-            "; colour here " + inspect::vec(m.texture.eval(m.colour, s.endPoint, s.normal));
+        r.material->texel = m.texture.eval(m.colour, s.endPoint, s.normal);
     }
   }
   r.lightName = lightNameOf(s, scene);
-  std::vector<std::string> names;
-  for (const SceneObject& o : scene.objects) names.push_back(o.name);
-  std::vector<std::string> lights;
-  for (const PointLight& light : scene.pointLights) lights.push_back(light.name);
-  r.ended = describeEnd(s, names, lights);
 
-  r.weightNote = rateWeightNote(scene, tree, s);
+  r.rateWeight = rateWeightOf(scene, tree, s);
 
   // Nested volumes: the ones it is inside, and the index pair where it meets one.
   const NestedMedia media(scene);
   if (media.active() && s.kind != RayKind::Shadow) {
-    r.media = media.describe(scene, s.media);
+    r.nested = true;
+    for (std::int16_t o : s.media.objects) {
+      if (o < 0 || std::size_t(o) >= scene.objects.size()) continue;
+      const SceneObject& volume = scene.objects[std::size_t(o)];
+      const Material& m = scene.materials[std::size_t(volume.material)];
+      r.media.push_back({volume.name, m.ior, std::max(0, m.priority)});
+    }
+    r.mediumIor = media.ior(s.media, 1.0);
     if (s.hit && media.isVolume(s.object)) {
-      const SceneObject& o = scene.objects[std::size_t(s.object)];
       const bool entering = glm::dot(s.direction, s.normal) < 0.0;
       const MediumCrossing c = media.cross(s.media, s.object, entering);
-      r.indices = inspect::number(c.etaIncident, 4) + " -> " +
-                  inspect::number(c.etaTransmitted, 4) +
-                  (entering ? " (entering '" : " (leaving '") + o.name + "')";
+      r.indices = IndexCrossing{c.etaIncident, c.etaTransmitted, entering,
+                                scene.objects[std::size_t(s.object)].name};
     }
   }
 
@@ -121,27 +118,6 @@ std::vector<SceneCrossing> sceneCrossings(const Scene& scene, const Point3& orig
                    [](const SceneCrossing& a, const SceneCrossing& b) { return a.t < b.t; });
   if (all.size() > maxCount) all.resize(maxCount);
   return all;
-}
-
-std::string crossingsText(const Scene& scene, const std::vector<SceneCrossing>& crossings,
-                          bool zh) {
-  std::string text;
-  for (const SceneCrossing& c : crossings) {
-    const std::string name = c.object >= 0 && c.object < int(scene.objects.size())
-                                 ? scene.objects[std::size_t(c.object)].name
-                                 : std::string("?");
-    std::string what;
-    if (zh)
-      what = c.closed ? (c.entering ? "进入" : "离开") : (c.entering ? "从正面穿过" : "从背面穿过");
-    else
-      what = c.closed ? (c.entering ? "enters" : "leaves")
-                      : (c.entering ? "crosses the front of" : "crosses the back of");
-    text += "t = " + inspect::number(c.t, 5) +
-            (zh ? "  " + what + "“" + name + "”" : "  " + what + " '" + name + "'") + "\n";
-  }
-  if (crossings.empty())
-    text = zh ? "这条光线没有与任何表面相交。\n" : "The ray crosses no surface.\n";
-  return text;
 }
 
 }  // namespace raylab

@@ -1,5 +1,7 @@
 #include "raylab/core/PixelTrace.h"
 
+#include "raylab/core/RayWords.h"
+
 #include <algorithm>
 #include <array>
 #include <iomanip>
@@ -11,23 +13,6 @@ int PixelTrace::depth() const {
   int deepest = 0;
   for (const RaySegment& s : tree.segments) deepest = std::max(deepest, s.depth);
   return deepest;
-}
-
-std::string PixelTrace::summary() const {
-  std::array<int, kRayKindCount> byKind{};
-  for (const RaySegment& s : tree.segments) ++byKind[std::size_t(s.kind)];
-  std::ostringstream out;
-  out << tree.segments.size() << (tree.segments.size() == 1 ? " ray (" : " rays (");
-  bool first = true;
-  for (int k = 0; k < kRayKindCount; ++k) {
-    if (byKind[std::size_t(k)] == 0) continue;
-    out << (first ? "" : ", ") << toString(RayKind(k)) << " " << byKind[std::size_t(k)];
-    first = false;
-  }
-  const Vec3 e = tree.estimate();
-  out << "), depth " << depth() << ", estimate (" << std::setprecision(6) << e.x << ", " << e.y
-      << ", " << e.z << ")";
-  return out.str();
 }
 
 namespace {
@@ -58,18 +43,17 @@ PixelTrace traceFrom(const Tracer& tracer, int x, int y, int sample, const Trace
     stepper.step();
     const StepEvent& event = stepper.lastEvent();
     if (event.ray < 0) continue;
-    if (std::size_t(event.ray) >= trace.stepTexts.size())
-      trace.stepTexts.resize(std::size_t(event.ray) + 1);
-    trace.stepTexts[std::size_t(event.ray)] = event.text;
+    if (std::size_t(event.ray) >= trace.steps.size())
+      trace.steps.resize(std::size_t(event.ray) + 1);
+    trace.steps[std::size_t(event.ray)] = event;
   }
   trace.tree = stepper.tree();
-  trace.stepTexts.resize(trace.tree.segments.size());
-  // A cancel cuts some child lists: tell those rays' ends again.
+  trace.steps.resize(trace.tree.segments.size());
+  // A cancel cuts some child lists: those rays' steps are told again from the tree.
   for (const RaySegment& s : trace.tree.segments)
-    if (s.endReason == EndReason::Stopped && trace.cancelled)
-      trace.stepTexts[std::size_t(s.id)] =
-          std::string(toString(s.kind)) + " ray #" + std::to_string(s.id) + " " +
-          describeEnd(s, tracer.objectNames(), tracer.pointLightNames());
+    if ((s.endReason == EndReason::Stopped && trace.cancelled) ||
+        trace.steps[std::size_t(s.id)].ray != s.id)
+      trace.steps[std::size_t(s.id)] = stepEventOf(s);
   trace.counts = stepper.counts();
   trace.estimate = stepper.estimate();
   return trace;

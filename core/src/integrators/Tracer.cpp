@@ -280,8 +280,6 @@ Tracer::Tracer(const Scene& scene, const RenderSettings& settings)
   }
   const double diagonal = glm::length(bounds.extent());
   m_escapeLength = diagonal > 0.0 ? diagonal : 1.0;
-  for (const SceneObject& object : scene.objects) m_objectNames.push_back(object.name);
-  for (const PointLight& light : scene.pointLights) m_pointLightNames.push_back(light.name);
   // Nested volumes, and those the camera starts inside (a camera under water).
   m_media = NestedMedia(scene);
   if (m_media.active()) m_cameraMedia = m_media.volumesAt(scene, scene.camera.position);
@@ -350,7 +348,7 @@ void Stepper::reset() {
   if (m_root) camera.ray = *m_root;
   if (m_root && m_tracer->media().active())
     camera.media = m_tracer->media().volumesAt(m_tracer->scene(), m_root->origin);
-  TreeRecorder(*m_tracer, m_tree, m_event, m_budget).recordCamera(camera, m_root.has_value());
+  TreeRecorder(*m_tracer, m_tree, m_event, m_budget).recordCamera(camera);
   // A budget below one segment traces nothing: the work is bounded by the budget too.
   if (camera.id >= 0) m_queue.push_back(camera);
 }

@@ -52,16 +52,11 @@ void TreeRecorder::startSegment(const QueuedRay& ray) {
   seg.media = ray.media;
 }
 
-void TreeRecorder::recordCamera(QueuedRay& camera, bool chosen) {
+void TreeRecorder::recordCamera(QueuedRay& camera) {
   camera.id = reserve(1);
   if (camera.id >= 0) startSegment(camera);
+  // Before the first step: the camera (or chosen) ray waits in the queue.
   m_event = StepEvent{};
-  m_event.text =
-      chosen ? "chosen ray from " + raylab::toString(camera.ray.origin) + " along " +
-                   raylab::toString(camera.ray.direction) + ", " + words(EndReason::Pending).clause
-             : "camera ray through pixel (" + std::to_string(m_tree.pixelX) + ", " +
-                   std::to_string(m_tree.pixelY) + "), sample " + std::to_string(m_tree.sample) +
-                   ", " + words(EndReason::Pending).clause;
 }
 
 void TreeRecorder::setFarEnd(RaySegment& seg, const QueuedRay& ray, EndReason end) const {
@@ -98,15 +93,16 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const SceneHit* hit, EndReas
     startSegment(children[i]);
   }
 
+  m_event = StepEvent{};
   m_event.ray = ray.id;
+  m_event.kind = ray.kind;
   m_event.end = end;
+  m_event.lightObject = ray.lightObject;
+  m_event.pointLight = ray.pointLight;
+  m_event.firstChild = children.empty() ? -1 : firstId;
   m_event.spawned = int(children.size());
-  std::string subject = std::string(toString(ray.kind)) + " ray #" + std::to_string(ray.id) + " ";
-  if (ray.id < 0) {
-    // Not recorded (a budget below one segment): the step still happens, nothing is kept.
-    m_event.text = subject + words(end).clause;
-    return;
-  }
+  m_event.wanted = int(wanted);
+  if (ray.id < 0) return;  // Not recorded (a budget below one segment): nothing is kept.
 
   // How the ray ended, and what it found there.
   RaySegment& seg = m_tree.segments[std::size_t(ray.id)];
@@ -126,10 +122,7 @@ void TreeRecorder::recordStep(const QueuedRay& ray, const SceneHit* hit, EndReas
   } else {
     setFarEnd(seg, ray, end);
   }
-  m_event.text = subject + describeEnd(seg, m_tracer.objectNames(), m_tracer.pointLightNames());
-  if (end == EndReason::Stopped)
-    m_event.text += " (" + std::to_string(wanted) + (wanted == 1 ? " ray" : " rays") +
-                    " would have been spawned)";
+  m_event.object = seg.object;
 }
 
 }  // namespace raylab

@@ -12,7 +12,8 @@ namespace raylab {
 
 /**
  * \brief What the stepper keeps of each engine step: the ray tree (one RaySegment per ray,
- * with its end, hit and children) and one sentence of narration per ray (StepEvent).
+ * with its end, hit and children) and the facts of the last step (StepEvent), which the
+ * front ends narrate (RayWords.h).
  *
  * The engine step calls it only when it is given one: the image renderer passes none
  * (nullptr), so recording costs images nothing. Recording stops for good at `budget`
@@ -25,11 +26,10 @@ class TreeRecorder {
   TreeRecorder(const Tracer& tracer, RayTree& tree, StepEvent& event, std::size_t budget);
 
   /// Records the camera ray as segment 0 when the budget allows one; sets camera.id.
-  /// `chosen`: the ray was given by hand in place of the pixel's camera ray.
-  void recordCamera(QueuedRay& camera, bool chosen = false);
+  void recordCamera(QueuedRay& camera);
   /// Records how `ray` ended (hit, end reason, what it found) and numbers its `children`
   /// (ids, parent links and their segments), before the engine queues them; tells the
-  /// step in the event's sentence. `media`: the nested volumes the ray is inside at its end.
+  /// step's facts in the event. `media`: the nested volumes the ray is inside at its end.
   void recordStep(const QueuedRay& ray, const SceneHit* hit, EndReason end, const Vec3& emitted,
                   std::vector<QueuedRay>& children, const MediumStack& media);
   /// Whether the budget has run out: no ray gets children any more.

@@ -107,19 +107,4 @@ MediumStack NestedMedia::volumesAt(const Scene& scene, const Point3& p) const {
   return stack;
 }
 
-std::string NestedMedia::describe(const Scene& scene, const MediumStack& stack) const {
-  std::string text;
-  for (std::int16_t o : stack.objects) {
-    if (o < 0 || std::size_t(o) >= scene.objects.size()) continue;
-    char numbers[64];
-    std::snprintf(numbers, sizeof numbers, "' (n %.4g, priority %d)", m_ior[std::size_t(o)],
-                  m_priority[std::size_t(o)]);
-    text += (text.empty() ? "'" : ", '") + scene.objects[std::size_t(o)].name + numbers;
-  }
-  if (text.empty()) return "none (air)";
-  char filled[48];
-  std::snprintf(filled, sizeof filled, ": n = %.4g", ior(stack, 1.0));
-  return text + filled;
-}
-
 }  // namespace raylab

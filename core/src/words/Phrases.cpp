@@ -50,13 +50,21 @@ std::string phrase(std::string_view key, Language language, const PhraseArgument
       break;
     }
     text.append(pattern, at, open - at);
-    const std::string_view name(pattern.data() + open + 1, close - open - 1);
+    // "{name}", or "{name:12}": the value left-aligned in 12 bytes at least (a column).
+    std::string_view name(pattern.data() + open + 1, close - open - 1);
+    std::size_t width = 0;
+    if (const std::size_t colon = name.find(':'); colon != std::string_view::npos) {
+      for (const char digit : name.substr(colon + 1)) width = 10 * width + std::size_t(digit - '0');
+      name = name.substr(0, colon);
+    }
     const auto value = std::find_if(arguments.begin(), arguments.end(),
                                     [&](const auto& argument) { return argument.first == name; });
-    if (value != arguments.end())
+    if (value != arguments.end()) {
       text += value->second;
-    else
+      if (value->second.size() < width) text.append(width - value->second.size(), ' ');
+    } else {
       text.append(pattern, open, close - open + 1);
+    }
     at = close + 1;
   }
   return text;

@@ -71,8 +71,6 @@ class NestedMedia {
   MediumCrossing cross(const MediumStack& before, int object, bool entering) const;
   /// The volumes that contain point `p` (a camera inside water), in object order.
   MediumStack volumesAt(const Scene& scene, const Point3& p) const;
-  /// "'water' (n 1.33, priority 1), 'glass' (n 1.5, priority 2)", or "none (air)".
-  std::string describe(const Scene& scene, const MediumStack& stack) const;
 
  private:
   std::vector<int> m_priority;    ///< Per object; 0 for objects that are not volumes.

@@ -16,7 +16,8 @@ namespace raylab {
  * Core records facts (a ray's kind, why it ended, an algorithm); the front ends (the command
  * line, vis captions, the window, handouts, Python, the browser export) turn facts into words
  * through this one table, so a term is spelled once per language. A phrase may hold named
- * placeholders, `{object}`, replaced by `arguments`. Qt's translation files keep only the
+ * placeholders, `{object}`, replaced by `arguments`; `{field:12}` pads its value with spaces
+ * to 12 bytes at least (a column, as printf's "%-12s"). Qt's translation files keep only the
  * window's widget labels.
  */
 using PhraseArguments = std::vector<std::pair<std::string, std::string>>;

@@ -27,9 +27,10 @@ struct PixelTrace {
   int x = 0, y = 0;                              ///< Pixel, image coordinates (y down).
   int sample = 0;                                ///< Sample index within the pixel.
   RayTree tree;                                  ///< Every ray, propagated.
-  /// What each ray's step did, by ray id: "reflection ray #3 hit 'glass ball' and spawned
-  /// 2 rays (#5..#6)" (the stepper's narration; parallel to tree.segments).
-  std::vector<std::string> stepTexts;
+  /// What each ray's step did, by ray id (parallel to tree.segments): the facts the front
+  /// ends narrate (RayWords.h, narrateStep: "reflection ray #3 hit 'glass ball' and spawned
+  /// 2 rays (#5..#6)").
+  std::vector<StepEvent> steps;
   RayCounts counts;        ///< Rays traced by kind (every ray of the tree).
   Vec3 estimate{0.0};      ///< The sample's radiance, linear RGB: Tracer::trace's value unless
                            ///< tree.truncated, then that of the rays traced.
@@ -40,9 +41,6 @@ struct PixelTrace {
 
   /// Bounces of the deepest ray recorded (the camera ray has depth 0).
   int depth() const;
-  /// One line: "N rays (camera a, shadow b, ...), depth d, estimate (r, g, b)", the rays as
-  /// recorded in the tree.
-  std::string summary() const;
 };
 
 /**

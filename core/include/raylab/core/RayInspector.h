@@ -13,13 +13,31 @@
 
 namespace raylab {
 
-/// The material of the object a ray hit, as the inspector shows it.
+/// The material of the object a ray hit, as the inspector shows it (InspectorWords.h lists
+/// the parameters its model reads).
 struct MaterialSummary {
   std::string name;                           ///< Material name (Scene::materials).
   MaterialType type = MaterialType::Diffuse;  ///< Scattering model.
-  std::string parameters;  ///< The parameters that model reads, e.g. "colour (0.7, 0.1, 0.1)".
-  bool emitter = false;    ///< The object is an area light.
-  std::string toString() const;
+  bool emitter = false;                       ///< The object is an area light.
+  Material material;                          ///< The material itself, with its parameters.
+  std::optional<Vec3> texel;  ///< A textured colour: the texel this hit was shaded with.
+};
+
+/// Something the exact oracle says beside its figures, as facts (InspectorWords.h words it).
+struct OracleNote {
+  enum class Kind {
+    HitsButDoubleMisses,  ///< The exact ray hits the object, doubles miss it.
+    MissesButDoubleHits,  ///< The exact ray misses the object, doubles hit it.
+    Tangent,              ///< The exact ray touches the object without crossing it.
+    ThroughEdge,          ///< The exact hit is on a mesh edge.
+    ThroughVertex,        ///< The exact hit is on a mesh vertex.
+    TError,               ///< The double t is off by `first`, more than the bound `second`.
+    Primitives,           ///< Exact hit on primitive `first`, double on primitive `second`.
+    RecordedHit,          ///< The tree recorded the hit at `first`, the nearest exact is `second`.
+  };
+  Kind kind = Kind::Tangent;
+  double first = 0.0;   ///< The note's first figure (see Kind).
+  double second = 0.0;  ///< The note's second figure (see Kind).
 };
 
 /**
@@ -32,13 +50,39 @@ struct MaterialSummary {
  * frame at the ray's time (the origin moved back by time * velocity), as the engine does.
  */
 struct OracleCheck {
-  Ray ray;                         ///< The rebuilt ray, in the object's frame (world units).
-  OracleComparison comparison;     ///< ExactOracle::compare(object shape, ray).
-  double recordedDistance = 0;     ///< |hit point - origin| as recorded in the tree.
-  double tBound = 0.0;             ///< Largest |t_double - t_exact| expected (see below).
-  bool agrees = true;              ///< Same hit/miss, a plain Hit, t within tBound.
-  std::vector<std::string> notes;  ///< Where the oracle says something else, one sentence each.
-  std::string toString() const;
+  Ray ray;                        ///< The rebuilt ray, in the object's frame (world units).
+  OracleComparison comparison;    ///< ExactOracle::compare(object shape, ray).
+  double recordedDistance = 0;    ///< |hit point - origin| as recorded in the tree.
+  double tBound = 0.0;            ///< Largest |t_double - t_exact| expected (see below).
+  bool agrees = true;             ///< Same hit/miss, a plain Hit, t within tBound.
+  std::string objectName;         ///< The object checked (its name as the reader sees it).
+  std::vector<OracleNote> notes;  ///< Where the oracle says something else, one note each.
+};
+
+/// Why a reflected or refracted ray of a material with Fresnel-weighted rates has its weight:
+/// kr R (reflected) or kt (1 - R), at the parent's hit.
+struct RateWeight {
+  bool reflected = true;                     ///< kr R; false: kt (1 - R).
+  double rate = 0.0;                         ///< kr or kt.
+  double share = 0.0;                        ///< R or 1 - R.
+  bool timesTint = false;                    ///< A mirror multiplies by its tint too.
+  FresnelModel model = FresnelModel::Exact;  ///< How R was computed.
+  double incidence = 0.0;                    ///< Angle of incidence at the parent's hit, degrees.
+};
+
+/// A nested volume a ray is inside (scenes with priorities, NestedMedia).
+struct MediumEntry {
+  std::string name;  ///< The volume's object name.
+  double ior = 1.0;  ///< Its index of refraction.
+  int priority = 0;  ///< Its priority.
+};
+
+/// The indices of refraction where a ray meets a nested volume.
+struct IndexCrossing {
+  double before = 1.0;   ///< Index on the side the ray comes from.
+  double after = 1.0;    ///< Index on the other side.
+  bool entering = true;  ///< Entering the volume; false: leaving it.
+  std::string name;      ///< The volume's object name.
 };
 
 /**
@@ -55,24 +99,16 @@ struct RayInspection {
   std::string lightName;   ///< Shadow rays: the light aimed at (an area light's object or a
                            ///< point light), empty for other rays.
   std::optional<MaterialSummary> material;  ///< The object's material, when it hit one.
-  double energy = 0.0;     ///< RaySegment::energy: its share of the pixel (the energy the
-                           ///< ray-tree view colours by).
-  std::string ended;       ///< Why it ended, as a sentence (describeEnd).
-  std::string media;       ///< Scenes with nested volumes: the ones it is inside at its end
-                           ///< (NestedMedia::describe); empty otherwise.
-  std::string indices;     ///< A hit on a nested volume: "1.33 -> 1.5"; empty otherwise.
-  std::string weightNote;  ///< A reflected or refracted ray of a material whose rates are
-                           ///< Fresnel-weighted: "kr R = 0.5 x 0.04 = 0.02 (Schlick's
-                           ///< Fresnel, incidence 0 degrees)"; empty otherwise.
-  std::optional<OracleCheck> oracle;  ///< The exact check, when it hit an object.
-
-  /// Multi-line text for the window's panel and the command line: one "label  value"
-  /// line per field (rayText), then the oracle block (oracleText).
-  std::string toString() const { return rayText() + oracleText(); }
-  /// The ray's own lines: kind, geometry, material, energy bookkeeping, why it ended.
-  std::string rayText() const;
-  /// The exact-oracle block, headed "Exact oracle ..." (says so when there is no hit).
-  std::string oracleText() const;
+  double energy = 0.0;             ///< RaySegment::energy: its share of the pixel (the energy the
+                                   ///< ray-tree view colours by).
+  bool nested = false;             ///< The scene has nested volumes and this is no shadow ray: the
+                                   ///< inspector says which volumes it is inside.
+  std::vector<MediumEntry> media;  ///< The volumes it is inside at its end (none: air).
+  double mediumIor = 1.0;          ///< The index of the volume it travels in at its end.
+  std::optional<IndexCrossing> indices;  ///< A hit on a nested volume: the indices met there.
+  std::optional<RateWeight> rateWeight;  ///< A reflected or refracted ray of a material whose
+                                         ///< rates are Fresnel-weighted: why its weight.
+  std::optional<OracleCheck> oracle;     ///< The exact check, when it hit an object.
 };
 
 /// One place where a ray crosses a surface of the scene (every hit along the ray, not
@@ -93,9 +129,6 @@ struct SceneCrossing {
 std::vector<SceneCrossing> sceneCrossings(const Scene& scene, const Point3& origin,
                                           const Vec3& direction, double time = 0.0,
                                           std::size_t maxCount = 64);
-/// "t = 7.13  enters 'sphere'" lines, one per crossing, in English or (zh true) Chinese.
-std::string crossingsText(const Scene& scene, const std::vector<SceneCrossing>& crossings,
-                          bool zh = false);
 
 /**
  * \brief Reads one segment of a recorded ray tree against its scene and checks its hit

@@ -36,15 +36,14 @@ enum class EndReason {
 const char* toString(EndReason reason);
 
 /**
- * \brief How one end reason is named and told: the one vocabulary of the JSON dump, the
- * window's lists and legends, the stepper's narration and the ray inspector.
+ * \brief How one end reason is named: its word in JSON dumps and scripts and in the phrase
+ * table's keys (`end_reason.<json>`, `narrate.<json>`: RayWords.h says it to people), and
+ * its English label for debugging output (toString).
  */
 struct EndReasonWords {
   EndReason reason;
-  const char* json;    ///< Name in JSON dumps and scripts: "hit_light".
-  const char* label;   ///< Short label for lists and legends: "hit a light".
-  const char* clause;  ///< What the ray did, after its subject: "hit a light: the path ends
-                       ///< there" (describeEnd adds the object and the children).
+  const char* json;   ///< Name in JSON dumps, scripts and phrase keys: "hit_light".
+  const char* label;  ///< Short English label (toString): "hit a light".
 };
 /// The words of `reason` (a row of one table, in enum order).
 const EndReasonWords& words(EndReason reason);
@@ -105,14 +104,6 @@ std::string lightNameOf(const RaySegment& s, const std::vector<std::string>& obj
                         const std::vector<std::string>& pointLightNames);
 /// The same from a scene's objects and point lights.
 std::string lightNameOf(const RaySegment& s, const Scene& scene);
-
-/// How segment `s` ended, as a clause after its subject ("reflection ray #3 ..."), naming
-/// the object hit or blocking (from `objectNames`, indexed by RaySegment::object), a shadow
-/// ray's light (an area light from `objectNames`, a point light from `pointLightNames`) and
-/// the children spawned: "hit 'glass ball' and spawned 2 rays (#4..#5)", "reached the light
-/// 'lamp' unblocked and delivers its radiance".
-std::string describeEnd(const RaySegment& s, const std::vector<std::string>& objectNames,
-                        const std::vector<std::string>& pointLightNames = {});
 
 /// The rays of one (pixel, sample), in the engine's processing order.
 struct RayTree {

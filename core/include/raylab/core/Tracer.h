@@ -45,12 +45,19 @@ struct QueuedRay {
                          ///< scene has some).
 };
 
-/// What the last step of the engine did, for the front end's narration.
+/// What the last step of the engine did: facts only, which the front ends narrate in
+/// either language (RayWords.h, narrateStep).
 struct StepEvent {
-  int ray = -1;  ///< Recorded id of the ray processed.
-  EndReason end = EndReason::Pending;
-  int spawned = 0;   ///< Children appended to the queue.
-  std::string text;  ///< One sentence, e.g. "reflection ray hit 'red sphere'".
+  int ray = -1;                        ///< Recorded id of the ray processed (-1: not recorded).
+  RayKind kind = RayKind::Camera;      ///< Why the ray was spawned.
+  EndReason end = EndReason::Pending;  ///< How it ended.
+  int object = -1;  ///< Object it hit, or that blocked a shadow ray (Scene::objects), -1 if none.
+  int lightObject = -1;  ///< Shadow rays to an area light: that light's object index.
+  int pointLight = -1;   ///< Shadow rays to a point light: its index in Scene::pointLights.
+  int firstChild = -1;   ///< Recorded id of its first child, -1 when none.
+  int spawned = 0;       ///< Children appended to the queue (ids firstChild ...).
+  int wanted = 0;        ///< Children the algorithm asked for: more than `spawned` when the ray
+                         ///< budget stopped the ray (EndReason::Stopped).
 };
 
 class SpawnRule;
@@ -96,10 +103,6 @@ class Tracer {
   const SpawnRule& rule() const { return *m_rule; }
   /// The material of object `object` (an index into Scene::objects).
   const Material& materialOf(int object) const;
-  /// The objects' names, indexed like Scene::objects (for narration).
-  const std::vector<std::string>& objectNames() const { return m_objectNames; }
-  /// The point lights' names, indexed like Scene::pointLights (for narration).
-  const std::vector<std::string>& pointLightNames() const { return m_pointLightNames; }
   /// Length at which recorded escaped rays are drawn: the diagonal of the bounds of the
   /// scene's finite objects and the camera, world units (1 for an empty scene).
   double escapeLength() const { return m_escapeLength; }
@@ -116,8 +119,6 @@ class Tracer {
   double m_escapeLength = 1.0;
   NestedMedia m_media;
   MediumStack m_cameraMedia;
-  std::vector<std::string> m_objectNames;
-  std::vector<std::string> m_pointLightNames;
 };
 
 /**

@@ -2,6 +2,7 @@
 
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayTree.h"
+#include "raylab/core/RayWords.h"
 
 #include <string>
 #include <vector>
@@ -49,13 +50,14 @@ int frameCount(const RayTree& tree, const AnimationSettings& settings);
 RevealFrame revealFrame(const RayTree& tree, const AnimationSettings& settings, int frame);
 
 /**
- * \brief What happens in frame `frame`: a sentence for the status line, the video caption
- * and the lesson text, e.g. "Step 3 of 9: reflection ray #2 hit 'glass ball' and spawned
- * 2 rays (#4..#5)." in processing order, "Depth 1 of 3: 4 rays travel (2 reflection,
- * 2 shadow)." depth by depth. Uses the trace's step texts (what the engine did with each
- * ray). Frame 0 says nothing is revealed yet; the last frame adds that the whole tree is
- * shown.
+ * \brief What happens in frame `frame`, in `language`: a sentence for the status line, the
+ * video caption and the lesson text, e.g. "Step 3 of 9: reflection ray #2 hit 'glass ball'
+ * and spawned 2 rays (#4..#5)." in processing order, "Depth 1 of 3: 4 rays travel (2
+ * reflection, 2 shadow)." depth by depth. Narrates the trace's steps (what the engine did
+ * with each ray, RayWords.h) with the objects and lights named from `names`. Frame 0 says
+ * nothing is revealed yet; the last frame adds that the whole tree is shown.
  */
-std::string stepCaption(const PixelTrace& trace, const AnimationSettings& settings, int frame);
+std::string stepCaption(const PixelTrace& trace, const AnimationSettings& settings, int frame,
+                        const SceneNames& names, Language language = Language::English);
 
 }  // namespace raylab::vis
