@@ -217,6 +217,9 @@ void MainWindow::sceneChanged() {
 
 void MainWindow::adoptScene(const Scene& scene, const QString& path) {
   m_rayPanel->setRootRay(std::nullopt);  // a lesson's chosen ray belongs to its scene
+  // Nothing selected in the new scene: the old selection's row number names another object
+  // there (Del would delete it; issue 33).
+  selectObject(-1);
   m_document->adopt(scene, path);
   if (!path.isEmpty()) rememberFile(path);
   resetView();

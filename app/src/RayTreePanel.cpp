@@ -10,6 +10,7 @@
 #include "raytree/AnimationGroup.h"
 #include "raytree/StyleGroup.h"
 #include "raytree/TraceGroup.h"
+#include "window/BackgroundTask.h"
 
 #include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
@@ -25,6 +26,7 @@ namespace raylab::app {
 
 RayTreePanel::RayTreePanel(vis::SceneView& view, const SceneDocument& document, QWidget* parent)
     : QWidget(parent), m_view(view), m_document(document) {
+  m_task = new BackgroundTask(this);
   m_traceGroup = new TraceGroup(document.scene());
   m_styleGroup = new StyleGroup;
   m_animationGroup = new AnimationGroup([this] { return frameCount(); });
@@ -54,7 +56,9 @@ RayTreePanel::RayTreePanel(vis::SceneView& view, const SceneDocument& document, 
   setStatus(tr("Choose a pixel and press Trace to record its ray tree."));
 }
 
-RayTreePanel::~RayTreePanel() = default;
+RayTreePanel::~RayTreePanel() {
+  delete m_task;  // stops a running trace and joins its thread before the panel goes
+}
 
 void RayTreePanel::markCrossings() {
   m_crossingsText.clear();

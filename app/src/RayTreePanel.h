@@ -10,6 +10,7 @@
 #include <QWidget>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,7 @@ class SceneView;
 
 namespace raylab::app {
 
+class BackgroundTask;
 class SceneDocument;
 class TraceGroup;
 class StyleGroup;
@@ -60,23 +62,27 @@ class RayTreePanel : public QWidget {
   const std::optional<Ray>& rootRay() const { return m_root; }
   /// Records the tree of the chosen (pixel, sample) and shows it whole; with more than one
   /// sample drawn (setBundle), the trees of samples sample .. sample + n - 1 together.
-  void trace();
+  /// It runs off the UI thread (a BackgroundTask, no event loop spun): the tree is shown,
+  /// then `then` runs, then traceFinished is emitted, all on the UI thread once it ends.
+  /// A trace asked for while one runs supersedes it (the old one's tree and `then` are
+  /// dropped); Cancel ends it early with the rays traced so far.
+  void trace(std::function<void()> then = {});
   /// How many samples of the pixel the next trace draws together (1..256).
   void setBundle(int samples);
   /// The original program's Simulate: traces the grid of rays across x down (sample 0 of
   /// each pixel, core traceGrid) and shows all their trees together, coloured by energy.
-  void simulate();
+  void simulate(std::function<void()> then = {});
   /// Traces again what is shown (the pixel or the grid), after the scene or the algorithm
   /// changed; nothing when nothing is shown. A tree on screen is never stale.
   void retrace();
-  /// Removes the tree from the view.
+  /// Removes the tree from the view; a trace that runs is stopped and dropped.
   void clearTrace();
   /// Stops a trace or Simulate that runs (they run off the UI thread, the window stays
   /// responsive): it ends within one engine step with the rays traced so far. Safe when
   /// none runs.
   void cancelTrace();
   /// True while a trace or Simulate runs.
-  bool tracing() const { return m_cancel != nullptr; }
+  bool tracing() const;
   /// True when the tree shown is a Simulate grid.
   bool showsGrid() const { return m_trace && m_grid; }
   /// The tree shown (empty before the first trace).
@@ -161,6 +167,8 @@ class RayTreePanel : public QWidget {
   void segmentSelected(int id);
   /// A new tree was traced.
   void treeChanged();
+  /// A trace or Simulate ended (its tree shown, its `then` run); not for a superseded one.
+  void traceFinished();
   /// The status line changed.
   void statusChanged(const QString& text);
 
@@ -178,23 +186,25 @@ class RayTreePanel : public QWidget {
   /// Marks the crossings of the selected ray (the camera ray when none) when "Every hit
   /// along the ray" is on, clears them otherwise.
   void markCrossings();
-  /// trace() for more than one sample: core traceBundle, shown as one tree.
-  void traceBundleOf(const std::shared_ptr<const Scene>& copy, const RenderSettings& settings,
-                     int x, int y, int first, int count);
-  /// Runs `work` on a worker thread with a cancel flag, keeping the event loop running (and
-  /// the Cancel button live) until it ends. False when another trace was running: that one
-  /// is cancelled and this request is dropped.
-  template <typename Result, typename Work>
-  bool runCancellable(Work work, Result& result);
+  /// What a trace job does on the worker thread: traces with the cancel flag, returns the
+  /// call that shows the result on the UI thread.
+  using TraceWork = std::function<std::function<void()>(const std::atomic<bool>* cancel)>;
+  /// Runs `work` on m_task (superseding a running trace), Cancel live meanwhile; at its
+  /// end shows the result, runs `then` and emits traceFinished.
+  void runTrace(TraceWork work, std::function<void()> then);
+  /// Shows a pixel's (or chosen ray's) trace, a bundle's, a Simulate grid's (on the UI thread).
+  void showPixelTrace(PixelTrace traced);
+  void showBundle(const GridTrace& bundle, Algorithm algorithm, int x, int y, int first);
+  void showGrid(const GridTrace& grid, Algorithm algorithm, int across, int down);
 
   vis::SceneView& m_view;
   const SceneDocument& m_document;  ///< The scene traced (never read from the view).
   /// The last trace (null before the first); the view draws its tree without a copy.
   std::shared_ptr<const PixelTrace> m_trace;
-  std::optional<Ray> m_root;              ///< Traced in place of the pixel's camera ray, when set.
-  bool m_grid = false;                    ///< m_trace is a Simulate grid.
-  double m_lineScale = 1.0;               ///< Ray width factor (presentation mode).
-  std::atomic<bool>* m_cancel = nullptr;  ///< The running trace's cancel flag.
+  std::optional<Ray> m_root;         ///< Traced in place of the pixel's camera ray, when set.
+  bool m_grid = false;               ///< m_trace is a Simulate grid.
+  double m_lineScale = 1.0;          ///< Ray width factor (presentation mode).
+  BackgroundTask* m_task = nullptr;  ///< Runs the traces off the UI thread.
   int m_selected = -1;
   QString m_status;
   QString m_crossingsText;

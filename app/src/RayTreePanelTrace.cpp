@@ -9,17 +9,15 @@
 #include "raytree/AnimationGroup.h"
 #include "raytree/StyleGroup.h"
 #include "raytree/TraceGroup.h"
+#include "window/BackgroundTask.h"
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/SceneView.h"
 
-#include <QCoreApplication>
-
-#include <chrono>
 #include <climits>
-#include <future>
+#include <utility>
 
 namespace raylab::app {
 
@@ -40,7 +38,7 @@ PixelTrace asOneTrace(const GridTrace& grid, Algorithm algorithm) {
 
 }  // namespace
 
-void RayTreePanel::trace() {
+void RayTreePanel::trace(std::function<void()> then) {
   pause();
   // The document's snapshot: immutable, so an edit while the trace runs replaces it
   // without changing it under the worker (no copy needed).
@@ -50,19 +48,32 @@ void RayTreePanel::trace() {
   const auto [x, y] = m_traceGroup->pixel();
   const int sample = m_traceGroup->sample(), bundle = m_traceGroup->bundle();
   if (bundle > 1 && !m_root) {
-    traceBundleOf(copy, settings, x, y, sample, bundle);
+    runTrace(
+        [this, copy, settings, x = x, y = y, sample, bundle](const std::atomic<bool>* cancel) {
+          TraceLimits limits;
+          limits.cancel = cancel;
+          auto traced = std::make_shared<const GridTrace>(
+              traceBundle(*copy, settings, x, y, sample, bundle, limits));
+          return std::function<void()>([this, traced, a = settings.algorithm, x, y, sample] {
+            showBundle(*traced, a, x, y, sample);
+          });
+        },
+        std::move(then));
     return;
   }
-  PixelTrace traced;
-  if (!runCancellable(
-          [copy, settings, x = x, y = y, sample, root = m_root](const std::atomic<bool>* cancel) {
-            TraceLimits limits;
-            limits.cancel = cancel;
-            return root ? traceRay(*copy, settings, *root, x, y, sample, limits)
-                        : tracePixel(*copy, settings, x, y, sample, limits);
-          },
-          traced))
-    return;
+  runTrace(
+      [this, copy, settings, x = x, y = y, sample, root = m_root](const std::atomic<bool>* cancel) {
+        TraceLimits limits;
+        limits.cancel = cancel;
+        auto traced = std::make_shared<PixelTrace>(
+            root ? traceRay(*copy, settings, *root, x, y, sample, limits)
+                 : tracePixel(*copy, settings, x, y, sample, limits));
+        return std::function<void()>([this, traced] { showPixelTrace(std::move(*traced)); });
+      },
+      std::move(then));
+}
+
+void RayTreePanel::showPixelTrace(PixelTrace traced) {
   m_trace = std::make_shared<const PixelTrace>(std::move(traced));
   m_grid = false;
   const PixelTrace& trace = *m_trace;
@@ -91,24 +102,28 @@ void RayTreePanel::trace() {
   showTrace();
 }
 
-void RayTreePanel::simulate() {
+void RayTreePanel::simulate(std::function<void()> then) {
   pause();
   const std::shared_ptr<const Scene> copy = m_document.sceneSnapshot();
   RenderSettings settings = copy->render;
   settings.algorithm = algorithm();
   const auto [across, down] = m_traceGroup->grid();
-  GridTrace grid;
-  if (!runCancellable(
-          [copy, settings, across = across, down = down](const std::atomic<bool>* cancel) {
-            TraceLimits limits;
-            limits.cancel = cancel;
-            return traceGrid(*copy, settings, across, down, limits);
-          },
-          grid))
-    return;
+  runTrace(
+      [this, copy, settings, across = across, down = down](const std::atomic<bool>* cancel) {
+        TraceLimits limits;
+        limits.cancel = cancel;
+        auto grid =
+            std::make_shared<const GridTrace>(traceGrid(*copy, settings, across, down, limits));
+        return std::function<void()>([this, grid, a = settings.algorithm, across, down] {
+          showGrid(*grid, a, across, down);
+        });
+      },
+      std::move(then));
+}
 
+void RayTreePanel::showGrid(const GridTrace& grid, Algorithm algorithm, int across, int down) {
   // The grid as one trace: every tree's rays, narration and counts together.
-  auto combined = std::make_shared<PixelTrace>(asOneTrace(grid, settings.algorithm));
+  auto combined = std::make_shared<PixelTrace>(asOneTrace(grid, algorithm));
   combined->x = combined->y = -1;
   m_trace = combined;
   m_grid = true;
@@ -118,7 +133,7 @@ void RayTreePanel::simulate() {
   // draws the grid in the box's colouring.
   m_styleGroup->setColouringQuietly(vis::RayColouring::Energy);
   QString info = tr("%1: Simulate %2 x %3, %4 pixels, %5 rays")
-                     .arg(algorithmLabel(settings.algorithm))
+                     .arg(algorithmLabel(algorithm))
                      .arg(across)
                      .arg(down)
                      .arg(grid.traces.size())
@@ -129,20 +144,10 @@ void RayTreePanel::simulate() {
   if (grid.truncated) setStatus(QString::fromStdString(grid.message));
 }
 
-void RayTreePanel::traceBundleOf(const std::shared_ptr<const Scene>& copy,
-                                 const RenderSettings& settings, int x, int y, int first,
-                                 int count) {
-  GridTrace bundle;
-  if (!runCancellable(
-          [copy, settings, x, y, first, count](const std::atomic<bool>* cancel) {
-            TraceLimits limits;
-            limits.cancel = cancel;
-            return traceBundle(*copy, settings, x, y, first, count, limits);
-          },
-          bundle))
-    return;
+void RayTreePanel::showBundle(const GridTrace& bundle, Algorithm algorithm, int x, int y,
+                              int first) {
   // The bundle as one trace: every sample's rays, narration and counts together.
-  auto combined = std::make_shared<PixelTrace>(asOneTrace(bundle, settings.algorithm));
+  auto combined = std::make_shared<PixelTrace>(asOneTrace(bundle, algorithm));
   combined->x = x;
   combined->y = y;
   combined->sample = first;
@@ -151,7 +156,7 @@ void RayTreePanel::traceBundleOf(const std::shared_ptr<const Scene>& copy,
   m_trace = combined;
   m_grid = false;
   QString info = tr("%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays")
-                     .arg(algorithmLabel(settings.algorithm))
+                     .arg(algorithmLabel(algorithm))
                      .arg(x)
                      .arg(y)
                      .arg(first)
@@ -170,34 +175,34 @@ void RayTreePanel::retrace() {
     trace();
 }
 
-template <typename Result, typename Work>
-bool RayTreePanel::runCancellable(Work work, Result& result) {
-  if (m_cancel) {
-    // One trace at a time: a new request stops the running one (which then shows what it
-    // has) and is dropped.
-    m_cancel->store(true);
-    return false;
-  }
-  std::atomic<bool> cancel{false};
-  m_cancel = &cancel;
+void RayTreePanel::runTrace(TraceWork work, std::function<void()> then) {
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  BackgroundTask::Job job;
+  job.run = [this, cancel, work = std::move(work),
+             then = std::move(then)](const BackgroundTask::Post&) -> std::function<void()> {
+    std::function<void()> show = work(cancel.get());
+    // On the UI thread, once the worker has ended (never for a superseded or dropped job).
+    return [this, show = std::move(show), then] {
+      m_traceGroup->setBusy(false);
+      show();
+      if (then) then();
+      emit traceFinished();
+    };
+  };
+  job.stop = [cancel] { cancel->store(true); };
   m_traceGroup->setBusy(true);
   setStatus(tr("Tracing… (Cancel stops it)"));
-  std::future<Result> done = std::async(std::launch::async, work, &cancel);
-  // Keep the window alive: repaint, Cancel, Quit. Most trees take milliseconds.
-  while (done.wait_for(std::chrono::milliseconds(5)) != std::future_status::ready)
-    QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-  result = done.get();
-  m_cancel = nullptr;
-  m_traceGroup->setBusy(false);
-  return true;
+  m_task->start(std::move(job));
 }
 
-void RayTreePanel::cancelTrace() {
-  if (m_cancel) m_cancel->store(true);
-}
+bool RayTreePanel::tracing() const { return m_task->busy(); }
+
+void RayTreePanel::cancelTrace() { m_task->cancel(); }
 
 void RayTreePanel::clearTrace() {
   pause();
+  m_task->drop();  // its tree would come back
+  m_traceGroup->setBusy(false);
   m_trace.reset();
   m_grid = false;
   m_selected = -1;

@@ -943,5 +943,18 @@ TEST_F(MainWindowTest, 22_ActionsOnTheSelectionAreEnabledOnlyWithOne) {
   EXPECT_FALSE(remove->isEnabled()) << "nothing selected after the delete";
 }
 
+// Issue 33 item 2: opening a scene file starts with nothing selected. The old selection's
+// row number named another object of the new scene (outlined, and Del would delete it).
+TEST_F(MainWindowTest, 23_OpeningASceneFileClearsTheSelection) {
+  m_window->selectObject(0);
+  ASSERT_EQ(m_window->selectedObject(), 0);
+  const QString cornell = QString::fromLatin1(RAYLAB_SOURCE_DIR) + "/lessons/scenes/cornell.json";
+  ASSERT_TRUE(m_window->openFile(cornell, false));
+  settle();
+  EXPECT_EQ(m_window->selectedObject(), -1);
+  EXPECT_EQ(m_window->sceneView().highlighted(), -1);
+  EXPECT_EQ(m_window->objectList()->currentRow(), -1);
+}
+
 }  // namespace
 }  // namespace raylab::app

@@ -727,6 +727,55 @@ TEST_F(WindowLessonTest, 24_TheLanguageSwitchKeepsTheTreeItsColoursAndFrame) {
   EXPECT_EQ(after.algorithm(), Algorithm::Whitted);
 }
 
+// Issue 33 item 5: the language switch keeps an answered prediction answered: the verdict
+// and explanation (in the new language), and the tree the prediction was about.
+TEST_F(WindowLessonTest, 24b_TheLanguageSwitchKeepsAnAnsweredPrediction) {
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->predict && !st.tryValue &&
+           st.question->type == LessonQuestion::Type::Number && st.view == LessonView::Scene;
+  });
+  m_window->lessonPanel()->showStep(s);
+  settle();
+  const LessonStep& step = lesson.steps[std::size_t(s)];
+  ASSERT_TRUE(m_window->lessonPanel()->answerNumber(step.question->answer));
+  settle();
+  const std::size_t rays = m_window->rayTreePanel()->tree().segments.size();
+  ASSERT_GT(rays, 0U);
+  m_window.reset(rebuildWindow(*m_window).release());
+  settle();
+  LessonPanel& panel = *m_window->lessonPanel();
+  ASSERT_EQ(panel.step(), s);
+  EXPECT_TRUE(panel.answerFinal());
+  EXPECT_FALSE(panel.waitingForPrediction());
+  EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✓"))) << panel.verdict().toStdString();
+  EXPECT_FALSE(panel.explanation().isEmpty());
+  EXPECT_EQ(m_window->rayTreePanel()->tree().segments.size(), rays) << "the tree is hidden again";
+}
+
+// Issue 33 item 5: a lesson's ray colouring is not saved as the user's preference: the
+// colouring chosen before the lesson is, and the next window starts with it.
+TEST_F(WindowLessonTest, 24c_ALessonsColouringIsNotSavedAsThePreference) {
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  restyle(rays, [](vis::RayTreeStyle& s) { s.colouring = vis::RayColouring::Depth; });
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) {
+    return st.colouring == LessonColouring::Kind && !(st.question && st.question->predict);
+  });
+  m_window->lessonPanel()->showStep(s);
+  settle();
+  ASSERT_EQ(rays.treeStyle().colouring, vis::RayColouring::Kind) << "the lesson's colouring";
+  m_window->saveLayout();
+  EXPECT_EQ(raylabSettings().value(QStringLiteral("rayColouring")).toString(),
+            QStringLiteral("depth"));
+  MainWindow next(defaultScene());
+  EXPECT_EQ(next.rayTreePanel()->treeStyle().colouring, vis::RayColouring::Depth);
+}
+
 // Issue 33: the selection does not carry over to a lesson's scene by row number (the 7th
 // object of the default scene selected, lesson 6's 7th object was outlined, and Del
 // would have deleted it).

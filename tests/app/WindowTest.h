@@ -89,6 +89,18 @@ class WindowTest : public ::testing::Test {
   /// Lets Qt show, lay out and paint the window.
   static void settle() {
     for (int i = 0; i < 20; ++i) QApplication::processEvents();
+    // A trace runs off the UI thread (a BackgroundTask): wait until every ray-tree panel's
+    // has ended and its tree is shown (at most a minute), then let what it started run.
+    const auto tracing = [] {
+      for (QWidget* top : QApplication::topLevelWidgets())
+        for (const RayTreePanel* panel : top->findChildren<RayTreePanel*>())
+          if (panel->tracing()) return true;
+      return false;
+    };
+    QElapsedTimer clock;
+    clock.start();
+    while (tracing() && clock.elapsed() < 60000) QTest::qWait(2);
+    for (int i = 0; i < 20; ++i) QApplication::processEvents();
   }
 
   /// A left-button drag across the 3D view, in widget pixels.

@@ -112,7 +112,7 @@ void MainWindow::buildDocks() {
                        Qt::RightDockWidgetArea);
   // The inspector, in a tab beside the ray-tree panel (raised when a ray is chosen): the 3D
   // view keeps the whole height.
-  m_inspector = new InspectorPanel(*m_view);
+  m_inspector = new InspectorPanel(*m_document, *m_rayPanel);
   m_inspectorDock = addDock(tr("Ray inspector"), QStringLiteral("inspector"), m_inspector,
                             Qt::RightDockWidgetArea);
   tabifyDockWidget(m_raysDock, m_inspectorDock);
@@ -177,8 +177,10 @@ void MainWindow::saveLayout() {
   s.setValue(QStringLiteral("algorithm"), QString::fromLatin1(toString(m_rayPanel->algorithm())));
   s.setValue(QStringLiteral("renderAlgorithm"),
              QString::fromLatin1(toString(m_renderPanel->algorithm())));
-  s.setValue(QStringLiteral("rayColouring"),
-             QString::fromLatin1(vis::toString(m_rayPanel->treeStyle().colouring)));
+  // The user's colouring: a lesson's own is never saved as the preference.
+  const vis::RayColouring colouring =
+      m_lessonPanel->lesson() ? m_userColouring : m_rayPanel->treeStyle().colouring;
+  s.setValue(QStringLiteral("rayColouring"), QString::fromLatin1(vis::toString(colouring)));
 }
 
 void MainWindow::restoreLayout() {
