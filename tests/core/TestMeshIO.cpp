@@ -274,10 +274,11 @@ TEST(MeshIO, 15_FuzzFindingsEndWithAnAnswer) {
   } catch (const MeshIO::ReadError& e) {
     outcome = e.what();
   }
-  // Its face of six corners crosses itself: refused before CGAL triangulates it (test 17).
+  // Its face of six corners crosses itself: refused before CGAL triangulates it (test 17),
+  // named by its place in the file (issue 38).
   EXPECT_EQ(outcome, std::string(RAYLAB_TEST_DATA_DIR) +
-                         "/bad/fuzz-broken-face-cycle.obj: cannot triangulate a face of 6 "
-                         "corners: its edges cross or touch seen along the face's normal (a "
+                         "/bad/fuzz-broken-face-cycle.obj:12: cannot triangulate face 3 (6 "
+                         "corners): its edges cross or touch seen along the face's normal (a "
                          "polygon that intersects itself)");
 }
 
@@ -336,11 +337,11 @@ TEST(MeshIO, 17_CrossingFacesAndCoordinatelessVerticesAreRefused) {
   // A pentagon whose last edge crosses its second.
   const std::string star =
       writeMesh("star.obj", "v 0 0 0\nv 2 0 0\nv 0 1 0\nv 2 1 0\nv 1 2 0\nf 1 2 3 4 5\n");
-  EXPECT_EQ(readError(star), star + ": cannot triangulate a face of 5 corners: " + crossing);
+  EXPECT_EQ(readError(star), star + ":6: cannot triangulate face 1 (5 corners): " + crossing);
   // A pentagon whose third corner doubles back along its first edge.
   const std::string spike =
       writeMesh("spike.obj", "v 0 0 0\nv 2 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4 5\n");
-  EXPECT_EQ(readError(spike), spike + ": cannot triangulate a face of 5 corners: " + crossing);
+  EXPECT_EQ(readError(spike), spike + ":6: cannot triangulate face 1 (5 corners): " + crossing);
   // A concave hexagon (an L) is a simple polygon: four triangles.
   const std::string ell =
       writeMesh("ell.obj", "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\nf 1 2 3 4 5 6\n");
@@ -533,6 +534,87 @@ TEST(MeshIO, 19_OffIsReadWithoutItsColours) {
   EXPECT_EQ(readError(zeroWeight), zeroWeight +
                                        ":4: cannot parse OFF file: vertex has the weight w = 0 (a "
                                        "point at infinity): '2 0 0 0'");
+}
+
+// Issue 38 item 17: each mesh message names the problem and its place.
+TEST(MeshIO, 20_MessagesNameTheProblemAndItsLine) {
+  // Lines that end in a carriage return alone (classic Mac OS) were read as one line: "no
+  // faces in the file" (OBJ), "file ends after 1 of 3 vertices" (OFF).
+  const std::string crObj = writeMesh("cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r");
+  EXPECT_EQ(readError(crObj), crObj +
+                                  ":1: cannot parse OBJ file: its lines end in a carriage return "
+                                  "alone (classic Mac OS); RayLab reads lines that end in LF or "
+                                  "CR LF (convert it, e.g. with tr '\\r' '\\n')");
+  const std::string crOff = writeMesh("cr.off", "OFF\r3 1 0\r0 0 0\r1 0 0\r0 1 0\r3 0 1 2\r");
+  EXPECT_TRUE(contains(readError(crOff), crOff + ":1: cannot parse OFF file: its lines end in a "
+                                                 "carriage return alone"))
+      << readError(crOff);
+  // CR LF is read as before.
+  EXPECT_EQ(MeshIO::load(writeMesh("crlf.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"))
+                .triangleCount(),
+            1u);
+  // A normal too long to normalise: named at its line (was "has zero length", no line).
+  const std::string huge =
+      writeMesh("huge-normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1e300 0 0\nf 1//1 2//1 3//1\n");
+  EXPECT_TRUE(contains(readError(huge), huge + ":4: cannot read the normals of the OBJ file: "
+                                               "normal 1 has a component beyond RayLab's "
+                                               "largest coordinate, 1e12"))
+      << readError(huge);
+  // A face corner that is not a whole number was read as its integer part, silently.
+  const std::string fraction = writeMesh("fraction.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1.5 2 3\n");
+  EXPECT_EQ(readError(fraction),
+            fraction +
+                ":4: cannot parse OBJ file: face corner '1.5' is not a vertex index (a "
+                "whole number, as v, v/vt, v//vn or v/vt/vn): 'f 1.5 2 3'");
+  EXPECT_EQ(MeshIO::load(writeMesh("corners.obj",
+                                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+                                   "f 1/1/1 -2//1 3/1\n"))
+                .triangleCount(),
+            1u);
+}
+
+TEST(MeshIO, 21_PlyIndexTypesAndStlNumbersAreNamed) {
+  // PLY indices stored as uchar or short: CGAL said "can't find vertex indices".
+  const auto ply = [](const std::string& type) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list uchar " +
+           type + " vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  };
+  for (const std::string type : {"uchar", "short"}) {
+    const std::string path = writeMesh("indices-" + type + ".ply", ply(type));
+    EXPECT_EQ(readError(path), path +
+                                   ":8: cannot parse PLY file: the face's vertex_indices are a "
+                                   "list of " +
+                                   type +
+                                   "; RayLab reads vertex indices stored as a list of int or "
+                                   "uint (convert the file, e.g. in MeshLab)");
+  }
+  EXPECT_EQ(MeshIO::load(writeMesh("indices-int.ply", ply("int"))).triangleCount(), 1u);
+  // ASCII STL coordinates that are not finite numbers: "premature end of file".
+  for (const std::string value : {"nan", "1e400", "-inf"}) {
+    const std::string path =
+        writeMesh("bad-number.stl",
+                  "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                  "vertex " +
+                      value + " 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n");
+    EXPECT_EQ(readError(path), path + ":5: cannot parse STL file: vertex coordinate '" + value +
+                                   "' is not a finite number RayLab can read");
+  }
+}
+
+TEST(MeshIO, 22_ABowTieQuadIsNamedByItsFaceAndLine) {
+  // A quad whose edges cross: "could not triangulate a polygonal face", without a place.
+  const std::string bowTie =
+      writeMesh("bow-tie.obj",
+                "v 5 5 5\nv 6 5 5\nv 5 6 5\nv 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\n"
+                "f 1 2 3\nf 4 5 6 7\n");
+  const std::string message = readError(bowTie);
+  EXPECT_EQ(message.rfind(bowTie + ":9: cannot triangulate face 2 (4 corners): ", 0), 0u)
+      << message;
+  const std::string off = writeMesh(
+      "bow-tie.off", "OFF\n# a bow tie\n4 1 0\n0 0 0\n1 1 0\n1 0 0\n0 1 0\n\n4 0 1 2 3\n");
+  EXPECT_EQ(readError(off).rfind(off + ":9: cannot triangulate face 1 (4 corners): ", 0), 0u)
+      << readError(off);
 }
 
 }  // namespace

@@ -137,6 +137,29 @@ TEST(Sphere, 09_RejectsInvalidParameters) {
   EXPECT_THROW(s.apply(Mat4(0.0)), Shape::InvalidGeometry);
 }
 
+TEST(Sphere, 09b_RefusesSizesPastTheLargestCoordinate) {
+  // Issue 38: a sphere of radius 1e300 was hit at t = inf.
+  try {
+    Sphere({0, 0, 0}, 1e300);
+    ADD_FAILURE() << "a sphere of radius 1e300 was accepted";
+  } catch (const Shape::InvalidGeometry& e) {
+    EXPECT_NE(std::string(e.what()).find("within RayLab's largest coordinate, 1e12"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(Sphere({2e12, 0, 0}, 1.0), Shape::InvalidGeometry);
+  Sphere grown({0, 0, 0}, 1e6);
+  Mat4 scale(1e7);
+  scale[3][3] = 1.0;
+  EXPECT_THROW(grown.apply(scale), Shape::InvalidGeometry);
+  // At the limit the hit is finite.
+  const Sphere largest({0, 0, 0}, 1e12);
+  const auto hit = largest.closestHit(ray({0, 0, 3e12}, {0, 0, -1}));
+  ASSERT_TRUE(hit);
+  EXPECT_TRUE(std::isfinite(hit->t));
+  EXPECT_DOUBLE_EQ(hit->t, 2e12);
+}
+
 // --- Box ----------------------------------------------------------------------------
 
 struct BoxFaceCase {

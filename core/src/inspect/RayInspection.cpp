@@ -60,7 +60,7 @@ RayInspection RayInspector::inspect(const Scene& scene, const RayTree& tree, int
     r.objectName = o.name;
     if (o.material >= 0 && o.material < int(scene.materials.size())) {
       const Material& m = scene.materials[std::size_t(o.material)];
-      r.material = MaterialSummary{m.name, m.type, m.isEmitter(), m};
+      r.material = MaterialSummary{m.name, m.type, m.isEmitter(), m, std::nullopt};
       // A textured colour: the texel the algorithms shaded this hit with.
       if (m.texture.active() && s.hit && s.kind != RayKind::Shadow)
         r.material->texel = m.texture.eval(m.colour, s.endPoint, s.normal);

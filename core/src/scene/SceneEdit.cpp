@@ -90,6 +90,26 @@ void appendSteps(json& doc, int object, const std::vector<json>& steps, const st
   for (const json& step : steps) list.push_back(step);
 }
 
+/// The most transform steps an object's entry keeps before an edit folds them.
+constexpr std::size_t kFoldSteps = 48;
+
+/// The file form of `scene` for a turn, move or scale of `object`. When the object's entry
+/// already holds kFoldSteps steps, the object is written as it is now instead (its steps
+/// folded into its shape's keys, or into one matrix step), so that an edit costs the same
+/// however many came before: each edit re-reads every step of the entry, and 2,000
+/// alternating moves and turns (which cannot merge) took over 60 s (issue 38).
+json transformForm(const Scene& scene, int object, const std::string& origin) {
+  json doc = fileForm(scene, origin);
+  const json& entry = objectEntry(doc, object, origin);
+  if (!entry.contains("transform") || entry["transform"].size() < kFoldSteps) return doc;
+  Scene alone;  // the object by itself, with the materials its entry names
+  alone.materials = scene.materials;
+  alone.objects.push_back(scene.objects[std::size_t(object)]);
+  alone.objects.back().fileForm = nullptr;
+  doc["objects"][std::size_t(object)] = fileForm(alone, origin)["objects"][0];
+  return doc;
+}
+
 /// The scene's extent: the diagonal of its finite objects' bounds (1 for none), and the
 /// point the camera looks at, where new things are put.
 double extentOf(const Scene& scene) {
@@ -165,7 +185,7 @@ std::string valueAt(const Scene& scene, const std::string& pointer, const std::s
 
 Scene rotateObject(const Scene& scene, int object, double degrees, const Vec3& axis,
                    const std::string& origin) {
-  json doc = fileForm(scene, origin);
+  json doc = transformForm(scene, object, origin);
   objectEntry(doc, object, origin);
   const Point3 c = centreOf(scene.objects[std::size_t(object)]);
   json rotate;
@@ -178,13 +198,13 @@ Scene rotateObject(const Scene& scene, int object, double degrees, const Vec3& a
 
 Scene translateObject(const Scene& scene, int object, const Vec3& offset,
                       const std::string& origin) {
-  json doc = fileForm(scene, origin);
+  json doc = transformForm(scene, object, origin);
   appendSteps(doc, object, {{{"translate", vec(offset)}}}, origin);
   return readBack(doc, origin);
 }
 
 Scene scaleObject(const Scene& scene, int object, const Vec3& factors, const std::string& origin) {
-  json doc = fileForm(scene, origin);
+  json doc = transformForm(scene, object, origin);
   objectEntry(doc, object, origin);
   const Point3 c = centreOf(scene.objects[std::size_t(object)]);
   appendSteps(doc, object,

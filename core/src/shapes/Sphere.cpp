@@ -1,6 +1,7 @@
 #include "raylab/core/Sphere.h"
 
 #include "raylab/core/Check.h"
+#include "raylab/core/Limits.h"
 #include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
 
@@ -48,6 +49,17 @@ struct GaussLegendre {
   }
 };
 
+/// Refuses a sphere past RayLab's largest coordinate.
+void checkSize(const Point3& centre, double radius) {
+  // Past RayLab's largest coordinate the hit's quadratic overflows: a sphere of radius
+  // 1e300 was hit at t = inf (issue 38). The scene format has the same limit.
+  const auto tooLarge = [](double v) { return !(std::abs(v) <= limits::kMaxCoordinate); };
+  if (tooLarge(radius) || tooLarge(centre.x) || tooLarge(centre.y) || tooLarge(centre.z))
+    throw Shape::InvalidGeometry("sphere centre " + raylab::toString(centre) + " and radius " +
+                                 std::to_string(radius) +
+                                 " must lie within RayLab's largest coordinate, 1e12");
+}
+
 }  // namespace
 
 Sphere::Sphere(const Point3& centre, double radius, int m, int n)
@@ -57,6 +69,7 @@ Sphere::Sphere(const Point3& centre, double radius, int m, int n)
   if (!(radius > 0.0) || !std::isfinite(radius))
     throw InvalidGeometry("sphere radius must be positive and finite, got " +
                           std::to_string(radius));
+  checkSize(m_centre, m_radius);
   setTessellation(m, n);
   updateArea();
 }
@@ -150,6 +163,7 @@ void Sphere::apply(const Mat4& matrix) {
     // Rotation, translation and uniform scale keep a sphere a sphere.
     m_centre = t.transformPoint(m_centre);
     m_radius *= t.uniformScale();
+    checkSize(m_centre, m_radius);
     updateArea();
     return;
   }

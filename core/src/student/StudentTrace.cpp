@@ -116,12 +116,12 @@ PixelTrace traceWithLog(const Tracer& tracer, int x, int y, int sample,
     for (std::size_t i = before; i < log.calls.size(); ++i) log.calls[i].ray = id;
     const StepEvent& event = stepper.lastEvent();
     if (event.ray < 0) continue;
-    if (std::size_t(event.ray) >= trace.stepTexts.size())
-      trace.stepTexts.resize(std::size_t(event.ray) + 1);
-    trace.stepTexts[std::size_t(event.ray)] = event.text;
+    if (std::size_t(event.ray) >= trace.steps.size())
+      trace.steps.resize(std::size_t(event.ray) + 1);
+    trace.steps[std::size_t(event.ray)] = event;
   }
   trace.tree = stepper.tree();
-  trace.stepTexts.resize(trace.tree.segments.size());
+  trace.steps.resize(trace.tree.segments.size());
   trace.counts = stepper.counts();
   trace.estimate = stepper.estimate();
   return trace;

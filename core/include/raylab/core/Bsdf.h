@@ -1,7 +1,7 @@
 #pragma once
 
 #include "raylab/core/Material.h"
-#include "raylab/core/RayTree.h"
+#include "raylab/core/RayKind.h"
 #include "raylab/core/Shape.h"
 
 #include <optional>

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/NestedMedia.h"
+#include "raylab/core/RayKind.h"
 #include "raylab/core/Types.h"
 
 #include <cstddef>
@@ -11,11 +12,6 @@
 namespace raylab {
 
 struct Scene;
-
-/// Why a ray was spawned (the colour-by-kind legend of the ray-tree view).
-enum class RayKind { Camera, Reflection, Refraction, Diffuse, Glossy, Shadow };
-constexpr int kRayKindCount = 6;
-const char* toString(RayKind kind);
 
 /// Why a ray spawned no further rays.
 enum class EndReason {

@@ -1,4 +1,6 @@
-#include "io/MeshNormals.h"
+#include "io/mesh/MeshNormals.h"
+
+#include "raylab/core/Limits.h"
 
 #include <array>
 #include <cmath>
@@ -23,6 +25,12 @@ std::string trimmed(const std::string& s) {
 /// A file's normal must give a direction: finite and not zero.
 void checkNormal(const Normal3& n, int line, const std::string& where) {
   if (!isFinite(n)) throw Problem(line, where + " is not finite: " + toString(n));
+  // A component past RayLab's largest coordinate: its length overflows, and the normal
+  // normalised later had zero length, named without its line (issue 38).
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(n[k]) > limits::kMaxCoordinate)
+      throw Problem(line, where + " has a component beyond RayLab's largest coordinate, 1e12: " +
+                              toString(n));
   if (!(glm::length(n) > 0.0))
     throw Problem(line, where + " has zero length: " + toString(n) + " gives no direction");
 }
@@ -231,6 +239,52 @@ PlyHeader readPlyHeader(std::istream& in) {
   return header;
 }
 
+namespace {
+
+/// One record of `element` into `values` (a list property: its length): an ASCII record is
+/// one line (blank lines skipped; `lineNo` counts them, `recordLine` is the record's), a
+/// binary one its bytes. False when the file is cut off or malformed there.
+bool readPlyRecord(std::istream& in, const PlyElement& element, const PlyHeader& header,
+                   int& lineNo, int& recordLine, std::vector<double>& values) {
+  if (header.ascii()) {
+    std::string record;
+    do {
+      if (!std::getline(in, record)) return false;
+      ++lineNo;
+    } while (trimmed(record).empty());
+    recordLine = lineNo;
+    std::istringstream tokens(record);
+    for (std::size_t i = 0; i < element.properties.size(); ++i) {
+      double v = 0.0;
+      if (!(tokens >> v)) return false;
+      if (element.properties[i].isList()) {
+        for (long long k = 0; k < static_cast<long long>(v); ++k) {
+          double item;
+          if (!(tokens >> item)) return false;
+        }
+      }
+      values[i] = v;
+    }
+    return true;
+  }
+  const bool bigEndian = header.bigEndian();
+  for (std::size_t i = 0; i < element.properties.size(); ++i) {
+    const PlyProperty& p = element.properties[i];
+    double v = 0.0;
+    if (!p.isList()) {
+      if (!readBinary(in, p.type, bigEndian, v)) return false;
+    } else {
+      if (!readBinary(in, p.countType, bigEndian, v) || v < 0) return false;
+      in.seekg(static_cast<std::streamoff>(v) * plySize(p.type), std::ios::cur);
+      if (!in) return false;
+    }
+    values[i] = v;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::optional<FileNormals> readPly(const std::string& path, const PlyHeader& header) {
   static const char* const kAxisNames[3] = {"nx", "ny", "nz"};
   const std::vector<PlyElement>& elements = header.elements;
@@ -258,7 +312,6 @@ std::optional<FileNormals> readPly(const std::string& path, const PlyHeader& hea
 
   // The records up to the end of the vertex element, the vertices' normals kept.
   const bool ascii = header.ascii();
-  const bool bigEndian = header.bigEndian();
   std::ifstream in(path, std::ios::binary);
   in.seekg(header.records);
   int lineNo = header.lines;
@@ -274,40 +327,8 @@ std::optional<FileNormals> readPly(const std::string& path, const PlyHeader& hea
     for (long long r = 0; r < element.count; ++r) {
       std::vector<double> values(element.properties.size(), 0.0);
       int recordLine = 0;
-      if (ascii) {
-        // One record per line (blank lines skipped).
-        std::string record;
-        do {
-          if (!std::getline(in, record)) fail(r, lineNo);
-          ++lineNo;
-        } while (trimmed(record).empty());
-        recordLine = lineNo;
-        std::istringstream tokens(record);
-        for (std::size_t i = 0; i < element.properties.size(); ++i) {
-          double v = 0.0;
-          if (!(tokens >> v)) fail(r, recordLine);
-          if (element.properties[i].isList()) {
-            for (long long k = 0; k < static_cast<long long>(v); ++k) {
-              double item;
-              if (!(tokens >> item)) fail(r, recordLine);
-            }
-          }
-          values[i] = v;
-        }
-      } else {
-        for (std::size_t i = 0; i < element.properties.size(); ++i) {
-          const PlyProperty& p = element.properties[i];
-          double v = 0.0;
-          if (!p.isList()) {
-            if (!readBinary(in, p.type, bigEndian, v)) fail(r, 0);
-          } else {
-            if (!readBinary(in, p.countType, bigEndian, v) || v < 0) fail(r, 0);
-            in.seekg(static_cast<std::streamoff>(v) * plySize(p.type), std::ios::cur);
-            if (!in) fail(r, 0);
-          }
-          values[i] = v;
-        }
-      }
+      if (!readPlyRecord(in, element, header, lineNo, recordLine, values))
+        fail(r, ascii ? (recordLine > 0 ? recordLine : lineNo) : 0);
       if (e != vertexElement) continue;
       const Normal3 n(values[std::size_t(axis[0])], values[std::size_t(axis[1])],
                       values[std::size_t(axis[2])]);

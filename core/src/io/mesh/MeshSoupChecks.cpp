@@ -1,11 +1,10 @@
 // Linear-time checks of a mesh file's soup: see MeshSoupChecks.h.
-#include "io/MeshSoupChecks.h"
+#include "io/mesh/MeshSoupChecks.h"
 
 #include "raylab/core/Limits.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <fstream>
 
 namespace raylab::meshsoup {
 
@@ -39,20 +38,6 @@ std::optional<std::string> checkFaces(const std::vector<std::vector<std::size_t>
                "; RayLab checks polygons whose corners squared sum to at most " +
                std::to_string(limits::kMaxFaceCheckWork) + ": triangulate them first)";
     }
-  }
-  return std::nullopt;
-}
-
-std::optional<std::string> checkAsciiStlCount(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  std::size_t facets = 0;
-  while (std::getline(in, line)) {
-    const std::size_t b = line.find_first_not_of(" \t\r");
-    if (b == std::string::npos || line.compare(b, 5, "facet") != 0) continue;
-    if (++facets > limits::kMaxMeshTriangles)
-      return "the ASCII STL file has more than " + std::to_string(limits::kMaxMeshTriangles) +
-             " triangles; RayLab reads meshes of at most that many";
   }
   return std::nullopt;
 }

@@ -22,9 +22,4 @@ namespace raylab::meshsoup {
  */
 std::optional<std::string> checkFaces(const std::vector<std::vector<std::size_t>>& polygons);
 
-/// The triangles of an ASCII STL file (lines starting with "facet"), counted in one pass
-/// that stops past limits::kMaxMeshTriangles: the problem when there are more, read before
-/// CGAL reads the whole file (4.5M triangles took it 2.4 GB and 30 s).
-std::optional<std::string> checkAsciiStlCount(const std::string& path);
-
 }  // namespace raylab::meshsoup
