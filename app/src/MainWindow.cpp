@@ -68,6 +68,9 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
   buildDocks();
   connectPanels();
   // The document drives the view, the list and the title.
+  // Nothing selected in another scene: the old selection's row number names another object
+  // there (outlined, and Del would delete it; issue 33).
+  connect(m_document.get(), &SceneDocument::sceneReplaced, this, [this] { selectObject(-1); });
   connect(m_document.get(), &SceneDocument::sceneChanged, this, [this] { sceneChanged(); });
   connect(m_document.get(), &SceneDocument::fileStateChanged, this, [this] { updateTitle(); });
   buildMenus();  // window/WindowMenus.cpp
@@ -217,9 +220,6 @@ void MainWindow::sceneChanged() {
 
 void MainWindow::adoptScene(const Scene& scene, const QString& path) {
   m_rayPanel->setRootRay(std::nullopt);  // a lesson's chosen ray belongs to its scene
-  // Nothing selected in the new scene: the old selection's row number names another object
-  // there (Del would delete it; issue 33).
-  selectObject(-1);
   m_document->adopt(scene, path);
   if (!path.isEmpty()) rememberFile(path);
   resetView();
