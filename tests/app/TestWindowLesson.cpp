@@ -153,11 +153,13 @@ TEST_F(WindowLessonTest, 06_InspectorAndImageSteps) {
   const int inspector =
       firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Inspector; });
   panel.showStep(inspector);
+  settle();  // the step's tree is traced off the UI thread
   EXPECT_EQ(m_window->rayTreePanel()->selectedSegment(),
             lesson.steps[std::size_t(inspector)].selectRay.value_or(0));
   const int image =
       firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Image; });
   panel.showStep(image);
+  settle();
   RenderPanel& render = *m_window->renderPanel();
   EXPECT_TRUE(m_window->imageTabs()->isVisible());
   EXPECT_EQ(render.algorithm(), lesson.steps[std::size_t(image)].algorithm);
@@ -284,6 +286,7 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
   const int visits =
       firstStep(lesson, [](const LessonStep& st) { return st.bvh && st.bvh->visits && st.pixelX; });
   panel.showStep(visits);
+  settle();  // the step's tree is traced off the UI thread, then the boxes drawn
   const vis::BvhSummary& summary = m_window->sceneView().bvhSummary();
   EXPECT_GT(summary.entered, 0);
   EXPECT_EQ(summary.boxes, summary.entered + summary.missed + summary.culled);
@@ -297,12 +300,14 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
 
   const int plain = firstStep(lesson, [](const LessonStep& st) { return !st.bvh; });
   panel.showStep(plain);
+  settle();
   EXPECT_EQ(m_window->sceneView().bvhSummary().boxes, 0);
 
   const int bruteForce = firstStep(lesson, [](const LessonStep& st) {
     return st.view == LessonView::Image && !st.settings().acceleration;
   });
   panel.showStep(bruteForce);
+  settle();
   EXPECT_THAT(panel.viewCaption().toStdString(), ::testing::HasSubstr("Brute force"));
   RenderPanel& render = *m_window->renderPanel();
   const auto start = std::chrono::steady_clock::now();
@@ -602,6 +607,7 @@ void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grab
         !vis::shows3D(vis::stepViewState(lesson.steps[firstView], false, Language::English).layout))
       ++firstView;
     panel.showStep(int(firstView));
+    settle();  // each step's tree is traced off the UI thread
     const QImage first = grabView();
     // The handout's pictures at the size of the window's 3D view (one sample of its
     // images and comparisons: only the 3D views are compared).
@@ -625,6 +631,7 @@ void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grab
       const vis::TreeViewState state = vis::stepViewState(step, false, Language::English);
       if (!vis::shows3D(state.layout) || !step.needs.empty()) continue;
       answerRight(panel, step);
+      settle();
       const QImage shown = grabView();
       const QString png = out + QStringLiteral("/step-%1.png").arg(int(i) + 1, 2, 10, QChar('0'));
       const SrgbImage handout = vis::readPng(png.toStdString());
