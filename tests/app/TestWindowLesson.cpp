@@ -33,6 +33,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <map>
 
 namespace raylab::app {
 namespace {
@@ -590,9 +591,32 @@ void answerRight(LessonPanel& panel, const LessonStep& step) {
     panel.answerNumber(step.question->answer);
 }
 
+/// The handout of `file` drawn by `raylab lesson --out` at `size` (one sample of its images
+/// and comparisons: only the 3D views are compared), into a folder named after both; the
+/// folder, or empty when the command failed.
+QString handoutAt(const QString& file, const char* prefix, const QSize& size) {
+  const QString out = QDir::temp().filePath(QStringLiteral("raylab-stager-%1%2x%3")
+                                                .arg(QLatin1String(prefix))
+                                                .arg(size.width())
+                                                .arg(size.height()));
+  QDir(out).removeRecursively();
+  QProcess cli;
+  cli.start(QStringLiteral(RAYLAB_EXE),
+            {QStringLiteral("lesson"), file, QStringLiteral("--out"), out, QStringLiteral("--size"),
+             QStringLiteral("%1x%2").arg(size.width()).arg(size.height()),
+             QStringLiteral("--max-spp"), QStringLiteral("1")});
+  if (!cli.waitForFinished(300000) || cli.exitCode() != 0) {
+    ADD_FAILURE() << cli.readAllStandardError().toStdString();
+    return {};
+  }
+  return out;
+}
+
 /// Issue 31: one lesson stager. Every 3D step of the lessons named by `prefixes`, shown by
 /// the window's lesson player, looks as `raylab lesson --out` draws it at the same size:
-/// the same scene, tree, reveal, selection, overlays and view camera.
+/// the same scene, tree, reveal, selection, overlays and view camera. (The lesson player
+/// gives each step's 3D view the room its panes leave, so the handout is drawn at each size
+/// the window's view takes.)
 void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grabView,
                          std::initializer_list<const char*> prefixes) {
   for (const char* prefix : prefixes) {
@@ -600,39 +624,24 @@ void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grab
     ASSERT_TRUE(window.openLesson(file));
     LessonPanel& panel = *window.lessonPanel();
     const Lesson lesson = LessonIO::load(file.toStdString());
-    // The size of the 3D view on a 3D step (an image step shares the centre with the tabs).
-    std::size_t firstView = 0;
-    while (
-        firstView + 1 < lesson.steps.size() &&
-        !vis::shows3D(vis::stepViewState(lesson.steps[firstView], false, Language::English).layout))
-      ++firstView;
-    panel.showStep(int(firstView));
-    settle();  // each step's tree is traced off the UI thread
-    const QImage first = grabView();
-    // The handout's pictures at the size of the window's 3D view (one sample of its
-    // images and comparisons: only the 3D views are compared).
-    const QString out = QDir::temp().filePath(QStringLiteral("raylab-stager-") + prefix);
-    const QString seenDir = out + QStringLiteral("window");
-    QDir(out).removeRecursively();
+    const QString seenDir =
+        QDir::temp().filePath(QStringLiteral("raylab-stager-") + prefix) + QStringLiteral("window");
     QDir(seenDir).removeRecursively();
     QDir().mkpath(seenDir);
-    QProcess cli;
-    cli.start(
-        QStringLiteral(RAYLAB_EXE),
-        {QStringLiteral("lesson"), file, QStringLiteral("--out"), out, QStringLiteral("--size"),
-         QStringLiteral("%1x%2").arg(first.width()).arg(first.height()),
-         QStringLiteral("--max-spp"), QStringLiteral("1")});
-    ASSERT_TRUE(cli.waitForFinished(300000));
-    ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+    std::map<std::pair<int, int>, QString> handouts;  // by picture size
     int compared = 0;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
       const LessonStep& step = lesson.steps[i];
       panel.showStep(int(i));
+      WindowTest::settle();  // the step's tree is traced off the UI thread
       const vis::TreeViewState state = vis::stepViewState(step, false, Language::English);
       if (!vis::shows3D(state.layout) || !step.needs.empty()) continue;
       answerRight(panel, step);
-      settle();
+      WindowTest::settle();
       const QImage shown = grabView();
+      QString& out = handouts[{shown.width(), shown.height()}];
+      if (out.isEmpty()) out = handoutAt(file, prefix, shown.size());
+      ASSERT_FALSE(out.isEmpty());
       const QString png = out + QStringLiteral("/step-%1.png").arg(int(i) + 1, 2, 10, QChar('0'));
       const SrgbImage handout = vis::readPng(png.toStdString());
       const PictureDifference d = difference(shown, handout);

@@ -86,6 +86,7 @@ class WindowTest : public ::testing::Test {
     settle();
   }
 
+ public:
   /// Lets Qt show, lay out and paint the window.
   static void settle() {
     for (int i = 0; i < 20; ++i) QApplication::processEvents();
@@ -103,6 +104,7 @@ class WindowTest : public ::testing::Test {
     for (int i = 0; i < 20; ++i) QApplication::processEvents();
   }
 
+ protected:
   /// A left-button drag across the 3D view, in widget pixels.
   void drag(const QPoint& from, const QPoint& to) {
     QWidget* w = m_window->viewWidget();
