@@ -8,8 +8,9 @@
 # A file lists every algorithm when it names the four values Algorithm::RayCasting,
 # ::Whitted, ::Distributed and ::PathTracing, or the four words "raycast", "whitted",
 # "distributed" and "path" in double quotes. It lists every shape kind when it holds
-# `case ShapeKind::`, names five of the six ShapeKind values, or quotes "sphere", "box",
-# "plane" and "quad". Such a file must be named in a code span (`path`) of the section's
+# `case ShapeKind::`, names five of the six ShapeKind values, quotes "sphere", "box",
+# "plane" and "quad", or names the formats sphereFormat, boxFormat, planeFormat and
+# quadFormat (the table of shape descriptors). Such a file must be named in a code span (`path`) of the section's
 # "### An algorithm" or "### A shape" list, so that a fifth algorithm or a new shape finds it.
 # Fix: name the file in its list (and the count above the list), or make it read the
 # algorithm table (AlgorithmInfo.h) or ask the shape itself instead of listing them.
@@ -86,8 +87,15 @@ foreach(rel IN LISTS candidates)
       set(shapeWords FALSE)
     endif()
   endforeach()
+  set(formats TRUE)
+  foreach(v sphere box plane quad)
+    string(FIND "${body}" "${v}Format()" at)
+    if(at EQUAL -1)
+      set(formats FALSE)
+    endif()
+  endforeach()
   string(FIND "${body}" "case ShapeKind::" switch)
-  if(kinds GREATER_EQUAL 5 OR shapeWords OR NOT switch EQUAL -1)
+  if(kinds GREATER_EQUAL 5 OR shapeWords OR formats OR NOT switch EQUAL -1)
     string(FIND "${shapeList}" "`${rel}`" named)
     if(named EQUAL -1)
       string(APPEND problems "\n  ${rel} lists every shape kind but is not in \"### A shape\"")

@@ -20,7 +20,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libcli11-dev libtbb-dev  # maths, scene files, CLI, threads
   libssl-dev                                          # SHA-256 of the reference cache
   libgtest-dev libgmock-dev libbenchmark-dev          # tests and benchmarks
-  clang-format                                        # the style check in the test suite
+  clang-format universal-ctags                        # the style checks in the test suite
   clang libclang-rt-14-dev llvm                       # the ASan + fuzz stage (libFuzzer)
   python3-dev python3-numpy pybind11-dev              # the Python module (python/)
   python3-vtk9 python3-pytest python3-matplotlib      # its tests with VTK's Python package

@@ -322,20 +322,12 @@
         <translation>Blinn–Phong 光照模型</translation>
     </message>
     <message>
-        <source>box</source>
-        <translation>长方体</translation>
-    </message>
-    <message>
         <source>dielectric</source>
         <translation>电介质（菲涅耳玻璃）</translation>
     </message>
     <message>
         <source>diffuse</source>
         <translation>漫反射（Lambert）</translation>
-    </message>
-    <message>
-        <source>distributed</source>
-        <translation>分布式光线追踪</translation>
     </message>
     <message>
         <source>exact</source>
@@ -350,32 +342,12 @@
         <translation>光泽反射（Phong）</translation>
     </message>
     <message>
-        <source>mesh</source>
-        <translation>网格</translation>
-    </message>
-    <message>
         <source>mirror</source>
         <translation>镜面（反射 + 折射）</translation>
     </message>
     <message>
-        <source>path</source>
-        <translation>路径追踪</translation>
-    </message>
-    <message>
         <source>phong</source>
         <translation>Phong 光照模型</translation>
-    </message>
-    <message>
-        <source>plane</source>
-        <translation>平面</translation>
-    </message>
-    <message>
-        <source>quad</source>
-        <translation>四边形</translation>
-    </message>
-    <message>
-        <source>raycast</source>
-        <translation>光线投射</translation>
     </message>
     <message>
         <source>rough_conductor</source>
@@ -388,18 +360,6 @@
     <message>
         <source>schlick</source>
         <translation>Schlick 近似</translation>
-    </message>
-    <message>
-        <source>sphere</source>
-        <translation>球体</translation>
-    </message>
-    <message>
-        <source>triangle</source>
-        <translation>三角形</translation>
-    </message>
-    <message>
-        <source>whitted</source>
-        <translation>Whitted 光线追踪</translation>
     </message>
     <message>
         <source>bvh</source>

@@ -119,6 +119,41 @@ void encodeVideo(const std::string& ffmpeg, const std::filesystem::path& dir, in
   }
 }
 
+/// The ffmpeg on PATH that encodes `video`; an error that says how to get it when there is none.
+std::string ffmpegFor(const std::string& video) {
+  const std::string ffmpeg = findOnPath("ffmpeg");
+  if (ffmpeg.empty())
+    throw AnimateError("--video " + video +
+                       " needs the ffmpeg encoder, which is not on PATH; install it with "
+                       "`sudo apt-get install ffmpeg`, or leave out --video to get the PNG "
+                       "frames only");
+  return ffmpeg;
+}
+
+/// Opens `folder`, the new folder beside `out` that takes the frames (frame_*.png); on
+/// failure removes the folders the run made (`missing`: the first of them) and throws.
+void openFramesFolder(std::optional<AtomicFolder>& folder, const std::string& out,
+                      const std::string& missing) {
+  try {
+    folder.emplace(out, [](const std::string& name) {
+      return name.rfind("frame_", 0) == 0 && name.size() > 10 &&
+             name.compare(name.size() - 4, 4, ".png") == 0;
+    });
+  } catch (const AtomicFolder::Error& e) {
+    removeFoldersMade(missing);
+    throw AnimateError(e.what());
+  }
+}
+
+/// The frames first..last, every `every`th, and with --every the last one too: the finished
+/// tree (or the range's end).
+std::vector<int> framesToWrite(int first, int last, int every) {
+  std::vector<int> frames;
+  for (int f = first; f <= last; f += every) frames.push_back(f);
+  if (frames.back() != last) frames.push_back(last);
+  return frames;
+}
+
 int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) {
   // Step 1: scene, pixel, frames and encoder, all checked before any work.
   const RayTreeOptions& o = options.tree;
@@ -127,24 +162,14 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
     std::cerr << "raylab animate: " << *error << std::endl;
     return kExitUsage;
   }
-  std::optional<std::pair<int, int>> range;
-  if (!options.frames.empty()) {
-    range = parseRange(options.frames);
-    if (!range) {
-      std::cerr << "raylab animate: --frames " << options.frames
-                << ": expected FIRST:LAST frame numbers, e.g. 0:47" << std::endl;
-      return kExitUsage;
-    }
+  const std::optional<std::pair<int, int>> range =
+      options.frames.empty() ? std::nullopt : parseRange(options.frames);
+  if (!options.frames.empty() && !range) {
+    std::cerr << "raylab animate: --frames " << options.frames
+              << ": expected FIRST:LAST frame numbers, e.g. 0:47" << std::endl;
+    return kExitUsage;
   }
-  std::string ffmpeg;
-  if (!options.video.empty()) {
-    ffmpeg = findOnPath("ffmpeg");
-    if (ffmpeg.empty())
-      throw AnimateError("--video " + options.video +
-                         " needs the ffmpeg encoder, which is not on PATH; install it with "
-                         "`sudo apt-get install ffmpeg`, or leave out --video to get the PNG "
-                         "frames only");
-  }
+  const std::string ffmpeg = options.video.empty() ? std::string() : ffmpegFor(options.video);
   const RenderSettings settings = o.common.settings(scene);
 
   // Step 2: the folder for the frames (its problems first), then the tree, its view and the
@@ -155,15 +180,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   const std::filesystem::path dir(o.common.out);
   const std::string missing = firstMissingFolder(o.common.out);
   std::optional<AtomicFolder> folder;
-  try {
-    folder.emplace(o.common.out, [](const std::string& name) {
-      return name.rfind("frame_", 0) == 0 && name.size() > 10 &&
-             name.compare(name.size() - 4, 4, ".png") == 0;
-    });
-  } catch (const AtomicFolder::Error& e) {
-    removeFoldersMade(missing);
-    throw AnimateError(e.what());
-  }
+  openFramesFolder(folder, o.common.out, missing);
   requireDisplayAfterFolder(missing);
   const PixelTrace trace = tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
   const RayTree& tree = trace.tree;
@@ -176,10 +193,7 @@ int runAnimate(const AnimateOptions& options, const std::string& topLevelScene) 
   }
   const int first = range ? range->first : 0;
   const int last = range ? std::min(range->second, total - 1) : total - 1;
-  std::vector<int> frames;
-  for (int f = first; f <= last; f += options.every) frames.push_back(f);
-  // With --every, the last frame too: the finished tree (or the range's end).
-  if (frames.back() != last) frames.push_back(last);
+  const std::vector<int> frames = framesToWrite(first, last, options.every);
 
   const int digits = std::max(4, int(std::to_string(total - 1).size()));
   const auto frameFile = [&](int frame) {

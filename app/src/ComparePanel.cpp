@@ -104,18 +104,7 @@ ComparePanel::ComparePanel(QWidget* parent)
   layout->addWidget(m_status);
 
   // Step 2: the comparison, and the convergence plot under it.
-  m_split = new QSplitter(Qt::Vertical);
-  m_widget = vtkWidget();
-  m_widget->installEventFilter(this);
-  m_widget->setToolTip(tr("Click a pixel of any image to trace it with all four algorithms"));
-  m_plotWidget = vtkWidget();
-  m_plotWidget->installEventFilter(this);
-  m_plotWidget->hide();
-  m_split->addWidget(m_widget);
-  m_split->addWidget(m_plotWidget);
-  m_split->setStretchFactor(0, 3);
-  m_split->setStretchFactor(1, 2);
-  layout->addWidget(m_split, 1);
+  addViews(layout);
 
   connect(m_mode, qOverload<int>(&QComboBox::currentIndexChanged), this, [this] {
     const bool time = m_mode->currentData().toBool();
@@ -136,6 +125,22 @@ ComparePanel::ComparePanel(QWidget* parent)
     showPlot();
   });
   updateControls();
+}
+
+/// Step 2 of the panel: the comparison's view, and the convergence plot's under it.
+void ComparePanel::addViews(QVBoxLayout* layout) {
+  m_split = new QSplitter(Qt::Vertical);
+  m_widget = vtkWidget();
+  m_widget->installEventFilter(this);
+  m_widget->setToolTip(tr("Click a pixel of any image to trace it with all four algorithms"));
+  m_plotWidget = vtkWidget();
+  m_plotWidget->installEventFilter(this);
+  m_plotWidget->hide();
+  m_split->addWidget(m_widget);
+  m_split->addWidget(m_plotWidget);
+  m_split->setStretchFactor(0, 3);
+  m_split->setStretchFactor(1, 2);
+  layout->addWidget(m_split, 1);
 }
 
 ComparePanel::~ComparePanel() {

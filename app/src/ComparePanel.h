@@ -17,6 +17,7 @@ class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QSplitter;
+class QVBoxLayout;
 class QVTKOpenGLNativeWidget;
 
 namespace raylab::vis {
@@ -100,6 +101,7 @@ class ComparePanel : public QWidget {
   bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
+  void addViews(QVBoxLayout* layout);
   void showPass(const std::shared_ptr<const ComparisonResult>& result,
                 const std::shared_ptr<const Scene>& scene, double fraction);
   void ended(const std::shared_ptr<const ComparisonResult>& result,

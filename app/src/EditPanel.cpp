@@ -63,7 +63,28 @@ EditPanel::EditPanel(SceneDocument& document, QWidget* parent)
   m_title->setWordWrap(true);
   layout->addWidget(m_title);
 
-  // The original program's operation: an angle about an axis through the object's centre.
+  layout->addWidget(makeRotateGroup());
+  layout->addWidget(makeMoveGroup());
+  layout->addWidget(makeObjectGroup());
+  layout->addStretch(1);
+
+  connect(m_rotate, &QPushButton::clicked, this, &EditPanel::rotate);
+  connect(m_move, &QPushButton::clicked, this, &EditPanel::move);
+  connect(m_scaleUniform, &QPushButton::clicked, this, &EditPanel::scaleUniformly);
+  connect(m_scaleAxes, &QPushButton::clicked, this, &EditPanel::scalePerAxis);
+  connect(m_rename, &QPushButton::clicked, this, &EditPanel::rename);
+  connect(m_name, &QLineEdit::returnPressed, this, &EditPanel::rename);
+  connect(m_duplicate, &QPushButton::clicked, this, &EditPanel::duplicate);
+  connect(m_delete, &QPushButton::clicked, this, &EditPanel::remove);
+  connect(&m_document, &SceneDocument::sceneChanged, this, [this] {
+    if (m_object >= int(m_document.scene().objects.size())) m_object = -1;
+    updateEnabled();
+  });
+  updateEnabled();
+}
+
+/// The original program's operation: an angle about an axis through the object's centre.
+QGroupBox* EditPanel::makeRotateGroup() {
   auto* rotateGroup = new QGroupBox(tr("Rotate about its centre"));
   auto* rotateForm = new QFormLayout(rotateGroup);
   m_angle =
@@ -76,8 +97,11 @@ EditPanel::EditPanel(SceneDocument& document, QWidget* parent)
   m_rotate->setToolTip(
       tr("Turn the selected object by the angle about the axis through its centre"));
   rotateForm->addRow(m_rotate);
-  layout->addWidget(rotateGroup);
+  return rotateGroup;
+}
 
+/// Move by an offset; scale about the centre, uniformly or per axis.
+QGroupBox* EditPanel::makeMoveGroup() {
   auto* moveGroup = new QGroupBox(tr("Move and scale"));
   auto* moveForm = new QFormLayout(moveGroup);
   const double zero[3] = {0.0, 0.0, 0.0};
@@ -99,8 +123,11 @@ EditPanel::EditPanel(SceneDocument& document, QWidget* parent)
   m_scaleAxes = new QPushButton(tr("Scale per axis"));
   m_scaleAxes->setToolTip(tr("Scale the selected object about its centre, axis by axis"));
   moveForm->addRow(m_scaleAxes);
-  layout->addWidget(moveGroup);
+  return moveGroup;
+}
 
+/// Rename, duplicate and delete the selected object.
+QGroupBox* EditPanel::makeObjectGroup() {
   auto* objectGroup = new QGroupBox(tr("Object"));
   auto* objectForm = new QFormLayout(objectGroup);
   m_name = new QLineEdit;
@@ -123,22 +150,7 @@ EditPanel::EditPanel(SceneDocument& document, QWidget* parent)
   buttonLayout->addWidget(m_duplicate);
   buttonLayout->addWidget(m_delete);
   objectForm->addRow(buttons);
-  layout->addWidget(objectGroup);
-  layout->addStretch(1);
-
-  connect(m_rotate, &QPushButton::clicked, this, &EditPanel::rotate);
-  connect(m_move, &QPushButton::clicked, this, &EditPanel::move);
-  connect(m_scaleUniform, &QPushButton::clicked, this, &EditPanel::scaleUniformly);
-  connect(m_scaleAxes, &QPushButton::clicked, this, &EditPanel::scalePerAxis);
-  connect(m_rename, &QPushButton::clicked, this, &EditPanel::rename);
-  connect(m_name, &QLineEdit::returnPressed, this, &EditPanel::rename);
-  connect(m_duplicate, &QPushButton::clicked, this, &EditPanel::duplicate);
-  connect(m_delete, &QPushButton::clicked, this, &EditPanel::remove);
-  connect(&m_document, &SceneDocument::sceneChanged, this, [this] {
-    if (m_object >= int(m_document.scene().objects.size())) m_object = -1;
-    updateEnabled();
-  });
-  updateEnabled();
+  return objectGroup;
 }
 
 void EditPanel::setSelection(int object) {

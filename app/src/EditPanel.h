@@ -8,6 +8,7 @@
 #include <functional>
 
 class QDoubleSpinBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -59,6 +60,10 @@ class EditPanel : public QWidget {
   void selectionRequested(int object);
 
  private:
+  /// The panel's groups: rotate; move and scale; the object itself.
+  QGroupBox* makeRotateGroup();
+  QGroupBox* makeMoveGroup();
+  QGroupBox* makeObjectGroup();
   /// Applies `edit` named `text` to the selected object; reports a refusal.
   bool applyToSelection(const QString& text, const std::function<Scene(const Scene&, int)>& edit);
   QString objectName() const;

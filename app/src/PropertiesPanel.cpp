@@ -4,9 +4,11 @@
 
 #include "EditPanel.h"
 #include "SceneDocument.h"
+#include "UiWords.h"
 
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Exception.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/SceneEdit.h"
 
 #include <nlohmann/json.hpp>
@@ -137,8 +139,20 @@ QString label(const std::string& key) {
   return QCoreApplication::translate("SceneKeys", text.toUtf8().constData());
 }
 
-/// A value of a list ("raycast"), in the window's language.
-QString valueLabel(const char* value) { return QCoreApplication::translate("SceneValues", value); }
+/// A value of a list ("raycast"), in the window's language. An algorithm's and a shape's
+/// words come from the phrase table (`algorithm.<word>`, `shape.<word>`; an algorithm in
+/// English is its word as the file writes it), the other values from Qt's translation
+/// (SceneWords.h).
+QString valueLabel(const char* value) {
+  const Language language = uiLanguage();
+  if (parseAlgorithm(value))
+    return language == Language::English
+               ? QString::fromLatin1(value)
+               : QString::fromStdString(phrase("algorithm." + std::string(value), language));
+  const std::string shapeKey = "shape." + std::string(value);
+  if (hasPhrase(shapeKey)) return QString::fromStdString(phrase(shapeKey, language));
+  return QCoreApplication::translate("SceneValues", value);
+}
 
 bool isNumberTriple(const json& v) {
   return v.is_array() && v.size() == 3 && v[0].is_number() && v[1].is_number() && v[2].is_number();
@@ -258,22 +272,7 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
                                     const nlohmann::ordered_json& value, bool material,
                                     const QString& undoText) {
   if (material && key == "type") {
-    // The scattering model: the form then shows that model's parameters.
-    auto* box = new QComboBox;
-    for (const char* type : kMaterialTypes)
-      box->addItem(valueLabel(type), QString::fromLatin1(type));
-    box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
-    box->setToolTip(
-        tr("Scattering model: diffuse (Lambert), mirror (reflection and "
-           "refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic "
-           "Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn's "
-           "half-vector highlight), rough_conductor (microfacet metal), rough_dielectric "
-           "(microfacet glass), plastic (a rough dielectric coating over a diffuse base)"));
-    connect(box, QOverload<int>::of(&QComboBox::activated), this,
-            [this, place, box, undoText](int) {
-              setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
-            });
-    return box;
+    return makeMaterialTypeBox(place, value, undoText);
   } else if (kReadOnlyKeys.count(key) || value.is_object() ||
              (value.is_array() && !value.empty() && value[0].is_array() && key == "matrix")) {
     // A read-only word of the format (the shape's type) in the window's language.
@@ -313,57 +312,87 @@ QWidget* PropertiesPanel::makeField(const std::string& key, const std::string& p
     return box;
   } else if (isNumberTriple(value) ||
              (value.is_array() && !value.empty() && isNumberTriple(value[0]))) {
-    // A vector (or a list of vectors: axes, vertices): one row of three per vector.
-    const bool list = !isNumberTriple(value);
-    auto* rows = new QWidget;
-    auto* rowsLayout = new QVBoxLayout(rows);
-    rowsLayout->setContentsMargins(0, 0, 0, 0);
-    const auto commit = [this, place, rows, list, undoText] {
-      json v = json::array();
-      for (auto* row : rows->findChildren<QWidget*>(QStringLiteral("row"))) {
-        json triple = json::array();
-        for (auto* b : row->findChildren<QDoubleSpinBox*>()) triple.push_back(b->value());
-        v.push_back(triple);
-      }
-      setValue(place, (list ? v : v[0]).dump(), undoText);
-    };
-    const std::size_t count = list ? value.size() : 1;
-    for (std::size_t r = 0; r < count; ++r) {
-      const json& triple = list ? value[r] : value;
-      auto* row = new QWidget;
-      row->setObjectName(QStringLiteral("row"));
-      auto* rowLayout = new QHBoxLayout(row);
-      rowLayout->setContentsMargins(0, 0, 0, 0);
-      for (int i = 0; i < 3; ++i) {
-        auto* box = numberBox(triple[std::size_t(i)].get<double>());
-        rowLayout->addWidget(box);
-        connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
-                [commit](double) { commit(); });
-      }
-      if (key == "colour" || key == "colour2" || key == "background") {
-        // Linear RGB in [0, 1], picked as a colour.
-        auto* pick = new QPushButton(tr("…"));
-        pick->setToolTip(tr("Choose the colour"));
-        pick->setMaximumWidth(32);
-        const QColor shown = QColor::fromRgbF(std::clamp(triple[0].get<double>(), 0.0, 1.0),
-                                              std::clamp(triple[1].get<double>(), 0.0, 1.0),
-                                              std::clamp(triple[2].get<double>(), 0.0, 1.0));
-        pick->setStyleSheet(QStringLiteral("background-color: %1").arg(shown.name()));
-        connect(pick, &QPushButton::clicked, this, [this, place, shown, undoText] {
-          const QColor c = QColorDialog::getColor(shown, this, tr("Colour"));
-          if (c.isValid())
-            setValue(place, json::array({c.redF(), c.greenF(), c.blueF()}).dump(), undoText);
-        });
-        rowLayout->addWidget(pick);
-      }
-      rowsLayout->addWidget(row);
-    }
-    return rows;
+    return makeVectorRows(key, place, value, undoText);
   } else {
     auto* text = new QLabel(QString::fromStdString(value.dump()));
     text->setWordWrap(true);
     return text;
   }
+}
+
+QWidget* PropertiesPanel::makeMaterialTypeBox(const std::string& place,
+                                              const nlohmann::ordered_json& value,
+                                              const QString& undoText) {
+  // The scattering model: the form then shows that model's parameters.
+  auto* box = new QComboBox;
+  for (const char* type : kMaterialTypes) box->addItem(valueLabel(type), QString::fromLatin1(type));
+  box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
+  box->setToolTip(
+      tr("Scattering model: diffuse (Lambert), mirror (reflection and "
+         "refraction rates), dielectric (Fresnel glass), glossy (Phong), phong (the classic "
+         "Phong model: ambient, diffuse, specular), blinn_phong (Phong with Blinn's "
+         "half-vector highlight), rough_conductor (microfacet metal), rough_dielectric "
+         "(microfacet glass), plastic (a rough dielectric coating over a diffuse base)"));
+  connect(box, QOverload<int>::of(&QComboBox::activated), this, [this, place, box, undoText](int) {
+    setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
+  });
+  return box;
+}
+
+QWidget* PropertiesPanel::makeVectorRows(const std::string& key, const std::string& place,
+                                         const nlohmann::ordered_json& value,
+                                         const QString& undoText) {
+  // A vector (or a list of vectors: axes, vertices): one row of three per vector.
+  const bool list = !isNumberTriple(value);
+  auto* rows = new QWidget;
+  auto* rowsLayout = new QVBoxLayout(rows);
+  rowsLayout->setContentsMargins(0, 0, 0, 0);
+  const auto commit = [this, place, rows, list, undoText] {
+    json v = json::array();
+    for (auto* row : rows->findChildren<QWidget*>(QStringLiteral("row"))) {
+      json triple = json::array();
+      for (auto* b : row->findChildren<QDoubleSpinBox*>()) triple.push_back(b->value());
+      v.push_back(triple);
+    }
+    setValue(place, (list ? v : v[0]).dump(), undoText);
+  };
+  const std::size_t count = list ? value.size() : 1;
+  for (std::size_t r = 0; r < count; ++r) {
+    const json& triple = list ? value[r] : value;
+    auto* row = new QWidget;
+    row->setObjectName(QStringLiteral("row"));
+    auto* rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    for (int i = 0; i < 3; ++i) {
+      auto* box = numberBox(triple[std::size_t(i)].get<double>());
+      rowLayout->addWidget(box);
+      connect(box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+              [commit](double) { commit(); });
+    }
+    if (key == "colour" || key == "colour2" || key == "background")
+      rowLayout->addWidget(makeColourButton(place, triple, undoText));
+    rowsLayout->addWidget(row);
+  }
+  return rows;
+}
+
+QPushButton* PropertiesPanel::makeColourButton(const std::string& place,
+                                               const nlohmann::ordered_json& triple,
+                                               const QString& undoText) {
+  // Linear RGB in [0, 1], picked as a colour.
+  auto* pick = new QPushButton(tr("…"));
+  pick->setToolTip(tr("Choose the colour"));
+  pick->setMaximumWidth(32);
+  const QColor shown = QColor::fromRgbF(std::clamp(triple[0].get<double>(), 0.0, 1.0),
+                                        std::clamp(triple[1].get<double>(), 0.0, 1.0),
+                                        std::clamp(triple[2].get<double>(), 0.0, 1.0));
+  pick->setStyleSheet(QStringLiteral("background-color: %1").arg(shown.name()));
+  connect(pick, &QPushButton::clicked, this, [this, place, shown, undoText] {
+    const QColor c = QColorDialog::getColor(shown, this, tr("Colour"));
+    if (c.isValid())
+      setValue(place, json::array({c.redF(), c.greenF(), c.blueF()}).dump(), undoText);
+  });
+  return pick;
 }
 
 void PropertiesPanel::addTransformGroup(const QString& object, const std::string& base) {

@@ -8,6 +8,7 @@
 #include <string>
 
 class QFormLayout;
+class QPushButton;
 class QVBoxLayout;
 
 namespace raylab::app {
@@ -66,6 +67,16 @@ class PropertiesPanel : public QWidget {
   /// it is not edited here); `material` when the key belongs to a material.
   QWidget* makeField(const std::string& key, const std::string& place,
                      const nlohmann::ordered_json& value, bool material, const QString& undoText);
+
+  /// makeField's parts: the material's scattering model (its form then shows that model's
+  /// parameters); a vector or a list of vectors, one row of three per vector; the button
+  /// that picks a colour (linear RGB in [0, 1]) for the vector `triple`.
+  QWidget* makeMaterialTypeBox(const std::string& place, const nlohmann::ordered_json& value,
+                               const QString& undoText);
+  QWidget* makeVectorRows(const std::string& key, const std::string& place,
+                          const nlohmann::ordered_json& value, const QString& undoText);
+  QPushButton* makeColourButton(const std::string& place, const nlohmann::ordered_json& triple,
+                                const QString& undoText);
 
   SceneDocument& m_document;
   int m_object = -1;

@@ -44,19 +44,7 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent), m_job(std::make_uni
   auto* layout = new QVBoxLayout(this);
 
   // Step 1: what to render: the algorithm and the samples per pixel.
-  auto* controls = new QHBoxLayout;
-  m_algorithm = new QComboBox;
-  for (Algorithm a : kAllAlgorithms) m_algorithm->addItem(algorithmLabel(a), int(a));
-  m_algorithm->setToolTip(tr("The algorithm that renders the image"));
-  m_samples = new QSpinBox;
-  m_samples->setRange(1, 1 << 16);
-  m_samples->setSuffix(tr(" spp"));
-  m_samples->setToolTip(
-      tr("Samples per pixel the render stops at; the image refines pass by pass "
-         "(1, 2, 4, 8, … samples)"));
-  controls->addWidget(m_algorithm, 1);
-  controls->addWidget(m_samples);
-  layout->addLayout(controls);
+  addControls(layout);
 
   // Step 2: Render / Cancel / Save, the progress and the figures.
   auto* buttons = new QHBoxLayout;
@@ -95,17 +83,7 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent), m_job(std::make_uni
   layout->addWidget(m_figures);
 
   // Step 3: the image, scrolling when zoomed in, and the value under the cursor.
-  m_view = new ImageView;
-  m_view->clear(
-      tr("Press Render (F5) to render the scene camera's image.\n"
-         "Then click a pixel to see its ray tree."));
-  m_scroll = new QScrollArea;
-  m_scroll->setWidget(m_view);
-  m_scroll->setWidgetResizable(true);
-  m_scroll->setAlignment(Qt::AlignCenter);
-  layout->addWidget(m_scroll, 1);
-  m_pixelValue = new QLabel(tr("Point at a pixel to read its value"));
-  layout->addWidget(m_pixelValue);
+  addImageArea(layout);
 
   connect(m_renderButton, &QPushButton::clicked, this, [this] { render(); });
   connect(m_cancelButton, &QPushButton::clicked, this, [this] { cancel(); });
@@ -131,6 +109,38 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent), m_job(std::make_uni
 }
 
 RenderPanel::~RenderPanel() = default;
+
+/// Step 1 of the panel: the algorithm and the samples per pixel.
+void RenderPanel::addControls(QVBoxLayout* layout) {
+  auto* controls = new QHBoxLayout;
+  m_algorithm = new QComboBox;
+  for (Algorithm a : kAllAlgorithms) m_algorithm->addItem(algorithmLabel(a), int(a));
+  m_algorithm->setToolTip(tr("The algorithm that renders the image"));
+  m_samples = new QSpinBox;
+  m_samples->setRange(1, 1 << 16);
+  m_samples->setSuffix(tr(" spp"));
+  m_samples->setToolTip(
+      tr("Samples per pixel the render stops at; the image refines pass by pass "
+         "(1, 2, 4, 8, … samples)"));
+  controls->addWidget(m_algorithm, 1);
+  controls->addWidget(m_samples);
+  layout->addLayout(controls);
+}
+
+/// Step 3 of the panel: the image, scrolling when zoomed in, and the value under the cursor.
+void RenderPanel::addImageArea(QVBoxLayout* layout) {
+  m_view = new ImageView;
+  m_view->clear(
+      tr("Press Render (F5) to render the scene camera's image.\n"
+         "Then click a pixel to see its ray tree."));
+  m_scroll = new QScrollArea;
+  m_scroll->setWidget(m_view);
+  m_scroll->setWidgetResizable(true);
+  m_scroll->setAlignment(Qt::AlignCenter);
+  layout->addWidget(m_scroll, 1);
+  m_pixelValue = new QLabel(tr("Point at a pixel to read its value"));
+  layout->addWidget(m_pixelValue);
+}
 
 Algorithm RenderPanel::algorithm() const {
   return static_cast<Algorithm>(m_algorithm->currentData().toInt());

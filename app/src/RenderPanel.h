@@ -17,6 +17,7 @@ class QProgressBar;
 class QPushButton;
 class QScrollArea;
 class QSpinBox;
+class QVBoxLayout;
 
 namespace raylab::app {
 
@@ -83,6 +84,8 @@ class RenderPanel : public QWidget {
   void saveRequested();
 
  private:
+  void addControls(QVBoxLayout* layout);
+  void addImageArea(QVBoxLayout* layout);
   void showProgress(const RenderProgress& progress);
   void ended(const RenderProgress& progress, bool cancelled);
   void updateButtons();

@@ -86,38 +86,29 @@ inline constexpr const char* kSceneKeyWords[] = {
     QT_TRANSLATE_NOOP("SceneKeys", "zh"),
 };
 
-/// Every value the panel offers in a list, for lupdate.
+/// Every value the panel offers in a list, for lupdate; an algorithm's and a shape's words
+/// come from the phrase table instead (PropertiesPanel.cpp, valueLabel).
 inline constexpr const char* kSceneValueWords[] = {
     QT_TRANSLATE_NOOP("SceneValues", "beckmann"),
     QT_TRANSLATE_NOOP("SceneValues", "blinn_phong"),
-    QT_TRANSLATE_NOOP("SceneValues", "box"),
     QT_TRANSLATE_NOOP("SceneValues", "bvh"),
     QT_TRANSLATE_NOOP("SceneValues", "dielectric"),
     QT_TRANSLATE_NOOP("SceneValues", "diffuse"),
-    QT_TRANSLATE_NOOP("SceneValues", "distributed"),
     QT_TRANSLATE_NOOP("SceneValues", "exact"),
     QT_TRANSLATE_NOOP("SceneValues", "file"),
     QT_TRANSLATE_NOOP("SceneValues", "flat"),
     QT_TRANSLATE_NOOP("SceneValues", "ggx"),
     QT_TRANSLATE_NOOP("SceneValues", "glossy"),
     QT_TRANSLATE_NOOP("SceneValues", "median"),
-    QT_TRANSLATE_NOOP("SceneValues", "mesh"),
     QT_TRANSLATE_NOOP("SceneValues", "mirror"),
     QT_TRANSLATE_NOOP("SceneValues", "none"),
-    QT_TRANSLATE_NOOP("SceneValues", "path"),
     QT_TRANSLATE_NOOP("SceneValues", "phong"),
-    QT_TRANSLATE_NOOP("SceneValues", "plane"),
     QT_TRANSLATE_NOOP("SceneValues", "plastic"),
-    QT_TRANSLATE_NOOP("SceneValues", "quad"),
-    QT_TRANSLATE_NOOP("SceneValues", "raycast"),
     QT_TRANSLATE_NOOP("SceneValues", "rough_conductor"),
     QT_TRANSLATE_NOOP("SceneValues", "rough_dielectric"),
     QT_TRANSLATE_NOOP("SceneValues", "sah"),
     QT_TRANSLATE_NOOP("SceneValues", "schlick"),
     QT_TRANSLATE_NOOP("SceneValues", "smooth"),
-    QT_TRANSLATE_NOOP("SceneValues", "sphere"),
-    QT_TRANSLATE_NOOP("SceneValues", "triangle"),
-    QT_TRANSLATE_NOOP("SceneValues", "whitted"),
 };
 
 }  // namespace raylab::app

@@ -268,7 +268,7 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
       ->check(CLI::Validator(checkSize, "WxH"))
       ->each([this](const std::string& text) { imageSize = parseSize(text); });
   command->add_option("--colour,--color", colour, "Ray colours: energy, kind or depth")
-      ->check(CLI::IsMember({"energy", "kind", "depth"}))
+      ->check(CLI::Validator(colourUsageError, "energy|kind|depth"))
       ->capture_default_str();
   command
       ->add_option("--kinds", kinds,
@@ -380,6 +380,18 @@ vis::RayTreeStyle RayTreeOptions::style() const {
 
 std::pair<int, int> RayTreeOptions::pictureSize() const {
   return common.size.value_or(m_defaultSize);
+}
+
+std::string colourUsageError(const std::string& name) {
+  // A plain trace has no verdicts: every ray would be grey. The verdict colouring belongs to
+  // a tree traced with a student's code, which `raylab check` and Python draw.
+  if (name == "verdict")
+    return "the verdict colouring needs a student's code judged ray by ray, which a plain "
+           "trace has not: run `raylab check EXERCISE FILE.py --out DIR` (DIR/tree.png, your tree "
+           "by verdict) or Python's raylab.student.trace(...) and raylab.student.save_view(...); "
+           "here use energy, kind or depth";
+  if (name == "energy" || name == "kind" || name == "depth") return {};
+  return "unknown colouring '" + name + "': use energy, kind or depth";
 }
 
 std::optional<std::string> pixelUsageError(int x, int y, const Scene& scene,

@@ -74,6 +74,9 @@ struct RayTreeOptions {
   std::pair<int, int> m_defaultSize{1024, 768};
 };
 
+/// The --colour check of `trace` and `animate`: empty for energy, kind or depth; for verdict,
+/// why a plain trace cannot be coloured by verdict and what draws verdicts instead.
+std::string colourUsageError(const std::string& name);
 /// The usage error of tracing pixel (x, y) of `scene`'s image with the ray kinds `kinds`
 /// (a comma-separated list, empty for all), named after `option` ("--pixel", "--trace"):
 /// a pixel outside the image (naming the image size) or an unknown kind. Shared by

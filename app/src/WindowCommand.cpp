@@ -31,6 +31,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace raylab::app {
@@ -39,17 +40,17 @@ namespace {
 /// How long a screenshot waits for the window to be shown and painted, when no
 /// --quit-after-ms is given.
 constexpr int kScreenshotDelayMs = 1500;
-}  // namespace
 
-int runWindow(int argc, char** argv, const WindowOptions& options) {
-  // Step 1: the scene first, so a bad file fails before any window appears.
-  const Scene scene = loadSceneOrDefault(options.scene);
-  const int selected = options.select.empty() ? -1 : scene.findObject(options.select);
-  if (!options.select.empty() && selected < 0) {
+/// Step 1: the options checked against the scene; the exit code of a usage
+/// error, after saying what is wrong (an object --select does not find throws,
+/// exit 1).
+std::optional<int> checkAgainstScene(const WindowOptions& options, const Scene& scene) {
+  if (!options.select.empty() && scene.findObject(options.select) < 0) {
     throw Exception("--select: the scene '" + scene.name + "' has no object named '" +
                     options.select + "'");
   }
-  // The pixel to trace: a usage error (exit 2) with the words of `raylab trace`.
+  // The pixel to trace: a usage error (exit 2) with the words of `raylab
+  // trace`.
   if (options.trace) {
     if (const auto error =
             pixelUsageError(options.trace->first, options.trace->second, scene, "--trace")) {
@@ -64,13 +65,144 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
               << ")" << std::endl;
     return kExitUsage;
   }
+  return std::nullopt;
+}
 
-  // The window draws through X (Qt's xcb, and VTK in it), unless Qt is told to use another
-  // platform: without an X server Qt would abort with a message of its own.
+/// The ray-tree panel: algorithm, and a pixel traced, animated and inspected.
+void showRayTreeOptions(MainWindow& window, const WindowOptions& options) {
+  RayTreePanel& panel = *window.rayTreePanel();
+  if (options.algorithm) panel.setAlgorithm(*options.algorithm);
+  if (options.simulate) {
+    panel.setGrid(options.simulate->first, options.simulate->second);
+    panel.simulate();
+  }
+  if (!options.trace) return;
+  panel.setPixel(options.trace->first, options.trace->second);
+  panel.setSample(options.sample);
+  if (options.ray) {
+    // Checked before the loop, like a bad scene (exit 1): the panel's tree is this one.
+    const Scene& traced = window.document().scene();
+    RenderSettings settings = traced.render;
+    settings.algorithm = panel.algorithm();
+    const int count = int(
+        tracePixel(traced, settings, options.trace->first, options.trace->second, options.sample)
+            .tree.segments.size());
+    if (*options.ray < 0 || *options.ray >= count)
+      throw Exception("--ray: the tree of pixel (" + std::to_string(options.trace->first) + ", " +
+                      std::to_string(options.trace->second) + ") has " + std::to_string(count) +
+                      " rays: #0..#" + std::to_string(count - 1));
+  }
+  // The frame and ray once the trace (off the UI thread) has ended.
+  panel.trace([&panel, frame = options.frame, ray = options.ray] {
+    if (frame) panel.setFrame(*frame);
+    if (ray) panel.selectSegment(*ray);
+  });
+}
+
+/// The lesson and step, presentation mode, and the render and comparison the
+/// window starts.
+void showStartOptions(MainWindow& window, const WindowOptions& options) {
+  if (!options.lesson.empty()) {
+    // A lesson that cannot be opened fails like a bad scene: before the loop,
+    // exit 1.
+    const Lesson lesson = LessonIO::load(options.lesson);
+    if (options.lessonStep > int(lesson.steps.size()))
+      throw Exception("--lesson-step " + std::to_string(options.lessonStep) + ": the lesson " +
+                      options.lesson + " has " + std::to_string(lesson.steps.size()) + " steps");
+    window.openLesson(QString::fromStdString(options.lesson), false);
+    window.lessonPanel()->showStep(options.lessonStep - 1);
+  }
+  if (options.presentation) window.setPresentationMode(true);
+  RenderPanel& render = *window.renderPanel();
+  if (options.render) {
+    if (options.algorithm) render.setAlgorithm(*options.algorithm);
+    if (options.renderSamples) render.setSamplesPerPixel(*options.renderSamples);
+    window.showImageTab(&render);
+    render.render();
+  }
+  ComparePanel& comparison = *window.comparePanel();
+  if (options.compare) {
+    if (options.compareSamples) comparison.setSamplesPerPixel(*options.compareSamples);
+    window.showImageTab(&comparison);
+    comparison.compare();
+  }
+}
+
+/// Step 3, for tests: leave by ourselves once the window has been shown and
+/// painted (and the image rendered, with --render; the comparison made, with
+/// --compare), after saving the screenshot asked for (exitCode says when it
+/// could not be written). `window` is the window at the time (a language switch
+/// replaces it).
+void leaveWhenShown(QApplication& application, std::unique_ptr<MainWindow>& window,
+                    const WindowOptions& options, int& exitCode) {
+  if (options.quitAfterMs < 0 && options.screenshot.empty()) return;
+  const int delay = options.quitAfterMs >= 0 ? options.quitAfterMs : kScreenshotDelayMs;
+  const auto leave = [&window, &options, &exitCode] {
+    if (!options.screenshot.empty()) {
+      if (window->saveScreenshot(QString::fromStdString(options.screenshot))) {
+        std::cout << options.screenshot << std::endl;
+      } else {
+        std::cerr << "raylab: error: " << options.screenshot
+                  << ": cannot write the window screenshot" << std::endl;
+        exitCode = kExitRuntimeError;
+      }
+    }
+    window->close();
+  };
+  auto left = std::make_shared<bool>(false);
+  const auto afterDelay = [&application, delay, leave, left] {
+    if (*left) return;
+    *left = true;
+    QTimer::singleShot(delay, &application, leave);
+  };
+  if (options.compare)
+    QObject::connect(window->comparePanel(), &ComparePanel::comparisonEnded, &application,
+                     afterDelay);
+  else if (options.render)
+    QObject::connect(window->renderPanel(), &RenderPanel::renderEnded, &application, afterDelay);
+  else if (window->rayTreePanel()->tracing())  // the tree in the picture
+    QObject::connect(window->rayTreePanel(), &RayTreePanel::traceFinished, &application,
+                     afterDelay);
+  else
+    afterDelay();
+}
+
+/// The cold-start benchmark (tests/bench/BenchWindow.cpp): with
+/// RAYLAB_REPORT_FIRST_FRAME=FILE the window writes the time its 3D view's
+/// first frame reached the screen (steady clock, CLOCK_MONOTONIC, in ns) to
+/// FILE and closes.
+void reportFirstFrame(QApplication& application, std::unique_ptr<MainWindow>& window) {
+  const QString firstFrameFile = qEnvironmentVariable("RAYLAB_REPORT_FIRST_FRAME");
+  if (firstFrameFile.isEmpty()) return;
+  auto reported = std::make_shared<bool>(false);
+  QObject::connect(window->viewWidget(), &QOpenGLWidget::frameSwapped, &application,
+                   [&window, firstFrameFile, reported] {
+                     if (*reported) return;
+                     *reported = true;
+                     const auto now = std::chrono::steady_clock::now().time_since_epoch();
+                     std::ofstream(firstFrameFile.toStdString())
+                         << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()
+                         << '\n';
+                     window->close();
+                   });
+}
+
+}  // namespace
+
+int runWindow(int argc, char** argv, const WindowOptions& options) {
+  // Step 1: the scene first, so a bad file fails before any window appears.
+  const Scene scene = loadSceneOrDefault(options.scene);
+  if (const std::optional<int> usage = checkAgainstScene(options, scene)) return *usage;
+  const int selected = options.select.empty() ? -1 : scene.findObject(options.select);
+
+  // The window draws through X (Qt's xcb, and VTK in it), unless Qt is told to
+  // use another platform: without an X server Qt would abort with a message of
+  // its own.
   const char* platform = std::getenv("QT_QPA_PLATFORM");
   if (!platform || !*platform || std::string(platform).rfind("xcb", 0) == 0) vis::requireDisplay();
 
-  // Step 2: Qt, with the OpenGL surface format VTK's widget needs (set before the app).
+  // Step 2: Qt, with the OpenGL surface format VTK's widget needs (set before
+  // the app).
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication application(argc, argv);
   QApplication::setApplicationName(QStringLiteral("RayLab"));
@@ -82,68 +214,17 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   if (!options.scene.empty())
     window->adoptScene(scene, QString::fromStdString(options.scene));
   else
-    window->startUp();  // the scene open last time, or the default (the status bar says)
+    window->startUp();  // the scene open last time, or the default (the status
+                        // bar says)
   window->selectObject(
       options.select.empty() ? selected : window->document().scene().findObject(options.select));
   window->show();
+  showRayTreeOptions(*window, options);
+  showStartOptions(*window, options);
 
-  // The ray-tree panel: algorithm, and a pixel traced, animated and inspected.
-  RayTreePanel& panel = *window->rayTreePanel();
-  if (options.algorithm) panel.setAlgorithm(*options.algorithm);
-  if (options.simulate) {
-    panel.setGrid(options.simulate->first, options.simulate->second);
-    panel.simulate();
-  }
-  if (options.trace) {
-    panel.setPixel(options.trace->first, options.trace->second);
-    panel.setSample(options.sample);
-    if (options.ray) {
-      // Checked before the loop, like a bad scene (exit 1): the panel's tree is this one.
-      const Scene& traced = window->document().scene();
-      RenderSettings settings = traced.render;
-      settings.algorithm = panel.algorithm();
-      const int count = int(
-          tracePixel(traced, settings, options.trace->first, options.trace->second, options.sample)
-              .tree.segments.size());
-      if (*options.ray < 0 || *options.ray >= count)
-        throw Exception("--ray: the tree of pixel (" + std::to_string(options.trace->first) + ", " +
-                        std::to_string(options.trace->second) + ") has " + std::to_string(count) +
-                        " rays: #0..#" + std::to_string(count - 1));
-    }
-    // The frame and ray once the trace (off the UI thread) has ended.
-    panel.trace([&panel, frame = options.frame, ray = options.ray] {
-      if (frame) panel.setFrame(*frame);
-      if (ray) panel.selectSegment(*ray);
-    });
-  }
-
-  if (!options.lesson.empty()) {
-    // A lesson that cannot be opened fails like a bad scene: before the loop, exit 1.
-    const Lesson lesson = LessonIO::load(options.lesson);
-    if (options.lessonStep > int(lesson.steps.size()))
-      throw Exception("--lesson-step " + std::to_string(options.lessonStep) + ": the lesson " +
-                      options.lesson + " has " + std::to_string(lesson.steps.size()) + " steps");
-    window->openLesson(QString::fromStdString(options.lesson), false);
-    window->lessonPanel()->showStep(options.lessonStep - 1);
-  }
-  if (options.presentation) window->setPresentationMode(true);
-  RenderPanel& render = *window->renderPanel();
-  if (options.render) {
-    if (options.algorithm) render.setAlgorithm(*options.algorithm);
-    if (options.renderSamples) render.setSamplesPerPixel(*options.renderSamples);
-    window->showImageTab(&render);
-    render.render();
-  }
-  ComparePanel& comparison = *window->comparePanel();
-  if (options.compare) {
-    if (options.compareSamples) comparison.setSamplesPerPixel(*options.compareSamples);
-    window->showImageTab(&comparison);
-    comparison.compare();
-  }
-
-  // View > Language: the window is built again in the new language, on the same document
-  // (file, edits, undo history), carrying the open lesson and step, or the traced tree's
-  // view state (rebuildWindow).
+  // View > Language: the window is built again in the new language, on the same
+  // document (file, edits, undo history), carrying the open lesson and step, or
+  // the traced tree's view state (rebuildWindow).
   std::function<void(const QString&)> switchLanguage;
   const auto listen = [&application, &switchLanguage](MainWindow& w) {
     QObject::connect(
@@ -160,57 +241,9 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
     listen(*window);
   };
 
-  // Step 3: for tests, leave by ourselves once the window has been shown and painted (and
-  // the image rendered, with --render).
   int exitCode = kExitOk;
-  const bool leaves = options.quitAfterMs >= 0 || !options.screenshot.empty();
-  if (leaves) {
-    const int delay = options.quitAfterMs >= 0 ? options.quitAfterMs : kScreenshotDelayMs;
-    const auto leave = [&window, &options, &exitCode] {
-      if (!options.screenshot.empty()) {
-        if (window->saveScreenshot(QString::fromStdString(options.screenshot))) {
-          std::cout << options.screenshot << std::endl;
-        } else {
-          std::cerr << "raylab: error: " << options.screenshot
-                    << ": cannot write the window screenshot" << std::endl;
-          exitCode = kExitRuntimeError;
-        }
-      }
-      window->close();
-    };
-    auto left = std::make_shared<bool>(false);
-    const auto afterDelay = [&application, delay, leave, left] {
-      if (*left) return;
-      *left = true;
-      QTimer::singleShot(delay, &application, leave);
-    };
-    if (options.compare)
-      QObject::connect(&comparison, &ComparePanel::comparisonEnded, &application, afterDelay);
-    else if (options.render)
-      QObject::connect(&render, &RenderPanel::renderEnded, &application, afterDelay);
-    else if (window->rayTreePanel()->tracing())  // the tree in the picture
-      QObject::connect(window->rayTreePanel(), &RayTreePanel::traceFinished, &application,
-                       afterDelay);
-    else
-      afterDelay();
-  }
-  // The cold-start benchmark (tests/bench/BenchWindow.cpp): with RAYLAB_REPORT_FIRST_FRAME=FILE
-  // the window writes the time its 3D view's first frame reached the screen (steady clock,
-  // CLOCK_MONOTONIC, in ns) to FILE and closes.
-  const QString firstFrameFile = qEnvironmentVariable("RAYLAB_REPORT_FIRST_FRAME");
-  if (!firstFrameFile.isEmpty()) {
-    auto reported = std::make_shared<bool>(false);
-    QObject::connect(window->viewWidget(), &QOpenGLWidget::frameSwapped, &application,
-                     [&window, firstFrameFile, reported] {
-                       if (*reported) return;
-                       *reported = true;
-                       const auto now = std::chrono::steady_clock::now().time_since_epoch();
-                       std::ofstream(firstFrameFile.toStdString())
-                           << std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()
-                           << '\n';
-                       window->close();
-                     });
-  }
+  leaveWhenShown(application, window, options, exitCode);
+  reportFirstFrame(application, window);
   const int qtCode = QApplication::exec();
   return exitCode != kExitOk ? exitCode : (qtCode == 0 ? kExitOk : kExitRuntimeError);
 }

@@ -75,7 +75,7 @@ struct TraceData {
 
 /// The render settings of `scene`'s render block with the keyword arguments that are given.
 struct SettingsOverrides {
-  std::optional<std::string> algorithm;  ///< "raycast", "whitted", "distributed", "path".
+  std::optional<std::string> algorithm;  ///< an algorithm's word (AlgorithmInfo.h, kAllAlgorithms)
   std::optional<int> spp;
   std::optional<std::uint64_t> seed;
   std::optional<int> maxDepth;

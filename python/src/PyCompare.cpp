@@ -78,6 +78,39 @@ py::dict resultDict(ComparisonResult result, const py::dtype& dtype) {
   return out;
 }
 
+/// compare()'s keyword arguments as the comparison's settings (the default algorithms when
+/// none are named).
+ComparisonSettings comparisonSettings(int spp, double seconds,
+                                      const std::optional<std::vector<std::string>>& algorithms,
+                                      int referenceSpp, int threads) {
+  ComparisonSettings compare;
+  compare.samplesPerPixel = spp;
+  compare.secondsPerAlgorithm = seconds;
+  compare.referenceSamplesPerPixel = referenceSpp;
+  compare.threads = threads;
+  if (algorithms) {
+    compare.algorithms.clear();
+    for (const std::string& name : *algorithms) compare.algorithms.push_back(algorithmNamed(name));
+  }
+  return compare;
+}
+
+/// The reference compare() was given: a PFM path, an array (finite numbers only), or None
+/// (the comparison renders one).
+void setReference(Comparison& comparison, const py::object& reference) {
+  if (py::isinstance<py::str>(reference)) {
+    const std::string file = reference.cast<std::string>();
+    comparison.setReference(imageio::readPfm(file), file);
+  } else if (!reference.is_none()) {
+    FloatImage image = arrayToImage(reference, "reference");
+    // A NaN or infinite reference gave finite error figures (issue 38).
+    for (const glm::vec3& p : image.pixels)
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw py::value_error("reference must hold finite numbers (it holds NaN or inf)");
+    comparison.setReference(std::move(image), "array");
+  }
+}
+
 }  // namespace
 
 void bindCompare(py::module_& m) {
@@ -94,29 +127,11 @@ void bindCompare(py::module_& m) {
         const RenderSettings settings = settingsFor(
             *scene, {std::nullopt, std::nullopt, seed, maxDepth, std::nullopt, std::nullopt});
         warnAbout(*scene);
-        ComparisonSettings compare;
-        compare.samplesPerPixel = spp;
-        compare.secondsPerAlgorithm = seconds;
-        compare.referenceSamplesPerPixel = referenceSpp;
-        compare.threads = threads;
-        if (algorithms) {
-          compare.algorithms.clear();
-          for (const std::string& name : *algorithms)
-            compare.algorithms.push_back(algorithmNamed(name));
-        }
+        const ComparisonSettings compare =
+            comparisonSettings(spp, seconds, algorithms, referenceSpp, threads);
         const py::dtype type = py::dtype::from_args(dtype);
         Comparison comparison(*scene, settings, compare);
-        if (py::isinstance<py::str>(reference)) {
-          const std::string file = reference.cast<std::string>();
-          comparison.setReference(imageio::readPfm(file), file);
-        } else if (!reference.is_none()) {
-          FloatImage image = arrayToImage(reference, "reference");
-          // A NaN or infinite reference gave finite error figures (issue 38).
-          for (const glm::vec3& p : image.pixels)
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-              throw py::value_error("reference must hold finite numbers (it holds NaN or inf)");
-          comparison.setReference(std::move(image), "array");
-        }
+        setReference(comparison, reference);
 
         // Progress: the comparison's thread queues its reports here for this thread.
         std::mutex mutex;

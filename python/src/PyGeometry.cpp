@@ -53,7 +53,10 @@ double requireNotNan(double t, const char* what) {
 
 }  // namespace
 
-void bindGeometry(py::module_& m) {
+namespace {
+
+/// raylab.Ray, Hit, SurfaceInteraction and Crossing: what rays and hits are.
+void bindRays(py::module_& m) {
   py::class_<Ray>(m, "Ray", "A half-line origin + t direction, t in [t_min, t_max] (world space).")
       .def(py::init([](const Point3& origin, const Vec3& direction, double tMin, double tMax,
                        double time) {
@@ -123,7 +126,10 @@ void bindGeometry(py::module_& m) {
         return std::string("Crossing(t=") + std::to_string(c.t) +
                (c.entering ? ", entering)" : ", leaving)");
       });
+}
 
+/// raylab.Shape and the primitives a Python program can make.
+void bindShapes(py::module_& m) {
   py::class_<Shape, std::shared_ptr<Shape>>(m, "Shape", R"(A primitive a ray can hit (world space).
 Made with Sphere, Box, Plane, Quad, Triangle, TriangleMesh or Scene.shape(name).)")
       .def_property_readonly("kind", [](const Shape& s) { return std::string(toString(s.kind())); })
@@ -172,7 +178,10 @@ Made with Sphere, Box, Plane, Quad, Triangle, TriangleMesh or Scene.shape(name).
           py::arg("crease_angle"),
           "Smooth shading: vertex normals averaged over the faces within crease_angle degrees.")
       .def_property_readonly("has_normals", &TriangleMesh::hasNormals);
+}
 
+/// The exact (CGAL) oracle: its answer, the comparison with the double one.
+void bindExactOracle(py::module_& m) {
   py::class_<ExactResult>(m, "ExactResult", "The exact (CGAL) answer for one ray and one shape.")
       .def_property_readonly(
           "classification",
@@ -199,6 +208,14 @@ Made with Sphere, Box, Plane, Quad, Triangle, TriangleMesh or Scene.shape(name).
         "The exact oracle's classification: miss, hit, tangent, through edge or vertex.");
   m.def("oracle_compare", &ExactOracle::compare, py::arg("shape"), py::arg("ray"),
         "The exact answer next to shape.intersect(ray) in doubles.");
+}
+
+}  // namespace
+
+void bindGeometry(py::module_& m) {
+  bindRays(m);
+  bindShapes(m);
+  bindExactOracle(m);
 }
 
 }  // namespace raylab::python

@@ -45,7 +45,10 @@ py::dict statsDict(const RenderStats& stats) {
   return out;
 }
 
-void bindRender(py::module_& m) {
+namespace {
+
+/// raylab.render: the scene camera's image with one algorithm.
+void bindRenderFunction(py::module_& m) {
   m.def(
       "render",
       [](const SceneHandle& handle, std::optional<std::string> algorithm, std::optional<int> spp,
@@ -110,7 +113,10 @@ the same 20 ms are reported once; the last report has fraction 1); returning Fal
 then returns the image of the last complete pass. Ctrl-C stops it too and raises
 KeyboardInterrupt. with_stats=True returns (image, stats) with the rays by kind, the spp
 reached, the seconds, and whether it was cancelled.)");
+}
 
+/// The image helpers: display_rmse, rmse, write_image, read_pfm, to_srgb.
+void bindImageFunctions(py::module_& m) {
   m.def(
       "display_rmse",
       [](const py::array& image, const py::array& reference) {
@@ -171,6 +177,13 @@ reached, the seconds, and whether it was cancelled.)");
         return out;
       },
       py::arg("image"), "The 8-bit sRGB picture of a linear image (as PNG files hold it).");
+}
+
+}  // namespace
+
+void bindRender(py::module_& m) {
+  bindRenderFunction(m);
+  bindImageFunctions(m);
 }
 
 }  // namespace raylab::python

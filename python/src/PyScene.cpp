@@ -100,15 +100,10 @@ std::vector<std::string> names(const Scene& scene, int which) {
 
 }  // namespace
 
-void bindScene(py::module_& m) {
-  py::class_<SceneHandle> scene(m, "Scene", R"(A scene: objects, materials, point lights,
-camera and render settings. Made by load_scene, default_scene or Scene.parse.
+namespace {
 
-Values are read and changed in the scene file's own key names (see the README's "Writing a
-scene"), and every change is checked by the scene loader's rules: a bad value raises
-raylab.SceneError with the loader's message and leaves the scene as it was. Renders and
-traces work on the scene as it was when they started.)");
-
+/// Scene.parse, its name and origin, the names of its parts, its size and get.
+void bindSceneReading(py::class_<SceneHandle>& scene) {
   scene
       .def_static(
           "parse",
@@ -141,7 +136,12 @@ traces work on the scene as it was when they started.)");
           },
           py::arg("pointer") = "",
           "The value at a JSON pointer of the scene file ('/materials/1/ior', "
-          "'/camera'; '' = the whole file) as Python values.")
+          "'/camera'; '' = the whole file) as Python values.");
+}
+
+/// Scene.set, update and the set_* shorthands; the parts as the file lists them.
+void bindSceneSetting(py::class_<SceneHandle>& scene) {
+  scene
       .def(
           "set",
           [](SceneHandle& h, const std::string& pointer, const py::object& value) {
@@ -199,10 +199,14 @@ traces work on the scene as it was when they started.)");
                              [](const SceneHandle& h) {
                                return fromJsonText(edit::valueAt(*h.scene, "/camera", h.origin));
                              })
-      .def_property_readonly("render_settings",
-                             [](const SceneHandle& h) {
-                               return fromJsonText(edit::valueAt(*h.scene, "/render", h.origin));
-                             })
+      .def_property_readonly("render_settings", [](const SceneHandle& h) {
+        return fromJsonText(edit::valueAt(*h.scene, "/render", h.origin));
+      });
+}
+
+/// The window's edits of one object: rotate, translate, scale, remove, duplicate, rename.
+void bindSceneEdits(py::class_<SceneHandle>& scene) {
+  scene
       .def(
           "rotate_object",
           [](SceneHandle& h, const py::object& which, double degrees, const py::object& axis) {
@@ -254,23 +258,21 @@ traces work on the scene as it was when they started.)");
             const int index = objectIndex(*h.scene, which);
             apply(h, [&](const Scene& s) { return edit::renameObject(s, index, name, h.origin); });
           },
-          py::arg("object"), py::arg("name"))
+          py::arg("object"), py::arg("name"));
+}
+
+/// New shapes, meshes and point lights; saving, copying; one shape and the nearest hit.
+void bindSceneAdditions(py::class_<SceneHandle>& scene) {
+  scene
       .def(
           "add_shape",
           [](SceneHandle& h, const std::string& kind) {
-            static const std::vector<std::pair<std::string, edit::NewShape>> kinds = {
-                {"sphere", edit::NewShape::Sphere},
-                {"box", edit::NewShape::Box},
-                {"plane", edit::NewShape::Plane},
-                {"quad", edit::NewShape::Quad},
-                {"triangle", edit::NewShape::Triangle}};
-            for (const auto& [word, shape] : kinds)
-              if (word == kind) {
-                apply(h, [&](const Scene& s) { return edit::addShape(s, shape, h.origin); });
-                return h.scene->objects.back().name;
-              }
-            throw py::value_error("unknown shape '" + kind +
-                                  "': use sphere, box, plane, quad or triangle");
+            const std::optional<edit::NewShape> shape = edit::newShapeKind(kind);
+            if (!shape)
+              throw py::value_error("unknown shape '" + kind + "': use " +
+                                    edit::newShapeWordList());
+            apply(h, [&](const Scene& s) { return edit::addShape(s, *shape, h.origin); });
+            return h.scene->objects.back().name;
           },
           py::arg("kind"),
           "Adds a sphere, box, plane, quad or triangle where the camera looks; returns its name.")
@@ -327,6 +329,23 @@ traces work on the scene as it was when they started.)");
                std::to_string(h.scene->camera.width) + "x" +
                std::to_string(h.scene->camera.height) + ">";
       });
+}
+
+}  // namespace
+
+void bindScene(py::module_& m) {
+  py::class_<SceneHandle> scene(m, "Scene", R"(A scene: objects, materials, point lights,
+camera and render settings. Made by load_scene, default_scene or Scene.parse.
+
+Values are read and changed in the scene file's own key names (see the README's "Writing a
+scene"), and every change is checked by the scene loader's rules: a bad value raises
+raylab.SceneError with the loader's message and leaves the scene as it was. Renders and
+traces work on the scene as it was when they started.)");
+
+  bindSceneReading(scene);
+  bindSceneSetting(scene);
+  bindSceneEdits(scene);
+  bindSceneAdditions(scene);
 
   m.def(
       "load_scene", [](const std::string& path) { return handleOf(SceneIO::load(path), path); },

@@ -203,7 +203,10 @@ py::dict queuedDict(const QueuedRay& q) {
 
 }  // namespace
 
-void bindTrace(py::module_& m) {
+namespace {
+
+/// raylab.Segment: one ray of a traced tree, every field of its record.
+void bindSegment(py::module_& m) {
   py::class_<SegmentRef>(m, "Segment", R"(One ray of a traced tree, with every field of the
 JSON dump (raylab trace --json) under the same names. It keeps its trace alive.)")
       .def_property_readonly("id", [](const SegmentRef& r) { return r.get().id; })
@@ -266,7 +269,10 @@ JSON dump (raylab trace --json) under the same names. It keeps its trace alive.)
         return "<raylab.Segment #" + std::to_string(s.id) + " " + toString(s.kind) + " depth " +
                std::to_string(s.depth) + ", " + RayTreeJson::endReasonName(s.endReason) + ">";
       });
+}
 
+/// raylab.Trace: one traced pixel sample, its tree and figures.
+void bindTraceClass(py::module_& m) {
   py::class_<TraceData, std::shared_ptr<TraceData>>(m, "Trace", R"(One traced pixel sample: its
 ray tree (every ray, propagated), the text of each step, the rays by kind and the estimate.
 Made by raylab.trace or Stepper.tree().)")
@@ -326,7 +332,10 @@ times, parents, depths, objects, hits (N); kinds and end_reasons (N strings).)")
                std::to_string(d.trace.x) + ", " + std::to_string(d.trace.y) +
                "): " + traceSummary(d.trace, Language::English) + ">";
       });
+}
 
+/// raylab.trace: a pixel sample (or one given ray) traced with the real algorithm.
+void bindTraceFunction(py::module_& m) {
   m.def(
       "trace",
       [](const SceneHandle& handle, const py::object& pixel, int sample,
@@ -357,7 +366,31 @@ the pixel's spp, so sample s equals sample s of a render with the same spp and s
 `ray` (a raylab.Ray), that ray is traced in place of the pixel's camera ray (core's
 traceRay, raylab trace --ray), e.g. one exactly tangent to a sphere; the pixel then only
 chooses the random numbers. The GIL is released.)");
+}
 
+/// raylab.Stepper: the engine advanced one ray at a time.
+/// Stepper.tree(): the tree so far as a Trace, a snapshot later steps do not change.
+std::shared_ptr<TraceData> treeSoFar(const StepperHandle& h) {
+  auto data = std::make_shared<TraceData>();
+  data->scene = h.scene;
+  data->settings = h.tracer->settings();
+  PixelTrace& t = data->trace;
+  t.algorithm = data->settings.algorithm;
+  t.tree = h.stepper->tree();
+  t.x = t.tree.pixelX;
+  t.y = t.tree.pixelY;
+  t.sample = t.tree.sample;
+  // The steps taken; a ray still queued is told from the tree (it waits).
+  t.steps = h.steps;
+  t.steps.resize(t.tree.segments.size());
+  for (const RaySegment& s : t.tree.segments)
+    if (t.steps[std::size_t(s.id)].ray != s.id) t.steps[std::size_t(s.id)] = stepEventOf(s);
+  t.counts = h.stepper->counts();
+  t.estimate = h.stepper->estimate();
+  return data;
+}
+
+void bindStepper(py::module_& m) {
   py::class_<StepperHandle>(m, "Stepper", R"(The engine of the four algorithms for one pixel
 sample, advanced one ray at a time: the real algorithm, not a replay (core's Stepper).)")
       .def(py::init([](const SceneHandle& handle, const py::object& pixel, int sample,
@@ -410,34 +443,22 @@ sample, advanced one ray at a time: the real algorithm, not a replay (core's Ste
                              [](const StepperHandle& h) { return h.stepper->estimate(); })
       .def_property_readonly("rays_by_kind",
                              [](const StepperHandle& h) { return countsDict(h.stepper->counts()); })
-      .def(
-          "tree",
-          [](const StepperHandle& h) {
-            auto data = std::make_shared<TraceData>();
-            data->scene = h.scene;
-            data->settings = h.tracer->settings();
-            PixelTrace& t = data->trace;
-            t.algorithm = data->settings.algorithm;
-            t.tree = h.stepper->tree();
-            t.x = t.tree.pixelX;
-            t.y = t.tree.pixelY;
-            t.sample = t.tree.sample;
-            // The steps taken; a ray still queued is told from the tree (it waits).
-            t.steps = h.steps;
-            t.steps.resize(t.tree.segments.size());
-            for (const RaySegment& s : t.tree.segments)
-              if (t.steps[std::size_t(s.id)].ray != s.id)
-                t.steps[std::size_t(s.id)] = stepEventOf(s);
-            t.counts = h.stepper->counts();
-            t.estimate = h.stepper->estimate();
-            return data;
-          },
-          "The tree so far, as a Trace (a snapshot: later steps do not change it).")
+      .def("tree", &treeSoFar,
+           "The tree so far, as a Trace (a snapshot: later steps do not change it).")
       .def("__iter__", [](py::object self) { return self; })
       .def("__next__", [](StepperHandle& h) {
         if (!h.step()) throw py::stop_iteration();
         return eventDict(h.stepper->lastEvent(), *h.scene);
       });
+}
+
+}  // namespace
+
+void bindTrace(py::module_& m) {
+  bindSegment(m);
+  bindTraceClass(m);
+  bindTraceFunction(m);
+  bindStepper(m);
 }
 
 }  // namespace raylab::python

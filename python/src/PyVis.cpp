@@ -49,9 +49,18 @@ struct PolyDataHolder {
   }
 };
 
+/// The colouring of a plain trace's tree. "verdict" is refused: a plain trace has no
+/// verdicts (every ray would be grey); a student's judged trace draws them.
 vis::RayColouring colouringNamed(const std::string& name) {
+  if (name == "verdict")
+    throw py::value_error(
+        "colouring 'verdict' needs a trace judged against a student's code: use "
+        "raylab.student.trace(...) and raylab.student.save_view(...), or raylab check; a plain "
+        "trace's colourings are energy, kind and depth");
   if (std::optional<vis::RayColouring> c = vis::parseColouring(name)) return *c;
-  throw py::value_error("unknown colouring '" + name + "': use energy, kind or depth");
+  throw py::value_error("unknown colouring '" + name +
+                        "': use energy, kind or depth (verdict: a student's judged trace, "
+                        "raylab.student.save_view)");
 }
 
 template <typename Array>

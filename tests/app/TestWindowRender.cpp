@@ -7,6 +7,7 @@
 #include "InspectorPanel.h"
 #include "Language.h"
 #include "LessonPanel.h"
+#include "PropertiesPanel.h"
 #include "RenderJob.h"
 #include "RenderPanel.h"
 
@@ -16,6 +17,7 @@
 #include "raylab/core/SceneEdit.h"
 
 #include <QAbstractSpinBox>
+#include <QComboBox>
 #include <QGroupBox>
 #include <QLabel>
 #include <QListWidget>
@@ -396,6 +398,38 @@ void renderScene(MainWindow& window, const QString& path) {
   window.showImageTab(&panel);
   panel.render();
   ASSERT_TRUE(waitFor([&] { return !panel.rendering(); }));
+}
+
+// The Properties panel's words for an algorithm and a shape come from the phrase table
+// (algorithm.<word>, shape.<word>), no longer from Qt's translation: in Chinese the names
+// the window always showed, in English the file's own words.
+TEST_F(WindowRenderTest, 09c_ThePanelsAlgorithmAndShapeWordsComeFromThePhraseTable) {
+  for (const bool chinese : {true, false}) {
+    ASSERT_TRUE(installLanguage(chinese ? kChinese : kEnglish));
+    const Scene scene = defaultScene();
+    MainWindow window(scene);
+    window.show();
+    const int sphere = scene.findObject("red sphere");
+    window.selectObject(sphere);
+    settle();
+    PropertiesPanel& properties = *window.propertiesPanel();
+    auto* type = qobject_cast<QLabel*>(
+        properties.field("/objects/" + std::to_string(sphere) + "/shape/type"));
+    ASSERT_NE(type, nullptr);
+    EXPECT_EQ(type->text(), chinese ? QStringLiteral("球体") : QStringLiteral("sphere"));
+    properties.showObject(-1);
+    auto* algorithm = qobject_cast<QComboBox*>(properties.field("/render/algorithm"));
+    ASSERT_NE(algorithm, nullptr);
+    QStringList items;
+    for (int i = 0; i < algorithm->count(); ++i) items << algorithm->itemText(i);
+    const QStringList expected =
+        chinese ? QStringList{QStringLiteral("光线投射"), QStringLiteral("Whitted 光线追踪"),
+                              QStringLiteral("分布式光线追踪"), QStringLiteral("路径追踪")}
+                : QStringList{QStringLiteral("raycast"), QStringLiteral("whitted"),
+                              QStringLiteral("distributed"), QStringLiteral("path")};
+    EXPECT_EQ(items, expected);
+  }
+  installLanguage(kEnglish);
 }
 
 TEST_F(WindowRenderTest, 10_ARenderWhoseSamplesWereCappedSaysSo) {

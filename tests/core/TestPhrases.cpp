@@ -203,7 +203,7 @@ TEST(InspectorWords, 01_RowsAndLinesInBothLanguages) {
   r.segment.endReason = EndReason::Absorbed;
   r.segment.pdf = 0.5;
   r.objectName = "glass";
-  r.material = MaterialSummary{"clear", MaterialType::Dielectric, false, Material{}};
+  r.material = MaterialSummary{"clear", MaterialType::Dielectric, false, Material{}, std::nullopt};
   r.material->material.type = MaterialType::Dielectric;
   r.material->material.ior = 1.5;
   r.material->material.colour = Vec3(1.0);

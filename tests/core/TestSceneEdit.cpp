@@ -222,5 +222,26 @@ TEST(SceneEdit, 05_AddedObjectsAreWhereTheCameraLooks) {
   EXPECT_GT(lit.pointLights.back().position.y, scene.camera.lookAt.y);
 }
 
+TEST(SceneEdit, 06_EveryShapeIsAddedByItsWordAndSavedAsItReads) {
+  // The shapes that can be added, from the table of shape descriptors (not a mesh: it comes
+  // from its file), in the order of ShapeKind.
+  EXPECT_EQ(edit::newShapeWordList(), "sphere, box, plane, quad or triangle");
+  EXPECT_FALSE(edit::newShapeKind("mesh").has_value());
+  EXPECT_FALSE(edit::newShapeKind("cylinder").has_value());
+  const Scene scene = defaultScene();
+  for (const std::string word : {"sphere", "box", "plane", "quad", "triangle"}) {
+    const std::optional<edit::NewShape> kind = edit::newShapeKind(word);
+    ASSERT_TRUE(kind.has_value()) << word;
+    EXPECT_EQ(toString(*kind), word);
+    const Scene added = edit::addShape(scene, *kind, kOrigin);
+    EXPECT_EQ(added.objects.back().shape->kind(), *kind) << word;
+    EXPECT_EQ(added.objects.back().name, word);
+    // Written by the shape's own writer, read by its reader, written again: the same bytes.
+    const std::string text = SceneIO::serialize(added);
+    EXPECT_NE(text.find("\"type\": \"" + word + "\""), std::string::npos) << text;
+    EXPECT_EQ(SceneIO::serialize(SceneIO::parse(text, "added.json")), text) << word;
+  }
+}
+
 }  // namespace
 }  // namespace raylab

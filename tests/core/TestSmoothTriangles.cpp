@@ -6,6 +6,7 @@
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Bsdf.h"
 #include "raylab/core/Camera.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/MeshFactory.h"
 #include "raylab/core/MeshIO.h"
 #include "raylab/core/PixelTrace.h"
@@ -566,7 +567,8 @@ TEST(SmoothTriangles, 15_TheRayTreeAndInspectorShowTheInterpolatedNormal) {
   const RaySegment& camera = trace.tree.segments[0];
   EXPECT_EQ(camera.normal, Normal3(0, 0, 1));
   expectNear(camera.shadingNormal, glm::normalize(Vec3(1, 0, 0.2)), 1e-15);
-  const std::string text = RayInspector::inspect(scene, trace.tree, 0, false).toString();
+  const std::string text =
+      rayText(RayInspector::inspect(scene, trace.tree, 0, false), Language::English);
   EXPECT_TRUE(contains(text, "  shading     (0.9806, 0, 0.1961) interpolated")) << text;
   const RayTree back = RayTreeJson::parse(RayTreeJson::serialize(trace.tree, scene, settings), "t");
   EXPECT_EQ(back.segments[0].shadingNormal, camera.shadingNormal);
@@ -576,7 +578,8 @@ TEST(SmoothTriangles, 15_TheRayTreeAndInspectorShowTheInterpolatedNormal) {
   const PixelTrace flatTrace = tracePixel(flat, settings, 0, 0);
   EXPECT_TRUE(isZero(flatTrace.tree.segments[0].shadingNormal));
   EXPECT_FALSE(
-      contains(RayInspector::inspect(flat, flatTrace.tree, 0, false).toString(), "interpolated"));
+      contains(rayText(RayInspector::inspect(flat, flatTrace.tree, 0, false), Language::English),
+               "interpolated"));
 }
 
 /// The camera of the ball pictures: 64 x 64 from (0, 0, 4).

@@ -1,6 +1,7 @@
 // The checker texture (Texture.h): its cells, the texel every algorithm shades with, the
 // scene file's "texture" read, written and checked like every other value.
 #include "raylab/core/AlgorithmInfo.h"
+#include "raylab/core/InspectorWords.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Renderer.h"
@@ -129,11 +130,12 @@ TEST(Texture, 04_TheInspectorNamesTheTextureAndTheTexelAtTheHit) {
   const PixelTrace red = tracePixel(scene, settings, 1, 4);
   const RayInspection r = RayInspector::inspect(scene, red.tree, 0);
   ASSERT_TRUE(r.material.has_value());
-  EXPECT_THAT(r.material->parameters,
-              HasSubstr("checker texture (cubes of side 1, second colour (0.8, 0.1, 0.1))"));
-  EXPECT_THAT(r.material->parameters, HasSubstr("colour here (0.8, 0.1, 0.1)"));
+  const std::string text = rayText(r, Language::English);
+  EXPECT_THAT(text, HasSubstr("checker texture (cubes of side 1, second colour (0.8, 0.1, 0.1))"));
+  EXPECT_THAT(text, HasSubstr("colour here (0.8, 0.1, 0.1)"));
+  EXPECT_THAT(rayText(r, Language::Chinese), HasSubstr("棋盘格纹理"));
   const PixelTrace white = tracePixel(scene, settings, 6, 4);
-  EXPECT_THAT(RayInspector::inspect(scene, white.tree, 0).material->parameters,
+  EXPECT_THAT(rayText(RayInspector::inspect(scene, white.tree, 0), Language::English),
               HasSubstr("colour here (0.8, 0.8, 0.8)"));
 }
 

@@ -45,7 +45,16 @@ def test_01_at_least_eight_exercises_with_bilingual_instructions_and_a_lesson():
     for name in NAMES:
         folder = os.path.join(EXERCISES, name)
         meta = json.load(open(os.path.join(folder, "exercise.json"), encoding="utf-8"))
-        assert os.path.isfile(os.path.join(SOURCE, meta["lesson"]["file"])), name
+        lesson_file = os.path.join(SOURCE, meta["lesson"]["file"])
+        assert os.path.isfile(lesson_file), name
+        # The step the exercise links to is the one it names (lessons get renumbered and split).
+        steps = json.load(open(lesson_file, encoding="utf-8"))["steps"]
+        step = meta["lesson"]["step"]
+        assert 1 <= step <= len(steps), name
+        assert steps[step - 1]["title"]["en"] == meta["lesson"]["title"], name
+        for readme in ("README.md", "README.zh.md"):
+            text = open(os.path.join(folder, readme), encoding="utf-8").read()
+            assert os.path.basename(meta["lesson"]["file"])[:-5] in text, (name, readme)
         zh = open(os.path.join(folder, "README.zh.md"), encoding="utf-8").read()
         assert any("\u4e00" <= ch <= "\u9fff" for ch in zh)
         starter = open(os.path.join(folder, "starter.py"), encoding="utf-8").read()

@@ -133,6 +133,11 @@ def test09_object_edits_are_the_windows_edits():
     scene.remove_object("twin")
     assert len(scene.object_names) == count
     assert scene.add_shape("sphere") in scene.object_names
+    assert scene.add_shape("triangle") == "triangle"
+    # The shapes that can be added come from core's table of shape descriptors.
+    with pytest.raises(ValueError,
+                       match="unknown shape 'mesh': use sphere, box, plane, quad or triangle$"):
+        scene.add_shape("mesh")
     with pytest.raises(KeyError, match="no object named 'nothing'"):
         scene.remove_object("nothing")
     with pytest.raises(raylab.SceneError):

@@ -104,3 +104,15 @@ def test05_view_image_is_the_3d_view_with_the_tree(tmp_path, trace):
     assert np.array_equal(read.reshape(150, 200, 3)[::-1], with_tree)  # VTK rows go up
     behind = raylab.view_image(scene, width=200, height=150, view="camera")
     assert not np.array_equal(behind, without)
+
+
+def test06_a_plain_trace_refuses_the_verdict_colouring_and_names_every_colouring(trace):
+    """A plain trace has no verdicts (every ray would be grey): the message says what draws
+    them; an unknown colouring's message names the four colourings."""
+    with pytest.raises(ValueError, match=r"'verdict' needs a trace judged.*raylab\.student"):
+        raylab.tree_polydata(trace, colouring="verdict")
+    with pytest.raises(ValueError, match=r"'verdict' needs a trace judged"):
+        raylab.view_image(raylab.default_scene(), trace, width=8, height=8, colouring="verdict")
+    with pytest.raises(ValueError, match=r"unknown colouring 'rainbow': use energy, kind or "
+                                         r"depth \(verdict: a student's judged trace"):
+        raylab.tree_polydata(trace, colouring="rainbow")

@@ -267,7 +267,7 @@ void RayTreeActors::updateLegend() {
     }
     case RayColouring::Verdict: {
       // Only the verdicts this tree has, best first (at most kVerdictCount entries).
-      m_legendTitle->SetInput(zh ? "评判结果" : "verdict");
+      m_legendTitle->SetInput(say("legend.verdict").c_str());
       std::vector<bool> present(kVerdictCount, false);
       for (const int v : style.verdicts)
         if (v >= 0 && v < kVerdictCount) present[std::size_t(v)] = true;

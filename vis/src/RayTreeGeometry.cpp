@@ -130,20 +130,45 @@ Vec3 rayColour(const RaySegment& segment, const RayTreeStyle& style, int deepest
   return Vec3(0.5);
 }
 
-RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& style,
-                                     const std::vector<bool>& reachesLightFlags,
-                                     const std::vector<float>* fraction, double glyphLength,
-                                     const Vec3& background) {
-  RayTreeGeometry out;
-  const std::size_t n = tree.segments.size();
-  for (const RaySegment& s : tree.segments) out.deepest = std::max(out.deepest, s.depth);
+namespace {
 
-  // Step 1: which rays are drawn, in which width class, and their colour; count cells.
+/// A shadow ray stopped by an occluder before its light.
+bool isBlockedShadow(const RaySegment& s) {
+  return s.kind == RayKind::Shadow && s.endReason == EndReason::Occluded && s.hit;
+}
+
+/// The part of blocked shadow ray `s` it never travelled: kBlockedDashes dashes to the
+/// light, in its `colour` dimmed towards the background.
+void writeBlockedDashes(CellWriter& blocked, const RaySegment& s,
+                        const std::array<std::uint8_t, 3>& colour, const Vec3& background) {
+  const Vec3 c = kBlockedDim * Vec3(colour[0], colour[1], colour[2]) / 255.0 +
+                 (1.0 - kBlockedDim) * background;
+  const std::array<std::uint8_t, 3> dim = {toByte(c.x), toByte(c.y), toByte(c.z)};
+  const Vec3 rest = s.lightPoint - s.endPoint;
+  for (int d = 0; d < kBlockedDashes; ++d) {
+    blocked.point(s.endPoint + (double(d) + 0.25) / kBlockedDashes * rest);
+    blocked.point(s.endPoint + (double(d) + 0.75) / kBlockedDashes * rest);
+    blocked.colour(dim);
+  }
+}
+
+/// Which rays of a tree are drawn (width class -1: not), in which width class and colour,
+/// and how many cells of each kind they make.
+struct RayDrawing {
+  std::vector<std::int8_t> widthClass;
+  std::vector<std::array<std::uint8_t, 3>> colour;
+  std::array<std::size_t, kRayWidthClasses> counts{};  ///< Drawn rays per width class.
+  std::size_t blocked = 0, hits = 0, fronts = 0, drawn = 0;
+};
+
+RayDrawing planRays(const RayTree& tree, const RayTreeStyle& style,
+                    const std::vector<bool>& reachesLightFlags, const std::vector<float>* fraction,
+                    int deepest) {
+  RayDrawing plan;
+  const std::size_t n = tree.segments.size();
+  plan.widthClass.assign(n, -1);
+  plan.colour.resize(n);
   const bool needEnergy = style.widthFollowsEnergy || style.colouring == RayColouring::Energy;
-  std::vector<std::int8_t> widthClass(n, -1);
-  std::vector<std::array<std::uint8_t, 3>> colour(n);
-  std::array<std::size_t, kRayWidthClasses> counts{};
-  std::size_t blockedCount = 0, hitCount = 0, frontCount = 0, drawn = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const float f = fraction ? (*fraction)[i] : 1.0f;
     if (!(f > 0.0f)) continue;
@@ -153,31 +178,47 @@ RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& st
     const int k = style.widthFollowsEnergy
                       ? std::min(kRayWidthClasses - 1, int(position * kRayWidthClasses))
                       : 0;
-    widthClass[i] = std::int8_t(k);
-    ++counts[std::size_t(k)];
-    ++drawn;
+    plan.widthClass[i] = std::int8_t(k);
+    ++plan.counts[std::size_t(k)];
+    ++plan.drawn;
     const Vec3 c = style.colouring == RayColouring::Energy ? EnergyScale::colour(position)
-                                                           : rayColour(s, style, out.deepest);
-    colour[i] = {toByte(c.x), toByte(c.y), toByte(c.z)};
+                                                           : rayColour(s, style, deepest);
+    plan.colour[i] = {toByte(c.x), toByte(c.y), toByte(c.z)};
     const bool whole = f >= 1.0f;
-    if (whole && s.kind == RayKind::Shadow && s.endReason == EndReason::Occluded && s.hit)
-      ++blockedCount;
-    if (whole && s.hit) ++hitCount;
-    if (!whole) ++frontCount;
+    if (whole && isBlockedShadow(s)) ++plan.blocked;
+    if (whole && s.hit) ++plan.hits;
+    if (!whole) ++plan.fronts;
   }
+  return plan;
+}
+
+}  // namespace
+
+RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& style,
+                                     const std::vector<bool>& reachesLightFlags,
+                                     const std::vector<float>* fraction, double glyphLength,
+                                     const Vec3& background) {
+  RayTreeGeometry out;
+  const std::size_t n = tree.segments.size();
+  for (const RaySegment& s : tree.segments) out.deepest = std::max(out.deepest, s.depth);
+
+  // Step 1: which rays are drawn, in which width class, and their colour; count cells.
+  const RayDrawing plan = planRays(tree, style, reachesLightFlags, fraction, out.deepest);
+  const std::vector<std::int8_t>& widthClass = plan.widthClass;
+  const std::vector<std::array<std::uint8_t, 3>>& colour = plan.colour;
 
   // Step 2: two points and one coloured line per drawn ray, class by class, and the extras.
   std::vector<CellWriter> lines;
   lines.reserve(kRayWidthClasses);
   for (int k = 0; k < kRayWidthClasses; ++k) {
-    lines.emplace_back(counts[std::size_t(k)], 2, true, false);
-    out.cellSegment[std::size_t(k)].reserve(counts[std::size_t(k)]);
+    lines.emplace_back(plan.counts[std::size_t(k)], 2, true, false);
+    out.cellSegment[std::size_t(k)].reserve(plan.counts[std::size_t(k)]);
   }
-  CellWriter blocked(blockedCount * kBlockedDashes, 2, true, false);
-  CellWriter hits(style.showHitPoints ? hitCount : 0, 1, false, false);
-  CellWriter fronts(frontCount, 1, true, false);
-  CellWriter normals(style.showNormals ? hitCount : 0, 2, false, false);
-  CellWriter arrows(style.showArrows ? drawn : 0, 1, true, true);
+  CellWriter blocked(plan.blocked * kBlockedDashes, 2, true, false);
+  CellWriter hits(style.showHitPoints ? plan.hits : 0, 1, false, false);
+  CellWriter fronts(plan.fronts, 1, true, false);
+  CellWriter normals(style.showNormals ? plan.hits : 0, 2, false, false);
+  CellWriter arrows(style.showArrows ? plan.drawn : 0, 1, true, true);
   for (std::size_t i = 0; i < n; ++i) {
     const int k = widthClass[i];
     if (k < 0) continue;
@@ -196,18 +237,8 @@ RayTreeGeometry buildRayTreeGeometry(const RayTree& tree, const RayTreeStyle& st
       fronts.point(front);
       fronts.colour(colour[i]);
     }
-    if (whole && s.kind == RayKind::Shadow && s.endReason == EndReason::Occluded && s.hit) {
-      // The part of a blocked shadow ray it never travelled: dimmed dashes to the light.
-      const Vec3 c = kBlockedDim * Vec3(colour[i][0], colour[i][1], colour[i][2]) / 255.0 +
-                     (1.0 - kBlockedDim) * background;
-      const std::array<std::uint8_t, 3> dim = {toByte(c.x), toByte(c.y), toByte(c.z)};
-      const Vec3 rest = s.lightPoint - s.endPoint;
-      for (int d = 0; d < kBlockedDashes; ++d) {
-        blocked.point(s.endPoint + (double(d) + 0.25) / kBlockedDashes * rest);
-        blocked.point(s.endPoint + (double(d) + 0.75) / kBlockedDashes * rest);
-        blocked.colour(dim);
-      }
-    }
+    // The part of a blocked shadow ray it never travelled: dimmed dashes to the light.
+    if (whole && isBlockedShadow(s)) writeBlockedDashes(blocked, s, colour[i], background);
     if (whole && s.hit && style.showHitPoints) hits.point(s.endPoint);
     if (whole && s.hit && style.showNormals) {
       normals.point(s.endPoint);

@@ -1,5 +1,7 @@
 #include "raylab/vis/RayTreeStyle.h"
 
+#include "raylab/core/Phrases.h"
+
 #include "raylab/core/StudentHooks.h"
 
 #include <algorithm>
@@ -45,16 +47,8 @@ Vec3 verdictColour(int verdict) {
 }
 
 std::string verdictLabel(int verdict, Language language) {
-  static const char* words[kVerdictCount][2] = {{"not judged", "未评判"},
-                                                {"agrees", "一致"},
-                                                {"off by a few ulps", "差几个 ulp"},
-                                                {"spurious hit", "多出的交点"},
-                                                {"missed hit", "漏掉的交点"},
-                                                {"wrong hit", "交点错误"},
-                                                {"NaN / Inf", "NaN / 无穷大"},
-                                                {"exception", "异常"}};
   const int v = verdict >= 0 && verdict < kVerdictCount ? verdict : 0;
-  return words[v][language == Language::Chinese ? 1 : 0];
+  return phrase("verdict." + std::to_string(v), language);
 }
 
 double EnergyScale::position(double energy) const {

@@ -305,6 +305,62 @@ SpecularLobes specularLobes(const Material& m, const SurfaceInteraction& si, con
   return lobes;
 }
 
+namespace {
+
+// Glossy: pick the Phong lobe or the diffuse part in proportion to their energy, sample it,
+// then weigh by the full f cos over the mixture pdf (one-sample MIS).
+std::optional<BsdfSample> sampleGlossy(const Material& m, const Normal3& nf, const Vec3& wo,
+                                       Sampler& sampler) {
+  std::optional<BsdfSample> out;
+  const double uPick = sampler.next1D();
+  const Vec2 u = sampler.next2D();
+  const double pLobe = glossyLobeProbability(m);
+  if (pLobe <= 0.0 && luminance(m.colour) <= 0.0) return out;
+  BsdfSample s;
+  if (uPick < pLobe) {
+    s.wi = Frame(reflect(wo, nf)).toWorld(samplePhongLobe(u, m.exponent));
+    s.kind = RayKind::Glossy;
+  } else {
+    s.wi = Frame(nf).toWorld(sampleCosineHemisphere(u));
+    s.kind = RayKind::Diffuse;
+  }
+  // Lobe directions under the surface are rejected (their f is 0).
+  if (glm::dot(s.wi, nf) <= 0.0) return out;
+  s.pdf = glossyPdf(m, nf, wo, s.wi);
+  if (!(s.pdf > 0.0)) return out;
+  s.weight = glossyEval(m, nf, wo, s.wi) / s.pdf;
+  out = s;
+  return out;
+}
+
+// Mirror and dielectric: one lobe, chosen in proportion to its weight's luminance; dividing by
+// that probability keeps the estimate unbiased.
+std::optional<BsdfSample> sampleSpecular(const Material& m, const SurfaceInteraction& si,
+                                         const Vec3& wo, Sampler& sampler) {
+  std::optional<BsdfSample> out;
+  const double uPick = sampler.next1D();
+  const SpecularLobes lobes = specularLobes(m, si, wo);
+  double total = 0.0;
+  for (int i = 0; i < lobes.count; ++i) total += luminance(lobes.lobe[i].weight);
+  if (!(total > 0.0)) return out;
+  int chosen = lobes.count - 1;
+  double cumulative = 0.0;
+  for (int i = 0; i < lobes.count; ++i) {
+    cumulative += luminance(lobes.lobe[i].weight) / total;
+    if (uPick < cumulative) {
+      chosen = i;
+      break;
+    }
+  }
+  const double probability = luminance(lobes.lobe[chosen].weight) / total;
+  if (!(probability > 0.0)) return out;
+  out = lobes.lobe[chosen];
+  out->weight /= probability;
+  return out;
+}
+
+}  // namespace
+
 std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si, const Vec3& wo,
                                  Sampler& sampler) {
   const Normal3 nf = si.facingShadingNormal();
@@ -325,29 +381,9 @@ std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si
       s.kind = RayKind::Diffuse;
       return out;
     }
-    case MaterialType::Glossy: {
-      // Pick the Phong lobe or the diffuse part in proportion to their energy, sample
-      // it, then weigh by the full f cos over the mixture pdf (one-sample MIS).
-      const double uPick = sampler.next1D();
-      const Vec2 u = sampler.next2D();
-      const double pLobe = glossyLobeProbability(m);
-      if (pLobe <= 0.0 && luminance(m.colour) <= 0.0) return out;
-      BsdfSample s;
-      if (uPick < pLobe) {
-        s.wi = Frame(reflect(wo, nf)).toWorld(samplePhongLobe(u, m.exponent));
-        s.kind = RayKind::Glossy;
-      } else {
-        s.wi = Frame(nf).toWorld(sampleCosineHemisphere(u));
-        s.kind = RayKind::Diffuse;
-      }
-      // Lobe directions under the surface are rejected (their f is 0).
-      if (glm::dot(s.wi, nf) <= 0.0) return out;
-      s.pdf = glossyPdf(m, nf, wo, s.wi);
-      if (!(s.pdf > 0.0)) return out;
-      s.weight = glossyEval(m, nf, wo, s.wi) / s.pdf;
-      out = s;
+    case MaterialType::Glossy:
+      out = sampleGlossy(m, nf, wo, sampler);
       return out;
-    }
     case MaterialType::Phong:
     case MaterialType::BlinnPhong:
       out = classicSample(m, si, wo, sampler);
@@ -360,29 +396,9 @@ std::optional<BsdfSample> sample(const Material& m, const SurfaceInteraction& si
       out = plastic::sample(m, si, wo, sampler);
       return out;
     case MaterialType::Mirror:
-    case MaterialType::Dielectric: {
-      // One lobe, chosen in proportion to its weight's luminance; dividing by that
-      // probability keeps the estimate unbiased.
-      const double uPick = sampler.next1D();
-      const SpecularLobes lobes = specularLobes(m, si, wo);
-      double total = 0.0;
-      for (int i = 0; i < lobes.count; ++i) total += luminance(lobes.lobe[i].weight);
-      if (!(total > 0.0)) return out;
-      int chosen = lobes.count - 1;
-      double cumulative = 0.0;
-      for (int i = 0; i < lobes.count; ++i) {
-        cumulative += luminance(lobes.lobe[i].weight) / total;
-        if (uPick < cumulative) {
-          chosen = i;
-          break;
-        }
-      }
-      const double probability = luminance(lobes.lobe[chosen].weight) / total;
-      if (!(probability > 0.0)) return out;
-      out = lobes.lobe[chosen];
-      out->weight /= probability;
+    case MaterialType::Dielectric:
+      out = sampleSpecular(m, si, wo, sampler);
       return out;
-    }
   }
   return out;
 }

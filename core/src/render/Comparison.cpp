@@ -213,24 +213,62 @@ ComparisonReference Comparison::renderReference(const std::function<void(double,
   return reference;
 }
 
-ComparisonResult Comparison::run() {
+namespace {
+
+/// A comparison's result before any stage ran: the scene and the settings it compares.
+ComparisonResult emptyResult(const Scene& scene, const RenderSettings& settings,
+                             const ComparisonSettings& compare) {
   ComparisonResult result;
-  result.sceneName = m_scene.name;
-  result.sceneNameZh = m_scene.nameZh;
-  result.width = m_scene.camera.width;
-  result.height = m_scene.camera.height;
-  result.settings = m_settings;
-  result.compare = m_compare;
+  result.sceneName = scene.name;
+  result.sceneNameZh = scene.nameZh;
+  result.width = scene.camera.width;
+  result.height = scene.camera.height;
+  result.settings = settings;
+  result.compare = compare;
+  return result;
+}
+
+/// The reference's share of the progress, one stage (algorithm) counting 1: its spp over the
+/// algorithms' with equal samples, as much as all the algorithms with equal time.
+double referenceStageWeight(const ComparisonSettings& compare) {
+  if (compare.equalTime()) return double(compare.algorithms.size());
+  return double(compare.referenceSpp()) / double(compare.samplesPerPixel);
+}
+
+/// One point of an algorithm's convergence curve: its image after a pass against the
+/// reference, `seconds` into its render (time spent measuring left out).
+ConvergencePoint measurePass(const RenderStats& stats, const FloatImage& image,
+                             const FloatImage& reference, double seconds) {
+  ConvergencePoint point;
+  point.samplesPerPixel = stats.samplesPerPixel;
+  point.seconds = seconds;
+  point.rays = stats.rays.total();
+  point.rmse = displayRmse(image, reference);
+  point.rmseLinear = imageio::rmse(image, reference);
+  return point;
+}
+
+/// An algorithm's figures as they stand after the pass measured as `point`.
+void setFromPass(AlgorithmFigures& figures, const FloatImage& image, const RenderStats& stats,
+                 const ConvergencePoint& point) {
+  figures.image = image;
+  figures.stats = stats;
+  figures.stats.seconds = point.seconds;
+  figures.rmse = point.rmse;
+  figures.rmseLinear = point.rmseLinear;
+}
+
+}  // namespace
+
+ComparisonResult Comparison::run() {
+  ComparisonResult result = emptyResult(m_scene, m_settings, m_compare);
 
   // Step 1: how much of the work each stage is, for the progress fraction: spp with equal
   // samples (the reference counts as its spp), one budget each with equal time. A cached
   // reference turns out to cost nothing: the fraction then jumps past it.
   const int count = static_cast<int>(m_compare.algorithms.size());
   const double stageWeight = 1.0;
-  const double referenceWeight = m_hasReference          ? 0.0
-                                 : m_compare.equalTime() ? double(count)
-                                                         : double(m_compare.referenceSpp()) /
-                                                               double(m_compare.samplesPerPixel);
+  const double referenceWeight = m_hasReference ? 0.0 : referenceStageWeight(m_compare);
   const double totalWeight = referenceWeight + count * stageWeight;
   double doneWeight = 0.0;
   const auto fractionOf = [&](double stageFraction, double weight) {
@@ -270,12 +308,9 @@ ComparisonResult Comparison::run() {
     const auto start = std::chrono::steady_clock::now();
     renderer.setProgress([&](double fraction, const FloatImage& image) {
       const auto measureStart = std::chrono::steady_clock::now();
-      ConvergencePoint point;
-      point.samplesPerPixel = renderer.stats().samplesPerPixel;
-      point.seconds = std::chrono::duration<double>(measureStart - start).count() - measuring;
-      point.rays = renderer.stats().rays.total();
-      point.rmse = displayRmse(image, m_reference.image);
-      point.rmseLinear = imageio::rmse(image, m_reference.image);
+      const ConvergencePoint point =
+          measurePass(renderer.stats(), image, m_reference.image,
+                      std::chrono::duration<double>(measureStart - start).count() - measuring);
       figures.series.push_back(point);
       const double stageFraction =
           m_compare.equalTime() ? std::max(fraction, point.seconds / m_compare.secondsPerAlgorithm)
@@ -283,11 +318,7 @@ ComparisonResult Comparison::run() {
       report(toString(algorithm), std::min(stageFraction, 1.0), stageWeight, point.samplesPerPixel);
       if (m_passCallback) {
         // The algorithm as it stands after this pass.
-        figures.image = image;
-        figures.stats = renderer.stats();
-        figures.stats.seconds = point.seconds;
-        figures.rmse = point.rmse;
-        figures.rmseLinear = point.rmseLinear;
+        setFromPass(figures, image, renderer.stats(), point);
         m_passCallback(result, index, fractionOf(std::min(stageFraction, 1.0), stageWeight));
       }
       measuring += secondsSince(measureStart);

@@ -335,6 +335,25 @@ void traceTile(const Tracer& tracer, const Tile& tile, const Pass& range, int pa
     }
 }
 
+/// The statistics once the workers have left: every ray traced counts, also those of a pass a
+/// cancel abandoned; the time the last worker kept the others waiting; the samples of the last
+/// pass reported (every complete pass unless cancelled). Returns that pass's count (0: none).
+int tallyPasses(Schedule& schedule, const std::vector<double>& exitTimes, int started, int spp,
+                RenderStats& stats) {
+  for (std::size_t p = std::size_t(schedule.counted); p < schedule.passCounts.size(); ++p)
+    schedule.passCounts[p].addTo(stats);
+  const double end = *std::max_element(exitTimes.begin(), exitTimes.end());
+  for (int w = 0; w < started; ++w)
+    schedule.passIdle[std::max(schedule.complete - 1, 0)] += end - exitTimes[w];
+  const int kept = schedule.reported;
+  schedule.passIdle.resize(std::max<std::size_t>(schedule.passes.size(), 1));
+  stats.passIdleSeconds = schedule.passIdle;
+  const int done = kept > 0 ? schedule.passes[kept - 1].last : 0;
+  stats.samplesPerPixel = done;
+  stats.cancelled = done < spp && !stats.timeLimitReached;
+  return kept;
+}
+
 }  // namespace
 
 Renderer::Renderer(const Scene& scene, const RenderSettings& settings)
@@ -406,20 +425,8 @@ FloatImage Renderer::render() {
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
 
-  // Every ray traced counts, also those of a pass a cancel abandoned; the time the last
-  // worker kept the others waiting.
-  for (std::size_t p = std::size_t(schedule.counted); p < schedule.passCounts.size(); ++p)
-    schedule.passCounts[p].addTo(m_stats);
-  const double end = *std::max_element(exitTimes.begin(), exitTimes.end());
-  for (int w = 0; w < started; ++w)
-    schedule.passIdle[std::max(schedule.complete - 1, 0)] += end - exitTimes[w];
-  // The image of the last pass reported (every complete pass unless cancelled).
-  const int kept = schedule.reported;
-  schedule.passIdle.resize(std::max<std::size_t>(schedule.passes.size(), 1));
-  m_stats.passIdleSeconds = schedule.passIdle;
-  const int done = kept > 0 ? schedule.passes[kept - 1].last : 0;
-  m_stats.samplesPerPixel = done;
-  m_stats.cancelled = done < spp && !m_stats.timeLimitReached;
+  const int kept = tallyPasses(schedule, exitTimes, started, spp, m_stats);
+  const int done = m_stats.samplesPerPixel;
   m_stats.seconds = secondsSince(start);
   if (kept == 0) return FloatImage(width, height);
   return average(buffers[(kept - 1) % 3], width, height, done);

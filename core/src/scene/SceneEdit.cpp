@@ -1,8 +1,11 @@
 #include "raylab/core/SceneEdit.h"
 
+#include "raylab/core/Check.h"
 #include "raylab/core/Plane.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/Text.h"
+
+#include "shapes/ShapeFormat.h"
 
 #include <nlohmann/json.hpp>
 
@@ -238,6 +241,22 @@ Scene renameObject(const Scene& scene, int object, const std::string& name,
   return readBack(doc, origin);
 }
 
+std::optional<NewShape> newShapeKind(const std::string& word) {
+  const ShapeFormat* format = shapeFormat(word);
+  if (!format || !format->example) return std::nullopt;
+  return format->kind;
+}
+
+std::string newShapeWordList() {
+  std::vector<std::string> words;
+  for (const ShapeFormat* format : shapeFormats())
+    if (format->example) words.push_back(format->word);
+  std::string list;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == words.size() ? " or " : ", ") + words[i];
+  return list;
+}
+
 Scene addShape(const Scene& scene, NewShape shape, const std::string& origin) {
   json doc = fileForm(scene, origin);
   const CameraSpec& camera = scene.camera;
@@ -250,37 +269,10 @@ Scene addShape(const Scene& scene, NewShape shape, const std::string& origin) {
   right = glm::length(right) > 0.0 ? glm::normalize(right) : Vec3(1, 0, 0);
   const Vec3 up = glm::cross(right, forward);
 
-  json shapeJson;
-  std::string base;
-  switch (shape) {
-    case NewShape::Sphere:
-      base = "sphere";
-      shapeJson = {{"type", "sphere"}, {"centre", vec(p)}, {"radius", 0.5 * size}};
-      break;
-    case NewShape::Box:
-      base = "box";
-      shapeJson = {{"type", "box"}, {"centre", vec(p)}, {"size", vec(Vec3(size))}};
-      break;
-    case NewShape::Plane:
-      base = "plane";
-      shapeJson = {{"type", "plane"}, {"point", vec(p)}, {"normal", vec(Vec3(0, 1, 0))}};
-      break;
-    case NewShape::Quad:
-      base = "quad";
-      // Edges along the camera's right and up: the normal u x v faces the camera.
-      shapeJson = {{"type", "quad"},
-                   {"corner", vec(p - 0.5 * size * (right + up))},
-                   {"u", vec(size * right)},
-                   {"v", vec(size * up)}};
-      break;
-    case NewShape::Triangle:
-      base = "triangle";
-      shapeJson = {{"type", "triangle"},
-                   {"vertices", json::array({vec(p + size * (-0.5 * right - 0.4 * up)),
-                                             vec(p + size * (0.5 * right - 0.4 * up)),
-                                             vec(p + size * 0.6 * up)})}};
-      break;
-  }
+  const ShapeFormat& format = shapeFormat(shape);
+  RAYLAB_CHECK(format.example != nullptr);  // newShapeKind gives only shapes with one
+  const json shapeJson = format.example(p, size, right, up);
+  const std::string base = format.word;
   const std::string name = uniqueIn(doc["objects"], base);
   const std::string material = uniqueIn(doc["materials"], name + " material");
   doc["materials"].push_back(

@@ -12,9 +12,9 @@ namespace raylab {
  * kind, in the order the writer emits them.
  *
  * The reader rejects any key missing from its object's list (SceneReader.cpp, `onlyKeys`),
- * and the writer can only add keys of the list, in list order (SceneWriter.cpp,
- * `ObjectWriter`); so a file RayLab writes always passes its own key check. Adding a field
- * means adding its key here, where the reader and the writer both see it.
+ * and the writer can only add keys of the list, in list order (ObjectWriter.h); so a file RayLab
+ * writes always passes its own key check. Adding a field means adding its key here, where the
+ * reader and the writer both see it.
  */
 
 /// The document itself.
@@ -78,12 +78,7 @@ inline constexpr std::array kRenderKeys = {"algorithm",
                                            "acceleration",
                                            "bvh_split"};
 
-/// An object's "shape", per value of "type".
-inline constexpr std::array kSphereKeys = {"type", "centre", "radius", "m", "n"};
-inline constexpr std::array kBoxKeys = {"type", "centre", "size", "axes", "matrix"};
-inline constexpr std::array kPlaneKeys = {"type", "point", "normal"};
-inline constexpr std::array kQuadKeys = {"type", "corner", "u", "v"};
-inline constexpr std::array kTriangleKeys = {"type", "vertices"};
-inline constexpr std::array kMeshKeys = {"type", "file", "normals", "crease_angle"};
+// An object's "shape": each shape's keys sit beside the shape, in its ShapeFormat
+// (ShapeFormat.h, core/src/shapes/<Shape>.cpp).
 
 }  // namespace raylab

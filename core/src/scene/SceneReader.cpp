@@ -1,20 +1,16 @@
 #include "raylab/core/SceneIO.h"
 
-#include "raylab/core/Box.h"
+#include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Camera.h"
 #include "raylab/core/Limits.h"
-#include "raylab/core/MeshIO.h"
-#include "raylab/core/Plane.h"
-#include "raylab/core/Quad.h"
-#include "raylab/core/Sphere.h"
 #include "raylab/core/Transform.h"
-#include "raylab/core/Triangle.h"
 
 #include "io/JsonChecks.h"
-#include "io/MeshCache.h"
 #include "io/PrettyJson.h"
 #include "scene/ObjectForm.h"
+#include "scene/SceneFields.h"
 #include "scene/SceneKeys.h"
+#include "shapes/ShapeFormat.h"
 
 #include <nlohmann/json.hpp>
 
@@ -41,175 +37,23 @@ namespace {
 using nlohmann::json;
 
 /// Reads one scene document and remembers the file name for every message.
-class Reader : private JsonChecks<Reader> {
-  friend class JsonChecks<Reader>;
-
+class Reader : public SceneFields {
  public:
-  explicit Reader(std::string origin)
-      : m_origin(std::move(origin)),
-        m_baseDir(std::filesystem::path(m_origin).parent_path().string()) {}
+  using SceneFields::SceneFields;
 
-  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw SceneIO::LoadError(m_origin + ": at " + (path.empty() ? "/" : path) + ": " + what);
-  }
-
-  /// A number within +-limits::kMaxCoordinate (a coordinate, a size, a colour).
-  double bounded(const json& j, const std::string& path) const {
-    const double v = number(j, path);
-    if (std::abs(v) > limits::kMaxCoordinate)
-      fail(path, excerpt(j) + " is beyond RayLab's largest coordinate, 1e12");
-    return v;
-  }
-
-  Vec3 vec3(const json& j, const std::string& path) const {
-    if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, z], got " + excerpt(j));
-    return {bounded(j[0], path + "/0"), bounded(j[1], path + "/1"), bounded(j[2], path + "/2")};
-  }
-
-  /// A size (radius, box side): positive, in [limits::kMinLength, limits::kMaxCoordinate].
-  double length(const json& j, const std::string& path, const char* what) const {
-    const double v = bounded(j, path);
-    if (v <= 0.0) fail(path, std::string(what) + " must be positive, got " + excerpt(j));
-    if (v < limits::kMinLength)
-      fail(path, std::string(what) + " " + excerpt(j) + " is below RayLab's smallest size, 1e-9");
-    return v;
-  }
-
-  /// A vector that gives a direction: not zero, and not so short that its squared length
-  /// underflows ([0, 1e-300, 0] used to abort in Transform).
-  Vec3 nonZero(const json& j, const std::string& path) const {
-    const Vec3 v = vec3(j, path);
-    if (v == Vec3(0.0)) fail(path, "vector must not be zero (it gives a direction)");
-    if (glm::length(v) < limits::kMinLength)
-      fail(path, "vector is too short to give a direction (length below 1e-9)");
-    return v;
-  }
-
-  Mat4 matrix(const json& j, const std::string& path) const {
-    if (!j.is_array() || j.size() != 4) fail(path, "expected 4 rows of 4 numbers");
-    Mat4 m(1.0);
-    for (int r = 0; r < 4; ++r) {
-      const std::string rp = path + "/" + std::to_string(r);
-      if (!j[r].is_array() || j[r].size() != 4) fail(rp, "expected a row of 4 numbers");
-      for (int c = 0; c < 4; ++c) m[c][r] = number(j[r][c], rp + "/" + std::to_string(c));
-    }
-    if (!isAffine(m)) fail(path, "last row must be [0, 0, 0, 1] (an affine transform)");
-    if (glm::determinant(Mat3(m)) == 0.0) fail(path, "matrix is singular");
-    return m;
-  }
-
-  /// A shape; for a mesh, `object` receives the mesh file's path (SceneObject::source) and
-  /// its normals' settings.
+  /// A shape, read by its kind's format (ShapeFormat.h); for a mesh, `object` receives the
+  /// mesh file's path (SceneObject::source) and its normals' settings.
   std::unique_ptr<Shape> shape(const json& j, const std::string& path, SceneObject& object) const {
     const std::string type = string(member(j, path, "type"), path + "/type");
-    std::string& source = object.source;
+    const ShapeFormat* format = shapeFormat(type);
+    if (!format)
+      fail(path + "/type",
+           "unknown shape type \"" + type + "\" (expected " + shapeWordList() + ")");
     try {
-      if (type == "mesh") {
-        onlyKeys(j, path, kMeshKeys);
-        // Where the shading normals come from, and the crease angle of computed ones.
-        if (j.contains("normals")) {
-          const std::string normals = string(j["normals"], path + "/normals");
-          if (normals == "file")
-            object.meshNormals = MeshNormals::File;
-          else if (normals == "flat")
-            object.meshNormals = MeshNormals::Flat;
-          else if (normals == "smooth")
-            object.meshNormals = MeshNormals::Smooth;
-          else
-            fail(path + "/normals",
-                 "unknown normals \"" + normals + "\" (expected file, flat or smooth)");
-        }
-        if (j.contains("crease_angle")) {
-          object.creaseAngle = number(j["crease_angle"], path + "/crease_angle");
-          if (!(object.creaseAngle >= 0.0 && object.creaseAngle <= 180.0))
-            fail(path + "/crease_angle",
-                 "crease angle " + excerpt(j["crease_angle"]) + " must be in [0, 180] degrees");
-        }
-        const std::string file = string(member(j, path, "file"), path + "/file");
-        if (file.empty()) fail(path + "/file", "mesh file name is empty");
-        // Mesh paths are relative to the scene file's folder.
-        const std::filesystem::path filePath(file);
-        source = (filePath.is_absolute() ? filePath : std::filesystem::path(m_baseDir) / filePath)
-                     .lexically_normal()
-                     .string();
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(source, ec))
-          fail(path + "/file", "mesh file \"" + file + "\" not found (looked for " + source + ")");
-        try {
-          auto mesh = std::make_unique<TriangleMesh>(meshcache::load(source));
-          if (object.meshNormals == MeshNormals::Flat) mesh->clearNormals();
-          if (object.meshNormals == MeshNormals::Smooth)
-            mesh->computeCreaseNormals(radians(object.creaseAngle));
-          return mesh;
-        } catch (const MeshIO::ReadError& e) {
-          fail(path + "/file", "cannot load mesh \"" + file + "\": " + e.what());
-        }
-      }
-      if (type == "sphere") {
-        onlyKeys(j, path, kSphereKeys);
-        const double radius = length(member(j, path, "radius"), path + "/radius", "radius");
-        const int m = j.contains("m") ? integer(j["m"], path + "/m") : 24;
-        const int n = j.contains("n") ? integer(j["n"], path + "/n") : 24;
-        if (m < 2) fail(path + "/m", "m (polar slices) must be at least 2");
-        if (n < 3) fail(path + "/n", "n (azimuthal slices) must be at least 3");
-        if (m > limits::kMaxSphereSlices || n > limits::kMaxSphereSlices)
-          fail(path + (m > limits::kMaxSphereSlices ? "/m" : "/n"),
-               "m and n (sphere slices) must be at most " +
-                   std::to_string(limits::kMaxSphereSlices));
-        return std::make_unique<Sphere>(vec3(member(j, path, "centre"), path + "/centre"), radius,
-                                        m, n);
-      }
-      if (type == "box") {
-        onlyKeys(j, path, kBoxKeys);
-        if (j.contains("matrix")) {
-          // Either form, not both: a "size" beside the matrix would be silently ignored.
-          for (const char* key : {"centre", "size", "axes"})
-            if (j.contains(key))
-              fail(path + "/" + key, std::string("a box is given either by \"matrix\" or by "
-                                                 "centre, size and axes, not both (\"") +
-                                         key + "\" beside \"matrix\")");
-          return std::make_unique<Box>(Transform(matrix(j["matrix"], path + "/matrix")));
-        }
-        const Vec3 centre = vec3(member(j, path, "centre"), path + "/centre");
-        const json& sizes = member(j, path, "size");
-        const Vec3 size = vec3(sizes, path + "/size");
-        for (int i = 0; i < 3; ++i)
-          if (size[i] <= 0.0)
-            fail(path + "/size/" + std::to_string(i), "box size must be positive");
-        for (int i = 0; i < 3; ++i)
-          length(sizes[i], path + "/size/" + std::to_string(i), "box size");
-        if (!j.contains("axes")) return std::make_unique<Box>(centre, size);
-        const json& axes = j["axes"];
-        if (!axes.is_array() || axes.size() != 3)
-          fail(path + "/axes", "expected three axes [x, y, z]");
-        Vec3 a[3];
-        for (int i = 0; i < 3; ++i) a[i] = nonZero(axes[i], path + "/axes/" + std::to_string(i));
-        return std::make_unique<Box>(centre, size, a[0], a[1], a[2]);
-      }
-      if (type == "plane") {
-        onlyKeys(j, path, kPlaneKeys);
-        return std::make_unique<Plane>(vec3(member(j, path, "point"), path + "/point"),
-                                       nonZero(member(j, path, "normal"), path + "/normal"));
-      }
-      if (type == "quad") {
-        onlyKeys(j, path, kQuadKeys);
-        return std::make_unique<Quad>(vec3(member(j, path, "corner"), path + "/corner"),
-                                      nonZero(member(j, path, "u"), path + "/u"),
-                                      nonZero(member(j, path, "v"), path + "/v"));
-      }
-      if (type == "triangle") {
-        onlyKeys(j, path, kTriangleKeys);
-        const json& v = member(j, path, "vertices");
-        if (!v.is_array() || v.size() != 3) fail(path + "/vertices", "expected three points");
-        return std::make_unique<Triangle>(vec3(v[0], path + "/vertices/0"),
-                                          vec3(v[1], path + "/vertices/1"),
-                                          vec3(v[2], path + "/vertices/2"));
-      }
+      return format->read(j, path, *this, object);
     } catch (const Shape::InvalidGeometry& e) {
       fail(path, e.what());
     }
-    fail(path + "/type", "unknown shape type \"" + type +
-                             "\" (expected sphere, box, plane, quad, triangle or mesh)");
   }
 
   Mat4 transform(const json& steps, const std::string& path) const {
@@ -458,7 +302,7 @@ class Reader : private JsonChecks<Reader> {
       const auto algorithm = parseAlgorithm(name);
       if (!algorithm)
         fail(p + "/algorithm",
-             "unknown algorithm \"" + name + "\" (expected raycast, whitted, distributed or path)");
+             "unknown algorithm \"" + name + "\" (expected " + algorithmWordList() + ")");
       s.algorithm = *algorithm;
     }
     if (r.contains("spp"))
@@ -618,8 +462,6 @@ class Reader : private JsonChecks<Reader> {
   }
 
  private:
-  std::string m_origin;
-  std::string m_baseDir;  ///< Folder of the scene file: mesh paths are relative to it.
   /// Names read so far, for the duplicate and reference checks in constant time (a scene
   /// of 40,000 objects took 9 s with a linear search per name).
   mutable std::unordered_map<std::string, int> m_materialIndex;

@@ -1,21 +1,16 @@
 #include "raylab/core/SceneIO.h"
 
 #include "raylab/core/AtomicFile.h"
-#include "raylab/core/Box.h"
-#include "raylab/core/Check.h"
-#include "raylab/core/Plane.h"
-#include "raylab/core/Quad.h"
-#include "raylab/core/Sphere.h"
-#include "raylab/core/Triangle.h"
 
 #include "io/PrettyJson.h"
 #include "scene/ObjectForm.h"
+#include "scene/ObjectWriter.h"
 #include "scene/SceneKeys.h"
+#include "shapes/ShapeFormat.h"
 
 #include <nlohmann/json.hpp>
 
 #include <array>
-#include <cstring>
 #include <filesystem>
 #include <utility>
 
@@ -26,114 +21,9 @@ namespace raylab {
 
 namespace {
 
-using ojson = nlohmann::ordered_json;
-
-/**
- * One JSON object of a scene file being written. Its keys can only come from the object's
- * list in SceneKeys.h, in the list's order, so the writer cannot emit a key the reader
- * would reject; breaking that is a bug in RayLab, caught (RAYLAB_CHECK) at the first save.
- */
-class ObjectWriter {
- public:
-  template <std::size_t N>
-  explicit ObjectWriter(const std::array<const char*, N>& keys)
-      : m_keys(keys.data()), m_keyCount(N) {}
-
-  /// Adds `key: value`; `key` must come later in the list than the keys added before it.
-  ObjectWriter& add(const char* key, ojson value) {
-    while (m_next < m_keyCount && std::strcmp(m_keys[m_next], key) != 0) ++m_next;
-    RAYLAB_CHECK(m_next < m_keyCount);  // not in the list, or out of the list's order
-    m_object[m_keys[m_next++]] = std::move(value);
-    return *this;
-  }
-
-  ojson take() { return std::move(m_object); }
-
- private:
-  const char* const* m_keys;
-  std::size_t m_keyCount;
-  std::size_t m_next = 0;  ///< First list entry that may still be added.
-  ojson m_object = ojson::object();
-};
-
-ojson toJson(const Vec3& v) { return ojson::array({v.x, v.y, v.z}); }
-
 /// A "display_name": {"zh": ...}.
 ojson displayNameJson(const std::string& zh) {
   return ObjectWriter(kDisplayNameKeys).add("zh", zh).take();
-}
-
-ojson toJson(const Mat4& m) {
-  ojson rows = ojson::array();
-  for (int r = 0; r < 4; ++r) rows.push_back(ojson::array({m[0][r], m[1][r], m[2][r], m[3][r]}));
-  return rows;
-}
-
-/// A "transform" of one matrix step.
-ojson matrixTransform(const Mat4& m) {
-  return ojson::array({ObjectWriter(kTransformStepKeys).add("matrix", toJson(m)).take()});
-}
-
-/// A built-in shape as JSON. A sphere's own transform, which its parameters cannot hold,
-/// goes to `transform` (left untouched otherwise).
-ojson shapeToJson(const Shape& shape, ojson& transform) {
-  switch (shape.kind()) {
-    case ShapeKind::Sphere: {
-      const auto& s = static_cast<const Sphere&>(shape);
-      if (!s.worldFromObject().isIdentity())
-        transform = matrixTransform(s.worldFromObject().matrix());
-      return ObjectWriter(kSphereKeys)
-          .add("type", "sphere")
-          .add("centre", toJson(s.centre()))
-          .add("radius", s.radius())
-          .add("m", s.m())
-          .add("n", s.n())
-          .take();
-    }
-    case ShapeKind::Box: {
-      const auto& b = static_cast<const Box&>(shape);
-      const Box readable(b.centre(), b.size(), b.axis(0), b.axis(1), b.axis(2));
-      ObjectWriter box(kBoxKeys);
-      box.add("type", "box");
-      // Prefer centre/size/axes; fall back to the exact matrix when they do not
-      // reproduce the box bit for bit.
-      if (readable.worldFromBox().matrix() == b.worldFromBox().matrix()) {
-        box.add("centre", toJson(b.centre())).add("size", toJson(b.size()));
-        if (b.axis(0) != Vec3(1, 0, 0) || b.axis(1) != Vec3(0, 1, 0) || b.axis(2) != Vec3(0, 0, 1))
-          box.add("axes", ojson::array({toJson(b.axis(0)), toJson(b.axis(1)), toJson(b.axis(2))}));
-        return box.take();
-      }
-      return box.add("matrix", toJson(b.worldFromBox().matrix())).take();
-    }
-    case ShapeKind::Plane: {
-      const auto& p = static_cast<const Plane&>(shape);
-      return ObjectWriter(kPlaneKeys)
-          .add("type", "plane")
-          .add("point", toJson(p.point()))
-          .add("normal", toJson(p.planeNormal()))
-          .take();
-    }
-    case ShapeKind::Quad: {
-      const auto& q = static_cast<const Quad&>(shape);
-      return ObjectWriter(kQuadKeys)
-          .add("type", "quad")
-          .add("corner", toJson(q.corner()))
-          .add("u", toJson(q.edgeU()))
-          .add("v", toJson(q.edgeV()))
-          .take();
-    }
-    case ShapeKind::Triangle: {
-      const auto& t = static_cast<const Triangle&>(shape);
-      return ObjectWriter(kTriangleKeys)
-          .add("type", "triangle")
-          .add("vertices",
-               ojson::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))}))
-          .take();
-    }
-    case ShapeKind::TriangleMesh:
-      break;
-  }
-  throw SceneIO::SaveError(std::string("cannot save shape of kind ") + toString(shape.kind()));
 }
 
 /// A material as JSON: always name, type, colour, emission and opacity; its texture if any; the
@@ -188,21 +78,6 @@ ojson materialToJson(const Material& m) {
   return j.take();
 }
 
-/// The path to write for a mesh file `source` (see SceneObject::source) in a scene file
-/// in folder `sceneDir` ("" = the current directory): relative to that folder, as the
-/// format says.
-std::string meshPathFrom(const std::string& source, const std::string& sceneDir) {
-  namespace fs = std::filesystem;
-  fs::path file = fs::path(source).lexically_normal();
-  fs::path base = fs::path(sceneDir.empty() ? "." : sceneDir).lexically_normal();
-  if (file.is_absolute() || base.is_absolute()) {
-    file = fs::absolute(file).lexically_normal();
-    base = fs::absolute(base).lexically_normal();
-  }
-  const fs::path relative = file.lexically_relative(base);
-  return relative.empty() ? file.generic_string() : relative.generic_string();
-}
-
 /// An object as JSON from what it is now, any transform of a built-in shape baked in; mesh
 /// paths are written relative to `sceneDir`.
 ojson bakedObject(const SceneObject& o, const Scene& scene, const std::string& sceneDir) {
@@ -210,22 +85,7 @@ ojson bakedObject(const SceneObject& o, const Scene& scene, const std::string& s
   if (o.material < 0 || o.material >= static_cast<int>(scene.materials.size()))
     throw SceneIO::SaveError("object \"" + o.name + "\" refers to a missing material");
   ojson transform;
-  ojson shape;
-  if (o.shape->kind() == ShapeKind::TriangleMesh) {
-    // Meshes are saved by reference: the file and the transform applied to it.
-    if (o.source.empty())
-      throw SceneIO::SaveError("mesh object \"" + o.name +
-                               "\" has no source file (meshes are saved as a path to their file)");
-    ObjectWriter mesh(kMeshKeys);
-    mesh.add("type", "mesh").add("file", meshPathFrom(o.source, sceneDir));
-    // The normals' source when it is not the default; the crease angle of computed ones.
-    if (o.meshNormals != MeshNormals::File) mesh.add("normals", toString(o.meshNormals));
-    if (o.meshNormals == MeshNormals::Smooth) mesh.add("crease_angle", o.creaseAngle);
-    shape = mesh.take();
-    if (o.worldFromSource != Mat4(1.0)) transform = matrixTransform(o.worldFromSource);
-  } else {
-    shape = shapeToJson(*o.shape, transform);
-  }
+  ojson shape = shapeFormat(o.shape->kind()).write(o, sceneDir, transform);
   ObjectWriter object(kObjectKeys);
   object.add("name", o.name);
   if (!o.nameZh.empty()) object.add("display_name", displayNameJson(o.nameZh));
@@ -236,8 +96,8 @@ ojson bakedObject(const SceneObject& o, const Scene& scene, const std::string& s
 }
 
 /// `j` (read unordered) with the keys of `keys` in that list's order.
-template <std::size_t N>
-ojson inKeyOrder(const nlohmann::json& j, const std::array<const char*, N>& keys) {
+template <class Keys>
+ojson inKeyOrder(const nlohmann::json& j, const Keys& keys) {
   ObjectWriter out(keys);
   for (const char* key : keys)
     if (j.contains(key)) out.add(key, ojson::parse(j[key].dump()));
@@ -246,12 +106,8 @@ ojson inKeyOrder(const nlohmann::json& j, const std::array<const char*, N>& keys
 
 /// The shape of a file's entry in the writer's key order for its type.
 ojson shapeInKeyOrder(const nlohmann::json& shape) {
-  const std::string type = shape.value("type", std::string());
-  if (type == "sphere") return inKeyOrder(shape, kSphereKeys);
-  if (type == "box") return inKeyOrder(shape, kBoxKeys);
-  if (type == "plane") return inKeyOrder(shape, kPlaneKeys);
-  if (type == "quad") return inKeyOrder(shape, kQuadKeys);
-  if (type == "triangle") return inKeyOrder(shape, kTriangleKeys);
+  const ShapeFormat* format = shapeFormat(shape.value("type", std::string()));
+  if (format) return inKeyOrder(shape, format->keys);
   return ojson::parse(shape.dump());
 }
 

@@ -13,6 +13,8 @@
 #define RAYLAB_SEPARATORS_SSE2 0
 #endif
 
+#define RAYLAB_PLAN_INLINE inline __attribute__((always_inline))
+
 namespace raylab {
 
 namespace {
@@ -38,8 +40,14 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
   m_radius = m_sphere->radius();
   if (!isStatic(light)) return;
 
-  // Classify every other static round sphere S against the light: apart, around it, or
-  // cutting it along a circle.
+  classifySeparators(scene, object);
+  packSeparatorColumns();
+  nestCaps();
+}
+
+/// Classifies every other static round sphere S against the light: apart, around it, or
+/// cutting it along a circle.
+void SphereLightSampler::classifySeparators(const Scene& scene, int object) {
   const double R = m_radius;
   for (std::size_t j = 0; j < scene.objects.size(); ++j) {
     const SceneObject& other = scene.objects[j];
@@ -58,35 +66,46 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
     } else if (D + rho <= R) {
       continue;  // S lies inside the light: it hides nothing of the outside surface
     } else {
-      // Light points c + R n inside S satisfy |c + R n - s|^2 < rho^2, i.e.
-      // n . axis > (D^2 + R^2 - rho^2) / (2 R D); (D - rho)(D + rho) keeps the precision
-      // when S is huge (smallpt's walls have rho = 1e5).
-      sep.relation = Separator::Relation::Cuts;
-      sep.axis = between / D;
-      sep.cosAlpha = std::clamp(((D - rho) * (D + rho) + R * R) / (2.0 * R * D), -1.0, 1.0);
-      // The cap on each side; if it is smaller than a hemisphere, the ball through its rim
-      // circle contains it.
-      for (const int inside : {0, 1}) {
-        const double cosAlpha = inside ? sep.cosAlpha : -sep.cosAlpha;
-        if (!(cosAlpha > 0.0)) continue;
-        const Vec3 axis = inside ? sep.axis : -sep.axis;
-        sep.capCentre[inside] = m_centre + R * cosAlpha * axis;
-        sep.capRadius2[inside] = R * R * std::max(0.0, 1.0 - cosAlpha * cosAlpha);
-        // 1 - cos(half-angle) of the cap: (rho^2 - (D - R)^2) / (2 R D) inside S,
-        // ((D + R)^2 - rho^2) / (2 R D) outside it, as products of sums (smallpt's cap is
-        // 4.5e-4 high on the unit sphere).
-        const double height = inside ? (rho - D + R) * (rho + D - R) / (2.0 * R * D)
-                                     : (D + R - rho) * (D + R + rho) / (2.0 * R * D);
-        sep.capHeight[inside] = std::clamp(height, 0.0, 1.0);
-        sep.capArea[inside] = 2.0 * kPi * R * R * sep.capHeight[inside];
-        const Frame frame(axis);
-        sep.capS[inside] = frame.s;
-        sep.capT[inside] = frame.t;
-      }
+      cutAlongCircle(sep, between, D, rho);
     }
     m_separators.push_back(sep);
   }
-  // The first 64 separators as columns and bit masks, for plan()'s loop without branches.
+}
+
+/// A separator S (radius rho, its centre `between` from the light's, D away) that cuts the
+/// light along a circle: the axis and half-angle of the cap inside S, and each side's cap.
+void SphereLightSampler::cutAlongCircle(Separator& sep, const Vec3& between, double D,
+                                        double rho) const {
+  const double R = m_radius;
+  // Light points c + R n inside S satisfy |c + R n - s|^2 < rho^2, i.e.
+  // n . axis > (D^2 + R^2 - rho^2) / (2 R D); (D - rho)(D + rho) keeps the precision
+  // when S is huge (smallpt's walls have rho = 1e5).
+  sep.relation = Separator::Relation::Cuts;
+  sep.axis = between / D;
+  sep.cosAlpha = std::clamp(((D - rho) * (D + rho) + R * R) / (2.0 * R * D), -1.0, 1.0);
+  // The cap on each side; if it is smaller than a hemisphere, the ball through its rim
+  // circle contains it.
+  for (const int inside : {0, 1}) {
+    const double cosAlpha = inside ? sep.cosAlpha : -sep.cosAlpha;
+    if (!(cosAlpha > 0.0)) continue;
+    const Vec3 axis = inside ? sep.axis : -sep.axis;
+    sep.capCentre[inside] = m_centre + R * cosAlpha * axis;
+    sep.capRadius2[inside] = R * R * std::max(0.0, 1.0 - cosAlpha * cosAlpha);
+    // 1 - cos(half-angle) of the cap: (rho^2 - (D - R)^2) / (2 R D) inside S,
+    // ((D + R)^2 - rho^2) / (2 R D) outside it, as products of sums (smallpt's cap is
+    // 4.5e-4 high on the unit sphere).
+    const double height = inside ? (rho - D + R) * (rho + D - R) / (2.0 * R * D)
+                                 : (D + R - rho) * (D + R + rho) / (2.0 * R * D);
+    sep.capHeight[inside] = std::clamp(height, 0.0, 1.0);
+    sep.capArea[inside] = 2.0 * kPi * R * R * sep.capHeight[inside];
+    const Frame frame(axis);
+    sep.capS[inside] = frame.s;
+    sep.capT[inside] = frame.t;
+  }
+}
+
+/// The first 64 separators as columns and bit masks, for plan()'s loop without branches.
+void SphereLightSampler::packSeparatorColumns() {
   for (std::size_t i = 0; i < std::min<std::size_t>(m_separators.size(), 64); ++i) {
     const Separator& sep = m_separators[i];
     m_sepX.push_back(sep.centre.x);
@@ -110,10 +129,13 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
     m_sepZ.push_back(0.0);
     m_sepRadius2.push_back(-1.0);
   }
-  // Which caps lie within which: the cap of half-angle alpha around a lies within the one
-  // of half-angle beta around b when angle(a, b) + alpha <= beta. (A wrong verdict would
-  // cost efficiency only: sample() and pdf() skip the same checks, and shadow rays find
-  // what hides a point.)
+}
+
+/// Which caps lie within which: the cap of half-angle alpha around a lies within the one of
+/// half-angle beta around b when angle(a, b) + alpha <= beta. (A wrong verdict would cost
+/// efficiency only: sample() and pdf() skip the same checks, and shadow rays find what hides
+/// a point.)
+void SphereLightSampler::nestCaps() {
   const auto capAxis = [](const Separator& s, int side) { return side ? s.axis : -s.axis; };
   const auto halfAngle = [](const Separator& s, int side) {
     return std::acos(std::clamp(side ? s.cosAlpha : -s.cosAlpha, -1.0, 1.0));
@@ -133,6 +155,49 @@ SphereLightSampler::SphereLightSampler(const Scene& scene, int object) {
       }
     }
   }
+}
+
+// plan()'s two parts, inlined into it (per shadow ray: a call each cost 11% of plan's
+// instructions on smallpt).
+RAYLAB_PLAN_INLINE std::uint64_t SphereLightSampler::insideMask(const Point3& ref) const {
+  std::uint64_t inside = 0;
+#if RAYLAB_SEPARATORS_SSE2
+  // Two at a time, the same IEEE operations lane by lane (no FMA).
+  const __m128d rx = _mm_set1_pd(ref.x), ry = _mm_set1_pd(ref.y), rz = _mm_set1_pd(ref.z);
+  for (std::size_t i = 0; i < m_sepX.size(); i += 2) {
+    const __m128d fx = _mm_sub_pd(rx, _mm_loadu_pd(&m_sepX[i]));
+    const __m128d fy = _mm_sub_pd(ry, _mm_loadu_pd(&m_sepY[i]));
+    const __m128d fz = _mm_sub_pd(rz, _mm_loadu_pd(&m_sepZ[i]));
+    const __m128d f2 =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(fx, fx), _mm_mul_pd(fy, fy)), _mm_mul_pd(fz, fz));
+    inside |= std::uint64_t(_mm_movemask_pd(_mm_cmplt_pd(f2, _mm_loadu_pd(&m_sepRadius2[i])))) << i;
+  }
+#else
+  for (std::size_t i = 0; i < m_sepX.size(); ++i) {
+    const double fx = ref.x - m_sepX[i], fy = ref.y - m_sepY[i], fz = ref.z - m_sepZ[i];
+    inside |= std::uint64_t(fx * fx + fy * fy + fz * fz < m_sepRadius2[i]) << i;
+  }
+#endif
+  return inside;
+}
+
+RAYLAB_PLAN_INLINE bool SphereLightSampler::preferCapArea(Plan& best, const Vec3& bestToCentre,
+                                                          double bestDistance2) const {
+  // The narrowest cone is a cap's ball. Of its directions, about the share cos(phi) reach
+  // the cap, phi the angle at the cap between its axis and ref (the cap seen obliquely
+  // fills less of its ball): sample the cap by area instead where cos(phi) is below 0.9
+  // (kConeMinCos2; for smallpt's flat cap, everywhere but close under it).
+  const Separator& s = m_separators[std::size_t(best.cap)];
+  const Vec3 axis = best.capSide ? s.axis : -s.axis;
+  const double along = -glm::dot(bestToCentre, axis);  // ref - capCentre along the axis
+  if (!(along > 0.0) || along * along < kConeMinCos2 * bestDistance2) {
+    best.mode = Plan::Mode::CapArea;
+    // Separators whose side ref is on contains the whole cap cannot drop its points.
+    const int side = best.capSide;
+    best.check &= ~((best.inside & s.within[side][1]) | (~best.inside & s.within[side][0]));
+    return true;
+  }
+  return false;
 }
 
 SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
@@ -170,25 +235,7 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
   if (m_separators.size() <= 64) {
     // Which separators ref is inside (isInside's operations), then the verdicts as masks,
     // and the caps' balls on ref's side considered in the same order as the loop below.
-    std::uint64_t inside = 0;
-#if RAYLAB_SEPARATORS_SSE2
-    // Two at a time, the same IEEE operations lane by lane (no FMA).
-    const __m128d rx = _mm_set1_pd(ref.x), ry = _mm_set1_pd(ref.y), rz = _mm_set1_pd(ref.z);
-    for (std::size_t i = 0; i < m_sepX.size(); i += 2) {
-      const __m128d fx = _mm_sub_pd(rx, _mm_loadu_pd(&m_sepX[i]));
-      const __m128d fy = _mm_sub_pd(ry, _mm_loadu_pd(&m_sepY[i]));
-      const __m128d fz = _mm_sub_pd(rz, _mm_loadu_pd(&m_sepZ[i]));
-      const __m128d f2 =
-          _mm_add_pd(_mm_add_pd(_mm_mul_pd(fx, fx), _mm_mul_pd(fy, fy)), _mm_mul_pd(fz, fz));
-      inside |= std::uint64_t(_mm_movemask_pd(_mm_cmplt_pd(f2, _mm_loadu_pd(&m_sepRadius2[i]))))
-                << i;
-    }
-#else
-    for (std::size_t i = 0; i < m_sepX.size(); ++i) {
-      const double fx = ref.x - m_sepX[i], fy = ref.y - m_sepY[i], fz = ref.z - m_sepZ[i];
-      inside |= std::uint64_t(fx * fx + fy * fy + fz * fz < m_sepRadius2[i]) << i;
-    }
-#endif
+    const std::uint64_t inside = insideMask(ref);
     if ((inside & m_disjoint) != 0 || (~inside & m_encloses) != 0) return best;
     best.inside = inside;
     best.check = m_cutsMask;
@@ -215,22 +262,7 @@ SphereLightSampler::Plan SphereLightSampler::plan(const Point3& ref) const {
         break;
     }
   }
-  if (best.cap >= 0) {
-    // The narrowest cone is a cap's ball. Of its directions, about the share cos(phi) reach
-    // the cap, phi the angle at the cap between its axis and ref (the cap seen obliquely
-    // fills less of its ball): sample the cap by area instead where cos(phi) is below 0.9
-    // (kConeMinCos2; for smallpt's flat cap, everywhere but close under it).
-    const Separator& s = m_separators[std::size_t(best.cap)];
-    const Vec3 axis = best.capSide ? s.axis : -s.axis;
-    const double along = -glm::dot(bestToCentre, axis);  // ref - capCentre along the axis
-    if (!(along > 0.0) || along * along < kConeMinCos2 * bestDistance2) {
-      best.mode = Plan::Mode::CapArea;
-      // Separators whose side ref is on contains the whole cap cannot drop its points.
-      const int side = best.capSide;
-      best.check &= ~((best.inside & s.within[side][1]) | (~best.inside & s.within[side][0]));
-      return best;
-    }
-  }
+  if (best.cap >= 0 && preferCapArea(best, bestToCentre, bestDistance2)) return best;
   best.mode = Plan::Mode::Cone;
   // cos theta_max = sqrt(distance^2 - radius^2) / distance; one division for it and the axis.
   const double inverseDistance = 1.0 / std::sqrt(bestDistance2);

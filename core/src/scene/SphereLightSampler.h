@@ -128,6 +128,16 @@ class SphereLightSampler {
     std::uint64_t check = 0;
   };
 
+  void classifySeparators(const Scene& scene, int object);
+  void cutAlongCircle(Separator& sep, const Vec3& between, double D, double rho) const;
+  void packSeparatorColumns();
+  void nestCaps();
+  /// Bit i: ref is inside separator i (the first 64, m_sepX's columns).
+  std::uint64_t insideMask(const Point3& ref) const;
+  /// True when `best` (a cap's ball, bestToCentre from ref, at squared distance
+  /// bestDistance2) is better sampled by the cap's area than by the ball's cone; then sets
+  /// best's CapArea mode and the separators it must check.
+  bool preferCapArea(Plan& best, const Vec3& bestToCentre, double bestDistance2) const;
   Plan plan(const Point3& ref) const;
   /// True when the light point with outward normal n is on ref's side of every separator
   /// (`plan` is plan(ref)).

@@ -1,5 +1,10 @@
 #include "raylab/core/Box.h"
 
+#include "raylab/core/Scene.h"
+#include "scene/ObjectWriter.h"
+#include "scene/SceneFields.h"
+#include "shapes/ShapeFormat.h"
+
 #include "raylab/core/RayOffset.h"
 
 #include <algorithm>
@@ -249,5 +254,72 @@ std::string Box::toString() const {
          ", axes=" + raylab::toString(axis(0)) + " " + raylab::toString(axis(1)) + " " +
          raylab::toString(axis(2)) + "]";
 }
+
+// The scene file's "box": centre, size and axes, or the exact matrix.
+namespace detail {
+const ShapeFormat& boxFormat();  // below
+}  // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<Shape> readBox(const json& j, const std::string& path, const SceneFields& in,
+                               SceneObject&) {
+  in.onlyKeys(j, path, detail::boxFormat().keys);
+  if (j.contains("matrix")) {
+    // Either form, not both: a "size" beside the matrix would be silently ignored.
+    for (const char* key : {"centre", "size", "axes"})
+      if (j.contains(key))
+        in.fail(path + "/" + key, std::string("a box is given either by \"matrix\" or by "
+                                              "centre, size and axes, not both (\"") +
+                                      key + "\" beside \"matrix\")");
+    return std::make_unique<Box>(Transform(in.matrix(j["matrix"], path + "/matrix")));
+  }
+  const Vec3 centre = in.vec3(in.member(j, path, "centre"), path + "/centre");
+  const json& sizes = in.member(j, path, "size");
+  const Vec3 size = in.vec3(sizes, path + "/size");
+  for (int i = 0; i < 3; ++i)
+    if (size[i] <= 0.0) in.fail(path + "/size/" + std::to_string(i), "box size must be positive");
+  for (int i = 0; i < 3; ++i) in.length(sizes[i], path + "/size/" + std::to_string(i), "box size");
+  if (!j.contains("axes")) return std::make_unique<Box>(centre, size);
+  const json& axes = j["axes"];
+  if (!axes.is_array() || axes.size() != 3)
+    in.fail(path + "/axes", "expected three axes [x, y, z]");
+  Vec3 a[3];
+  for (int i = 0; i < 3; ++i) a[i] = in.nonZero(axes[i], path + "/axes/" + std::to_string(i));
+  return std::make_unique<Box>(centre, size, a[0], a[1], a[2]);
+}
+
+ojson writeBox(const SceneObject& object, const std::string&, ojson&) {
+  const auto& b = static_cast<const Box&>(*object.shape);
+  const Box readable(b.centre(), b.size(), b.axis(0), b.axis(1), b.axis(2));
+  ObjectWriter box(detail::boxFormat().keys);
+  box.add("type", "box");
+  // Prefer centre/size/axes; fall back to the exact matrix when they do not
+  // reproduce the box bit for bit.
+  if (readable.worldFromBox().matrix() == b.worldFromBox().matrix()) {
+    box.add("centre", toJson(b.centre())).add("size", toJson(b.size()));
+    if (b.axis(0) != Vec3(1, 0, 0) || b.axis(1) != Vec3(0, 1, 0) || b.axis(2) != Vec3(0, 0, 1))
+      box.add("axes", ojson::array({toJson(b.axis(0)), toJson(b.axis(1)), toJson(b.axis(2))}));
+    return box.take();
+  }
+  return box.add("matrix", toJson(b.worldFromBox().matrix())).take();
+}
+
+ojson boxExample(const Point3& p, double size, const Vec3&, const Vec3&) {
+  return {{"type", "box"}, {"centre", toJson(p)}, {"size", toJson(Vec3(size))}};
+}
+
+}  // namespace
+
+namespace detail {
+const ShapeFormat& boxFormat() {
+  static const ShapeFormat format{
+      ShapeKind::Box, "box",    {"type", "centre", "size", "axes", "matrix"},
+      readBox,        writeBox, boxExample};
+  return format;
+}
+}  // namespace detail
 
 }  // namespace raylab

@@ -1,5 +1,10 @@
 #include "raylab/core/Plane.h"
 
+#include "raylab/core/Scene.h"
+#include "scene/ObjectWriter.h"
+#include "scene/SceneFields.h"
+#include "shapes/ShapeFormat.h"
+
 #include "raylab/core/RayOffset.h"
 #include "raylab/core/Transform.h"
 
@@ -102,5 +107,44 @@ std::string Plane::toString() const {
   return "Plane[point=" + raylab::toString(m_point) + ", normal=" + raylab::toString(m_normal) +
          "]";
 }
+
+// The scene file's "plane": a point and the normal.
+namespace detail {
+const ShapeFormat& planeFormat();  // below
+}  // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<Shape> readPlane(const json& j, const std::string& path, const SceneFields& in,
+                                 SceneObject&) {
+  in.onlyKeys(j, path, detail::planeFormat().keys);
+  return std::make_unique<Plane>(in.vec3(in.member(j, path, "point"), path + "/point"),
+                                 in.nonZero(in.member(j, path, "normal"), path + "/normal"));
+}
+
+ojson writePlane(const SceneObject& object, const std::string&, ojson&) {
+  const auto& p = static_cast<const Plane&>(*object.shape);
+  return ObjectWriter(detail::planeFormat().keys)
+      .add("type", "plane")
+      .add("point", toJson(p.point()))
+      .add("normal", toJson(p.planeNormal()))
+      .take();
+}
+
+ojson planeExample(const Point3& p, double, const Vec3&, const Vec3&) {
+  return {{"type", "plane"}, {"point", toJson(p)}, {"normal", toJson(Vec3(0, 1, 0))}};
+}
+
+}  // namespace
+
+namespace detail {
+const ShapeFormat& planeFormat() {
+  static const ShapeFormat format{ShapeKind::Plane, "plane",    {"type", "point", "normal"},
+                                  readPlane,        writePlane, planeExample};
+  return format;
+}
+}  // namespace detail
 
 }  // namespace raylab

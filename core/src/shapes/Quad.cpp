@@ -1,5 +1,10 @@
 #include "raylab/core/Quad.h"
 
+#include "raylab/core/Scene.h"
+#include "scene/ObjectWriter.h"
+#include "scene/SceneFields.h"
+#include "shapes/ShapeFormat.h"
+
 #include "raylab/core/RayOffset.h"
 #include "raylab/core/Transform.h"
 
@@ -94,5 +99,50 @@ std::string Quad::toString() const {
   return "Quad[corner=" + raylab::toString(m_corner) + ", u=" + raylab::toString(m_u) +
          ", v=" + raylab::toString(m_v) + "]";
 }
+
+// The scene file's "quad": a corner and its two edges u and v.
+namespace detail {
+const ShapeFormat& quadFormat();  // below
+}  // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<Shape> readQuad(const json& j, const std::string& path, const SceneFields& in,
+                                SceneObject&) {
+  in.onlyKeys(j, path, detail::quadFormat().keys);
+  return std::make_unique<Quad>(in.vec3(in.member(j, path, "corner"), path + "/corner"),
+                                in.nonZero(in.member(j, path, "u"), path + "/u"),
+                                in.nonZero(in.member(j, path, "v"), path + "/v"));
+}
+
+ojson writeQuad(const SceneObject& object, const std::string&, ojson&) {
+  const auto& q = static_cast<const Quad&>(*object.shape);
+  return ObjectWriter(detail::quadFormat().keys)
+      .add("type", "quad")
+      .add("corner", toJson(q.corner()))
+      .add("u", toJson(q.edgeU()))
+      .add("v", toJson(q.edgeV()))
+      .take();
+}
+
+/// Edges along the camera's right and up: the normal u x v faces the camera.
+ojson quadExample(const Point3& p, double size, const Vec3& right, const Vec3& up) {
+  return {{"type", "quad"},
+          {"corner", toJson(p - 0.5 * size * (right + up))},
+          {"u", toJson(size * right)},
+          {"v", toJson(size * up)}};
+}
+
+}  // namespace
+
+namespace detail {
+const ShapeFormat& quadFormat() {
+  static const ShapeFormat format{ShapeKind::Quad, "quad",    {"type", "corner", "u", "v"},
+                                  readQuad,        writeQuad, quadExample};
+  return format;
+}
+}  // namespace detail
 
 }  // namespace raylab

@@ -1,5 +1,10 @@
 #include "raylab/core/Sphere.h"
 
+#include "raylab/core/Scene.h"
+#include "scene/ObjectWriter.h"
+#include "scene/SceneFields.h"
+#include "shapes/ShapeFormat.h"
+
 #include "raylab/core/Check.h"
 #include "raylab/core/Limits.h"
 #include "raylab/core/RayOffset.h"
@@ -242,5 +247,57 @@ std::string Sphere::toString() const {
   if (m_hasTransform) s += ", worldFromObject=" + m_worldFromObject.toString();
   return s + "]";
 }
+
+// The scene file's "sphere": centre, radius and the slices m, n its mesh is drawn with.
+namespace detail {
+const ShapeFormat& sphereFormat();  // below
+}  // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<Shape> readSphere(const json& j, const std::string& path, const SceneFields& in,
+                                  SceneObject&) {
+  in.onlyKeys(j, path, detail::sphereFormat().keys);
+  const double radius = in.length(in.member(j, path, "radius"), path + "/radius", "radius");
+  const int m = j.contains("m") ? in.integer(j["m"], path + "/m") : 24;
+  const int n = j.contains("n") ? in.integer(j["n"], path + "/n") : 24;
+  if (m < 2) in.fail(path + "/m", "m (polar slices) must be at least 2");
+  if (n < 3) in.fail(path + "/n", "n (azimuthal slices) must be at least 3");
+  if (m > limits::kMaxSphereSlices || n > limits::kMaxSphereSlices)
+    in.fail(path + (m > limits::kMaxSphereSlices ? "/m" : "/n"),
+            "m and n (sphere slices) must be at most " + std::to_string(limits::kMaxSphereSlices));
+  return std::make_unique<Sphere>(in.vec3(in.member(j, path, "centre"), path + "/centre"), radius,
+                                  m, n);
+}
+
+/// A sphere's own transform, which its parameters cannot hold, goes to `transform`.
+ojson writeSphere(const SceneObject& object, const std::string&, ojson& transform) {
+  const auto& s = static_cast<const Sphere&>(*object.shape);
+  if (!s.worldFromObject().isIdentity()) transform = matrixTransform(s.worldFromObject().matrix());
+  return ObjectWriter(detail::sphereFormat().keys)
+      .add("type", "sphere")
+      .add("centre", toJson(s.centre()))
+      .add("radius", s.radius())
+      .add("m", s.m())
+      .add("n", s.n())
+      .take();
+}
+
+ojson sphereExample(const Point3& p, double size, const Vec3&, const Vec3&) {
+  return {{"type", "sphere"}, {"centre", toJson(p)}, {"radius", 0.5 * size}};
+}
+
+}  // namespace
+
+namespace detail {
+const ShapeFormat& sphereFormat() {
+  static const ShapeFormat format{
+      ShapeKind::Sphere, "sphere",    {"type", "centre", "radius", "m", "n"},
+      readSphere,        writeSphere, sphereExample};
+  return format;
+}
+}  // namespace detail
 
 }  // namespace raylab

@@ -1,5 +1,10 @@
 #include "raylab/core/Triangle.h"
 
+#include "raylab/core/Scene.h"
+#include "scene/ObjectWriter.h"
+#include "scene/SceneFields.h"
+#include "shapes/ShapeFormat.h"
+
 #include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
 #include "raylab/core/Transform.h"
@@ -92,5 +97,50 @@ std::string Triangle::toString() const {
   return "Triangle[" + raylab::toString(m_p[0]) + ", " + raylab::toString(m_p[1]) + ", " +
          raylab::toString(m_p[2]) + "]";
 }
+
+// The scene file's "triangle": its three vertices.
+namespace detail {
+const ShapeFormat& triangleFormat();  // below
+}  // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+std::unique_ptr<Shape> readTriangle(const json& j, const std::string& path, const SceneFields& in,
+                                    SceneObject&) {
+  in.onlyKeys(j, path, detail::triangleFormat().keys);
+  const json& v = in.member(j, path, "vertices");
+  if (!v.is_array() || v.size() != 3) in.fail(path + "/vertices", "expected three points");
+  return std::make_unique<Triangle>(in.vec3(v[0], path + "/vertices/0"),
+                                    in.vec3(v[1], path + "/vertices/1"),
+                                    in.vec3(v[2], path + "/vertices/2"));
+}
+
+ojson writeTriangle(const SceneObject& object, const std::string&, ojson&) {
+  const auto& t = static_cast<const Triangle&>(*object.shape);
+  return ObjectWriter(detail::triangleFormat().keys)
+      .add("type", "triangle")
+      .add("vertices",
+           ojson::array({toJson(t.vertex(0)), toJson(t.vertex(1)), toJson(t.vertex(2))}))
+      .take();
+}
+
+ojson triangleExample(const Point3& p, double size, const Vec3& right, const Vec3& up) {
+  return {{"type", "triangle"},
+          {"vertices", ojson::array({toJson(p + size * (-0.5 * right - 0.4 * up)),
+                                     toJson(p + size * (0.5 * right - 0.4 * up)),
+                                     toJson(p + size * 0.6 * up)})}};
+}
+
+}  // namespace
+
+namespace detail {
+const ShapeFormat& triangleFormat() {
+  static const ShapeFormat format{ShapeKind::Triangle, "triangle",    {"type", "vertices"},
+                                  readTriangle,        writeTriangle, triangleExample};
+  return format;
+}
+}  // namespace detail
 
 }  // namespace raylab

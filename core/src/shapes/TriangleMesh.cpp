@@ -1,5 +1,13 @@
 #include "raylab/core/TriangleMesh.h"
 
+#include "io/MeshCache.h"
+#include "raylab/core/MeshIO.h"
+#include "raylab/core/Scene.h"
+#include "raylab/core/SceneIO.h"
+#include "scene/ObjectWriter.h"
+#include "scene/SceneFields.h"
+#include "shapes/ShapeFormat.h"
+
 #include "raylab/core/Bvh.h"
 #include "raylab/core/RayOffset.h"
 #include "raylab/core/Sampling.h"
@@ -7,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <utility>
 
@@ -333,5 +342,107 @@ std::string TriangleMesh::toString() const {
       << ", bounds=" << bounds().toString() << "]";
   return out.str();
 }
+
+// The scene file's "mesh": a mesh file by reference (its path relative to the scene file),
+// the source of its shading normals and the crease angle of computed ones.
+namespace detail {
+const ShapeFormat& meshFormat();  // below
+}  // namespace detail
+
+namespace {
+
+using nlohmann::json;
+
+/// Reads "normals" and "crease_angle" into `object`.
+void readMeshNormals(const json& j, const std::string& path, const SceneFields& in,
+                     SceneObject& object) {
+  if (j.contains("normals")) {
+    const std::string normals = in.string(j["normals"], path + "/normals");
+    if (normals == "file")
+      object.meshNormals = MeshNormals::File;
+    else if (normals == "flat")
+      object.meshNormals = MeshNormals::Flat;
+    else if (normals == "smooth")
+      object.meshNormals = MeshNormals::Smooth;
+    else
+      in.fail(path + "/normals",
+              "unknown normals \"" + normals + "\" (expected file, flat or smooth)");
+  }
+  if (j.contains("crease_angle")) {
+    object.creaseAngle = in.number(j["crease_angle"], path + "/crease_angle");
+    if (!(object.creaseAngle >= 0.0 && object.creaseAngle <= 180.0))
+      in.fail(path + "/crease_angle",
+              "crease angle " + excerpt(j["crease_angle"]) + " must be in [0, 180] degrees");
+  }
+}
+
+std::unique_ptr<Shape> readMesh(const json& j, const std::string& path, const SceneFields& in,
+                                SceneObject& object) {
+  in.onlyKeys(j, path, detail::meshFormat().keys);
+  readMeshNormals(j, path, in, object);
+  const std::string file = in.string(in.member(j, path, "file"), path + "/file");
+  if (file.empty()) in.fail(path + "/file", "mesh file name is empty");
+  // Mesh paths are relative to the scene file's folder.
+  const std::filesystem::path filePath(file);
+  std::string& source = object.source;
+  source = (filePath.is_absolute() ? filePath : std::filesystem::path(in.baseDir()) / filePath)
+               .lexically_normal()
+               .string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(source, ec))
+    in.fail(path + "/file", "mesh file \"" + file + "\" not found (looked for " + source + ")");
+  try {
+    auto mesh = std::make_unique<TriangleMesh>(meshcache::load(source));
+    if (object.meshNormals == MeshNormals::Flat) mesh->clearNormals();
+    if (object.meshNormals == MeshNormals::Smooth)
+      mesh->computeCreaseNormals(radians(object.creaseAngle));
+    return mesh;
+  } catch (const MeshIO::ReadError& e) {
+    in.fail(path + "/file", "cannot load mesh \"" + file + "\": " + e.what());
+  }
+}
+
+/// The path to write for a mesh file `source` (see SceneObject::source) in a scene file
+/// in folder `sceneDir` ("" = the current directory): relative to that folder, as the
+/// format says.
+std::string meshPathFrom(const std::string& source, const std::string& sceneDir) {
+  namespace fs = std::filesystem;
+  fs::path file = fs::path(source).lexically_normal();
+  fs::path base = fs::path(sceneDir.empty() ? "." : sceneDir).lexically_normal();
+  if (file.is_absolute() || base.is_absolute()) {
+    file = fs::absolute(file).lexically_normal();
+    base = fs::absolute(base).lexically_normal();
+  }
+  const fs::path relative = file.lexically_relative(base);
+  return relative.empty() ? file.generic_string() : relative.generic_string();
+}
+
+/// Meshes are saved by reference: the file and the transform applied to it.
+ojson writeMesh(const SceneObject& o, const std::string& sceneDir, ojson& transform) {
+  if (o.source.empty())
+    throw SceneIO::SaveError("mesh object \"" + o.name +
+                             "\" has no source file (meshes are saved as a path to their file)");
+  ObjectWriter mesh(detail::meshFormat().keys);
+  mesh.add("type", "mesh").add("file", meshPathFrom(o.source, sceneDir));
+  // The normals' source when it is not the default; the crease angle of computed ones.
+  if (o.meshNormals != MeshNormals::File) mesh.add("normals", toString(o.meshNormals));
+  if (o.meshNormals == MeshNormals::Smooth) mesh.add("crease_angle", o.creaseAngle);
+  if (o.worldFromSource != Mat4(1.0)) transform = matrixTransform(o.worldFromSource);
+  return mesh.take();
+}
+
+}  // namespace
+
+namespace detail {
+const ShapeFormat& meshFormat() {
+  static const ShapeFormat format{ShapeKind::TriangleMesh,
+                                  "mesh",
+                                  {"type", "file", "normals", "crease_angle"},
+                                  readMesh,
+                                  writeMesh,
+                                  nullptr};
+  return format;
+}
+}  // namespace detail
 
 }  // namespace raylab

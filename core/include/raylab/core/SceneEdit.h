@@ -3,6 +3,7 @@
 #include "raylab/core/Scene.h"
 #include "raylab/core/Types.h"
 
+#include <optional>
 #include <string>
 
 /// \file SceneEdit.h
@@ -55,7 +56,12 @@ Scene renameObject(const Scene& scene, int object, const std::string& name,
                    const std::string& origin);
 
 /// What can be added from the window's Add menu.
-enum class NewShape { Sphere, Box, Plane, Quad, Triangle };
+/// A shape that can be added as a new object: any built-in kind but a mesh (addMesh).
+using NewShape = ShapeKind;
+/// The kind whose word is `word` ("sphere"), when one can be added; nothing otherwise.
+std::optional<NewShape> newShapeKind(const std::string& word);
+/// The words of the shapes addShape takes, "sphere, box, plane, quad or triangle".
+std::string newShapeWordList();
 /// `scene` with a new object of `shape` appended, made of a new plain diffuse material,
 /// sized to the scene (a fifth of its objects' extent) and placed in front of the camera
 /// where the camera looks, so it can be seen; named "sphere", "sphere 2", ...

@@ -21,6 +21,73 @@ bool isUsable(const Vec3& w) {
 
 double maxComponent(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
 
+/// Step 1: the emitted radiance seen along the ray, MIS-weighted against light sampling when
+/// a BSDF sample found the light (0 when next-event estimation counts it without MIS).
+Vec3 weightedEmission(const HitContext& context) {
+  const RenderSettings& settings = context.settings;
+  const QueuedRay& ray = context.ray;
+  const Vec3 Le = shading::emitterSeen(context);
+  double w = 1.0;
+  const bool deterministic = ray.kind == RayKind::Camera || ray.pdf <= 0.0;
+  if (settings.nextEventEstimation && !deterministic) {
+    if (settings.multipleImportance) {
+      // The density light sampling at the previous hit had for this point: asked from
+      // this ray's origin, the point next-event estimation samples from (step 4).
+      const double lightPdf = context.intersector.lightPdf(ray.ray.origin, context.hit.object,
+                                                           context.hit.si, ray.ray.time);
+      w = powerHeuristic(ray.pdf, lightPdf);
+    } else {
+      w = 0.0;
+    }
+  }
+  return w > 0.0 ? w * Le : Vec3(0.0);
+}
+
+/// Step 4, area lights: a shadow ray to one sampled light point, MIS-weighted against the BSDF.
+void shadowRayToAreaLight(const HitContext& context, const Vec3& wo, double rouletteScale,
+                          std::vector<QueuedRay>& children) {
+  const SurfaceInteraction& si = context.hit.si;
+  const Material& m = context.material;
+  const Vec2 uLight = context.sampler.next2D();
+  const double uPick = context.sampler.next1D();
+  // Sample the light from offsetRayOrigin(si, n), the origin every ray leaving this side
+  // of the surface will have, so that step 1's MIS weight asks lightPdf about the same
+  // point; and sample it where it is at this ray's time.
+  const Point3 ref = offsetRayOrigin(si, si.facingNormal());
+  LightSample sampled;
+  const LightSample* ls =
+      context.intersector.sampleLight(ref, uLight, uPick, context.ray.ray.time, sampled) ? &sampled
+                                                                                         : nullptr;
+  if (!ls) return;
+  const Vec3 fCos = bsdf::eval(m, si, wo, ls->wi);
+  const double w = context.settings.multipleImportance
+                       ? powerHeuristic(ls->pdf, bsdf::pdf(m, si, wo, ls->wi))
+                       : 1.0;
+  const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
+  if (isUsable(weight) && isUsable(ls->Le))
+    shading::shadowRayToSample(children.emplace_back(), context, ref, *ls, weight);
+}
+
+/// Step 4, point lights: a shadow ray to each (a delta light cannot be hit, so no MIS).
+void shadowRaysToPointLights(const HitContext& context, const Vec3& wo, double rouletteScale,
+                             std::vector<QueuedRay>& children) {
+  const SurfaceInteraction& si = context.hit.si;
+  const std::vector<PointLight>& lights = context.intersector.scene().pointLights;
+  for (std::size_t index = 0; index < lights.size(); ++index) {
+    const PointLight& light = lights[index];
+    const Vec3 d = light.position - si.p;
+    const double distance2 = glm::dot(d, d);
+    if (!(distance2 > 0.0)) continue;
+    const Vec3 weight =
+        bsdf::eval(context.material, si, wo, d / std::sqrt(distance2)) * rouletteScale;
+    if (isUsable(weight)) {
+      shading::shadowRay(children.emplace_back(), context, light.position, weight,
+                         light.intensity / distance2, false);
+      children.back().pointLight = int(index);
+    }
+  }
+}
+
 }  // namespace
 
 HitDecision PathTracingRule::onHit(const HitContext& context,
@@ -34,21 +101,7 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
   // 1. Emission, MIS-weighted against light sampling when a BSDF sample found the light.
   Vec3 emitted(0.0);
   if (m.isEmitter()) {
-    const Vec3 Le = shading::emitterSeen(context);
-    double w = 1.0;
-    const bool deterministic = ray.kind == RayKind::Camera || ray.pdf <= 0.0;
-    if (settings.nextEventEstimation && !deterministic) {
-      if (settings.multipleImportance) {
-        // The density light sampling at the previous hit had for this point: asked from
-        // this ray's origin, the point next-event estimation samples from (step 4).
-        const double lightPdf =
-            context.intersector.lightPdf(ray.ray.origin, context.hit.object, si, ray.ray.time);
-        w = powerHeuristic(ray.pdf, lightPdf);
-      } else {
-        w = 0.0;
-      }
-    }
-    if (w > 0.0) emitted = w * Le;
+    emitted = weightedEmission(context);
     if (isNonPositive(m.colour)) return {emitted, EndReason::HitLight};
   }
 
@@ -65,40 +118,9 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
 
   // 4. Next-event estimation: a shadow ray to a sampled light point, and to point lights.
   if (settings.nextEventEstimation && !m.isSpecular()) {
-    if (!context.intersector.areaLights().empty()) {
-      const Vec2 uLight = context.sampler.next2D();
-      const double uPick = context.sampler.next1D();
-      // Sample the light from offsetRayOrigin(si, n), the origin every ray leaving this side
-      // of the surface will have, so that step 1's MIS weight asks lightPdf about the same
-      // point; and sample it where it is at this ray's time.
-      const Point3 ref = offsetRayOrigin(si, si.facingNormal());
-      LightSample sampled;
-      const LightSample* ls =
-          context.intersector.sampleLight(ref, uLight, uPick, ray.ray.time, sampled) ? &sampled
-                                                                                     : nullptr;
-      if (ls) {
-        const Vec3 fCos = bsdf::eval(m, si, wo, ls->wi);
-        const double w = settings.multipleImportance
-                             ? powerHeuristic(ls->pdf, bsdf::pdf(m, si, wo, ls->wi))
-                             : 1.0;
-        const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
-        if (isUsable(weight) && isUsable(ls->Le))
-          shading::shadowRayToSample(children.emplace_back(), context, ref, *ls, weight);
-      }
-    }
-    const std::vector<PointLight>& lights = context.intersector.scene().pointLights;
-    for (std::size_t index = 0; index < lights.size(); ++index) {
-      const PointLight& light = lights[index];
-      const Vec3 d = light.position - si.p;
-      const double distance2 = glm::dot(d, d);
-      if (!(distance2 > 0.0)) continue;
-      const Vec3 weight = bsdf::eval(m, si, wo, d / std::sqrt(distance2)) * rouletteScale;
-      if (isUsable(weight)) {
-        shading::shadowRay(children.emplace_back(), context, light.position, weight,
-                           light.intensity / distance2, false);
-        children.back().pointLight = int(index);
-      }
-    }
+    if (!context.intersector.areaLights().empty())
+      shadowRayToAreaLight(context, wo, rouletteScale, children);
+    shadowRaysToPointLights(context, wo, rouletteScale, children);
   }
 
   // 5. Continue the path in one direction sampled from the BSDF.
