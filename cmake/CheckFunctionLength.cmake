@@ -21,10 +21,6 @@ set(allowed_functions
   app/src/TraceCommand.cpp:runTrace
   vis/src/ConvergencePlot.cpp:build
   core/src/integrators/Tracer.cpp:engineStep
-  # Being split by issue 31, helper "stager2" (the ray-tree panel bound to TreeViewState).
-  app/src/RayTreePanel.cpp:buildTraceGroup
-  app/src/RayTreePanel.cpp:buildStyleGroup
-  app/src/RayTreePanel.cpp:buildAnimationGroup
   # In files of issue 31's helper "check2" (merged; still over: to cut next).
   core/src/io/RayTreeJson.cpp:parse
   # Kept whole: the SIMD kernels of the sphere batch, the SSE2 and AVX forms of one
@@ -40,8 +36,6 @@ set(allowed_functions
 set(allowed_files
   # In files of issue 31's helper "splits" (merged; still over: to cut next).
   core/src/scene/SceneReader.cpp
-  # Being split by issue 31, helper "stager2".
-  app/src/RayTreePanel.cpp
 )
 
 if(NOT CTAGS)

@@ -395,6 +395,95 @@
     </message>
 </context>
 <context>
+    <name>raylab::app::AnimationGroup</name>
+    <message>
+        <source>Bounce animation</source>
+        <translation>弹射动画</translation>
+    </message>
+    <message>
+        <source>Depth by depth</source>
+        <translation>按深度逐层</translation>
+    </message>
+    <message>
+        <source>Processing order</source>
+        <translation>按处理顺序</translation>
+    </message>
+    <message>
+        <source>Depth by depth: every ray of one depth travels at once.
+Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
+        <translation>按深度逐层：同一深度的所有光线同时传播。
+按处理顺序：按引擎队列取出光线的顺序，一条接一条地传播。</translation>
+    </message>
+    <message>
+        <source>Order</source>
+        <translation>顺序</translation>
+    </message>
+    <message>
+        <source>Processing order: rays that start together in one step</source>
+        <translation>按处理顺序时：每一步同时出发的光线数</translation>
+    </message>
+    <message>
+        <source>Rays per step</source>
+        <translation>每步光线数</translation>
+    </message>
+    <message>
+        <source>How fast the rays travel: frames the animation moves on per tick (%1 ticks a second), from 1/8 to 16</source>
+        <translation>光线传播的快慢：动画每个节拍前进的帧数（每秒 %1 个节拍），范围为 1/8 到 16</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>帧</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>上一步</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>下一步</translation>
+    </message>
+    <message>
+        <source>Play the bounces from where the animation stands</source>
+        <translation>从动画的当前位置开始播放光线弹射</translation>
+    </message>
+    <message>
+        <source>Stop at the current frame</source>
+        <translation>停在当前帧</translation>
+    </message>
+    <message>
+        <source>Back to the end of the previous step</source>
+        <translation>回到上一步的末尾</translation>
+    </message>
+    <message>
+        <source>On to the end of the next step</source>
+        <translation>前进到下一步的末尾</translation>
+    </message>
+    <message>
+        <source>Drag to any frame of the animation</source>
+        <translation>拖动到动画的任意一帧</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>no tree yet</source>
+        <translation>尚无光线树</translation>
+    </message>
+</context>
+<context>
     <name>raylab::app::ComparePanel</name>
     <message>
         <source>Equal samples</source>
@@ -1632,248 +1721,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>选择一个像素，然后按“追踪”记录它的光线树。</translation>
     </message>
     <message>
-        <source>Trace a pixel</source>
-        <translation>追踪一个像素</translation>
-    </message>
-    <message>
-        <source>Ray casting: camera ray, local shading, shadow rays.
-Whitted: + perfect reflection and refraction, recursively.
-Distributed: many rays per bounce (soft shadows, gloss).
-Path tracing: one sampled continuation per bounce, Russian roulette.</source>
-        <translation>光线投射：相机光线、局部光照、阴影光线。
-Whitted：再加上理想反射和折射，递归追踪。
-分布式：每次弹射发出多条光线（软阴影、光泽反射）。
-路径追踪：每次弹射只采样一条延续光线，并用俄罗斯轮盘赌终止。</translation>
-    </message>
-    <message>
-        <source>Algorithm</source>
-        <translation>算法</translation>
-    </message>
-    <message>
-        <source>Pixel column, 0 at the left (the film is %1 x %2)</source>
-        <translation>像素的列号，最左列为 0（图像为 %1 × %2 像素）</translation>
-    </message>
-    <message>
-        <source>Pixel row, 0 at the top</source>
-        <translation>像素的行号，最上行为 0</translation>
-    </message>
-    <message>
-        <source>x</source>
-        <translation>x</translation>
-    </message>
-    <message>
-        <source>y</source>
-        <translation>y</translation>
-    </message>
-    <message>
-        <source>Pixel</source>
-        <translation>像素</translation>
-    </message>
-    <message>
-        <source>Which of the pixel&apos;s %1 samples (each has its own random numbers)</source>
-        <translation>该像素 %1 个样本中的第几个（每个样本使用各自的随机数）</translation>
-    </message>
-    <message>
-        <source>Sample</source>
-        <translation>样本</translation>
-    </message>
-    <message>
-        <source>Trace</source>
-        <translation>追踪</translation>
-    </message>
-    <message>
-        <source>Record this pixel sample&apos;s ray tree and show it in the view</source>
-        <translation>记录这个像素样本的光线树，并在视图中显示</translation>
-    </message>
-    <message>
-        <source>Rays across the image (the original program&apos;s 光线横向数量)</source>
-        <translation>图像横向的光线数（对应原课程程序“光线横纵数量”中的横向数量）</translation>
-    </message>
-    <message>
-        <source>Rays down the image (光线纵向数量)</source>
-        <translation>图像纵向的光线数（对应原课程程序“光线横纵数量”中的纵向数量）</translation>
-    </message>
-    <message>
-        <source>Simulate</source>
-        <translation>仿真</translation>
-    </message>
-    <message>
-        <source>Trace a grid of camera rays spread evenly over the image and draw all their ray trees, coloured by energy (1 x 1: the centre pixel)</source>
-        <translation>追踪在图像上均匀分布的一组相机光线，并画出它们的全部光线树，按能量着色（1 × 1 时为中心像素）</translation>
-    </message>
-    <message>
-        <source>across</source>
-        <translation>横向</translation>
-    </message>
-    <message>
-        <source>down</source>
-        <translation>纵向</translation>
-    </message>
-    <message>
-        <source>Rays</source>
-        <translation>光线</translation>
-    </message>
-    <message>
-        <source>Colours and filters</source>
-        <translation>着色与筛选</translation>
-    </message>
-    <message>
-        <source>Energy (grey, green, blue)</source>
-        <translation>能量（灰、绿、蓝）</translation>
-    </message>
-    <message>
-        <source>Ray kind</source>
-        <translation>光线类型</translation>
-    </message>
-    <message>
-        <source>Depth</source>
-        <translation>深度</translation>
-    </message>
-    <message>
-        <source>Energy: the share of the pixel&apos;s light that came back along the ray
-(light grey = none, green = some, blue = most).</source>
-        <translation>能量：像素接收的光中沿这条光线传回的份额
-（浅灰 = 没有，绿 = 一部分，蓝 = 大部分）。</translation>
-    </message>
-    <message>
-        <source>Colour by</source>
-        <translation>着色依据</translation>
-    </message>
-    <message>
-        <source>Draw %1 rays</source>
-        <translation>绘制%1光线</translation>
-    </message>
-    <message>
-        <source>Kinds</source>
-        <translation>类型</translation>
-    </message>
-    <message>
-        <source>all</source>
-        <translation>全部</translation>
-    </message>
-    <message>
-        <source>Hide rays deeper than this (camera rays have depth 0)</source>
-        <translation>隐藏深度大于此值的光线（相机光线的深度为 0）</translation>
-    </message>
-    <message>
-        <source>Max depth</source>
-        <translation>最大深度</translation>
-    </message>
-    <message>
-        <source>Hide rays that carry less energy than this</source>
-        <translation>隐藏携带能量小于此值的光线</translation>
-    </message>
-    <message>
-        <source>Min energy</source>
-        <translation>最小能量</translation>
-    </message>
-    <message>
-        <source>Only paths that reached a light</source>
-        <translation>只显示到达光源的路径</translation>
-    </message>
-    <message>
-        <source>Hide rays whose subtree found no light</source>
-        <translation>隐藏子树中没有找到光源的光线</translation>
-    </message>
-    <message>
-        <source>Hit points</source>
-        <translation>交点</translation>
-    </message>
-    <message>
-        <source>Normals</source>
-        <translation>法线</translation>
-    </message>
-    <message>
-        <source>Arrows</source>
-        <translation>箭头</translation>
-    </message>
-    <message>
-        <source>Legend</source>
-        <translation>图例</translation>
-    </message>
-    <message>
-        <source>Show</source>
-        <translation>显示</translation>
-    </message>
-    <message>
-        <source>Bounce animation</source>
-        <translation>弹射动画</translation>
-    </message>
-    <message>
-        <source>Depth by depth</source>
-        <translation>按深度逐层</translation>
-    </message>
-    <message>
-        <source>Processing order</source>
-        <translation>按处理顺序</translation>
-    </message>
-    <message>
-        <source>Depth by depth: every ray of one depth travels at once.
-Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
-        <translation>按深度逐层：同一深度的所有光线同时传播。
-按处理顺序：按引擎队列取出光线的顺序，一条接一条地传播。</translation>
-    </message>
-    <message>
-        <source>Order</source>
-        <translation>顺序</translation>
-    </message>
-    <message>
-        <source>Processing order: rays that start together in one step</source>
-        <translation>按处理顺序时：每一步同时出发的光线数</translation>
-    </message>
-    <message>
-        <source>Rays per step</source>
-        <translation>每步光线数</translation>
-    </message>
-    <message>
-        <source>How fast the rays travel: frames the animation moves on per tick (%1 ticks a second), from 1/8 to 16</source>
-        <translation>光线传播的快慢：动画每个节拍前进的帧数（每秒 %1 个节拍），范围为 1/8 到 16</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>Play</source>
-        <translation>播放</translation>
-    </message>
-    <message>
-        <source>Pause</source>
-        <translation>暂停</translation>
-    </message>
-    <message>
-        <source>Back</source>
-        <translation>上一步</translation>
-    </message>
-    <message>
-        <source>Step</source>
-        <translation>下一步</translation>
-    </message>
-    <message>
-        <source>Play the bounces from where the animation stands</source>
-        <translation>从动画的当前位置开始播放光线弹射</translation>
-    </message>
-    <message>
-        <source>Stop at the current frame</source>
-        <translation>停在当前帧</translation>
-    </message>
-    <message>
-        <source>Back to the end of the previous step</source>
-        <translation>回到上一步的末尾</translation>
-    </message>
-    <message>
-        <source>On to the end of the next step</source>
-        <translation>前进到下一步的末尾</translation>
-    </message>
-    <message>
-        <source>Drag to any frame of the animation</source>
-        <translation>拖动到动画的任意一帧</translation>
-    </message>
-    <message>
-        <source>Frame</source>
-        <translation>帧</translation>
-    </message>
-    <message>
         <source>%1: pixel (%2, %3), sample %4
 %5</source>
         <translation>%1：像素 (%2, %3)，第 %4 号样本
@@ -1884,40 +1731,8 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
         <translation>%1：仿真 %2 × %3，%4 个像素，%5 条光线</translation>
     </message>
     <message>
-        <source>%1 of %2</source>
-        <translation>%1 / %2</translation>
-    </message>
-    <message>
-        <source>no tree yet</source>
-        <translation>尚无光线树</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>取消</translation>
-    </message>
-    <message>
-        <source>Stop the trace that runs: the rays traced so far stay (a bushy tree can take long)</source>
-        <translation>停止正在进行的追踪：已追踪的光线会保留（分支很多的光线树可能需要很长时间）</translation>
-    </message>
-    <message>
         <source>Tracing… (Cancel stops it)</source>
         <translation>正在追踪…（按“取消”可停止）</translation>
-    </message>
-    <message>
-        <source>Trace this many samples of the pixel, from the sample above on, and draw them together: with a lens, the camera rays form the pixel&apos;s bundle</source>
-        <translation>从上面选定的采样起，追踪这个像素的这么多个采样，并把它们画在一起：有透镜时，这些相机光线构成该像素的光线束</translation>
-    </message>
-    <message>
-        <source>Samples drawn</source>
-        <translation>同时绘制的采样数</translation>
-    </message>
-    <message>
-        <source>Every hit along the ray</source>
-        <translation>光线上的所有交点</translation>
-    </message>
-    <message>
-        <source>Mark every surface the selected ray (else the camera ray) crosses, not only the first: green where it enters a solid, red where it leaves, yellow on an open surface</source>
-        <translation>标出选中的光线（未选中时为相机光线）穿过的每一个表面，而不只是第一个：进入实体处为绿色，离开处为红色，穿过开放曲面处为黄色</translation>
     </message>
     <message>
         <source>%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays</source>
@@ -2055,6 +1870,200 @@ Then click a pixel to see its ray tree.</source>
     <message>
         <source>capped samples: %1</source>
         <translation>达到光线上限的样本：%1</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::StyleGroup</name>
+    <message>
+        <source>Colours and filters</source>
+        <translation>着色与筛选</translation>
+    </message>
+    <message>
+        <source>Energy (grey, green, blue)</source>
+        <translation>能量（灰、绿、蓝）</translation>
+    </message>
+    <message>
+        <source>Ray kind</source>
+        <translation>光线类型</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>深度</translation>
+    </message>
+    <message>
+        <source>Energy: the share of the pixel&apos;s light that came back along the ray
+(light grey = none, green = some, blue = most).</source>
+        <translation>能量：像素接收的光中沿这条光线传回的份额
+（浅灰 = 没有，绿 = 一部分，蓝 = 大部分）。</translation>
+    </message>
+    <message>
+        <source>Colour by</source>
+        <translation>着色依据</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>全部</translation>
+    </message>
+    <message>
+        <source>Hide rays deeper than this (camera rays have depth 0)</source>
+        <translation>隐藏深度大于此值的光线（相机光线的深度为 0）</translation>
+    </message>
+    <message>
+        <source>Max depth</source>
+        <translation>最大深度</translation>
+    </message>
+    <message>
+        <source>Hide rays that carry less energy than this</source>
+        <translation>隐藏携带能量小于此值的光线</translation>
+    </message>
+    <message>
+        <source>Min energy</source>
+        <translation>最小能量</translation>
+    </message>
+    <message>
+        <source>Only paths that reached a light</source>
+        <translation>只显示到达光源的路径</translation>
+    </message>
+    <message>
+        <source>Hide rays whose subtree found no light</source>
+        <translation>隐藏子树中没有找到光源的光线</translation>
+    </message>
+    <message>
+        <source>Draw %1 rays</source>
+        <translation>绘制%1光线</translation>
+    </message>
+    <message>
+        <source>Kinds</source>
+        <translation>类型</translation>
+    </message>
+    <message>
+        <source>Hit points</source>
+        <translation>交点</translation>
+    </message>
+    <message>
+        <source>Normals</source>
+        <translation>法线</translation>
+    </message>
+    <message>
+        <source>Arrows</source>
+        <translation>箭头</translation>
+    </message>
+    <message>
+        <source>Legend</source>
+        <translation>图例</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>显示</translation>
+    </message>
+    <message>
+        <source>Every hit along the ray</source>
+        <translation>光线上的所有交点</translation>
+    </message>
+    <message>
+        <source>Mark every surface the selected ray (else the camera ray) crosses, not only the first: green where it enters a solid, red where it leaves, yellow on an open surface</source>
+        <translation>标出选中的光线（未选中时为相机光线）穿过的每一个表面，而不只是第一个：进入实体处为绿色，离开处为红色，穿过开放曲面处为黄色</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::TraceGroup</name>
+    <message>
+        <source>Trace a pixel</source>
+        <translation>追踪一个像素</translation>
+    </message>
+    <message>
+        <source>Ray casting: camera ray, local shading, shadow rays.
+Whitted: + perfect reflection and refraction, recursively.
+Distributed: many rays per bounce (soft shadows, gloss).
+Path tracing: one sampled continuation per bounce, Russian roulette.</source>
+        <translation>光线投射：相机光线、局部光照、阴影光线。
+Whitted：再加上理想反射和折射，递归追踪。
+分布式：每次弹射发出多条光线（软阴影、光泽反射）。
+路径追踪：每次弹射只采样一条延续光线，并用俄罗斯轮盘赌终止。</translation>
+    </message>
+    <message>
+        <source>Algorithm</source>
+        <translation>算法</translation>
+    </message>
+    <message>
+        <source>Pixel column, 0 at the left (the film is %1 x %2)</source>
+        <translation>像素的列号，最左列为 0（图像为 %1 × %2 像素）</translation>
+    </message>
+    <message>
+        <source>Pixel row, 0 at the top</source>
+        <translation>像素的行号，最上行为 0</translation>
+    </message>
+    <message>
+        <source>x</source>
+        <translation>x</translation>
+    </message>
+    <message>
+        <source>y</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>Pixel</source>
+        <translation>像素</translation>
+    </message>
+    <message>
+        <source>Which of the pixel&apos;s %1 samples (each has its own random numbers)</source>
+        <translation>该像素 %1 个样本中的第几个（每个样本使用各自的随机数）</translation>
+    </message>
+    <message>
+        <source>Sample</source>
+        <translation>样本</translation>
+    </message>
+    <message>
+        <source>Trace this many samples of the pixel, from the sample above on, and draw them together: with a lens, the camera rays form the pixel&apos;s bundle</source>
+        <translation>从上面选定的采样起，追踪这个像素的这么多个采样，并把它们画在一起：有透镜时，这些相机光线构成该像素的光线束</translation>
+    </message>
+    <message>
+        <source>Samples drawn</source>
+        <translation>同时绘制的采样数</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>追踪</translation>
+    </message>
+    <message>
+        <source>Record this pixel sample&apos;s ray tree and show it in the view</source>
+        <translation>记录这个像素样本的光线树，并在视图中显示</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop the trace that runs: the rays traced so far stay (a bushy tree can take long)</source>
+        <translation>停止正在进行的追踪：已追踪的光线会保留（分支很多的光线树可能需要很长时间）</translation>
+    </message>
+    <message>
+        <source>Rays across the image (the original program&apos;s 光线横向数量)</source>
+        <translation>图像横向的光线数（对应原课程程序“光线横纵数量”中的横向数量）</translation>
+    </message>
+    <message>
+        <source>Rays down the image (光线纵向数量)</source>
+        <translation>图像纵向的光线数（对应原课程程序“光线横纵数量”中的纵向数量）</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>仿真</translation>
+    </message>
+    <message>
+        <source>Trace a grid of camera rays spread evenly over the image and draw all their ray trees, coloured by energy (1 x 1: the centre pixel)</source>
+        <translation>追踪在图像上均匀分布的一组相机光线，并画出它们的全部光线树，按能量着色（1 × 1 时为中心像素）</translation>
+    </message>
+    <message>
+        <source>across</source>
+        <translation>横向</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>纵向</translation>
+    </message>
+    <message>
+        <source>Rays</source>
+        <translation>光线</translation>
     </message>
 </context>
 </TS>

@@ -1,11 +1,12 @@
 #include "InspectorPanel.h"
 
 #include "Language.h"
+#include "RayTreePanel.h"
+#include "SceneDocument.h"
 #include "UiWords.h"
 
 #include "raylab/core/InspectorWords.h"
 #include "raylab/core/RayInspector.h"
-#include "raylab/vis/SceneView.h"
 
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -20,8 +21,9 @@
 
 namespace raylab::app {
 
-InspectorPanel::InspectorPanel(const vis::SceneView& view, QWidget* parent)
-    : QWidget(parent), m_view(view) {
+InspectorPanel::InspectorPanel(const SceneDocument& document, const RayTreePanel& rays,
+                               QWidget* parent)
+    : QWidget(parent), m_document(document), m_rays(rays) {
   // Step 1: which ray, and the way to its parent and children.
   m_number = new QSpinBox;
   m_number->setRange(-1, -1);
@@ -41,11 +43,11 @@ InspectorPanel::InspectorPanel(const vis::SceneView& view, QWidget* parent)
           [this](int id) { emit segmentRequested(id); });
   connect(m_parent, &QPushButton::clicked, this, [this] {
     if (m_segment >= 0)
-      emit segmentRequested(m_view.rayTree().segments[std::size_t(m_segment)].parent);
+      emit segmentRequested(m_rays.tree().segments[std::size_t(m_segment)].parent);
   });
   connect(m_child, &QPushButton::clicked, this, [this] {
     if (m_segment >= 0)
-      emit segmentRequested(m_view.rayTree().segments[std::size_t(m_segment)].firstChild);
+      emit segmentRequested(m_rays.tree().segments[std::size_t(m_segment)].firstChild);
   });
 
   // Step 2: the text: what a student asks first (where, what it carried, why it stopped),
@@ -70,7 +72,7 @@ InspectorPanel::InspectorPanel(const vis::SceneView& view, QWidget* parent)
 }
 
 void InspectorPanel::showSegment(int id) {
-  const int count = int(m_view.rayTree().segments.size());
+  const int count = int(m_rays.tree().segments.size());
   if (id < -1 || id >= count) id = -1;
   m_segment = id;
   {
@@ -79,8 +81,8 @@ void InspectorPanel::showSegment(int id) {
     m_number->setValue(id);
   }
   m_number->setEnabled(count > 0);
-  m_parent->setEnabled(id >= 0 && m_view.rayTree().segments[std::size_t(id)].parent >= 0);
-  m_child->setEnabled(id >= 0 && m_view.rayTree().segments[std::size_t(id)].firstChild >= 0);
+  m_parent->setEnabled(id >= 0 && m_rays.tree().segments[std::size_t(id)].parent >= 0);
+  m_child->setEnabled(id >= 0 && m_rays.tree().segments[std::size_t(id)].firstChild >= 0);
   if (id < 0) {
     m_text->setPlainText(
         count == 0 ? tr("No ray tree yet: choose a pixel in the Ray tree tab and press Trace.")
@@ -92,7 +94,7 @@ void InspectorPanel::showSegment(int id) {
   const bool exact = m_exact->isChecked();
   // The objects and materials by the names the reader sees (Chinese display names in zh).
   const RayInspection inspection = RayInspector::inspect(
-      sceneAsShown(m_view.scene(), currentLanguage() == kChinese), m_view.rayTree(), id, exact);
+      sceneAsShown(m_document.scene(), currentLanguage() == kChinese), m_rays.tree(), id, exact);
   const Language language = uiLanguage();
   const QString values = QString::fromStdString(
       rayText(inspection, language) + (exact ? "\n" + oracleText(inspection, language) : ""));
@@ -124,7 +126,7 @@ QString InspectorPanel::inWords(const RayInspection& r) const {
     where = tr("Where: it hit nothing and left the scene");
   // What it carried: its share of the pixel's light.
   const double pixel =
-      m_view.rayTree().segments.empty() ? 0.0 : m_view.rayTree().segments.front().energy();
+      m_rays.tree().segments.empty() ? 0.0 : m_rays.tree().segments.front().energy();
   const QString carried = pixel > 0.0
                               ? tr("What it carried: %1% of the light this pixel sample found")
                                     .arg(100.0 * r.energy / pixel, 0, 'f', 1)

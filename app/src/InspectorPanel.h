@@ -14,11 +14,10 @@ namespace raylab {
 struct RayInspection;
 }
 
-namespace raylab::vis {
-class SceneView;
-}
-
 namespace raylab::app {
+
+class RayTreePanel;
+class SceneDocument;
 
 /**
  * \brief The ray inspector: everything about one ray of the traced tree (raylab::
@@ -33,9 +32,10 @@ class InspectorPanel : public QWidget {
   Q_OBJECT
 
  public:
-  /// A panel for the ray tree shown in `view` (which must outlive the panel), read against
-  /// the view's scene.
-  explicit InspectorPanel(const vis::SceneView& view, QWidget* parent = nullptr);
+  /// A panel for the ray tree `rays` shows, read against `document`'s scene (both must
+  /// outlive the panel); never read from the 3D view.
+  InspectorPanel(const SceneDocument& document, const RayTreePanel& rays,
+                 QWidget* parent = nullptr);
 
   /// Shows ray `id` of the tree (-1: none, with a hint).
   void showSegment(int id);
@@ -60,7 +60,8 @@ class InspectorPanel : public QWidget {
   /// The first lines: the ray's kind, where it went, the share of the pixel's light it
   /// carried and why it stopped, in the window's language.
   QString inWords(const RayInspection& inspection) const;
-  const vis::SceneView& m_view;
+  const SceneDocument& m_document;
+  const RayTreePanel& m_rays;
   int m_segment = -1;
   QSpinBox* m_number = nullptr;
   QPushButton* m_parent = nullptr;

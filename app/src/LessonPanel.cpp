@@ -419,6 +419,19 @@ void LessonPanel::showTryValue(const LessonStep& step) {
   m_tryApply->setEnabled(!waitingForPrediction());
 }
 
+LessonPanel::AnswerState LessonPanel::answerState() const {
+  return {m_tries, m_final, int(m_outcome), m_chosen, m_number->text()};
+}
+
+void LessonPanel::restoreAnswer(const AnswerState& state) {
+  if (!m_lesson || m_step < 0 || !m_lesson->steps[std::size_t(m_step)].question) return;
+  m_tries = state.tries;
+  m_chosen = state.chosen;
+  if (QAbstractButton* b = m_choices->button(state.chosen)) b->setChecked(true);
+  m_number->setText(state.number);
+  if (state.final) finish(Outcome(state.outcome));
+}
+
 bool LessonPanel::waitingForPrediction() const {
   if (!m_lesson || m_step < 0) return false;
   const auto& q = m_lesson->steps[std::size_t(m_step)].question;

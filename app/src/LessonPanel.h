@@ -95,6 +95,19 @@ class LessonPanel : public QWidget {
   /// True while the step's view waits for the student's prediction (a "predict" question
   /// not yet answered finally).
   bool waitingForPrediction() const;
+  /// How the step's question stands: what the language switch carries to the new window.
+  struct AnswerState {
+    int tries = 0;       ///< Wrong answers given.
+    bool final = false;  ///< The answer is shown.
+    int outcome = 0;     ///< How it was settled (right, wrong, shown), once final.
+    int chosen = -1;     ///< The choice ticked (its index in the file).
+    QString number;      ///< The number typed.
+  };
+  AnswerState answerState() const;
+  /// Gives the step shown the answer `state` (another window's, same step): a final answer
+  /// shows its verdict and explanation in this panel's language, and a prediction's view its
+  /// result (answerRevealed).
+  void restoreAnswer(const AnswerState& state);
   QPushButton* checkButton() const { return m_check; }
   QPushButton* showAnswerButton() const { return m_showAnswer; }
   QLineEdit* numberBox() const { return m_number; }

@@ -68,6 +68,9 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
   buildDocks();
   connectPanels();
   // The document drives the view, the list and the title.
+  // Nothing selected in another scene: the old selection's row number names another object
+  // there (outlined, and Del would delete it; issue 33).
+  connect(m_document.get(), &SceneDocument::sceneReplaced, this, [this] { selectObject(-1); });
   connect(m_document.get(), &SceneDocument::sceneChanged, this, [this] { sceneChanged(); });
   connect(m_document.get(), &SceneDocument::fileStateChanged, this, [this] { updateTitle(); });
   buildMenus();  // window/WindowMenus.cpp
@@ -103,8 +106,8 @@ void MainWindow::connectPanels() {
     if (m_rayPanel->showsGrid())
       m_renderPanel->imageView()->setMarkedPixel(-1, -1);
     else
-      m_renderPanel->imageView()->setMarkedPixel(m_rayPanel->pixelXBox()->value(),
-                                                 m_rayPanel->pixelYBox()->value());
+      m_renderPanel->imageView()->setMarkedPixel(*m_rayPanel->viewState().pixelX,
+                                                 *m_rayPanel->viewState().pixelY);
   });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this, status);
   connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this](int id) {

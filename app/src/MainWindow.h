@@ -1,6 +1,7 @@
 #pragma once
 
 #include "raylab/core/Scene.h"
+#include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/ViewCamera.h"
 
 #include <QMainWindow>
@@ -239,8 +240,12 @@ class MainWindow : public QMainWindow {
   /// The Lessons menu: each lesson's title in the window's language, then the step keys.
   void fillLessonsMenu();
   /// The step's tree, samples, comparison or image (what a prediction waits for), from
-  /// its view state: the panels' controls, SceneView::show, the view's framing.
-  void showLessonResult(const LessonStep& step, const vis::TreeViewState& state);
+  /// its view state: the panels' controls, the trace, then drawLessonResult and `then`
+  /// once the tree is in (the trace runs off the UI thread).
+  void showLessonResult(const LessonStep& step, const vis::TreeViewState& state,
+                        std::function<void()> then);
+  /// SceneView::show with the panel's tree, the view's framing and the step's pane.
+  void drawLessonResult(const LessonStep& step, const vis::TreeViewState& state);
   /// The step's pane beside the 3D view (image, comparison, plot), the others hidden and
   /// stopped.
   void showLessonPane(const LessonStep& step, const vis::TreeViewState& state);
@@ -271,6 +276,9 @@ class MainWindow : public QMainWindow {
   QAction* m_imagesAction = nullptr;   ///< View > Image beside the 3D view.
   QAction* m_presentAction = nullptr;  ///< View > Presentation mode.
   bool m_presenting = false;
+  /// The ray colouring the user chose before a lesson set its own: the preference saved
+  /// while a lesson is open (a lesson's colouring is never saved as the user's; issue 33).
+  vis::RayColouring m_userColouring = vis::RayColouring::Energy;
   QByteArray m_layoutBeforePresenting;     ///< saveState() before presentation mode.
   bool m_layoutRestored = false;           ///< The settings had a layout: keep its sizes.
   QDockWidget* m_raysDock = nullptr;       ///< Tab of the ray-tree panel.

@@ -1,31 +1,19 @@
-// The ray-tree panel's controls bound to the view state (vis::TreeViewState): set from a
+// The ray-tree panel's part of the view state (vis::TreeViewState): its groups set from a
 // state (a lesson step, the language switch) and read back into one.
 #include "RayTreePanel.h"
 
-#include <QCheckBox>
-#include <QComboBox>
-#include <QDoubleSpinBox>
-#include <QSpinBox>
-
-#include <algorithm>
-#include <climits>
+#include "raytree/AnimationGroup.h"
+#include "raytree/StyleGroup.h"
+#include "raytree/TraceGroup.h"
 
 namespace raylab::app {
 
 void RayTreePanel::applyState(const vis::TreeViewState& state) {
   setAlgorithm(state.algorithm);
-  m_colouring->setCurrentIndex(
-      m_colouring->findData(QString::fromLatin1(vis::toString(state.style.colouring))));
-  for (int k = 0; k < kRayKindCount; ++k)
-    m_kinds[std::size_t(k)]->setChecked(state.style.filter.kinds[std::size_t(k)]);
-  const int maxDepth = state.style.filter.maxDepth;
-  m_maxDepth->setValue(maxDepth > m_maxDepth->maximum() ? -1 : maxDepth);
-  m_reachesLight->setChecked(state.style.filter.onlyReachingLight);
-  m_minEnergy->setValue(state.style.filter.minEnergy);
-  m_normals->setChecked(state.style.showNormals);
-  m_order->setCurrentIndex(m_order->findData(int(state.animation.order)));
+  m_styleGroup->setStyle(state.style);
+  m_animationGroup->setAnimation(state.animation);
   setBundle(state.bundle);
-  m_allHits->setChecked(state.allHits);
+  m_styleGroup->setAllHits(state.allHits);
   if (state.pixelX && state.pixelY) setPixel(*state.pixelX, *state.pixelY);
   setRootRay(state.rootRay);  // after the pixel, which goes back to its own camera ray
   setSample(state.sample);
@@ -41,15 +29,16 @@ vis::TreeViewState RayTreePanel::viewState() const {
   vis::TreeViewState state;
   state.algorithm = algorithm();
   state.traced = m_trace != nullptr && !m_grid;
-  state.pixelX = m_pixelX->value();
-  state.pixelY = m_pixelY->value();
-  state.sample = m_sample->value();
-  state.bundle = m_bundle->value();
+  const auto [x, y] = m_traceGroup->pixel();
+  state.pixelX = x;
+  state.pixelY = y;
+  state.sample = m_traceGroup->sample();
+  state.bundle = m_traceGroup->bundle();
   state.rootRay = m_root;
-  state.allHits = m_allHits->isChecked();
+  state.allHits = m_styleGroup->allHits();
   state.style = treeStyle();
   state.animation = animation();
-  state.frame = m_frame;
+  state.frame = frame();
   state.selectedSegment = m_selected;
   return state;
 }

@@ -60,6 +60,7 @@ void SceneDocument::reset(std::shared_ptr<const Scene> scene, const QString& pat
   m_path = path;
   m_undo.clear();
   m_undo.setClean();
+  emit sceneReplaced();
   setScene(std::move(scene));
   emit fileStateChanged();
 }

@@ -62,6 +62,9 @@ class SceneDocument : public QObject {
   void apply(const QString& text, const std::function<Scene(const Scene&)>& edit, int mergeId = -1);
 
  signals:
+  /// Another scene replaces this one (open, new, revert, adopt), just before sceneChanged:
+  /// what belonged to the old scene (the selection, by row number) no longer applies.
+  void sceneReplaced();
   /// The scene changed (open, new, revert, an edit, undo, redo).
   void sceneChanged();
   /// The file or the modified state changed (for the title).

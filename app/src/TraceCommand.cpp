@@ -199,15 +199,17 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   // come before this).
   vis::requireDisplay();
   const auto [width, height] = o.pictureSize();
-  const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree);
-  if (options.frame >= 0) view->setReveal(vis::revealFrame(tree, o.animation(), options.frame));
+  vis::TreeViewState state = o.viewState();
+  state.algorithm = settings.algorithm;
+  state.rootRay = root;
+  if (options.frame >= 0) state.frame = options.frame;
+  state.allHits = options.allHits;  // the camera ray's (ray 0's) crossings
+  const std::unique_ptr<vis::SceneView> view = o.makeView(scene, tree, state);
   std::string crossings;
   if (options.allHits) {
     const RaySegment& ray = tree.segments.front();
-    const std::vector<SceneCrossing> all =
-        sceneCrossings(scene, ray.origin, ray.direction, ray.time);
-    view->setCrossings(all, ray.origin, ray.direction);
-    crossings = crossingsText(scene, all, Language::English);
+    crossings = crossingsText(scene, sceneCrossings(scene, ray.origin, ray.direction, ray.time),
+                              Language::English);
   }
   const SrgbImage picture = view->renderOffscreen(width, height);
 
@@ -327,16 +329,24 @@ vis::AnimationSettings RayTreeOptions::animation() const {
   return settings;
 }
 
-std::unique_ptr<vis::SceneView> RayTreeOptions::makeView(const Scene& scene,
-                                                         const RayTree& tree) const {
+vis::TreeViewState RayTreeOptions::viewState() const {
+  vis::TreeViewState state;
+  state.traced = true;
+  state.pixelX = pixel.first;
+  state.pixelY = pixel.second;
+  state.sample = sample;
+  state.style = style();
+  state.animation = animation();
+  state.camera = view == "camera" ? vis::CameraChoice::BehindCamera : vis::CameraChoice::Default;
+  return state;
+}
+
+std::unique_ptr<vis::SceneView> RayTreeOptions::makeView(const Scene& scene, const RayTree& tree,
+                                                         const vis::TreeViewState& state) const {
   auto result = std::make_unique<vis::SceneView>(scene);
-  result->setRayTree(tree, style());
   const auto [width, height] = pictureSize();
-  const double aspect = double(width) / height;
-  if (view == "camera")
-    result->setViewCamera(vis::behindCameraView(scene, aspect));
-  else
-    result->resetViewCamera(aspect);
+  // The view shares the tree it draws: this one is the caller's, so a copy it can keep.
+  result->show(state, std::make_shared<const RayTree>(tree), double(width) / height);
   return result;
 }
 

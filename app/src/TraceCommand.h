@@ -7,6 +7,7 @@
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/SceneView.h"
+#include "raylab/vis/TreeViewState.h"
 #include "raylab/vis/ViewCamera.h"
 
 #include <CLI/CLI.hpp>
@@ -56,9 +57,17 @@ struct RayTreeOptions {
   std::pair<int, int> pictureSize() const;
   /// The bounce animation's settings (--order, --frames-per-step, --rays-per-step).
   vis::AnimationSettings animation() const;
-  /// A view of `scene` with `tree` drawn as the options ask, its camera set for a picture
-  /// of pictureSize().
-  std::unique_ptr<vis::SceneView> makeView(const Scene& scene, const RayTree& tree) const;
+  /// What the options ask the view to show, as the window and the handouts give it
+  /// (vis::TreeViewState): the pixel and sample, the style, the animation, the view camera.
+  vis::TreeViewState viewState() const;
+  /// A view of `scene` showing `tree` in `state` (SceneView::show), for a picture of
+  /// pictureSize().
+  std::unique_ptr<vis::SceneView> makeView(const Scene& scene, const RayTree& tree,
+                                           const vis::TreeViewState& state) const;
+  /// The same with viewState().
+  std::unique_ptr<vis::SceneView> makeView(const Scene& scene, const RayTree& tree) const {
+    return makeView(scene, tree, viewState());
+  }
 
  private:
   std::string m_imageSizeText;

@@ -14,6 +14,8 @@
 
 #include "raylab/core/Exception.h"
 #include "raylab/core/Lesson.h"
+#include "raylab/core/PixelTrace.h"
+#include "raylab/core/Scene.h"
 #include "raylab/vis/Display.h"
 
 #include <QVTKOpenGLNativeWidget.h>
@@ -71,23 +73,30 @@ void showRayTreeOptions(MainWindow& window, const WindowOptions& options) {
   RayTreePanel& panel = *window.rayTreePanel();
   if (options.algorithm) panel.setAlgorithm(*options.algorithm);
   if (options.simulate) {
-    panel.acrossBox()->setValue(options.simulate->first);
-    panel.downBox()->setValue(options.simulate->second);
+    panel.setGrid(options.simulate->first, options.simulate->second);
     panel.simulate();
   }
   if (!options.trace) return;
   panel.setPixel(options.trace->first, options.trace->second);
   panel.setSample(options.sample);
-  panel.trace();
-  if (options.frame) panel.setFrame(*options.frame);
   if (options.ray) {
-    const int count = int(panel.tree().segments.size());
+    // Checked before the loop, like a bad scene (exit 1): the panel's tree is this one.
+    const Scene& traced = window.document().scene();
+    RenderSettings settings = traced.render;
+    settings.algorithm = panel.algorithm();
+    const int count = int(
+        tracePixel(traced, settings, options.trace->first, options.trace->second, options.sample)
+            .tree.segments.size());
     if (*options.ray < 0 || *options.ray >= count)
       throw Exception("--ray: the tree of pixel (" + std::to_string(options.trace->first) + ", " +
                       std::to_string(options.trace->second) + ") has " + std::to_string(count) +
                       " rays: #0..#" + std::to_string(count - 1));
-    panel.selectSegment(*options.ray);
   }
+  // The frame and ray once the trace (off the UI thread) has ended.
+  panel.trace([&panel, frame = options.frame, ray = options.ray] {
+    if (frame) panel.setFrame(*frame);
+    if (ray) panel.selectSegment(*ray);
+  });
 }
 
 /// The lesson and step, presentation mode, and the render and comparison the
@@ -140,7 +149,10 @@ void leaveWhenShown(QApplication& application, std::unique_ptr<MainWindow>& wind
     }
     window->close();
   };
-  const auto afterDelay = [&application, delay, leave] {
+  auto left = std::make_shared<bool>(false);
+  const auto afterDelay = [&application, delay, leave, left] {
+    if (*left) return;
+    *left = true;
     QTimer::singleShot(delay, &application, leave);
   };
   if (options.compare)
@@ -148,6 +160,9 @@ void leaveWhenShown(QApplication& application, std::unique_ptr<MainWindow>& wind
                      afterDelay);
   else if (options.render)
     QObject::connect(window->renderPanel(), &RenderPanel::renderEnded, &application, afterDelay);
+  else if (window->rayTreePanel()->tracing())  // the tree in the picture
+    QObject::connect(window->rayTreePanel(), &RayTreePanel::traceFinished, &application,
+                     afterDelay);
   else
     afterDelay();
 }

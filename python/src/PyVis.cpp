@@ -10,6 +10,7 @@
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/RayTreeStyle.h"
 #include "raylab/vis/SceneView.h"
+#include "raylab/vis/TreeViewState.h"
 #include "raylab/vis/ViewCamera.h"
 
 #include <pybind11/stl.h>
@@ -167,13 +168,15 @@ SrgbImage renderView(const SceneHandle& scene, const std::shared_ptr<TraceData>&
   style.colouring = colouringNamed(colouring);
   const std::shared_ptr<const Scene> snapshot = scene.scene;
   py::gil_scoped_release release;
+  // The view state the window and the handouts draw with (SceneView::show).
+  vis::TreeViewState state;
+  state.traced = trace != nullptr;
+  state.style = style;
+  state.camera = camera == "camera" ? vis::CameraChoice::BehindCamera : vis::CameraChoice::Default;
   vis::SceneView view(*snapshot);
-  const double aspect = double(width) / height;
-  if (camera == "camera")
-    view.setViewCamera(vis::behindCameraView(*snapshot, aspect));
-  else
-    view.resetViewCamera(aspect);
-  if (trace) view.setRayTree(trace->trace.tree, style);
+  const std::shared_ptr<const RayTree> tree =
+      trace ? std::shared_ptr<const RayTree>(trace, &trace->trace.tree) : nullptr;
+  view.show(state, tree, double(width) / height);
   return view.renderOffscreen(width, height);
 }
 

@@ -72,7 +72,7 @@ TEST_F(MainWindowTest, 05_TracingAPixelShowsItsTree) {
   RenderSettings settings = scene.render;
   settings.algorithm = Algorithm::Whitted;
   const Tracer tracer(scene, settings);
-  Stepper stepper(tracer, panel.pixelXBox()->value(), panel.pixelYBox()->value(), 0);
+  Stepper stepper(tracer, *panel.viewState().pixelX, *panel.viewState().pixelY, 0);
   stepper.runToEnd();
   ASSERT_TRUE(m_window->sceneView().hasRayTree());
   EXPECT_EQ(m_window->sceneView().rayTree().segments.size(), stepper.tree().segments.size());
@@ -82,7 +82,7 @@ TEST_F(MainWindowTest, 05_TracingAPixelShowsItsTree) {
   EXPECT_TRUE(panel.statusText().contains(QStringLiteral("whole tree")))
       << panel.statusText().toStdString();
 
-  panel.legendBox()->setChecked(false);  // count the rays alone
+  restyle(panel, [](RayTreeStyle& s) { s.showLegend = false; });  // count the rays alone
   const QImage after = grabView();
   EXPECT_LT(rayPixels(before), 5);
   EXPECT_GT(rayPixels(after), 40) << "no energy-coloured rays in the view";
@@ -100,7 +100,7 @@ TEST_F(MainWindowTest, 06_PlayAdvancesFramesWithTheTimer) {
   panel.setSpeed(3.0);
   panel.play();
   EXPECT_TRUE(panel.playing());
-  EXPECT_FALSE(panel.playButton()->isEnabled());
+  EXPECT_FALSE(panel.controlForTest<QPushButton>("play")->isEnabled());
   panel.tick();
   EXPECT_EQ(panel.frame(), 3);
 
@@ -111,22 +111,21 @@ TEST_F(MainWindowTest, 06_PlayAdvancesFramesWithTheTimer) {
   EXPECT_GT(panel.frame(), 3);
   panel.pause();
   EXPECT_FALSE(panel.playing());
-  EXPECT_FALSE(panel.timer()->isActive());
 
   // Played to the end, it stops there, the whole tree shown.
   while (panel.frame() < panel.frameCount() - 1) panel.tick();
   EXPECT_FALSE(panel.playing());
-  EXPECT_EQ(panel.frameSlider()->value(), panel.frameCount() - 1);
+  EXPECT_EQ(panel.controlForTest<QSlider>("frameSlider")->value(), panel.frameCount() - 1);
   EXPECT_GT(rayPixels(grabView()), rayPixels(empty));
 }
 
 // Step forward / back walk whole steps; back returns exactly to the previous picture.
 TEST_F(MainWindowTest, 07_StepBackReturnsToThePreviousFrame) {
   RayTreePanel& panel = traceCube();
-  panel.legendBox()->setChecked(false);  // see 08
+  restyle(panel, [](RayTreeStyle& s) { s.showLegend = false; });  // see 08
   const int perStep = panel.animation().framesPerStep;
   panel.setFrame(0);
-  panel.stepForwardButton()->click();
+  panel.controlForTest<QPushButton>("stepForward")->click();
   EXPECT_EQ(panel.frame(), perStep);
   EXPECT_EQ(panel.stepAt(panel.frame()), 0);
   const QImage one = grabView();
@@ -134,12 +133,12 @@ TEST_F(MainWindowTest, 07_StepBackReturnsToThePreviousFrame) {
   EXPECT_TRUE(oneStatus.startsWith(QStringLiteral("Depth 0 of "))) << oneStatus.toStdString();
   EXPECT_TRUE(oneStatus.contains(QStringLiteral("1 camera"))) << oneStatus.toStdString();
 
-  panel.stepForwardButton()->click();
+  panel.controlForTest<QPushButton>("stepForward")->click();
   EXPECT_EQ(panel.frame(), 2 * perStep);
   const QImage two = grabView();
   EXPECT_NE(one, two);  // depth 1 arrived
 
-  panel.stepBackButton()->click();
+  panel.controlForTest<QPushButton>("stepBack")->click();
   EXPECT_EQ(panel.frame(), perStep);
   EXPECT_EQ(grabView(), one);
   EXPECT_EQ(panel.statusText(), oneStatus);
@@ -153,8 +152,7 @@ TEST_F(MainWindowTest, 07_StepBackReturnsToThePreviousFrame) {
   EXPECT_EQ(panel.frame(), 0);
 
   // In processing order, the status line tells what that ray did (the stepper's words).
-  panel.orderBox()->setCurrentIndex(panel.orderBox()->findData(int(RevealOrder::Processing)));
-  panel.raysPerStepBox()->setValue(1);
+  panel.setAnimation({RevealOrder::Processing, perStep, 1});
   panel.setFrame(perStep);
   EXPECT_TRUE(panel.statusText().contains(QStringLiteral("camera ray #0 hit 'blue cube'")))
       << panel.statusText().toStdString();
@@ -166,11 +164,11 @@ TEST_F(MainWindowTest, 08_KindFilterChangesWhatIsDrawn) {
   RayTreePanel& panel = traceCube();
   // Exact picture comparisons without the legend: VTK may place its labels a pixel
   // differently from one redraw to the next.
-  panel.legendBox()->setChecked(false);
+  restyle(panel, [](RayTreeStyle& s) { s.showLegend = false; });
   const QImage all = grabView();
   EXPECT_EQ(panel.hiddenRays(), 0);
   EXPECT_FALSE(panel.traceInfoText().contains(QStringLiteral("filters hide")));
-  panel.kindBox(RayKind::Shadow)->click();
+  panel.controlForTest<QCheckBox>("kind-shadow")->click();
   EXPECT_FALSE(m_window->sceneView().rayTreeStyle().filter.kinds[std::size_t(RayKind::Shadow)]);
   const QImage noShadows = grabView();
   EXPECT_NE(all, noShadows);
@@ -182,16 +180,18 @@ TEST_F(MainWindowTest, 08_KindFilterChangesWhatIsDrawn) {
   EXPECT_TRUE(panel.traceInfoText().endsWith(
       QStringLiteral("The filters hide %1 of these rays.").arg(shadows)))
       << panel.traceInfoText().toStdString();
-  panel.kindBox(RayKind::Shadow)->click();
+  panel.controlForTest<QCheckBox>("kind-shadow")->click();
   EXPECT_TRUE(m_window->sceneView().rayTreeStyle().filter.kinds[std::size_t(RayKind::Shadow)]);
   EXPECT_EQ(grabView(), all);
   EXPECT_EQ(panel.hiddenRays(), 0);
   EXPECT_FALSE(panel.traceInfoText().contains(QStringLiteral("filters hide")));
 
   // The other controls reach the style too.
-  panel.maxDepthBox()->setValue(0);
-  panel.reachesLightBox()->setChecked(true);
-  panel.normalsBox()->setChecked(true);
+  restyle(panel, [](RayTreeStyle& s) {
+    s.filter.maxDepth = 0;
+    s.filter.onlyReachingLight = true;
+    s.showNormals = true;
+  });
   const RayTreeStyle style = m_window->sceneView().rayTreeStyle();
   EXPECT_EQ(style.filter.maxDepth, 0);
   EXPECT_TRUE(style.filter.onlyReachingLight);
@@ -661,9 +661,8 @@ TEST_F(MainWindowTest, 14c_SmoothAMeshAndSetItsCreaseAngle) {
 TEST_F(MainWindowTest, 15_Simulate2x2DrawsFourTrees) {
   RayTreePanel& panel = *m_window->rayTreePanel();
   panel.setAlgorithm(Algorithm::PathTracing);
-  panel.acrossBox()->setValue(2);
-  panel.downBox()->setValue(2);
-  panel.simulateButton()->click();
+  panel.setGrid(2, 2);
+  panel.controlForTest<QPushButton>("simulate")->click();
   settle();
   ASSERT_TRUE(panel.showsGrid());
   const Scene& scene = m_window->document().scene();
@@ -699,22 +698,21 @@ TEST_F(MainWindowTest, 15_Simulate2x2DrawsFourTrees) {
 TEST_F(MainWindowTest, 15b_SimulateFromAnotherColouring) {
   RayTreePanel& panel = *m_window->rayTreePanel();
   panel.setAlgorithm(Algorithm::Whitted);
-  panel.colouringBox()->setCurrentIndex(panel.colouringBox()->findData(QStringLiteral("kind")));
-  panel.acrossBox()->setValue(2);
-  panel.downBox()->setValue(2);
-  panel.simulateButton()->click();
+  restyle(panel, [](RayTreeStyle& s) { s.colouring = RayColouring::Kind; });
+  panel.setGrid(2, 2);
+  panel.controlForTest<QPushButton>("simulate")->click();
   settle();
   ASSERT_TRUE(panel.showsGrid());
-  EXPECT_EQ(panel.colouringBox()->currentData().toString(), QStringLiteral("energy"));
+  EXPECT_EQ(panel.treeStyle().colouring, RayColouring::Energy);
   EXPECT_EQ(m_window->sceneView().rayTreeStyle().colouring, RayColouring::Energy);
   int roots = 0;
   for (const RaySegment& s : m_window->sceneView().rayTree().segments)
     roots += s.kind == RayKind::Camera;
   EXPECT_EQ(roots, 4);
   // Again from "depth", over the grid now shown.
-  panel.colouringBox()->setCurrentIndex(panel.colouringBox()->findData(QStringLiteral("depth")));
-  panel.acrossBox()->setValue(3);
-  panel.simulateButton()->click();
+  restyle(panel, [](RayTreeStyle& s) { s.colouring = RayColouring::Depth; });
+  panel.setGrid(3, 2);
+  panel.controlForTest<QPushButton>("simulate")->click();
   settle();
   roots = 0;
   for (const RaySegment& s : m_window->sceneView().rayTree().segments)
@@ -778,13 +776,14 @@ TEST_F(MainWindowTest, 18_TreesAreRetracedAfterAnEditOrAnotherAlgorithm) {
   const auto [x, y] = pixelOn(scene, "red sphere");
   panel.setAlgorithm(Algorithm::Whitted);
   panel.setPixel(x, y);
-  panel.traceButton()->click();
+  panel.controlForTest<QPushButton>("trace")->click();
   settle();
   EXPECT_GT(panel.tree().segments.size(), 3u);
   // Ray casting chosen: the tree shown is ray casting's, the camera ray alone (the
   // sphere has no local shading under ray casting).
-  panel.algorithmBox()->setCurrentIndex(panel.algorithmBox()->findData(QStringLiteral("raycast")));
-  emit panel.algorithmBox()->activated(panel.algorithmBox()->currentIndex());
+  auto* algorithms = panel.controlForTest<QComboBox>("algorithm");
+  algorithms->setCurrentIndex(algorithms->findData(QStringLiteral("raycast")));
+  emit algorithms->activated(algorithms->currentIndex());
   settle();
   EXPECT_EQ(panel.algorithm(), Algorithm::RayCasting);
   EXPECT_EQ(panel.tree().segments.size(), 1u);
@@ -942,6 +941,19 @@ TEST_F(MainWindowTest, 22_ActionsOnTheSelectionAreEnabledOnlyWithOne) {
   EXPECT_EQ(m_window->document().scene().objects.size(), objects - 1) << "Del deletes it";
   EXPECT_EQ(m_window->selectedObject(), -1);
   EXPECT_FALSE(remove->isEnabled()) << "nothing selected after the delete";
+}
+
+// Issue 33 item 2: opening a scene file starts with nothing selected. The old selection's
+// row number named another object of the new scene (outlined, and Del would delete it).
+TEST_F(MainWindowTest, 23_OpeningASceneFileClearsTheSelection) {
+  m_window->selectObject(0);
+  ASSERT_EQ(m_window->selectedObject(), 0);
+  const QString cornell = QString::fromLatin1(RAYLAB_SOURCE_DIR) + "/lessons/scenes/cornell.json";
+  ASSERT_TRUE(m_window->openFile(cornell, false));
+  settle();
+  EXPECT_EQ(m_window->selectedObject(), -1);
+  EXPECT_EQ(m_window->sceneView().highlighted(), -1);
+  EXPECT_EQ(m_window->objectList()->currentRow(), -1);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <map>
 
 namespace raylab::app {
 namespace {
@@ -153,11 +154,13 @@ TEST_F(WindowLessonTest, 06_InspectorAndImageSteps) {
   const int inspector =
       firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Inspector; });
   panel.showStep(inspector);
+  settle();  // the step's tree is traced off the UI thread
   EXPECT_EQ(m_window->rayTreePanel()->selectedSegment(),
             lesson.steps[std::size_t(inspector)].selectRay.value_or(0));
   const int image =
       firstStep(lesson, [](const LessonStep& st) { return st.view == LessonView::Image; });
   panel.showStep(image);
+  settle();
   RenderPanel& render = *m_window->renderPanel();
   EXPECT_TRUE(m_window->imageTabs()->isVisible());
   EXPECT_EQ(render.algorithm(), lesson.steps[std::size_t(image)].algorithm);
@@ -186,7 +189,7 @@ TEST_F(WindowLessonTest, 08_BundleAllHitsAndSamplesSteps) {
   for (const RaySegment& s : rays.tree().segments) cameraRays += s.kind == RayKind::Camera;
   EXPECT_EQ(cameraRays, b.bundle);
   EXPECT_EQ(rays.tree().segments.size(), expected.combined.segments.size());
-  EXPECT_EQ(rays.bundleBox()->value(), b.bundle);
+  EXPECT_EQ(rays.viewState().bundle, b.bundle);
 
   const QString two =
       QStringLiteral(RAYLAB_SOURCE_DIR "/lessons/02-intersections-and-exactness.json");
@@ -195,8 +198,8 @@ TEST_F(WindowLessonTest, 08_BundleAllHitsAndSamplesSteps) {
   const int hits = firstStep(lesson2, [](const LessonStep& st) { return st.allHits; });
   m_window->lessonPanel()->showStep(hits);
   settle();
-  EXPECT_EQ(rays.bundleBox()->value(), 1);  // the next lesson's steps draw one sample
-  EXPECT_TRUE(rays.allHitsBox()->isChecked());
+  EXPECT_EQ(rays.viewState().bundle, 1);  // the next lesson's steps draw one sample
+  EXPECT_TRUE(rays.viewState().allHits);
   EXPECT_GE(m_window->sceneView().crossingCount(), 2);
   EXPECT_TRUE(rays.crossingsText().contains(QStringLiteral("enters 'sphere'")))
       << rays.crossingsText().toStdString();
@@ -284,6 +287,7 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
   const int visits =
       firstStep(lesson, [](const LessonStep& st) { return st.bvh && st.bvh->visits && st.pixelX; });
   panel.showStep(visits);
+  settle();  // the step's tree is traced off the UI thread, then the boxes drawn
   const vis::BvhSummary& summary = m_window->sceneView().bvhSummary();
   EXPECT_GT(summary.entered, 0);
   EXPECT_EQ(summary.boxes, summary.entered + summary.missed + summary.culled);
@@ -297,12 +301,14 @@ TEST_F(WindowLessonTest, 09_BvhStepsDrawTheBoxesAndSayWhat) {
 
   const int plain = firstStep(lesson, [](const LessonStep& st) { return !st.bvh; });
   panel.showStep(plain);
+  settle();
   EXPECT_EQ(m_window->sceneView().bvhSummary().boxes, 0);
 
   const int bruteForce = firstStep(lesson, [](const LessonStep& st) {
     return st.view == LessonView::Image && !st.settings().acceleration;
   });
   panel.showStep(bruteForce);
+  settle();
   EXPECT_THAT(panel.viewCaption().toStdString(), ::testing::HasSubstr("Brute force"));
   RenderPanel& render = *m_window->renderPanel();
   const auto start = std::chrono::steady_clock::now();
@@ -585,9 +591,32 @@ void answerRight(LessonPanel& panel, const LessonStep& step) {
     panel.answerNumber(step.question->answer);
 }
 
+/// The handout of `file` drawn by `raylab lesson --out` at `size` (one sample of its images
+/// and comparisons: only the 3D views are compared), into a folder named after both; the
+/// folder, or empty when the command failed.
+QString handoutAt(const QString& file, const char* prefix, const QSize& size) {
+  const QString out = QDir::temp().filePath(QStringLiteral("raylab-stager-%1%2x%3")
+                                                .arg(QLatin1String(prefix))
+                                                .arg(size.width())
+                                                .arg(size.height()));
+  QDir(out).removeRecursively();
+  QProcess cli;
+  cli.start(QStringLiteral(RAYLAB_EXE),
+            {QStringLiteral("lesson"), file, QStringLiteral("--out"), out, QStringLiteral("--size"),
+             QStringLiteral("%1x%2").arg(size.width()).arg(size.height()),
+             QStringLiteral("--max-spp"), QStringLiteral("1")});
+  if (!cli.waitForFinished(300000) || cli.exitCode() != 0) {
+    ADD_FAILURE() << cli.readAllStandardError().toStdString();
+    return {};
+  }
+  return out;
+}
+
 /// Issue 31: one lesson stager. Every 3D step of the lessons named by `prefixes`, shown by
 /// the window's lesson player, looks as `raylab lesson --out` draws it at the same size:
-/// the same scene, tree, reveal, selection, overlays and view camera.
+/// the same scene, tree, reveal, selection, overlays and view camera. (The lesson player
+/// gives each step's 3D view the room its panes leave, so the handout is drawn at each size
+/// the window's view takes.)
 void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grabView,
                          std::initializer_list<const char*> prefixes) {
   for (const char* prefix : prefixes) {
@@ -595,37 +624,24 @@ void compareWithHandouts(MainWindow& window, const std::function<QImage()>& grab
     ASSERT_TRUE(window.openLesson(file));
     LessonPanel& panel = *window.lessonPanel();
     const Lesson lesson = LessonIO::load(file.toStdString());
-    // The size of the 3D view on a 3D step (an image step shares the centre with the tabs).
-    std::size_t firstView = 0;
-    while (
-        firstView + 1 < lesson.steps.size() &&
-        !vis::shows3D(vis::stepViewState(lesson.steps[firstView], false, Language::English).layout))
-      ++firstView;
-    panel.showStep(int(firstView));
-    const QImage first = grabView();
-    // The handout's pictures at the size of the window's 3D view (one sample of its
-    // images and comparisons: only the 3D views are compared).
-    const QString out = QDir::temp().filePath(QStringLiteral("raylab-stager-") + prefix);
-    const QString seenDir = out + QStringLiteral("window");
-    QDir(out).removeRecursively();
+    const QString seenDir =
+        QDir::temp().filePath(QStringLiteral("raylab-stager-") + prefix) + QStringLiteral("window");
     QDir(seenDir).removeRecursively();
     QDir().mkpath(seenDir);
-    QProcess cli;
-    cli.start(
-        QStringLiteral(RAYLAB_EXE),
-        {QStringLiteral("lesson"), file, QStringLiteral("--out"), out, QStringLiteral("--size"),
-         QStringLiteral("%1x%2").arg(first.width()).arg(first.height()),
-         QStringLiteral("--max-spp"), QStringLiteral("1")});
-    ASSERT_TRUE(cli.waitForFinished(300000));
-    ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+    std::map<std::pair<int, int>, QString> handouts;  // by picture size
     int compared = 0;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
       const LessonStep& step = lesson.steps[i];
       panel.showStep(int(i));
+      WindowTest::settle();  // the step's tree is traced off the UI thread
       const vis::TreeViewState state = vis::stepViewState(step, false, Language::English);
       if (!vis::shows3D(state.layout) || !step.needs.empty()) continue;
       answerRight(panel, step);
+      WindowTest::settle();
       const QImage shown = grabView();
+      QString& out = handouts[{shown.width(), shown.height()}];
+      if (out.isEmpty()) out = handoutAt(file, prefix, shown.size());
+      ASSERT_FALSE(out.isEmpty());
       const QString png = out + QStringLiteral("/step-%1.png").arg(int(i) + 1, 2, 10, QChar('0'));
       const SrgbImage handout = vis::readPng(png.toStdString());
       const PictureDifference d = difference(shown, handout);
@@ -713,7 +729,7 @@ TEST_F(WindowLessonTest, 23_TheLanguageSwitchKeepsTheLessonAndItsStep) {
 
 TEST_F(WindowLessonTest, 24_TheLanguageSwitchKeepsTheTreeItsColoursAndFrame) {
   RayTreePanel& rays = traceCube();
-  rays.colouringBox()->setCurrentIndex(rays.colouringBox()->findData(QStringLiteral("kind")));
+  restyle(rays, [](vis::RayTreeStyle& s) { s.colouring = vis::RayColouring::Kind; });
   rays.setFrame(rays.frameCount() / 2);
   const int frame = rays.frame();
   const std::size_t segments = rays.tree().segments.size();
@@ -723,8 +739,57 @@ TEST_F(WindowLessonTest, 24_TheLanguageSwitchKeepsTheTreeItsColoursAndFrame) {
   RayTreePanel& after = *m_window->rayTreePanel();
   EXPECT_EQ(after.tree().segments.size(), segments);
   EXPECT_EQ(after.frame(), frame);
-  EXPECT_EQ(after.colouringBox()->currentData().toString(), QStringLiteral("kind"));
+  EXPECT_EQ(after.treeStyle().colouring, vis::RayColouring::Kind);
   EXPECT_EQ(after.algorithm(), Algorithm::Whitted);
+}
+
+// Issue 33 item 5: the language switch keeps an answered prediction answered: the verdict
+// and explanation (in the new language), and the tree the prediction was about.
+TEST_F(WindowLessonTest, 24b_TheLanguageSwitchKeepsAnAnsweredPrediction) {
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) {
+    return st.question && st.question->predict && !st.tryValue &&
+           st.question->type == LessonQuestion::Type::Number && st.view == LessonView::Scene;
+  });
+  m_window->lessonPanel()->showStep(s);
+  settle();
+  const LessonStep& step = lesson.steps[std::size_t(s)];
+  ASSERT_TRUE(m_window->lessonPanel()->answerNumber(step.question->answer));
+  settle();
+  const std::size_t rays = m_window->rayTreePanel()->tree().segments.size();
+  ASSERT_GT(rays, 0U);
+  m_window.reset(rebuildWindow(*m_window).release());
+  settle();
+  LessonPanel& panel = *m_window->lessonPanel();
+  ASSERT_EQ(panel.step(), s);
+  EXPECT_TRUE(panel.answerFinal());
+  EXPECT_FALSE(panel.waitingForPrediction());
+  EXPECT_TRUE(panel.verdict().startsWith(QStringLiteral("✓"))) << panel.verdict().toStdString();
+  EXPECT_FALSE(panel.explanation().isEmpty());
+  EXPECT_EQ(m_window->rayTreePanel()->tree().segments.size(), rays) << "the tree is hidden again";
+}
+
+// Issue 33 item 5: a lesson's ray colouring is not saved as the user's preference: the
+// colouring chosen before the lesson is, and the next window starts with it.
+TEST_F(WindowLessonTest, 24c_ALessonsColouringIsNotSavedAsThePreference) {
+  RayTreePanel& rays = *m_window->rayTreePanel();
+  restyle(rays, [](vis::RayTreeStyle& s) { s.colouring = vis::RayColouring::Depth; });
+  const QString file = lessonFile("04-");
+  ASSERT_TRUE(m_window->openLesson(file));
+  const Lesson lesson = LessonIO::load(file.toStdString());
+  const int s = firstStep(lesson, [](const LessonStep& st) {
+    return st.colouring == LessonColouring::Kind && !(st.question && st.question->predict);
+  });
+  m_window->lessonPanel()->showStep(s);
+  settle();
+  ASSERT_EQ(rays.treeStyle().colouring, vis::RayColouring::Kind) << "the lesson's colouring";
+  m_window->saveLayout();
+  EXPECT_EQ(raylabSettings().value(QStringLiteral("rayColouring")).toString(),
+            QStringLiteral("depth"));
+  MainWindow next(defaultScene());
+  EXPECT_EQ(next.rayTreePanel()->treeStyle().colouring, vis::RayColouring::Depth);
 }
 
 // Issue 33: the selection does not carry over to a lesson's scene by row number (the 7th

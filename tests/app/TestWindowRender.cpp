@@ -24,6 +24,7 @@
 #include <QProgressBar>
 #include <QRegularExpression>
 #include <QScrollArea>
+#include <QSignalSpy>
 #include <QSplitter>
 #include <QTabWidget>
 
@@ -174,8 +175,8 @@ TEST_F(WindowRenderTest, 05_ClickingAPixelTracesTheCliTree) {
   settle();
   EXPECT_EQ(view->markedPixel(), QPoint(90, 100));
   RayTreePanel& rays = *m_window->rayTreePanel();
-  EXPECT_EQ(rays.pixelXBox()->value(), 90);
-  EXPECT_EQ(rays.pixelYBox()->value(), 100);
+  EXPECT_EQ(rays.viewState().pixelX, 90);
+  EXPECT_EQ(rays.viewState().pixelY, 100);
   EXPECT_EQ(rays.algorithm(), Algorithm::Whitted);
   // The tree equals `raylab trace 90 100 --algorithm whitted`'s (core tracePixel).
   const Scene scene = defaultScene();
@@ -188,6 +189,7 @@ TEST_F(WindowRenderTest, 05_ClickingAPixelTracesTheCliTree) {
   // Tracing another pixel in the ray-tree panel moves the mark.
   rays.setPixel(10, 20);
   rays.trace();
+  settle();  // the trace runs off the UI thread
   EXPECT_EQ(view->markedPixel(), QPoint(10, 20));
 }
 
@@ -263,9 +265,11 @@ TEST_F(WindowRenderTest, 08_ABushyTraceIsCancelledAndTheWindowStaysAlive) {
   rays.setAlgorithm(Algorithm::Distributed);
   const Scene& scene = m_window->document().scene();
   rays.setPixel(scene.camera.width / 2, scene.camera.height / 2);
-  // The event loop runs while it traces: a timer fires, and its first tick cancels it. (Not
-  // a fixed delay: the whole tree takes about 150 ms here, and a cancel at 150 ms came after
-  // it one run in two. The first tick, 10 ms in, leaves the worker time to trace some rays.)
+  // trace() returns at once: the tree is traced off the UI thread (a BackgroundTask) while
+  // the window runs; a timer's first tick, 10 ms in, cancels it. (The whole tree takes about
+  // 150 ms here; 10 ms leaves the worker time to trace some rays.) Its end, a queued call,
+  // shows the rays traced so far and emits traceFinished.
+  QSignalSpy finished(&rays, &RayTreePanel::traceFinished);
   int ticks = 0;
   QTimer ticker;
   QObject::connect(&ticker, &QTimer::timeout, [&ticks, &rays] {
@@ -273,9 +277,12 @@ TEST_F(WindowRenderTest, 08_ABushyTraceIsCancelledAndTheWindowStaysAlive) {
   });
   ticker.start(10);
   rays.trace();
+  EXPECT_TRUE(rays.tracing()) << "trace() waited for the tree";
+  EXPECT_EQ(ticks, 0);
+  ASSERT_TRUE(finished.count() == 1 || finished.wait(60000)) << "the trace never ended";
   ticker.stop();
   EXPECT_FALSE(rays.tracing());
-  // The cancel itself came from a timer while trace() ran; the ticker ran too.
+  EXPECT_EQ(finished.count(), 1);
   EXPECT_GE(ticks, 1) << "the window did not run while tracing";
   EXPECT_TRUE(rays.tree().truncated) << "the trace was not cancelled";
   EXPECT_FALSE(rays.tree().segments.empty()) << "the rays traced so far are shown";
@@ -283,6 +290,7 @@ TEST_F(WindowRenderTest, 08_ABushyTraceIsCancelledAndTheWindowStaysAlive) {
   // And it traces again afterwards.
   rays.setAlgorithm(Algorithm::RayCasting);
   rays.trace();
+  ASSERT_TRUE(finished.wait(60000));
   EXPECT_FALSE(rays.tree().truncated);
 }
 

@@ -86,11 +86,25 @@ class WindowTest : public ::testing::Test {
     settle();
   }
 
+ public:
   /// Lets Qt show, lay out and paint the window.
   static void settle() {
     for (int i = 0; i < 20; ++i) QApplication::processEvents();
+    // A trace runs off the UI thread (a BackgroundTask): wait until every ray-tree panel's
+    // has ended and its tree is shown (at most a minute), then let what it started run.
+    const auto tracing = [] {
+      for (QWidget* top : QApplication::topLevelWidgets())
+        for (const RayTreePanel* panel : top->findChildren<RayTreePanel*>())
+          if (panel->tracing()) return true;
+      return false;
+    };
+    QElapsedTimer clock;
+    clock.start();
+    while (tracing() && clock.elapsed() < 60000) QTest::qWait(2);
+    for (int i = 0; i < 20; ++i) QApplication::processEvents();
   }
 
+ protected:
   /// A left-button drag across the 3D view, in widget pixels.
   void drag(const QPoint& from, const QPoint& to) {
     QWidget* w = m_window->viewWidget();
@@ -180,9 +194,18 @@ class WindowTest : public ::testing::Test {
     const auto [x, y] = pixelOn(defaultScene(), "blue cube");
     panel.setAlgorithm(Algorithm::Whitted);
     panel.setPixel(x, y);
-    panel.traceButton()->click();
+    panel.controlForTest<QPushButton>("trace")->click();
     settle();
     return panel;
+  }
+
+  /// Changes the panel's style (its part of the view state), as a lesson step or the
+  /// language switch does: `change` edits the style the panel draws with now.
+  template <typename Change>
+  static void restyle(RayTreePanel& panel, Change change) {
+    vis::RayTreeStyle style = panel.treeStyle();
+    change(style);
+    panel.setTreeStyle(style);
   }
 
   static inline QApplication* s_app = nullptr;

@@ -15,6 +15,7 @@ std::unique_ptr<MainWindow> rebuildWindow(MainWindow& window) {
   const vis::TreeViewState rays = window.rayTreePanel()->viewState();
   const std::shared_ptr<const Lesson> lesson = window.lessonPanel()->sharedLesson();
   const int step = window.lessonPanel()->step();
+  const LessonPanel::AnswerState answer = window.lessonPanel()->answerState();
   const int selected = window.selectedObject();
   const bool presenting = window.presentationMode();
   const bool rendered = window.renderPanel()->hasImage();
@@ -27,13 +28,14 @@ std::unique_ptr<MainWindow> rebuildWindow(MainWindow& window) {
   auto next = std::make_unique<MainWindow>(window.takeDocument());
   if (lesson) {
     next->playLesson(lesson, step);
+    next->lessonPanel()->restoreAnswer(answer);  // an answered prediction stays answered
   } else {
     next->selectObject(selected);
     RayTreePanel& panel = *next->rayTreePanel();
     panel.applyState(rays);
     if (rays.traced) {
-      panel.trace();
-      panel.showState(rays);
+      RayTreePanel* shown = &panel;
+      panel.trace([shown, rays] { shown->showState(rays); });  // once the tree is in
     }
   }
   next->renderPanel()->setAlgorithm(renderAlgorithm);

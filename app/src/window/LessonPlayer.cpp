@@ -65,6 +65,7 @@ bool MainWindow::openLesson(const QString& path, bool ask) {
 void MainWindow::playLesson(std::shared_ptr<const Lesson> lesson, int step) {
   m_lessonDock->show();
   m_lessonDock->raise();
+  if (!m_lessonPanel->lesson()) m_userColouring = m_rayPanel->treeStyle().colouring;
   m_lessonPanel->setLesson(lesson);  // shows step 1 (stepChanged)
   const int last = int(lesson->steps.size()) - 1;
   if (step > 0) m_lessonPanel->showStep(std::min(step, last));
@@ -84,11 +85,12 @@ void MainWindow::showLessonStep(int index) {
   // (revealLessonStep). A step whose value the student changes shows its scene as it is.
   const vis::TreeViewState state =
       vis::stepViewState(step, m_lessonPanel->waitingForPrediction(), lessonLanguage());
-  showLessonResult(step, state);
-  m_lessonPanel->setBvhView(state.bvh, m_view->bvhSummary());
-  if (state.layout != vis::ViewLayout::Inspector || state.hidden) m_lessonPanel->setRayText({});
+  showLessonResult(step, state, [this, state] {
+    m_lessonPanel->setBvhView(state.bvh, m_view->bvhSummary());
+    if (state.layout != vis::ViewLayout::Inspector || state.hidden) m_lessonPanel->setRayText({});
+    render();
+  });
   m_lessonDock->raise();
-  render();
 }
 
 void MainWindow::revealLessonStep() {
@@ -118,22 +120,35 @@ void MainWindow::tryLessonValue(double value) {
   }
   // The tried scene replaces the step's in the 3D view.
   m_document->adopt(*tried.scene, {});
-  showLessonResult(tried, vis::stepViewState(tried, false, lessonLanguage()));
-  render();
+  showLessonResult(tried, vis::stepViewState(tried, false, lessonLanguage()), [this] { render(); });
 }
 
-void MainWindow::showLessonResult(const LessonStep& step, const vis::TreeViewState& state) {
-  // The ray-tree panel's controls from the state, its trace, its frame and selection.
+void MainWindow::showLessonResult(const LessonStep& step, const vis::TreeViewState& state,
+                                  std::function<void()> then) {
+  // The ray-tree panel's controls from the state, then its trace (off the UI thread); the
+  // rest once the tree is in. Another step shown meanwhile supersedes the trace, and this
+  // step's rest is dropped with it.
   RayTreePanel& rays = *m_rayPanel;
   rays.applyState(state);
+  const auto rest = [this, step, state, then = std::move(then)] {
+    drawLessonResult(step, state);
+    if (then) then();
+  };
   if (state.traced) {
-    rays.trace();
     if (state.layout == vis::ViewLayout::Inspector) m_inspector->setExactness(state.exactness);
-    rays.showState(state);  // the lesson panel shows the inspector's ray
+    rays.trace([this, state, rest] {
+      m_rayPanel->showState(state);  // its frame and selection: the inspector's ray
+      rest();
+    });
   } else {
     rays.setRootRay(std::nullopt);
     rays.clearTrace();
+    rest();
   }
+}
+
+void MainWindow::drawLessonResult(const LessonStep& step, const vis::TreeViewState& state) {
+  RayTreePanel& rays = *m_rayPanel;
   // The 3D view as the handout draws it, with the panel's tree and its style (which adds
   // the teacher's presentation line width and toggles).
   vis::TreeViewState shown = state;

@@ -112,7 +112,7 @@ void MainWindow::buildDocks() {
                        Qt::RightDockWidgetArea);
   // The inspector, in a tab beside the ray-tree panel (raised when a ray is chosen): the 3D
   // view keeps the whole height.
-  m_inspector = new InspectorPanel(*m_view);
+  m_inspector = new InspectorPanel(*m_document, *m_rayPanel);
   m_inspectorDock = addDock(tr("Ray inspector"), QStringLiteral("inspector"), m_inspector,
                             Qt::RightDockWidgetArea);
   tabifyDockWidget(m_raysDock, m_inspectorDock);
@@ -177,7 +177,10 @@ void MainWindow::saveLayout() {
   s.setValue(QStringLiteral("algorithm"), QString::fromLatin1(toString(m_rayPanel->algorithm())));
   s.setValue(QStringLiteral("renderAlgorithm"),
              QString::fromLatin1(toString(m_renderPanel->algorithm())));
-  s.setValue(QStringLiteral("rayColouring"), m_rayPanel->colouringBox()->currentData());
+  // The user's colouring: a lesson's own is never saved as the preference.
+  const vis::RayColouring colouring =
+      m_lessonPanel->lesson() ? m_userColouring : m_rayPanel->treeStyle().colouring;
+  s.setValue(QStringLiteral("rayColouring"), QString::fromLatin1(vis::toString(colouring)));
 }
 
 void MainWindow::restoreLayout() {
@@ -193,9 +196,12 @@ void MainWindow::restoreLayout() {
   if (const auto a =
           parseAlgorithm(s.value(QStringLiteral("renderAlgorithm")).toString().toStdString()))
     m_renderPanel->setAlgorithm(*a);
-  const int colouring =
-      m_rayPanel->colouringBox()->findData(s.value(QStringLiteral("rayColouring")));
-  if (colouring >= 0) m_rayPanel->colouringBox()->setCurrentIndex(colouring);
+  if (const auto colouring =
+          vis::parseColouring(s.value(QStringLiteral("rayColouring")).toString().toStdString())) {
+    vis::RayTreeStyle style = m_rayPanel->treeStyle();
+    style.colouring = *colouring;
+    m_rayPanel->setTreeStyle(style);
+  }
 }
 
 void MainWindow::showImageTab(QWidget* tab) {
