@@ -17,16 +17,10 @@ set(max_file_lines 600)
 set(allowed_functions
   # In files of issue 31's helper "splits" (merged; these are still over: to cut next).
   core/src/scene/SceneReader.cpp:shape
-  # In files of issue 31's helper "words" (merged; these are still over: to cut next).
-  app/src/TraceCommand.cpp:runTrace
-  vis/src/ConvergencePlot.cpp:build
-  core/src/integrators/Tracer.cpp:engineStep
   # Being split by issue 31, helper "stager2" (the ray-tree panel bound to TreeViewState).
   app/src/RayTreePanel.cpp:buildTraceGroup
   app/src/RayTreePanel.cpp:buildStyleGroup
   app/src/RayTreePanel.cpp:buildAnimationGroup
-  # In files of issue 31's helper "check2" (merged; still over: to cut next).
-  core/src/io/RayTreeJson.cpp:parse
   # Kept whole: the SIMD kernels of the sphere batch, the SSE2 and AVX forms of one
   # computation side by side, step for step, so that their bits stay Sphere::nearestRoot's
   # (every step one IEEE operation, none fused). A shared template over both lane widths
