@@ -19,13 +19,6 @@ set(allowed_functions
   app/src/RayTreePanel.cpp:buildTraceGroup
   app/src/RayTreePanel.cpp:buildStyleGroup
   app/src/RayTreePanel.cpp:buildAnimationGroup
-  # Kept whole: the SIMD kernels of the sphere batch, the SSE2 and AVX forms of one
-  # computation side by side, step for step, so that their bits stay Sphere::nearestRoot's
-  # (every step one IEEE operation, none fused). A shared template over both lane widths
-  # would put AVX intrinsics in functions not built for AVX, which GCC refuses to inline;
-  # cutting each into pieces passes a dozen registers between them.
-  core/src/scene/SphereBatch.cpp:roundRootsAvx
-  core/src/scene/SphereBatch.cpp:roundRootsSse2
 )
 
 # Files over 600 lines.
