@@ -15,19 +15,6 @@ set(max_file_lines 600)
 
 # Functions over 80 lines, as <file>:<function> (a constructor is named after its class).
 set(allowed_functions
-  # In files of issue 31's helper "words" (merged; these are still over: to cut next).
-  app/src/TraceCommand.cpp:runTrace
-  vis/src/ConvergencePlot.cpp:build
-  core/src/integrators/Tracer.cpp:engineStep
-  # In files of issue 31's helper "check2" (merged; still over: to cut next).
-  core/src/io/RayTreeJson.cpp:parse
-  # Kept whole: the SIMD kernels of the sphere batch, the SSE2 and AVX forms of one
-  # computation side by side, step for step, so that their bits stay Sphere::nearestRoot's
-  # (every step one IEEE operation, none fused). A shared template over both lane widths
-  # would put AVX intrinsics in functions not built for AVX, which GCC refuses to inline;
-  # cutting each into pieces passes a dozen registers between them.
-  core/src/scene/SphereBatch.cpp:roundRootsAvx
-  core/src/scene/SphereBatch.cpp:roundRootsSse2
 )
 
 # Files over 600 lines.

@@ -121,82 +121,70 @@ int runGrid(const TraceOptions& options, const Scene& scene, const RenderSetting
                         " (" + std::to_string(traced.traces.size()) + " pixels)");
 }
 
-int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
-  // Step 1: the scene, the settings and the pixel.
-  RayTreeOptions o = options.tree;  // a copy: --ray may give it a pixel
-  const Scene scene = o.loadScene(topLevelScene);
-  std::optional<Ray> root;
-  if (!options.ray.empty()) {
-    std::string problem;
-    root = chosenRay(options.ray, problem);
-    if (!root) {
-      std::cerr << "raylab trace: " << problem << std::endl;
-      return kExitUsage;
-    }
-    if (!options.grid.empty() || options.bundle > 1) {
-      std::cerr << "raylab trace: --ray traces one ray; --grid and --bundle trace pixels"
-                << std::endl;
-      return kExitUsage;
-    }
-  }
-  if (!options.grid.empty()) {
-    if (o.pixel.first >= 0 || o.pixel.second >= 0) {
-      std::cerr << "raylab trace: --grid and --pixel exclude each other" << std::endl;
-      return kExitUsage;
-    }
-    if (options.frame >= 0) {
-      std::cerr << "raylab trace: --frame needs --pixel (a grid is drawn whole)" << std::endl;
-      return kExitUsage;
-    }
-    return runGrid(options, scene, o.common.settings(scene));
-  }
+/// A usage error of `raylab trace`, printed; the exit code it gives.
+int usageError(const std::string& problem) {
+  std::cerr << "raylab trace: " << problem << std::endl;
+  return kExitUsage;
+}
+
+/// --ray's ray in `root` when it is given; what is wrong with it, or with the options it
+/// is given with, otherwise.
+std::optional<std::string> rayError(const TraceOptions& options, std::optional<Ray>& root) {
+  if (options.ray.empty()) return std::nullopt;
+  std::string problem;
+  root = chosenRay(options.ray, problem);
+  if (!root) return problem;
+  if (!options.grid.empty() || options.bundle > 1)
+    return "--ray traces one ray; --grid and --bundle trace pixels";
+  return std::nullopt;
+}
+
+/// What is wrong with the options given with --grid, if anything.
+std::optional<std::string> gridError(const TraceOptions& options) {
+  if (options.tree.pixel.first >= 0 || options.tree.pixel.second >= 0)
+    return "--grid and --pixel exclude each other";
+  if (options.frame >= 0) return "--frame needs --pixel (a grid is drawn whole)";
+  return std::nullopt;
+}
+
+/// The pixel of one trace in `o`: --pixel's, or (0, 0) for a chosen ray (it takes that
+/// pixel's random numbers); what is wrong with it or with the other options otherwise.
+std::optional<std::string> pixelError(RayTreeOptions& o, bool chosen, const Scene& scene) {
   if (o.pixel.first < 0 && o.pixel.second < 0) {
-    if (!root) {
-      std::cerr << "raylab trace: --pixel X Y (or --grid NxM, or --ray) is required" << std::endl;
-      return kExitUsage;
-    }
-    o.pixel = {0, 0};  // a chosen ray takes pixel (0, 0)'s random numbers
+    if (!chosen) return "--pixel X Y (or --grid NxM, or --ray) is required";
+    o.pixel = {0, 0};
   }
-  if (const auto error = o.usageError(scene)) {
-    std::cerr << "raylab trace: " << *error << std::endl;
-    return kExitUsage;
-  }
-  const RenderSettings settings = o.common.settings(scene);
-  checkOutputs(options);
+  return o.usageError(scene);
+}
 
-  if (options.bundle > 1) {
-    if (options.frame >= 0 || options.allHits) {
-      std::cerr << "raylab trace: --bundle draws its trees whole; --frame and --all-hits need "
-                   "one sample"
-                << std::endl;
-      return kExitUsage;
-    }
-    vis::requireDisplay();  // before the traces: the picture needs it
-    const GridTrace traced =
-        traceBundle(scene, settings, o.pixel.first, o.pixel.second, o.sample, options.bundle);
-    const std::string last = std::to_string(o.sample + int(traced.traces.size()) - 1);
-    return writeTrees(
-        options, scene, settings, traced, "bundle",
-        "{\"pixel\": [" + std::to_string(o.pixel.first) + ", " + std::to_string(o.pixel.second) +
-            "], \"first_sample\": " + std::to_string(o.sample) +
-            ", \"samples\": " + std::to_string(traced.traces.size()) + "}",
-        "pixel (" + std::to_string(o.pixel.first) + ", " + std::to_string(o.pixel.second) +
-            ") samples " + std::to_string(o.sample) + ".." + last);
-  }
+/// `raylab trace --bundle N`: samples sample .. sample + N - 1 of one pixel in one picture,
+/// and one JSON document holding every tree's dump.
+int runBundle(const TraceOptions& options, const RayTreeOptions& o, const Scene& scene,
+              const RenderSettings& settings) {
+  if (options.frame >= 0 || options.allHits)
+    return usageError("--bundle draws its trees whole; --frame and --all-hits need one sample");
+  vis::requireDisplay();  // before the traces: the picture needs it
+  const GridTrace traced =
+      traceBundle(scene, settings, o.pixel.first, o.pixel.second, o.sample, options.bundle);
+  const std::string last = std::to_string(o.sample + int(traced.traces.size()) - 1);
+  return writeTrees(
+      options, scene, settings, traced, "bundle",
+      "{\"pixel\": [" + std::to_string(o.pixel.first) + ", " + std::to_string(o.pixel.second) +
+          "], \"first_sample\": " + std::to_string(o.sample) +
+          ", \"samples\": " + std::to_string(traced.traces.size()) + "}",
+      "pixel (" + std::to_string(o.pixel.first) + ", " + std::to_string(o.pixel.second) +
+          ") samples " + std::to_string(o.sample) + ".." + last);
+}
 
-  // Step 2: trace the sample, recording its tree.
-  const PixelTrace trace =
-      root ? traceRay(scene, settings, *root, o.pixel.first, o.pixel.second, o.sample)
-           : tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
-  const RayTree& tree = trace.tree;
-  if (options.inspect >= int(tree.segments.size())) {
-    std::cerr << "raylab trace: --inspect " << options.inspect << " is not a ray of the tree (its "
-              << "rays are 0.." << tree.segments.size() - 1 << ")" << std::endl;
-    return kExitUsage;
-  }
+/// The 3D view of one tree, drawn in memory, and with --all-hits the text of every surface
+/// the camera ray crosses (marked in the view).
+struct TreePicture {
+  SrgbImage picture;
+  std::string crossings;
+};
 
-  // Step 3: the 3D view with the tree, in memory first (usage errors need no display: they
-  // come before this).
+TreePicture drawTree(const TraceOptions& options, const RayTreeOptions& o, const Scene& scene,
+                     const RayTree& tree) {
   vis::requireDisplay();
   const auto [width, height] = o.pictureSize();
   vis::TreeViewState state = o.viewState();
@@ -211,18 +199,26 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
     crossings = crossingsText(scene, sceneCrossings(scene, ray.origin, ray.direction, ray.time),
                               Language::English);
   }
-  const SrgbImage picture = view->renderOffscreen(width, height);
+  return {view->renderOffscreen(width, height), crossings};
+}
 
-  // Step 4: the dump, then the picture; either both files are written or neither.
-  const std::string json =
-      options.json.empty() ? replaceExtension(o.common.out, ".json") : options.json;
+/// The dump, then the picture; either both files are written or neither.
+void saveTree(const RayTree& tree, const Scene& scene, const RenderSettings& settings,
+              const std::string& json, const SrgbImage& picture, const std::string& out) {
   RayTreeJson::save(tree, scene, settings, json);
   try {
-    vis::writePng(picture, o.common.out);
+    vis::writePng(picture, out);
   } catch (...) {
     std::remove(json.c_str());
     throw;
   }
+}
+
+/// The summary of one trace on standard output: the files, the ray, the path it found, and
+/// what --all-hits and --inspect ask for.
+void printTrace(const TraceOptions& options, const RayTreeOptions& o, const Scene& scene,
+                const RenderSettings& settings, const std::optional<Ray>& root,
+                const PixelTrace& trace, const std::string& json, const std::string& crossings) {
   std::cout << printable(o.common.out) << "\n" << printable(json) << "\n";
   if (root)
     std::cout << "chosen ray from " << toString(root->origin) << " along "
@@ -236,8 +232,44 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   if (options.allHits)
     std::cout << "every surface the camera ray crosses:\n" << printable(crossings);
   if (options.inspect >= 0)
-    std::cout << printable(
-        inspectorText(RayInspector::inspect(scene, tree, options.inspect), Language::English));
+    std::cout << printable(inspectorText(RayInspector::inspect(scene, trace.tree, options.inspect),
+                                         Language::English));
+}
+
+int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
+  // Step 1: the scene, the settings and the pixel (or the grid, or the bundle).
+  RayTreeOptions o = options.tree;  // a copy: --ray may give it a pixel
+  const Scene scene = o.loadScene(topLevelScene);
+  std::optional<Ray> root;
+  if (const auto problem = rayError(options, root)) return usageError(*problem);
+  if (!options.grid.empty()) {
+    if (const auto problem = gridError(options)) return usageError(*problem);
+    return runGrid(options, scene, o.common.settings(scene));
+  }
+  if (const auto problem = pixelError(o, root.has_value(), scene)) return usageError(*problem);
+  const RenderSettings settings = o.common.settings(scene);
+  checkOutputs(options);
+  if (options.bundle > 1) return runBundle(options, o, scene, settings);
+
+  // Step 2: trace the sample, recording its tree.
+  const PixelTrace trace =
+      root ? traceRay(scene, settings, *root, o.pixel.first, o.pixel.second, o.sample)
+           : tracePixel(scene, settings, o.pixel.first, o.pixel.second, o.sample);
+  const RayTree& tree = trace.tree;
+  if (options.inspect >= int(tree.segments.size()))
+    return usageError("--inspect " + std::to_string(options.inspect) +
+                      " is not a ray of the tree (its rays are 0.." +
+                      std::to_string(tree.segments.size() - 1) + ")");
+
+  // Step 3: the 3D view with the tree, in memory first (usage errors need no display: they
+  // come before this).
+  const TreePicture drawn = drawTree(options, o, scene, tree);
+
+  // Step 4: the files, then the summary.
+  const std::string json =
+      options.json.empty() ? replaceExtension(o.common.out, ".json") : options.json;
+  saveTree(tree, scene, settings, json, drawn.picture, o.common.out);
+  printTrace(options, o, scene, settings, root, trace, json, drawn.crossings);
   if (tree.truncated) std::cerr << "raylab: warning: " << printable(tree.message) << std::endl;
   return kExitOk;
 }

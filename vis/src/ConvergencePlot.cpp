@@ -57,6 +57,121 @@ vtkSmartPointer<vtkTable> makeTable(const std::string& label, const std::vector<
   return table;
 }
 
+/// Where a point lies on the horizontal axis: its samples per pixel or its seconds.
+double across(const ConvergencePoint& point, bool samples) {
+  return samples ? double(point.samplesPerPixel) : point.seconds;
+}
+
+/// The extent of the plotted data, grown point by point.
+struct Extent {
+  double xMin = HUGE_VAL, xMax = 0.0, yMin = HUGE_VAL, yMax = 0.0;
+
+  void add(double x, double y) {
+    xMin = std::min(xMin, x);
+    xMax = std::max(xMax, x);
+    yMin = std::min(yMin, y);
+    yMax = std::max(yMax, y);
+  }
+};
+
+/// One algorithm's curve, drawn in its colour, of the points (x, y); its table, to be kept
+/// alive with the plot.
+vtkSmartPointer<vtkTable> addCurve(vtkChartXY* chart, Algorithm algorithm,
+                                   const std::vector<double>& x, const std::vector<double>& y,
+                                   Language language) {
+  auto table = makeTable(algorithmTitle(algorithm, language), x, y);
+  vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+  line->SetInputData(table, 0, 1);
+  const Rgb8 colour = algorithmColour(algorithm);
+  line->SetColor(colour[0], colour[1], colour[2], 255);
+  // Curves can coincide (ray casting and Whitted in a scene without mirrors or glass):
+  // earlier algorithms are drawn wider, with larger markers of another shape, so the
+  // one beneath still shows around the one on top.
+  const int order = static_cast<int>(algorithm);  // 0 = ray casting .. 3 = path
+  line->SetWidth(3.0 + 1.25 * (3 - order));
+  if (auto* points = vtkPlotPoints::SafeDownCast(line)) {
+    static const int kMarkers[4] = {vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+                                    vtkPlotPoints::CIRCLE, vtkPlotPoints::CIRCLE};
+    points->SetMarkerStyle(kMarkers[order]);
+    points->SetMarkerSize(9.0 + 1.5 * (3 - order));
+  }
+  return table;
+}
+
+/// The Monte Carlo guide, error ~ 1 / sqrt(N), from path tracing's first plotted point to
+/// the right end of the data (whose extent it widens downwards); its table, or null when
+/// that point is already the rightmost.
+vtkSmartPointer<vtkTable> addGuide(vtkChartXY* chart, const AlgorithmFigures& path, bool samples,
+                                   Extent& extent) {
+  const ConvergencePoint* first = nullptr;
+  for (const ConvergencePoint& point : path.series)
+    if (across(point, samples) > 0.0 && point.rmse > 0.0) {
+      first = &point;
+      break;
+    }
+  const double x0 = across(*first, samples);
+  if (!(extent.xMax > x0)) return nullptr;
+  std::vector<double> x, y;
+  for (int i = 0; i <= 16; ++i) {
+    const double xi = x0 * std::pow(extent.xMax / x0, i / 16.0);
+    x.push_back(xi);
+    y.push_back(first->rmse * std::sqrt(x0 / xi));
+  }
+  auto table = makeTable(samples ? "1 / sqrt(spp)" : "1 / sqrt(time)", x, y);
+  vtkPlot* guide = chart->AddPlot(vtkChart::LINE);
+  guide->SetInputData(table, 0, 1);
+  guide->SetColor(kGuide[0], kGuide[1], kGuide[2], 255);
+  guide->SetWidth(2.0);
+  guide->GetPen()->SetLineType(vtkPen::DASH_LINE);
+  if (auto* points = vtkPlotPoints::SafeDownCast(guide))
+    points->SetMarkerStyle(vtkPlotPoints::NONE);
+  extent.yMin = std::min(extent.yMin, y.back());
+  return table;
+}
+
+/// Log-log axes a little wider than the data (whole decades when they fit), with their
+/// titles.
+void setAxes(vtkChartXY* chart, bool samples, const Extent& extent, Language language) {
+  vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
+  vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
+  bottom->SetTitle(phrase(samples ? "plot.axis.samples" : "plot.axis.time", language));
+  left->SetTitle(phrase("plot.axis.error", language));
+  for (vtkAxis* axis : {bottom, left}) {
+    axis->SetLogScale(true);
+    axis->SetGridVisible(true);
+  }
+  if (extent.xMax > 0.0) {
+    bottom->SetBehavior(vtkAxis::FIXED);
+    bottom->SetUnscaledRange(extent.xMin / 1.3, extent.xMax * 1.3);
+    left->SetBehavior(vtkAxis::FIXED);
+    left->SetUnscaledRange(extent.yMin / 1.5, extent.yMax * 1.5);
+  }
+}
+
+/// The title (the scene, the picture size, the budget), every text in the language's font,
+/// and the legend at the bottom left.
+void setTitleAndLegend(vtkChartXY* chart, const ComparisonResult& result, Language language) {
+  const LocalText sceneName{result.sceneName,
+                            result.sceneNameZh.empty() ? result.sceneName : result.sceneNameZh};
+  const std::string& name = sceneName.in(language);
+  chart->SetTitle(phrase(
+      name.empty() ? "plot.title" : "plot.title.named", language,
+      {{"scene", name},
+       {"size", std::to_string(result.width) + "x" + std::to_string(result.height)},
+       {"budget",
+        phrase(result.compare.equalTime() ? "plot.budget.equal_time" : "plot.budget.equal_samples",
+               language)}}));
+  useFontFor(chart->GetTitleProperties(), language);
+  for (vtkAxis* axis : {chart->GetAxis(vtkAxis::BOTTOM), chart->GetAxis(vtkAxis::LEFT)}) {
+    useFontFor(axis->GetTitleProperties(), language);
+    useFontFor(axis->GetLabelProperties(), language);
+  }
+  useFontFor(chart->GetLegend()->GetLabelProperties(), language);
+  chart->SetShowLegend(true);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+}
+
 }  // namespace
 
 const char* toString(ConvergenceAxis axis) {
@@ -112,107 +227,29 @@ void ConvergencePlot::build() {
   const bool samples = m_axis == ConvergenceAxis::Samples;
 
   // Step 1: one curve per algorithm, its points where the error can go on a log axis.
-  double xMin = HUGE_VAL, xMax = 0.0, yMin = HUGE_VAL, yMax = 0.0;
+  Extent extent;
   const AlgorithmFigures* path = nullptr;
   for (const AlgorithmFigures& figures : m_result.algorithms) {
     std::vector<double> x, y;
     for (const ConvergencePoint& point : figures.series) {
-      const double across = samples ? double(point.samplesPerPixel) : point.seconds;
-      if (!(across > 0.0) || !(point.rmse > 0.0)) continue;
-      x.push_back(across);
+      if (!(across(point, samples) > 0.0) || !(point.rmse > 0.0)) continue;
+      x.push_back(across(point, samples));
       y.push_back(point.rmse);
-      xMin = std::min(xMin, across);
-      xMax = std::max(xMax, across);
-      yMin = std::min(yMin, point.rmse);
-      yMax = std::max(yMax, point.rmse);
+      extent.add(x.back(), y.back());
     }
     m_impl->counts.push_back(int(x.size()));
     if (x.empty()) continue;
     if (figures.algorithm == Algorithm::PathTracing) path = &figures;
-    auto table = makeTable(algorithmTitle(figures.algorithm, m_language), x, y);
-    vtkPlot* line = chart->AddPlot(vtkChart::LINE);
-    line->SetInputData(table, 0, 1);
-    const Rgb8 colour = algorithmColour(figures.algorithm);
-    line->SetColor(colour[0], colour[1], colour[2], 255);
-    // Curves can coincide (ray casting and Whitted in a scene without mirrors or glass):
-    // earlier algorithms are drawn wider, with larger markers of another shape, so the
-    // one beneath still shows around the one on top.
-    const int order = static_cast<int>(figures.algorithm);  // 0 = ray casting .. 3 = path
-    line->SetWidth(3.0 + 1.25 * (3 - order));
-    if (auto* points = vtkPlotPoints::SafeDownCast(line)) {
-      static const int kMarkers[4] = {vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
-                                      vtkPlotPoints::CIRCLE, vtkPlotPoints::CIRCLE};
-      points->SetMarkerStyle(kMarkers[order]);
-      points->SetMarkerSize(9.0 + 1.5 * (3 - order));
-    }
-    m_impl->tables.push_back(table);
+    m_impl->tables.push_back(addCurve(chart, figures.algorithm, x, y, m_language));
   }
 
   // Step 2: the Monte Carlo guide, error ~ 1 / sqrt(N), through path tracing's first point.
-  if (path != nullptr) {
-    const ConvergencePoint* first = nullptr;
-    for (const ConvergencePoint& point : path->series) {
-      const double across = samples ? double(point.samplesPerPixel) : point.seconds;
-      if (across > 0.0 && point.rmse > 0.0) {
-        first = &point;
-        break;
-      }
-    }
-    const double x0 = samples ? double(first->samplesPerPixel) : first->seconds;
-    if (xMax > x0) {
-      std::vector<double> x, y;
-      for (int i = 0; i <= 16; ++i) {
-        const double xi = x0 * std::pow(xMax / x0, i / 16.0);
-        x.push_back(xi);
-        y.push_back(first->rmse * std::sqrt(x0 / xi));
-      }
-      auto table = makeTable(samples ? "1 / sqrt(spp)" : "1 / sqrt(time)", x, y);
-      vtkPlot* guide = chart->AddPlot(vtkChart::LINE);
-      guide->SetInputData(table, 0, 1);
-      guide->SetColor(kGuide[0], kGuide[1], kGuide[2], 255);
-      guide->SetWidth(2.0);
-      guide->GetPen()->SetLineType(vtkPen::DASH_LINE);
-      if (auto* points = vtkPlotPoints::SafeDownCast(guide))
-        points->SetMarkerStyle(vtkPlotPoints::NONE);
-      m_impl->tables.push_back(table);
-      yMin = std::min(yMin, y.back());
-    }
-  }
+  if (path != nullptr)
+    if (auto table = addGuide(chart, *path, samples, extent)) m_impl->tables.push_back(table);
 
-  // Step 3: log-log axes a little wider than the data (whole decades when they fit).
-  vtkAxis* bottom = chart->GetAxis(vtkAxis::BOTTOM);
-  vtkAxis* left = chart->GetAxis(vtkAxis::LEFT);
-  bottom->SetTitle(phrase(samples ? "plot.axis.samples" : "plot.axis.time", m_language));
-  left->SetTitle(phrase("plot.axis.error", m_language));
-  for (vtkAxis* axis : {bottom, left}) {
-    axis->SetLogScale(true);
-    axis->SetGridVisible(true);
-  }
-  if (xMax > 0.0) {
-    bottom->SetBehavior(vtkAxis::FIXED);
-    bottom->SetUnscaledRange(xMin / 1.3, xMax * 1.3);
-    left->SetBehavior(vtkAxis::FIXED);
-    left->SetUnscaledRange(yMin / 1.5, yMax * 1.5);
-  }
-  const LocalText sceneName{
-      m_result.sceneName, m_result.sceneNameZh.empty() ? m_result.sceneName : m_result.sceneNameZh};
-  const std::string& name = sceneName.in(m_language);
-  chart->SetTitle(
-      phrase(name.empty() ? "plot.title" : "plot.title.named", m_language,
-             {{"scene", name},
-              {"size", std::to_string(m_result.width) + "x" + std::to_string(m_result.height)},
-              {"budget", phrase(m_result.compare.equalTime() ? "plot.budget.equal_time"
-                                                             : "plot.budget.equal_samples",
-                                m_language)}}));
-  useFontFor(chart->GetTitleProperties(), m_language);
-  for (vtkAxis* axis : {bottom, left}) {
-    useFontFor(axis->GetTitleProperties(), m_language);
-    useFontFor(axis->GetLabelProperties(), m_language);
-  }
-  useFontFor(chart->GetLegend()->GetLabelProperties(), m_language);
-  chart->SetShowLegend(true);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::LEFT);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::BOTTOM);
+  // Step 3: the axes, the title and the legend.
+  setAxes(chart, samples, extent, m_language);
+  setTitleAndLegend(chart, m_result, m_language);
 }
 
 void ConvergencePlot::layout(int width, int height) {

@@ -169,6 +169,70 @@ const SceneHit* nearestHit(const Tracer& tracer, const QueuedRay& ray, SceneHit&
   return &found;
 }
 
+/// The engine's pieces are forced inline into engineStep, its hot path: no call or argument
+/// passed through memory between them (callgrind counts slightly fewer instructions per
+/// render than for the step as one function; doc/dev/perf/engine-step-split.md).
+#define RAYLAB_STEP_INLINE inline __attribute__((always_inline))
+
+/// Drops the children the engine never lets in: a non-finite or negative weight (a bug in
+/// the rule), and, by the no-leak rule of smooth surfaces, a direction on one side of the
+/// shading surface and the other of the geometric one (a reflection below the triangle, a
+/// light behind it): the shading normal never lets light through.
+RAYLAB_STEP_INLINE void dropInvalidChildren(const SurfaceInteraction& si,
+                                            std::vector<QueuedRay>& children) {
+  const auto invalid = [](const QueuedRay& c) {
+    const bool valid = isFinite(c.weight) && isNonNegative(c.weight) && isFinite(c.shadowLe);
+    RAYLAB_DCHECK(valid);
+    return !valid;
+  };
+  children.erase(std::remove_if(children.begin(), children.end(), invalid), children.end());
+  const auto leaks = [&si](const QueuedRay& c) { return !si.sidesAgree(c.ray.direction); };
+  children.erase(std::remove_if(children.begin(), children.end(), leaks), children.end());
+}
+
+/// Step 2c: asks the algorithm what the hit spawns into `children` (at a volume's surface,
+/// with the indices of the media on its two sides); sets `emitted`, returns how the ray ends.
+template <bool Nested>
+RAYLAB_STEP_INLINE EndReason spawnAtHit(const Tracer& tracer, const QueuedRay& ray,
+                                        const SceneHit& hit, const MediumStack& inside,
+                                        const MediumCrossing& crossing, Sampler& sampler,
+                                        bool spawns, std::vector<QueuedRay>& children,
+                                        Vec3& emitted) {
+  const Material& plain = tracer.materialOf(hit.object);
+  // A textured material's colour is its texel at the hit: the one lookup every algorithm
+  // shares.
+  const Material& own = plain.texture.active() ? texturedMaterial(plain, hit) : plain;
+  const Material& material = Nested && crossing.real ? nestedMaterial(own, hit, crossing) : own;
+  const HitContext context{
+      tracer.intersector(), tracer.settings(), ray, hit, material, sampler, spawns};
+  const HitDecision decision = tracer.rule().onHit(context, children);
+  emitted = decision.emitted;
+  dropInvalidChildren(hit.si, children);
+  if constexpr (Nested) carryMedia(ray, hit, inside, crossing, children);
+  return !children.empty()                    ? EndReason::Spawned
+         : decision.end == EndReason::Spawned ? EndReason::Absorbed
+                                              : decision.end;
+}
+
+/// Step 4 before the queue: each child's parent and throughput (the parent's times the
+/// child's weight); past the cap on queued rays, no child and the ray `Stopped`.
+RAYLAB_STEP_INLINE void prepareChildren(const QueuedRay& ray, RayCap* cap,
+                                        std::vector<QueuedRay>& children, EndReason& end) {
+  for (QueuedRay& child : children) {
+    child.parent = ray.id;
+    child.throughput = ray.throughput * child.weight;
+  }
+  if (cap && !children.empty()) {
+    if (cap->reached || cap->queued + children.size() > cap->limit) {
+      cap->reached = true;
+      children.clear();
+      end = EndReason::Stopped;
+    } else {
+      cap->queued += children.size();
+    }
+  }
+}
+
 /**
  * The engine, one step: take the first ray of the queue, find where it ends, let the
  * rule spawn children, add the ray's own contribution `throughput * emitted` to the
@@ -180,8 +244,6 @@ template <bool Nested, typename Queue>
 void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
                 std::vector<QueuedRay>& children, SceneHit& found, Vec3& estimate,
                 RayCounts* counts, TreeRecorder* recorder, RayCap* cap) {
-  const SceneIntersector& intersector = tracer.intersector();
-
   // 1. Take the first ray of the queue (by reference: it leaves the queue at the end of
   // the step, before its children join it).
   const QueuedRay& ray = queue.front();
@@ -199,7 +261,7 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
   crossing.real = false;
   if (ray.kind == RayKind::Shadow) {
     // 2a. A shadow ray only asks whether anything blocks its way to the light.
-    const bool blocked = intersector.occluded(ray.ray);
+    const bool blocked = tracer.intersector().occluded(ray.ray);
     end = blocked ? EndReason::Occluded : EndReason::ReachedLight;
     if (!blocked) emitted = ray.shadowLe;
   } else if (!(hit = nearestHit<Nested>(tracer, ray, found, inside, crossing))) {
@@ -207,34 +269,10 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
     end = EndReason::Escaped;
     emitted = tracer.rule().onEscape(ray, tracer.settings());
   } else {
-    // 2c. Ask the algorithm what the hit spawns (at a volume's surface, with the indices
-    // of the media on its two sides).
-    const Material& plain = tracer.materialOf(hit->object);
-    // A textured material's colour is its texel at the hit: the one lookup every algorithm
-    // shares.
-    const Material& own = plain.texture.active() ? texturedMaterial(plain, *hit) : plain;
-    const Material& material = Nested && crossing.real ? nestedMaterial(own, *hit, crossing) : own;
+    // 2c. Ask the algorithm what the hit spawns.
     const bool spawns = !(cap && cap->reached) && !(recorder && recorder->full());
-    const HitContext context{intersector, tracer.settings(), ray, *hit, material, sampler, spawns};
-    const HitDecision decision = tracer.rule().onHit(context, children);
-    emitted = decision.emitted;
-    // A child with a non-finite or negative weight is a bug in the rule: never let it in.
-    const auto invalid = [](const QueuedRay& c) {
-      const bool valid = isFinite(c.weight) && isNonNegative(c.weight) && isFinite(c.shadowLe);
-      RAYLAB_DCHECK(valid);
-      return !valid;
-    };
-    children.erase(std::remove_if(children.begin(), children.end(), invalid), children.end());
-    // The no-leak rule of smooth surfaces: a child whose direction lies on one side of the
-    // shading surface and the other of the geometric one (a reflection below the triangle,
-    // a light behind it) is absorbed: the shading normal never lets light through.
-    const SurfaceInteraction& si = hit->si;
-    const auto leaks = [&si](const QueuedRay& c) { return !si.sidesAgree(c.ray.direction); };
-    children.erase(std::remove_if(children.begin(), children.end(), leaks), children.end());
-    if constexpr (Nested) carryMedia(ray, *hit, inside, crossing, children);
-    end = !children.empty()                    ? EndReason::Spawned
-          : decision.end == EndReason::Spawned ? EndReason::Absorbed
-                                               : decision.end;
+    end =
+        spawnAtHit<Nested>(tracer, ray, *hit, inside, crossing, sampler, spawns, children, emitted);
   }
   // No NaN or Inf leaves the engine.
   RAYLAB_DCHECK(isFinite(emitted));
@@ -244,23 +282,13 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
   estimate += ray.throughput * emitted;
 
   // 4. Queue the children: throughput is the parent's times the child's weight.
-  for (QueuedRay& child : children) {
-    child.parent = ray.id;
-    child.throughput = ray.throughput * child.weight;
-  }
-  if (cap && !children.empty()) {
-    if (cap->reached || cap->queued + children.size() > cap->limit) {
-      cap->reached = true;
-      children.clear();
-      end = EndReason::Stopped;
-    } else {
-      cap->queued += children.size();
-    }
-  }
+  prepareChildren(ray, cap, children, end);
   if (recorder) recorder->recordStep(ray, hit, end, emitted, children, Nested ? inside : ray.media);
   queue.pop_front();  // `ray` is gone from here on
   append(queue, children);
 }
+
+#undef RAYLAB_STEP_INLINE
 
 }  // namespace
 

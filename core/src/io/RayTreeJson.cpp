@@ -116,6 +116,72 @@ void checkStructure(const RayTree& tree, const std::string& origin) {
   }
 }
 
+/// The header of dump `doc` (the version, the pixel and sample, the settings) into `tree`
+/// and `read`.
+void readHeader(const json& doc, const std::string& origin, RayTree& tree,
+                RayTreeJson::Info& read) {
+  using Error = RayTreeJson::Error;
+  read.version = headerInteger<int>(doc, "raylab_ray_tree", origin);
+  if (read.version != RayTreeJson::kVersion)
+    throw Error(origin + ": ray tree format " + std::to_string(read.version) +
+                " is not supported (this RayLab reads " + std::to_string(RayTreeJson::kVersion) +
+                ")");
+  const json& pixel = doc.at("pixel");
+  const auto x = pixel.is_array() && pixel.size() == 2 ? integerOf<int>(pixel[0]) : std::nullopt;
+  const auto y = pixel.is_array() && pixel.size() == 2 ? integerOf<int>(pixel[1]) : std::nullopt;
+  if (!x || !y) throw Error(origin + ": /pixel must be two whole numbers, got " + excerpt(pixel));
+  tree.pixelX = *x;
+  tree.pixelY = *y;
+  tree.sample = headerInteger<int>(doc, "sample", origin);
+  tree.truncated = doc.value("truncated", false);
+  tree.message = doc.value("message", std::string());
+  read.scene = doc.value("scene", std::string());
+  read.algorithm = doc.value("algorithm", std::string());
+  if (doc.contains("seed")) read.seed = headerInteger<std::uint64_t>(doc, "seed", origin);
+  const auto estimate = doc.value("estimate", std::array<double, 3>{0.0, 0.0, 0.0});
+  read.estimate = Vec3(estimate[0], estimate[1], estimate[2]);
+}
+
+/// Segment `i` of the dump, the object `j`; its links are checked later, with the others'.
+RaySegment readSegment(const json& j, std::size_t i, const std::string& origin) {
+  using Error = RayTreeJson::Error;
+  RaySegment s;
+  s.id = field<int>(j, "id", i, origin);
+  s.parent = field<int>(j, "parent", i, origin);
+  s.firstChild = field<int>(j, "first_child", i, origin);
+  s.childCount = field<int>(j, "child_count", i, origin);
+  const auto kind = field<std::string>(j, "kind", i, origin);
+  int k = 0;
+  while (k < kRayKindCount && kind != toString(RayKind(k))) ++k;
+  if (k == kRayKindCount)
+    throw Error(origin + ": /segments/" + std::to_string(i) + "/kind: unknown kind '" + kind + "'");
+  s.kind = RayKind(k);
+  s.depth = field<int>(j, "depth", i, origin);
+  s.origin = vecField(j, "origin", i, origin);
+  s.direction = vecField(j, "direction", i, origin);
+  s.time = field<double>(j, "time", i, origin);
+  s.hit = field<bool>(j, "hit", i, origin);
+  s.endPoint = vecField(j, "end_point", i, origin);
+  s.lightPoint = vecField(j, "light_point", i, origin);
+  s.object = field<int>(j, "object", i, origin);
+  if (j.contains("light_object")) s.lightObject = field<int>(j, "light_object", i, origin);
+  if (j.contains("point_light")) s.pointLight = field<int>(j, "point_light", i, origin);
+  s.normal = vecField(j, "normal", i, origin);
+  if (j.contains("shading_normal")) s.shadingNormal = vecField(j, "shading_normal", i, origin);
+  s.weight = vecField(j, "weight", i, origin);
+  s.pdf = field<double>(j, "pdf", i, origin);
+  s.throughput = vecField(j, "throughput", i, origin);
+  s.emitted = vecField(j, "emitted", i, origin);
+  s.radiance = vecField(j, "radiance", i, origin);
+  const auto reason = field<std::string>(j, "end_reason", i, origin);
+  const std::optional<EndReason> known = endReasonFromJson(reason);
+  if (!known)
+    throw Error(origin + ": /segments/" + std::to_string(i) + "/end_reason: unknown '" + reason +
+                "'");
+  s.endReason = *known;
+  return s;
+}
+
 }  // namespace
 
 const char* RayTreeJson::endReasonName(EndReason reason) { return words(reason).json; }
@@ -198,24 +264,7 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
   RayTree tree;
   Info read;
   try {
-    read.version = headerInteger<int>(doc, "raylab_ray_tree", origin);
-    if (read.version != kVersion)
-      throw Error(origin + ": ray tree format " + std::to_string(read.version) +
-                  " is not supported (this RayLab reads " + std::to_string(kVersion) + ")");
-    const json& pixel = doc.at("pixel");
-    const auto x = pixel.is_array() && pixel.size() == 2 ? integerOf<int>(pixel[0]) : std::nullopt;
-    const auto y = pixel.is_array() && pixel.size() == 2 ? integerOf<int>(pixel[1]) : std::nullopt;
-    if (!x || !y) throw Error(origin + ": /pixel must be two whole numbers, got " + excerpt(pixel));
-    tree.pixelX = *x;
-    tree.pixelY = *y;
-    tree.sample = headerInteger<int>(doc, "sample", origin);
-    tree.truncated = doc.value("truncated", false);
-    tree.message = doc.value("message", std::string());
-    read.scene = doc.value("scene", std::string());
-    read.algorithm = doc.value("algorithm", std::string());
-    if (doc.contains("seed")) read.seed = headerInteger<std::uint64_t>(doc, "seed", origin);
-    const auto estimate = doc.value("estimate", std::array<double, 3>{0.0, 0.0, 0.0});
-    read.estimate = Vec3(estimate[0], estimate[1], estimate[2]);
+    readHeader(doc, origin, tree, read);
   } catch (const json::exception& e) {
     throw Error(origin + ": bad ray tree header (" + e.what() + ")");
   }
@@ -225,41 +274,7 @@ RayTree RayTreeJson::parse(const std::string& text, const std::string& origin, I
   tree.segments.resize(segments->size());
   for (std::size_t i = 0; i < segments->size(); ++i) {
     const json& j = (*segments)[i];
-    RaySegment& s = tree.segments[i];
-    s.id = field<int>(j, "id", i, origin);
-    s.parent = field<int>(j, "parent", i, origin);
-    s.firstChild = field<int>(j, "first_child", i, origin);
-    s.childCount = field<int>(j, "child_count", i, origin);
-    const auto kind = field<std::string>(j, "kind", i, origin);
-    int k = 0;
-    while (k < kRayKindCount && kind != toString(RayKind(k))) ++k;
-    if (k == kRayKindCount)
-      throw Error(origin + ": /segments/" + std::to_string(i) + "/kind: unknown kind '" + kind +
-                  "'");
-    s.kind = RayKind(k);
-    s.depth = field<int>(j, "depth", i, origin);
-    s.origin = vecField(j, "origin", i, origin);
-    s.direction = vecField(j, "direction", i, origin);
-    s.time = field<double>(j, "time", i, origin);
-    s.hit = field<bool>(j, "hit", i, origin);
-    s.endPoint = vecField(j, "end_point", i, origin);
-    s.lightPoint = vecField(j, "light_point", i, origin);
-    s.object = field<int>(j, "object", i, origin);
-    if (j.contains("light_object")) s.lightObject = field<int>(j, "light_object", i, origin);
-    if (j.contains("point_light")) s.pointLight = field<int>(j, "point_light", i, origin);
-    s.normal = vecField(j, "normal", i, origin);
-    if (j.contains("shading_normal")) s.shadingNormal = vecField(j, "shading_normal", i, origin);
-    s.weight = vecField(j, "weight", i, origin);
-    s.pdf = field<double>(j, "pdf", i, origin);
-    s.throughput = vecField(j, "throughput", i, origin);
-    s.emitted = vecField(j, "emitted", i, origin);
-    s.radiance = vecField(j, "radiance", i, origin);
-    const auto reason = field<std::string>(j, "end_reason", i, origin);
-    const std::optional<EndReason> known = endReasonFromJson(reason);
-    if (!known)
-      throw Error(origin + ": /segments/" + std::to_string(i) + "/end_reason: unknown '" + reason +
-                  "'");
-    s.endReason = *known;
+    tree.segments[i] = readSegment(j, i, origin);
     read.objectNames.push_back(j.value("object_name", std::string()));
   }
   checkStructure(tree, origin);

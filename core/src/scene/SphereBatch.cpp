@@ -91,76 +91,83 @@ constexpr double kMissFilter = 1e-12;
 // walls around both ends and the light itself.
 constexpr double kSegmentFilter = 1e-11;
 
-// Sphere::roots for spheres (xs, ys, zs, rr)[0, count) (the columns padded to a multiple of
-// 4), k lanes at a time: every step is one IEEE operation, none fused, as the scalar code
-// compiles to without -mfma, so the bits are Sphere::nearestRoot's. A miss is a mask; the
-// steps after it run on whatever they get (a square root of a negative is NaN, a division
-// by 0 infinite) and are dropped. out[k]: the root nearestRoot gives, or NaN.
-void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const double* zs,
-                    const double* rr, const double* pad, int count, bool segment, double* out) {
-  const __m128d signBit = _mm_set1_pd(-0.0);
-  const __m128d zero = _mm_setzero_pd();
-  const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
-  const Vec3& o = ray.origin;
-  const Vec3& d = ray.direction;
-  const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z);
-  const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
-  const __m128d a = _mm_set1_pd(glm::dot(d, d));
-  const __m128d inverseA = _mm_set1_pd(1.0 / glm::dot(d, d));
-  const __m128d tMin = _mm_set1_pd(ray.tMin), tMax = _mm_set1_pd(ray.tMax);
-  const __m128d slack = _mm_set1_pd(1.0 + 1e-9);
-  const __m128d filter = _mm_set1_pd(kMissFilter);
-  const auto dot = [](__m128d x0, __m128d y0, __m128d z0, __m128d x1, __m128d y1, __m128d z1) {
-    return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, x1), _mm_mul_pd(y0, y1)), _mm_mul_pd(z0, z1));
-  };
-  // The segment tests (kSegmentFilter), for a finite tMax only.
-  segment = segment && std::isfinite(ray.tMax);
-  const bool fromStart = ray.tMin >= 0.0;
-  const double aValue = glm::dot(d, d);
-  const __m128d tMaxSquaredA = _mm_set1_pd(ray.tMax * ray.tMax * aValue);
-  const __m128d segmentFilter = _mm_set1_pd(kSegmentFilter);
-  const __m128d slopeFilter = _mm_set1_pd(2.0 * kSegmentFilter * kSegmentFilter * aValue);
-  const auto select = [](__m128d mask, __m128d yes, __m128d no) {
-    return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
-  };
-  for (int k = 0; k < count; k += 2) {
-    const __m128d radius = _mm_loadu_pd(&rr[std::size_t(k)]);
-    const __m128d fx = _mm_sub_pd(ox, _mm_loadu_pd(&xs[std::size_t(k)]));
-    const __m128d fy = _mm_sub_pd(oy, _mm_loadu_pd(&ys[std::size_t(k)]));
-    const __m128d fz = _mm_sub_pd(oz, _mm_loadu_pd(&zs[std::size_t(k)]));
-    const __m128d halfB = dot(fx, fy, fz, dx, dy, dz);
-    const __m128d ff = dot(fx, fy, fz, fx, fy, fz);
-    const __m128d radius2 = _mm_mul_pd(radius, radius);
-    // The cheap test (kMissFilter): both lanes missed or padding, then no root to compute.
-    const __m128d ffa = _mm_mul_pd(ff, a), hb2 = _mm_mul_pd(halfB, halfB);
-    const __m128d r2a = _mm_mul_pd(radius2, a);
-    const __m128d gap = _mm_sub_pd(_mm_sub_pd(ffa, hb2), r2a);
-    const __m128d bound = _mm_mul_pd(filter, _mm_add_pd(_mm_add_pd(ffa, hb2), r2a));
-    __m128d sure = _mm_or_pd(_mm_cmpgt_pd(gap, bound), _mm_loadu_pd(&pad[std::size_t(k)]));
-    if (segment && _mm_movemask_pd(sure) != 0x3) {
-      const __m128d hx = _mm_add_pd(fx, _mm_mul_pd(tMax, dx));
-      const __m128d hy = _mm_add_pd(fy, _mm_mul_pd(tMax, dy));
-      const __m128d hz = _mm_add_pd(fz, _mm_mul_pd(tMax, dz));
-      const __m128d hh = dot(hx, hy, hz, hx, hy, hz), hd = dot(hx, hy, hz, dx, dy, dz);
-      const __m128d ends = _mm_add_pd(ff, tMaxSquaredA);
-      const __m128d margin = _mm_mul_pd(segmentFilter, _mm_add_pd(ends, radius2));
-      const __m128d endInside = _mm_cmpgt_pd(_mm_sub_pd(radius2, hh), margin);
-      const __m128d startInside = _mm_cmpgt_pd(_mm_sub_pd(radius2, ff), margin);
-      const __m128d inside = fromStart ? _mm_and_pd(endInside, startInside) : _mm_setzero_pd();
-      const __m128d falling = _mm_and_pd(
-          _mm_cmplt_pd(hd, zero), _mm_cmpgt_pd(_mm_mul_pd(hd, hd), _mm_mul_pd(slopeFilter, ends)));
-      const __m128d before = _mm_and_pd(_mm_cmpgt_pd(_mm_sub_pd(hh, radius2), margin), falling);
-      sure = _mm_or_pd(sure, _mm_or_pd(inside, before));
-    }
-    if (_mm_movemask_pd(sure) == 0x3) {
-      _mm_storeu_pd(out + k, nan);
-      continue;
-    }
+// The pieces of the kernels below are forced inline into them: their vectors stay in
+// registers, no argument is passed. Measured with callgrind on smallpt against the kernels
+// as one function each: the same instructions for AVX, slightly fewer for SSE2
+// (doc/dev/perf/engine-step-split.md).
+#define RAYLAB_LANES_INLINE inline __attribute__((always_inline))
+#define RAYLAB_AVX_INLINE inline __attribute__((target("avx"), always_inline))
+
+RAYLAB_LANES_INLINE __m128d dot2(__m128d x0, __m128d y0, __m128d z0, __m128d x1, __m128d y1,
+                                 __m128d z1) {
+  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(x0, x1), _mm_mul_pd(y0, y1)), _mm_mul_pd(z0, z1));
+}
+RAYLAB_LANES_INLINE __m128d select2(__m128d mask, __m128d yes, __m128d no) {
+  return _mm_or_pd(_mm_and_pd(mask, yes), _mm_andnot_pd(mask, no));
+}
+
+/// The segment tests (kSegmentFilter) of roundRootsSse2, two lanes at a time.
+struct SegmentTest2 {
+  __m128d dx, dy, dz, tMax, tMaxSquaredA, segmentFilter, slopeFilter;
+  bool fromStart;
+
+  RAYLAB_LANES_INLINE explicit SegmentTest2(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    const double aValue = glm::dot(d, d);
+    dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
+    tMax = _mm_set1_pd(ray.tMax);
+    tMaxSquaredA = _mm_set1_pd(ray.tMax * ray.tMax * aValue);
+    segmentFilter = _mm_set1_pd(kSegmentFilter);
+    slopeFilter = _mm_set1_pd(2.0 * kSegmentFilter * kSegmentFilter * aValue);
+    fromStart = ray.tMin >= 0.0;
+  }
+
+  /// The lanes whose segment surely crosses no surface of their sphere (f = origin - centre,
+  /// ff = |f|^2, radius2 = r^2): it lies inside the ball, or ends before the sphere.
+  RAYLAB_LANES_INLINE __m128d decided(__m128d fx, __m128d fy, __m128d fz, __m128d ff,
+                                      __m128d radius2) const {
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d hx = _mm_add_pd(fx, _mm_mul_pd(tMax, dx));
+    const __m128d hy = _mm_add_pd(fy, _mm_mul_pd(tMax, dy));
+    const __m128d hz = _mm_add_pd(fz, _mm_mul_pd(tMax, dz));
+    const __m128d hh = dot2(hx, hy, hz, hx, hy, hz), hd = dot2(hx, hy, hz, dx, dy, dz);
+    const __m128d ends = _mm_add_pd(ff, tMaxSquaredA);
+    const __m128d margin = _mm_mul_pd(segmentFilter, _mm_add_pd(ends, radius2));
+    const __m128d endInside = _mm_cmpgt_pd(_mm_sub_pd(radius2, hh), margin);
+    const __m128d startInside = _mm_cmpgt_pd(_mm_sub_pd(radius2, ff), margin);
+    const __m128d inside = fromStart ? _mm_and_pd(endInside, startInside) : _mm_setzero_pd();
+    const __m128d falling = _mm_and_pd(
+        _mm_cmplt_pd(hd, zero), _mm_cmpgt_pd(_mm_mul_pd(hd, hd), _mm_mul_pd(slopeFilter, ends)));
+    const __m128d before = _mm_and_pd(_mm_cmpgt_pd(_mm_sub_pd(hh, radius2), margin), falling);
+    return _mm_or_pd(inside, before);
+  }
+};
+
+/// Sphere::roots' steps of roundRootsSse2 for the lanes the cheap tests leave, two at a time.
+struct Roots2 {
+  __m128d dx, dy, dz, a, inverseA, tMin, tMax;
+
+  RAYLAB_LANES_INLINE explicit Roots2(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
+    a = _mm_set1_pd(glm::dot(d, d));
+    inverseA = _mm_set1_pd(1.0 / glm::dot(d, d));
+    tMin = _mm_set1_pd(ray.tMin), tMax = _mm_set1_pd(ray.tMax);
+  }
+
+  /// The root nearestRoot gives (f = origin - centre, halfB = f . d, ff = |f|^2, radius2 =
+  /// r^2), or NaN: a miss, or a lane already decided (`sure`).
+  RAYLAB_LANES_INLINE __m128d nearest(__m128d fx, __m128d fy, __m128d fz, __m128d halfB, __m128d ff,
+                                      __m128d radius2, __m128d sure) const {
+    const __m128d signBit = _mm_set1_pd(-0.0);
+    const __m128d zero = _mm_setzero_pd();
+    const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
+    const __m128d slack = _mm_set1_pd(1.0 + 1e-9);
     const __m128d along = _mm_mul_pd(halfB, inverseA);
     const __m128d lx = _mm_sub_pd(fx, _mm_mul_pd(along, dx));
     const __m128d ly = _mm_sub_pd(fy, _mm_mul_pd(along, dy));
     const __m128d lz = _mm_sub_pd(fz, _mm_mul_pd(along, dz));
-    const __m128d lineDistance2 = dot(lx, ly, lz, lx, ly, lz);
+    const __m128d lineDistance2 = dot2(lx, ly, lz, lx, ly, lz);
     const __m128d far = _mm_cmpgt_pd(lineDistance2, _mm_mul_pd(radius2, slack));
     const __m128d discriminant = _mm_mul_pd(a, _mm_sub_pd(radius2, lineDistance2));
     const __m128d miss = _mm_or_pd(far, _mm_cmplt_pd(discriminant, zero));
@@ -172,84 +179,123 @@ void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const do
     const __m128d t0 = _mm_andnot_pd(qZero, _mm_mul_pd(q, inverseA));
     const __m128d t1 = _mm_andnot_pd(qZero, _mm_div_pd(c, q));
     const __m128d swap = _mm_cmpgt_pd(t0, t1);
-    const __m128d low = select(swap, t1, t0), high = select(swap, t0, t1);
+    const __m128d low = select2(swap, t1, t0), high = select2(swap, t0, t1);
     const __m128d first = _mm_and_pd(_mm_cmpge_pd(low, tMin), _mm_cmple_pd(low, tMax));
     const __m128d second = _mm_and_pd(_mm_cmpge_pd(high, tMin), _mm_cmple_pd(high, tMax));
-    const __m128d t = select(first, low, select(second, high, nan));
-    _mm_storeu_pd(out + k, select(_mm_or_pd(miss, sure), nan, t));
+    const __m128d t = select2(first, low, select2(second, high, nan));
+    return select2(_mm_or_pd(miss, sure), nan, t);
+  }
+};
+
+// Sphere::roots for spheres (xs, ys, zs, rr)[0, count) (the columns padded to a multiple of
+// 4), k lanes at a time: every step is one IEEE operation, none fused, as the scalar code
+// compiles to without -mfma, so the bits are Sphere::nearestRoot's. A miss is a mask; the
+// steps after it run on whatever they get (a square root of a negative is NaN, a division
+// by 0 infinite) and are dropped. out[k]: the root nearestRoot gives, or NaN.
+void roundRootsSse2(const Ray& ray, const double* xs, const double* ys, const double* zs,
+                    const double* rr, const double* pad, int count, bool segment, double* out) {
+  const __m128d nan = _mm_set1_pd(std::numeric_limits<double>::quiet_NaN());
+  const Vec3& o = ray.origin;
+  const Vec3& d = ray.direction;
+  const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z);
+  const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
+  const __m128d a = _mm_set1_pd(glm::dot(d, d));
+  const __m128d filter = _mm_set1_pd(kMissFilter);
+  const Roots2 roots(ray);
+  // The segment tests (kSegmentFilter), for a finite tMax only.
+  segment = segment && std::isfinite(ray.tMax);
+  const SegmentTest2 segments(ray);
+  for (int k = 0; k < count; k += 2) {
+    const __m128d radius = _mm_loadu_pd(&rr[std::size_t(k)]);
+    const __m128d fx = _mm_sub_pd(ox, _mm_loadu_pd(&xs[std::size_t(k)]));
+    const __m128d fy = _mm_sub_pd(oy, _mm_loadu_pd(&ys[std::size_t(k)]));
+    const __m128d fz = _mm_sub_pd(oz, _mm_loadu_pd(&zs[std::size_t(k)]));
+    const __m128d halfB = dot2(fx, fy, fz, dx, dy, dz);
+    const __m128d ff = dot2(fx, fy, fz, fx, fy, fz);
+    const __m128d radius2 = _mm_mul_pd(radius, radius);
+    // The cheap test (kMissFilter): both lanes missed or padding, then no root to compute.
+    const __m128d ffa = _mm_mul_pd(ff, a), hb2 = _mm_mul_pd(halfB, halfB);
+    const __m128d r2a = _mm_mul_pd(radius2, a);
+    const __m128d gap = _mm_sub_pd(_mm_sub_pd(ffa, hb2), r2a);
+    const __m128d bound = _mm_mul_pd(filter, _mm_add_pd(_mm_add_pd(ffa, hb2), r2a));
+    __m128d sure = _mm_or_pd(_mm_cmpgt_pd(gap, bound), _mm_loadu_pd(&pad[std::size_t(k)]));
+    if (segment && _mm_movemask_pd(sure) != 0x3)
+      sure = _mm_or_pd(sure, segments.decided(fx, fy, fz, ff, radius2));
+    if (_mm_movemask_pd(sure) == 0x3) {
+      _mm_storeu_pd(out + k, nan);
+      continue;
+    }
+    _mm_storeu_pd(out + k, roots.nearest(fx, fy, fz, halfB, ff, radius2, sure));
   }
 }
 
 // The same with four lanes (AVX; chosen at run time, the program being built for plain
 // x86-64): square roots and divisions of four doubles cost what two did with SSE2.
-__attribute__((target("avx"))) inline __m256d dot4(__m256d x0, __m256d y0, __m256d z0, __m256d x1,
-                                                   __m256d y1, __m256d z1) {
+RAYLAB_AVX_INLINE __m256d dot4(__m256d x0, __m256d y0, __m256d z0, __m256d x1, __m256d y1,
+                               __m256d z1) {
   return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(x0, x1), _mm256_mul_pd(y0, y1)),
                        _mm256_mul_pd(z0, z1));
 }
-__attribute__((target("avx"))) inline __m256d select4(__m256d mask, __m256d yes, __m256d no) {
+RAYLAB_AVX_INLINE __m256d select4(__m256d mask, __m256d yes, __m256d no) {
   return _mm256_or_pd(_mm256_and_pd(mask, yes), _mm256_andnot_pd(mask, no));
 }
 
-__attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* xs,
-                                                  const double* ys, const double* zs,
-                                                  const double* rr, const double* pad, int count,
-                                                  bool segment, double* out) {
-  // roundRootsSse2's steps, four lanes wide (target "avx" enables no FMA either).
-  const __m256d signBit = _mm256_set1_pd(-0.0);
-  const __m256d zero = _mm256_setzero_pd();
-  const __m256d nan = _mm256_set1_pd(std::numeric_limits<double>::quiet_NaN());
-  const Vec3& o = ray.origin;
-  const Vec3& d = ray.direction;
-  const __m256d ox = _mm256_set1_pd(o.x), oy = _mm256_set1_pd(o.y), oz = _mm256_set1_pd(o.z);
-  const __m256d dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
-  const __m256d a = _mm256_set1_pd(glm::dot(d, d));
-  const __m256d inverseA = _mm256_set1_pd(1.0 / glm::dot(d, d));
-  const __m256d tMin = _mm256_set1_pd(ray.tMin), tMax = _mm256_set1_pd(ray.tMax);
-  const __m256d slack = _mm256_set1_pd(1.0 + 1e-9);
-  const __m256d filter = _mm256_set1_pd(kMissFilter);
-  segment = segment && std::isfinite(ray.tMax);
-  const bool fromStart = ray.tMin >= 0.0;
-  const double aValue = glm::dot(d, d);
-  const __m256d tMaxSquaredA = _mm256_set1_pd(ray.tMax * ray.tMax * aValue);
-  const __m256d segmentFilter = _mm256_set1_pd(kSegmentFilter);
-  const __m256d slopeFilter = _mm256_set1_pd(2.0 * kSegmentFilter * kSegmentFilter * aValue);
-  for (int k = 0; k < count; k += 4) {
-    const __m256d radius = _mm256_loadu_pd(&rr[std::size_t(k)]);
-    const __m256d fx = _mm256_sub_pd(ox, _mm256_loadu_pd(&xs[std::size_t(k)]));
-    const __m256d fy = _mm256_sub_pd(oy, _mm256_loadu_pd(&ys[std::size_t(k)]));
-    const __m256d fz = _mm256_sub_pd(oz, _mm256_loadu_pd(&zs[std::size_t(k)]));
-    const __m256d halfB = dot4(fx, fy, fz, dx, dy, dz);
-    const __m256d ff = dot4(fx, fy, fz, fx, fy, fz);
-    const __m256d radius2 = _mm256_mul_pd(radius, radius);
-    const __m256d ffa = _mm256_mul_pd(ff, a), hb2 = _mm256_mul_pd(halfB, halfB);
-    const __m256d r2a = _mm256_mul_pd(radius2, a);
-    const __m256d gap = _mm256_sub_pd(_mm256_sub_pd(ffa, hb2), r2a);
-    const __m256d bound = _mm256_mul_pd(filter, _mm256_add_pd(_mm256_add_pd(ffa, hb2), r2a));
-    __m256d sure =
-        _mm256_or_pd(_mm256_cmp_pd(gap, bound, _CMP_GT_OQ), _mm256_loadu_pd(&pad[std::size_t(k)]));
-    if (segment && _mm256_movemask_pd(sure) != 0xf) {
-      const __m256d hx = _mm256_add_pd(fx, _mm256_mul_pd(tMax, dx));
-      const __m256d hy = _mm256_add_pd(fy, _mm256_mul_pd(tMax, dy));
-      const __m256d hz = _mm256_add_pd(fz, _mm256_mul_pd(tMax, dz));
-      const __m256d hh = dot4(hx, hy, hz, hx, hy, hz), hd = dot4(hx, hy, hz, dx, dy, dz);
-      const __m256d ends = _mm256_add_pd(ff, tMaxSquaredA);
-      const __m256d margin = _mm256_mul_pd(segmentFilter, _mm256_add_pd(ends, radius2));
-      const __m256d endInside = _mm256_cmp_pd(_mm256_sub_pd(radius2, hh), margin, _CMP_GT_OQ);
-      const __m256d startInside = _mm256_cmp_pd(_mm256_sub_pd(radius2, ff), margin, _CMP_GT_OQ);
-      const __m256d inside =
-          fromStart ? _mm256_and_pd(endInside, startInside) : _mm256_setzero_pd();
-      const __m256d falling = _mm256_and_pd(
-          _mm256_cmp_pd(hd, zero, _CMP_LT_OQ),
-          _mm256_cmp_pd(_mm256_mul_pd(hd, hd), _mm256_mul_pd(slopeFilter, ends), _CMP_GT_OQ));
-      const __m256d before =
-          _mm256_and_pd(_mm256_cmp_pd(_mm256_sub_pd(hh, radius2), margin, _CMP_GT_OQ), falling);
-      sure = _mm256_or_pd(sure, _mm256_or_pd(inside, before));
-    }
-    if (_mm256_movemask_pd(sure) == 0xf) {
-      _mm256_storeu_pd(out + k, nan);
-      continue;
-    }
+/// SegmentTest2, four lanes wide.
+struct SegmentTest4 {
+  __m256d dx, dy, dz, tMax, tMaxSquaredA, segmentFilter, slopeFilter;
+  __m256d zero = _mm256_setzero_pd();
+  bool fromStart;
+
+  RAYLAB_AVX_INLINE explicit SegmentTest4(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    const double aValue = glm::dot(d, d);
+    dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
+    tMax = _mm256_set1_pd(ray.tMax);
+    tMaxSquaredA = _mm256_set1_pd(ray.tMax * ray.tMax * aValue);
+    segmentFilter = _mm256_set1_pd(kSegmentFilter);
+    slopeFilter = _mm256_set1_pd(2.0 * kSegmentFilter * kSegmentFilter * aValue);
+    fromStart = ray.tMin >= 0.0;
+  }
+
+  RAYLAB_AVX_INLINE __m256d decided(__m256d fx, __m256d fy, __m256d fz, __m256d ff,
+                                    __m256d radius2) const {
+    const __m256d hx = _mm256_add_pd(fx, _mm256_mul_pd(tMax, dx));
+    const __m256d hy = _mm256_add_pd(fy, _mm256_mul_pd(tMax, dy));
+    const __m256d hz = _mm256_add_pd(fz, _mm256_mul_pd(tMax, dz));
+    const __m256d hh = dot4(hx, hy, hz, hx, hy, hz), hd = dot4(hx, hy, hz, dx, dy, dz);
+    const __m256d ends = _mm256_add_pd(ff, tMaxSquaredA);
+    const __m256d margin = _mm256_mul_pd(segmentFilter, _mm256_add_pd(ends, radius2));
+    const __m256d endInside = _mm256_cmp_pd(_mm256_sub_pd(radius2, hh), margin, _CMP_GT_OQ);
+    const __m256d startInside = _mm256_cmp_pd(_mm256_sub_pd(radius2, ff), margin, _CMP_GT_OQ);
+    const __m256d inside = fromStart ? _mm256_and_pd(endInside, startInside) : _mm256_setzero_pd();
+    const __m256d falling = _mm256_and_pd(
+        _mm256_cmp_pd(hd, zero, _CMP_LT_OQ),
+        _mm256_cmp_pd(_mm256_mul_pd(hd, hd), _mm256_mul_pd(slopeFilter, ends), _CMP_GT_OQ));
+    const __m256d before =
+        _mm256_and_pd(_mm256_cmp_pd(_mm256_sub_pd(hh, radius2), margin, _CMP_GT_OQ), falling);
+    return _mm256_or_pd(inside, before);
+  }
+};
+
+/// Roots2, four lanes wide; its constants are members, made once before the loop (as
+/// locals of nearest, the AVX kernel counted 0.8 % more instructions; the SSE2 one, with
+/// members, 1.3 % more).
+struct Roots4 {
+  __m256d dx, dy, dz, a, inverseA, tMin, tMax;
+  __m256d signBit = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd();
+  __m256d nan = _mm256_set1_pd(std::numeric_limits<double>::quiet_NaN());
+  __m256d slack = _mm256_set1_pd(1.0 + 1e-9);
+
+  RAYLAB_AVX_INLINE explicit Roots4(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
+    a = _mm256_set1_pd(glm::dot(d, d));
+    inverseA = _mm256_set1_pd(1.0 / glm::dot(d, d));
+    tMin = _mm256_set1_pd(ray.tMin), tMax = _mm256_set1_pd(ray.tMax);
+  }
+
+  RAYLAB_AVX_INLINE __m256d nearest(__m256d fx, __m256d fy, __m256d fz, __m256d halfB, __m256d ff,
+                                    __m256d radius2, __m256d sure) const {
     const __m256d along = _mm256_mul_pd(halfB, inverseA);
     const __m256d lx = _mm256_sub_pd(fx, _mm256_mul_pd(along, dx));
     const __m256d ly = _mm256_sub_pd(fy, _mm256_mul_pd(along, dy));
@@ -273,9 +319,51 @@ __attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* 
     const __m256d second =
         _mm256_and_pd(_mm256_cmp_pd(high, tMin, _CMP_GE_OQ), _mm256_cmp_pd(high, tMax, _CMP_LE_OQ));
     const __m256d t = select4(first, low, select4(second, high, nan));
-    _mm256_storeu_pd(out + k, select4(_mm256_or_pd(miss, sure), nan, t));
+    return select4(_mm256_or_pd(miss, sure), nan, t);
+  }
+};
+
+__attribute__((target("avx"))) void roundRootsAvx(const Ray& ray, const double* xs,
+                                                  const double* ys, const double* zs,
+                                                  const double* rr, const double* pad, int count,
+                                                  bool segment, double* out) {
+  // roundRootsSse2's steps, four lanes wide (target "avx" enables no FMA either).
+  const __m256d nan = _mm256_set1_pd(std::numeric_limits<double>::quiet_NaN());
+  const Vec3& o = ray.origin;
+  const Vec3& d = ray.direction;
+  const __m256d ox = _mm256_set1_pd(o.x), oy = _mm256_set1_pd(o.y), oz = _mm256_set1_pd(o.z);
+  const __m256d dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
+  const __m256d a = _mm256_set1_pd(glm::dot(d, d));
+  const __m256d filter = _mm256_set1_pd(kMissFilter);
+  const Roots4 roots(ray);
+  segment = segment && std::isfinite(ray.tMax);
+  const SegmentTest4 segments(ray);
+  for (int k = 0; k < count; k += 4) {
+    const __m256d radius = _mm256_loadu_pd(&rr[std::size_t(k)]);
+    const __m256d fx = _mm256_sub_pd(ox, _mm256_loadu_pd(&xs[std::size_t(k)]));
+    const __m256d fy = _mm256_sub_pd(oy, _mm256_loadu_pd(&ys[std::size_t(k)]));
+    const __m256d fz = _mm256_sub_pd(oz, _mm256_loadu_pd(&zs[std::size_t(k)]));
+    const __m256d halfB = dot4(fx, fy, fz, dx, dy, dz);
+    const __m256d ff = dot4(fx, fy, fz, fx, fy, fz);
+    const __m256d radius2 = _mm256_mul_pd(radius, radius);
+    const __m256d ffa = _mm256_mul_pd(ff, a), hb2 = _mm256_mul_pd(halfB, halfB);
+    const __m256d r2a = _mm256_mul_pd(radius2, a);
+    const __m256d gap = _mm256_sub_pd(_mm256_sub_pd(ffa, hb2), r2a);
+    const __m256d bound = _mm256_mul_pd(filter, _mm256_add_pd(_mm256_add_pd(ffa, hb2), r2a));
+    __m256d sure =
+        _mm256_or_pd(_mm256_cmp_pd(gap, bound, _CMP_GT_OQ), _mm256_loadu_pd(&pad[std::size_t(k)]));
+    if (segment && _mm256_movemask_pd(sure) != 0xf)
+      sure = _mm256_or_pd(sure, segments.decided(fx, fy, fz, ff, radius2));
+    if (_mm256_movemask_pd(sure) == 0xf) {
+      _mm256_storeu_pd(out + k, nan);
+      continue;
+    }
+    _mm256_storeu_pd(out + k, roots.nearest(fx, fy, fz, halfB, ff, radius2, sure));
   }
 }
+
+#undef RAYLAB_LANES_INLINE
+#undef RAYLAB_AVX_INLINE
 
 /// Whether this processor runs AVX (RAYLAB_NO_AVX=1 says no, to test the SSE2 path).
 bool useAvx() {
