@@ -184,6 +184,7 @@ struct TreePicture {
 };
 
 TreePicture drawTree(const TraceOptions& options, const RayTreeOptions& o, const Scene& scene,
+                     const RenderSettings& settings, const std::optional<Ray>& root,
                      const RayTree& tree) {
   vis::requireDisplay();
   const auto [width, height] = o.pictureSize();
@@ -263,7 +264,7 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
 
   // Step 3: the 3D view with the tree, in memory first (usage errors need no display: they
   // come before this).
-  const TreePicture drawn = drawTree(options, o, scene, tree);
+  const TreePicture drawn = drawTree(options, o, scene, settings, root, tree);
 
   // Step 4: the files, then the summary.
   const std::string json =
