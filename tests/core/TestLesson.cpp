@@ -1,5 +1,6 @@
 // Lesson files: the format, error messages that name the file, the step and the place,
 // scene changes, and the shipped lessons (they load, both languages, answers computed).
+#include "LessonFixture.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayInspector.h"
@@ -30,28 +31,7 @@ namespace fs = std::filesystem;
 /// 4 spp) for the lessons the tests write; one folder per test, as CTest runs tests side by
 /// side (a test rewriting a shared scene.json made another read it empty).
 std::string fixtureDir() {
-  const fs::path dir =
-      fs::path(RAYLAB_TEMP_DIR) /
-      ("lesson-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "scene.json") << R"({
-    "raylab_scene": 2,
-    "name": "lesson test",
-    "materials": [
-      {"name": "glass", "type": "dielectric", "ior": 1.5},
-      {"name": "white", "colour": [0.7, 0.7, 0.7]},
-      {"name": "lamp", "emission": [10, 10, 10]}],
-    "objects": [
-      {"name": "ball", "material": "glass",
-       "shape": {"type": "sphere", "centre": [0, 1, 0], "radius": 1}},
-      {"name": "floor", "material": "white",
-       "shape": {"type": "quad", "corner": [-5, 0, 5], "u": [10, 0, 0], "v": [0, 0, -10]}},
-      {"name": "light", "material": "lamp",
-       "shape": {"type": "quad", "corner": [-1, 4, 1], "u": [2, 0, 0], "v": [0, 0, -2]}}],
-    "point_lights": [{"name": "key", "position": [2, 5, 2], "intensity": [20, 20, 20]}],
-    "camera": {"position": [0, 1.5, 5], "look_at": [0, 1, 0], "width": 320, "height": 240},
-    "render": {"algorithm": "path", "spp": 4, "max_depth": 5}
-  })";
+  const fs::path dir = testing::writeLessonScene({"lesson-", "lesson test", "path", true});
   return dir.string();
 }
 

@@ -1,6 +1,7 @@
 // Questions that make students think and the teacher's kit (issue 32): the shown order of a
 // question's choices, predict-then-reveal questions and what a ray reaches, the value a
 // student tries, the kit's keys, and what the shipped lessons hold of all of them.
+#include "LessonFixture.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/SceneEdit.h"
 
@@ -24,27 +25,7 @@ namespace fs = std::filesystem;
 /// A folder of its own per test (CTest runs tests side by side) with a small scene: a glass
 /// ball on a floor under a quad light, 320x240, 4 spp.
 std::string fixtureOrigin() {
-  const fs::path dir =
-      fs::path(RAYLAB_TEMP_DIR) /
-      ("quiz-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-  fs::create_directories(dir);
-  std::ofstream(dir / "scene.json") << R"({
-    "raylab_scene": 2,
-    "name": "quiz test",
-    "materials": [
-      {"name": "glass", "type": "dielectric", "ior": 1.5},
-      {"name": "white", "colour": [0.7, 0.7, 0.7]},
-      {"name": "lamp", "emission": [10, 10, 10]}],
-    "objects": [
-      {"name": "ball", "material": "glass",
-       "shape": {"type": "sphere", "centre": [0, 1, 0], "radius": 1}},
-      {"name": "floor", "material": "white",
-       "shape": {"type": "quad", "corner": [-5, 0, 5], "u": [10, 0, 0], "v": [0, 0, -10]}},
-      {"name": "light", "material": "lamp",
-       "shape": {"type": "quad", "corner": [-1, 4, 1], "u": [2, 0, 0], "v": [0, 0, -2]}}],
-    "camera": {"position": [0, 1.5, 5], "look_at": [0, 1, 0], "width": 320, "height": 240},
-    "render": {"algorithm": "whitted", "spp": 4, "max_depth": 5}
-  })";
+  const fs::path dir = testing::writeLessonScene({"quiz-", "quiz test", "whitted", false});
   return (dir / "quiz.json").string();
 }
 
