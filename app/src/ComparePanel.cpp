@@ -1,8 +1,8 @@
 #include "ComparePanel.h"
 
-#include "Language.h"
-#include "UiWords.h"
 #include "window/BackgroundTask.h"
+#include "words/Language.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/ReferenceCache.h"

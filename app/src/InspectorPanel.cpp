@@ -1,9 +1,9 @@
 #include "InspectorPanel.h"
 
-#include "Language.h"
 #include "RayTreePanel.h"
 #include "SceneDocument.h"
-#include "UiWords.h"
+#include "words/Language.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/InspectorWords.h"
 #include "raylab/core/RayInspector.h"

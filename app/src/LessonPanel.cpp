@@ -1,7 +1,7 @@
 #include "LessonPanel.h"
 
-#include "Language.h"
 #include "ScaledFont.h"
+#include "words/Language.h"
 
 #include "raylab/vis/BvhCaptions.h"
 

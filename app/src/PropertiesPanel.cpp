@@ -1,10 +1,10 @@
 #include "PropertiesPanel.h"
 
-#include "SceneWords.h"
+#include "words/SceneWords.h"
 
 #include "EditPanel.h"
 #include "SceneDocument.h"
-#include "UiWords.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Exception.h"

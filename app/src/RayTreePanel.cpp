@@ -5,12 +5,12 @@
 
 #include "SceneDocument.h"
 
-#include "Language.h"
-#include "UiWords.h"
 #include "raytree/AnimationGroup.h"
 #include "raytree/StyleGroup.h"
 #include "raytree/TraceGroup.h"
 #include "window/BackgroundTask.h"
+#include "words/Language.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"

@@ -5,11 +5,11 @@
 
 #include "SceneDocument.h"
 
-#include "UiWords.h"
 #include "raytree/AnimationGroup.h"
 #include "raytree/StyleGroup.h"
 #include "raytree/TraceGroup.h"
 #include "window/BackgroundTask.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Scene.h"

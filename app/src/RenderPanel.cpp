@@ -1,6 +1,6 @@
 #include "RenderPanel.h"
 
-#include "UiWords.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/Exception.h"
 #include "raylab/core/Limits.h"

@@ -1,6 +1,6 @@
-#include "CommandLine.h"
-#include "ExitCodes.h"
-#include "Subcommand.h"
+#include "commands/CommandLine.h"
+#include "commands/ExitCodes.h"
+#include "commands/Subcommand.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"

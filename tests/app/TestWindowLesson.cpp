@@ -7,10 +7,10 @@
 #include "WindowTest.h"
 
 #include "ComparePanel.h"
-#include "Language.h"
 #include "LessonPanel.h"
 #include "RenderPanel.h"
 #include "window/LanguageSwitch.h"
+#include "words/Language.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/RayTreeJson.h"

@@ -5,11 +5,11 @@
 
 #include "ImageView.h"
 #include "InspectorPanel.h"
-#include "Language.h"
 #include "LessonPanel.h"
 #include "PropertiesPanel.h"
 #include "RenderJob.h"
 #include "RenderPanel.h"
+#include "words/Language.h"
 
 #include "raylab/core/Image.h"
 #include "raylab/core/RayTreeJson.h"

@@ -1,7 +1,7 @@
 // The ray-tree panel's colouring, filters and toggles, bound to a vis::RayTreeStyle.
 #include "raytree/StyleGroup.h"
 
-#include "UiWords.h"
+#include "words/UiWords.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,7 +1,7 @@
 // The ray-tree panel's "what is traced" controls: algorithm, pixel, sample, bundle, grid.
 #include "raytree/TraceGroup.h"
 
-#include "UiWords.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Scene.h"

@@ -3,9 +3,9 @@
 // with the loader's or writer's whole message, the open scene left as it was.
 #include "MainWindow.h"
 
-#include "Language.h"
 #include "RenderPanel.h"
 #include "SceneDocument.h"
+#include "words/Language.h"
 
 #include "raylab/core/Exception.h"
 #include "raylab/vis/SceneView.h"

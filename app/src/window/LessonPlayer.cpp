@@ -6,11 +6,11 @@
 
 #include "ComparePanel.h"
 #include "InspectorPanel.h"
-#include "Language.h"
 #include "LessonPanel.h"
 #include "RayTreePanel.h"
 #include "RenderPanel.h"
 #include "SceneDocument.h"
+#include "words/Language.h"
 
 #include "raylab/core/Exception.h"
 #include "raylab/core/Lesson.h"

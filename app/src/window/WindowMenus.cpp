@@ -5,11 +5,11 @@
 #include "ComparePanel.h"
 #include "EditPanel.h"
 #include "ImageView.h"
-#include "Language.h"
 #include "RayTreePanel.h"
 #include "RenderPanel.h"
 #include "SceneDocument.h"
 #include "window/ActionTable.h"
+#include "words/Language.h"
 
 #include "raylab/core/SceneEdit.h"
 

@@ -3,12 +3,12 @@
 #include "MainWindow.h"
 
 #include "EditPanel.h"
-#include "Language.h"
 #include "PropertiesPanel.h"
 #include "RayTreePanel.h"
 #include "SceneDocument.h"
-#include "UiWords.h"
 #include "window/ActionTable.h"
+#include "words/Language.h"
+#include "words/UiWords.h"
 
 #include "raylab/core/Shape.h"
 #include "raylab/vis/SceneView.h"

@@ -1,4 +1,4 @@
-#include "Language.h"
+#include "words/Language.h"
 
 #include <QCoreApplication>
 #include <QDir>

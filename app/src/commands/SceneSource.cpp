@@ -1,6 +1,6 @@
-#include "SceneSource.h"
+#include "commands/SceneSource.h"
 
-#include "Subcommand.h"
+#include "commands/Subcommand.h"
 
 #include "raylab/core/SceneIO.h"
 

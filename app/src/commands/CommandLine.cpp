@@ -1,23 +1,23 @@
-#include "CommandLine.h"
+#include "commands/CommandLine.h"
 
-#include "AnimateCommand.h"
-#include "CheckCommand.h"
-#include "CompareCommand.h"
-#include "DiffCommand.h"
-#include "ExitCodes.h"
-#include "InstalledData.h"
-#include "LessonCommand.h"
-#include "PlotCommand.h"
-#include "RenderCommand.h"
-#include "SnapshotCommand.h"
-#include "Subcommand.h"
-#include "TraceCommand.h"
+#include "commands/AnimateCommand.h"
+#include "commands/CheckCommand.h"
+#include "commands/CompareCommand.h"
+#include "commands/DiffCommand.h"
+#include "commands/ExitCodes.h"
+#include "commands/InstalledData.h"
+#include "commands/LessonCommand.h"
+#include "commands/PlotCommand.h"
+#include "commands/RenderCommand.h"
+#include "commands/SnapshotCommand.h"
+#include "commands/Subcommand.h"
+#include "commands/TraceCommand.h"
 
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/LessonAliases.h"
 
 #if RAYLAB_WITH_GUI
-#include "WindowCommand.h"
+#include "commands/WindowCommand.h"
 #endif
 
 #include <CLI/CLI.hpp>

@@ -1,7 +1,7 @@
-#include "TraceCommand.h"
+#include "commands/TraceCommand.h"
 
-#include "ExitCodes.h"
-#include "SceneSource.h"
+#include "commands/ExitCodes.h"
+#include "commands/SceneSource.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"

@@ -1,4 +1,4 @@
-#include "InstalledData.h"
+#include "commands/InstalledData.h"
 
 #include <filesystem>
 #include <system_error>

@@ -1,6 +1,6 @@
-#include "SnapshotCommand.h"
+#include "commands/SnapshotCommand.h"
 
-#include "ExitCodes.h"
+#include "commands/ExitCodes.h"
 
 #include "raylab/vis/Display.h"
 #include "raylab/vis/SceneView.h"

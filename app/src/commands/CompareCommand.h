@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Subcommand.h"
+#include "commands/Subcommand.h"
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Scene.h"

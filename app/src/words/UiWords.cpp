@@ -1,6 +1,6 @@
-#include "UiWords.h"
+#include "words/UiWords.h"
 
-#include "Language.h"
+#include "words/Language.h"
 
 #include "raylab/core/AlgorithmInfo.h"
 

@@ -1,7 +1,7 @@
-#include "AnimateCommand.h"
+#include "commands/AnimateCommand.h"
 
-#include "ExitCodes.h"
-#include "TraceCommand.h"
+#include "commands/ExitCodes.h"
+#include "commands/TraceCommand.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"

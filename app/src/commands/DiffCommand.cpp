@@ -1,7 +1,7 @@
-#include "DiffCommand.h"
+#include "commands/DiffCommand.h"
 
-#include "ExitCodes.h"
-#include "TraceCommand.h"
+#include "commands/ExitCodes.h"
+#include "commands/TraceCommand.h"
 
 #include "raylab/core/Phrases.h"
 #include "raylab/core/PixelTrace.h"

@@ -1,7 +1,7 @@
-#include "PlotCommand.h"
+#include "commands/PlotCommand.h"
 
-#include "CompareCommand.h"
-#include "ExitCodes.h"
+#include "commands/CompareCommand.h"
+#include "commands/ExitCodes.h"
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/FilePaths.h"

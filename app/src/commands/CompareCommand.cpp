@@ -1,6 +1,6 @@
-#include "CompareCommand.h"
+#include "commands/CompareCommand.h"
 
-#include "ExitCodes.h"
+#include "commands/ExitCodes.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"

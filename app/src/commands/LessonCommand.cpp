@@ -1,10 +1,10 @@
-#include "LessonCommand.h"
+#include "commands/LessonCommand.h"
 
-#include "LessonHandout.h"
+#include "commands/LessonHandout.h"
 
-#include "CompareCommand.h"
-#include "ExitCodes.h"
-#include "InstalledData.h"
+#include "commands/CompareCommand.h"
+#include "commands/ExitCodes.h"
+#include "commands/InstalledData.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/AtomicFolder.h"

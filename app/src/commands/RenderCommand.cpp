@@ -1,7 +1,7 @@
-#include "RenderCommand.h"
+#include "commands/RenderCommand.h"
 
-#include "ExitCodes.h"
-#include "SceneSource.h"
+#include "commands/ExitCodes.h"
+#include "commands/SceneSource.h"
 
 #include "raylab/core/Image.h"
 #include "raylab/core/Limits.h"

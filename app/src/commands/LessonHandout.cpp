@@ -1,6 +1,6 @@
 // The handout of `raylab lesson FILE --out DIR`: the words around the step pictures, for the
 // teacher (the key, notes, plan) or the student (--student: none of them).
-#include "LessonHandout.h"
+#include "commands/LessonHandout.h"
 
 #include "raylab/core/Phrases.h"
 #include "raylab/core/Text.h"

@@ -1,6 +1,6 @@
-#include "CheckCommand.h"
+#include "commands/CheckCommand.h"
 
-#include "ExitCodes.h"
+#include "commands/ExitCodes.h"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -1,6 +1,6 @@
-#include "Subcommand.h"
+#include "commands/Subcommand.h"
 
-#include "SceneSource.h"
+#include "commands/SceneSource.h"
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/Exception.h"
