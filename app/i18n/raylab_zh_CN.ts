@@ -800,38 +800,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>(The exact oracle&apos;s check of the hit: press Exactness figures in the Ray inspector.)</source>
         <translation>（精确判定器对交点的检验：在“光线检查器”中按“精确性数据”按钮即可查看。）</translation>
     </message>
-    <message>
-        <source>Where: towards a light, but &apos;%1&apos; is in the way, %2 units on</source>
-        <translation>去向：射向光源，但在 %2 个单位处被“%1”挡住</translation>
-    </message>
-    <message>
-        <source>Where: from the surface to a point on the light, %1 units away</source>
-        <translation>去向：从表面射向光源上的一点，距离 %1 个单位</translation>
-    </message>
-    <message>
-        <source>Where: it hit &apos;%1&apos;, %2 units from where it started</source>
-        <translation>去向：打中“%1”，距起点 %2 个单位</translation>
-    </message>
-    <message>
-        <source>Where: it hit nothing and left the scene</source>
-        <translation>去向：没有打中任何物体，离开了场景</translation>
-    </message>
-    <message>
-        <source>What it carried: %1% of the light this pixel sample found</source>
-        <translation>携带：这个像素采样所得光能的 %1%</translation>
-    </message>
-    <message>
-        <source>What it carried: no light (this sample found none)</source>
-        <translation>携带：没有光能（这个采样没有找到光）</translation>
-    </message>
-    <message>
-        <source>Why it stopped: %1</source>
-        <translation>为何终止：%1</translation>
-    </message>
-    <message>
-        <source>%1 ray, depth %2</source>
-        <translation>%1光线，深度 %2</translation>
-    </message>
 </context>
 <context>
     <name>raylab::app::LessonPanel</name>
@@ -1721,28 +1689,8 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>选择一个像素，然后按“追踪”记录它的光线树。</translation>
     </message>
     <message>
-        <source>%1: pixel (%2, %3), sample %4
-%5</source>
-        <translation>%1：像素 (%2, %3)，第 %4 号样本
-%5</translation>
-    </message>
-    <message>
-        <source>%1: Simulate %2 x %3, %4 pixels, %5 rays</source>
-        <translation>%1：仿真 %2 × %3，%4 个像素，%5 条光线</translation>
-    </message>
-    <message>
         <source>Tracing… (Cancel stops it)</source>
         <translation>正在追踪…（按“取消”可停止）</translation>
-    </message>
-    <message>
-        <source>%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays</source>
-        <translation>%1：像素 (%2, %3)，第 %4 到第 %5 个采样画在一起，共 %6 条光线</translation>
-    </message>
-    <message>
-        <source>%1: a chosen ray from %2 along %3
-%4</source>
-        <translation>%1：手工指定的光线，从 %2 出发，方向为 %3
-%4</translation>
     </message>
     <message numerus="yes">
         <source>The filters hide %n of these rays.</source>

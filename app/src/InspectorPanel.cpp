@@ -98,43 +98,16 @@ void InspectorPanel::showSegment(int id) {
   const Language language = uiLanguage();
   const QString values = QString::fromStdString(
       rayText(inspection, language) + (exact ? "\n" + oracleText(inspection, language) : ""));
+  // The summary first (where, what it carried, why it stopped), from the phrase table.
+  const double pixel =
+      m_rays.tree().segments.empty() ? 0.0 : m_rays.tree().segments.front().energy();
   m_text->setPlainText(
-      inWords(inspection) + QStringLiteral("\n") + values +
+      QString::fromStdString(inspectionSummary(inspection, pixel, language)) +
+      QStringLiteral("\n") + values +
       (exact ? QString()
              : QStringLiteral("\n") +
                    tr("(The exact oracle's check of the hit: press Exactness figures in the Ray "
                       "inspector.)")));
-}
-
-QString InspectorPanel::inWords(const RayInspection& r) const {
-  const RaySegment& s = r.segment;
-  const QString object = QString::fromStdString(r.objectName);
-  // Where it went.
-  QString where;
-  if (s.kind == RayKind::Shadow)
-    where = s.endReason == EndReason::Occluded
-                ? tr("Where: towards a light, but '%1' is in the way, %2 units on")
-                      .arg(object)
-                      .arg(r.distance, 0, 'g', 4)
-                : tr("Where: from the surface to a point on the light, %1 units away")
-                      .arg(r.distance, 0, 'g', 4);
-  else if (s.hit)
-    where = tr("Where: it hit '%1', %2 units from where it started")
-                .arg(object)
-                .arg(r.distance, 0, 'g', 4);
-  else
-    where = tr("Where: it hit nothing and left the scene");
-  // What it carried: its share of the pixel's light.
-  const double pixel =
-      m_rays.tree().segments.empty() ? 0.0 : m_rays.tree().segments.front().energy();
-  const QString carried = pixel > 0.0
-                              ? tr("What it carried: %1% of the light this pixel sample found")
-                                    .arg(100.0 * r.energy / pixel, 0, 'f', 1)
-                              : tr("What it carried: no light (this sample found none)");
-  // Why it stopped.
-  const QString why = tr("Why it stopped: %1").arg(endReasonLabel(s.endReason));
-  return tr("%1 ray, depth %2").arg(rayKindWord(s.kind)).arg(s.depth) + QStringLiteral("\n") +
-         where + QStringLiteral("\n") + carried + QStringLiteral("\n") + why + QStringLiteral("\n");
 }
 
 QString InspectorPanel::text() const { return m_text->toPlainText(); }

@@ -57,9 +57,6 @@ class InspectorPanel : public QWidget {
   void segmentRequested(int id);
 
  private:
-  /// The first lines: the ray's kind, where it went, the share of the pixel's light it
-  /// carried and why it stopped, in the window's language.
-  QString inWords(const RayInspection& inspection) const;
   const SceneDocument& m_document;
   const RayTreePanel& m_rays;
   int m_segment = -1;

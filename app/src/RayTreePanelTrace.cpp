@@ -12,6 +12,7 @@
 #include "words/UiWords.h"
 
 #include "raylab/core/Comparison.h"
+#include "raylab/core/RayWords.h"
 #include "raylab/core/Scene.h"
 #include "raylab/core/Tracer.h"
 #include "raylab/vis/SceneView.h"
@@ -78,27 +79,11 @@ void RayTreePanel::showPixelTrace(PixelTrace traced) {
   m_grid = false;
   const PixelTrace& trace = *m_trace;
 
-  // Summarise: which sample, rays by kind, the estimate.
-  const auto triple = [](const Vec3& v) {
-    return QStringLiteral("(%1, %2, %3)")
-        .arg(v.x, 0, 'g', 6)
-        .arg(v.y, 0, 'g', 6)
-        .arg(v.z, 0, 'g', 6);
-  };
-  QString info = trace.root ? tr("%1: a chosen ray from %2 along %3\n%4")
-                                  .arg(algorithmLabel(trace.algorithm))
-                                  .arg(triple(trace.root->origin))
-                                  .arg(triple(trace.root->direction))
-                                  .arg(traceSummary(trace))
-                            : tr("%1: pixel (%2, %3), sample %4\n%5")
-                                  .arg(algorithmLabel(trace.algorithm))
-                                  .arg(trace.x)
-                                  .arg(trace.y)
-                                  .arg(trace.sample)
-                                  .arg(traceSummary(trace));
-  if (trace.tree.truncated)
-    info += QStringLiteral("\n") + QString::fromStdString(trace.tree.message);
-  setTraceInfo(info);
+  // Summarise: which sample, rays by kind, the estimate, and why it stopped early.
+  const Language language = uiLanguage();
+  std::string info = traceHeading(trace, language);
+  if (trace.tree.truncated) info += "\n" + stopWords(trace.tree.stop, language);
+  setTraceInfo(QString::fromStdString(info));
   showTrace();
 }
 
@@ -132,16 +117,13 @@ void RayTreePanel::showGrid(const GridTrace& grid, Algorithm algorithm, int acro
   // restyle would reveal the grid's rays on the tree the view still draws; showTrace below
   // draws the grid in the box's colouring.
   m_styleGroup->setColouringQuietly(vis::RayColouring::Energy);
-  QString info = tr("%1: Simulate %2 x %3, %4 pixels, %5 rays")
-                     .arg(algorithmLabel(algorithm))
-                     .arg(across)
-                     .arg(down)
-                     .arg(grid.traces.size())
-                     .arg(grid.combined.segments.size());
-  if (grid.truncated) info += QStringLiteral("\n") + QString::fromStdString(grid.message);
-  setTraceInfo(info);
+  const Language language = uiLanguage();
+  const std::string stopped = stopWords(grid.stop, language);
+  std::string info = gridHeading(algorithm, across, down, grid, language);
+  if (grid.truncated) info += "\n" + stopped;
+  setTraceInfo(QString::fromStdString(info));
   showTrace();
-  if (grid.truncated) setStatus(QString::fromStdString(grid.message));
+  if (grid.truncated) setStatus(QString::fromStdString(stopped));
 }
 
 void RayTreePanel::showBundle(const GridTrace& bundle, Algorithm algorithm, int x, int y,
@@ -155,15 +137,10 @@ void RayTreePanel::showBundle(const GridTrace& bundle, Algorithm algorithm, int 
     combined->estimate += t.estimate / double(bundle.traces.size());
   m_trace = combined;
   m_grid = false;
-  QString info = tr("%1: pixel (%2, %3), samples %4 to %5 drawn together, %6 rays")
-                     .arg(algorithmLabel(algorithm))
-                     .arg(x)
-                     .arg(y)
-                     .arg(first)
-                     .arg(first + int(bundle.traces.size()) - 1)
-                     .arg(bundle.combined.segments.size());
-  if (bundle.truncated) info += QStringLiteral("\n") + QString::fromStdString(bundle.message);
-  setTraceInfo(info);
+  const Language language = uiLanguage();
+  std::string info = bundleHeading(algorithm, x, y, first, bundle, language);
+  if (bundle.truncated) info += "\n" + stopWords(bundle.stop, language);
+  setTraceInfo(QString::fromStdString(info));
   showTrace();
 }
 

@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace raylab::python {
@@ -33,33 +34,16 @@ std::string objectName(const TraceData& data, int object) {
                                                      : std::string();
 }
 
-/// The segment under the keys of the JSON dump (RayTreeJson), vectors as tuples.
+/// The segment under the keys of the JSON dump (RayTreeJson::forEachField), vectors as
+/// tuples.
 py::dict segmentDict(const TraceData& data, const RaySegment& s) {
   py::dict j;
-  j["id"] = s.id;
-  j["parent"] = s.parent;
-  j["first_child"] = s.firstChild;
-  j["child_count"] = s.childCount;
-  j["kind"] = toString(s.kind);
-  j["depth"] = s.depth;
-  j["origin"] = toTuple(s.origin);
-  j["direction"] = toTuple(s.direction);
-  j["time"] = s.time;
-  j["hit"] = s.hit;
-  j["end_point"] = toTuple(s.endPoint);
-  j["light_point"] = toTuple(s.lightPoint);
-  j["object"] = s.object;
-  j["object_name"] = objectName(data, s.object);
-  if (s.lightObject >= 0) j["light_object"] = s.lightObject;
-  if (s.pointLight >= 0) j["point_light"] = s.pointLight;
-  if (s.lightObject >= 0 || s.pointLight >= 0) j["light_name"] = lightNameOf(s, *data.scene);
-  j["normal"] = toTuple(s.normal);
-  j["weight"] = toTuple(s.weight);
-  j["pdf"] = s.pdf;
-  j["throughput"] = toTuple(s.throughput);
-  j["emitted"] = toTuple(s.emitted);
-  j["radiance"] = toTuple(s.radiance);
-  j["end_reason"] = RayTreeJson::endReasonName(s.endReason);
+  RayTreeJson::forEachField(s, *data.scene, [&j](const char* key, const auto& value) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Vec3>)
+      j[key] = toTuple(value);
+    else
+      j[key] = value;
+  });
   return j;
 }
 
@@ -293,7 +277,10 @@ Made by raylab.trace or Stepper.tree().)")
                              [](const TraceData& d) { return countsDict(d.trace.counts); })
       .def_property_readonly("depth", [](const TraceData& d) { return d.trace.depth(); })
       .def_property_readonly("truncated", [](const TraceData& d) { return d.trace.tree.truncated; })
-      .def_property_readonly("message", [](const TraceData& d) { return d.trace.tree.message; })
+      .def_property_readonly(
+          "message",
+          [](const TraceData& d) { return stopWords(d.trace.tree.stop, Language::English); },
+          "Why the trace stopped early, in English ('' when it did not).")
       .def_property_readonly("step_texts",
                              [](const TraceData& d) { return stepTexts(d.trace, *d.scene); })
       .def_property_readonly("segments",

@@ -680,6 +680,12 @@ TEST_F(WindowLessonTest, 21_EveryStepOfLessons7And8LooksAsInTheHandout) {
   compareWithHandouts(*m_window, [this] { return grabView(); }, {"07-", "08-"});
 }
 
+// Lesson 9 (acceleration) came with the renumbering after 18-21 were written: its eleven 3D
+// steps too.
+TEST_F(WindowLessonTest, 21b_EveryStepOfLesson9LooksAsInTheHandout) {
+  compareWithHandouts(*m_window, [this] { return grabView(); }, {"09-"});
+}
+
 // Issue 33: after a comparison or plot step the next 3D step gets the 3D view back: the
 // comparison pane hidden, its comparison stopped, the view at least half the window high.
 TEST_F(WindowLessonTest, 22_AComparisonStepThenA3DStepGivesThe3DViewBack) {

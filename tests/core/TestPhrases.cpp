@@ -190,6 +190,66 @@ TEST(RayWords, 02_ARecordedRayAndATraceSummary) {
             "3 条光线（相机 1、阴影 2），深度 1，估计值 (0.5, 0.25, 0.125)");
 }
 
+// Why a trace stopped early, from the facts core records (TreeStop, GridStop), and the
+// window's trace info headings: the words the engine and the window used to compose
+// themselves, now the phrase table's, in both languages (the Chinese as the window's .ts
+// had it).
+TEST(RayWords, 03_WhyATraceStoppedAndItsHeading) {
+  EXPECT_EQ(stopWords(TreeStop{}, Language::English), "");
+  const TreeStop budget{StopCause::Budget, 40, 40 * 160, 40};
+  EXPECT_EQ(stopWords(budget, Language::English),
+            "ray budget reached: the tree stops at 40 rays (0.0061 MiB, at most 40 rays); rays "
+            "whose children did not fit end as 'stopped', and the estimate covers the rays traced");
+  EXPECT_EQ(stopWords(budget, Language::Chinese),
+            "光线预算已用完：光线树停在 40 条光线（0.0061 MiB，最多 40 条光线）；放不下子光线的"
+            "光线以“已停止”结束，估计值只计入已追踪的光线");
+  EXPECT_EQ(stopWords(TreeStop{StopCause::Cancelled, 12, 0, 0}, Language::English),
+            "cancelled after 12 rays: the tree is cut short");
+  const GridStop grid{StopCause::Budget, 3, 16, false, std::size_t(2) << 20};
+  EXPECT_EQ(stopWords(grid, Language::English),
+            "ray-tree memory budget (2 MiB) reached after 3 of 16 pixels; the last tree is cut "
+            "short");
+  EXPECT_EQ(stopWords(grid, Language::Chinese),
+            "共 16 个像素，追踪到第 3 个时用完了光线树的内存预算（2 MiB）；最后一棵光线树不完整");
+  EXPECT_EQ(stopWords(GridStop{StopCause::Cancelled, 2, 8, true, 0}, Language::English),
+            "cancelled after 2 of 8 samples; the last tree is cut short");
+
+  PixelTrace trace;
+  trace.algorithm = Algorithm::Whitted;
+  trace.x = 3;
+  trace.y = 4;
+  trace.sample = 2;
+  trace.tree.segments.resize(1);
+  trace.tree.segments[0].radiance = Vec3(0.5);
+  EXPECT_EQ(traceHeading(trace, Language::English),
+            "Whitted ray tracing (1979): pixel (3, 4), sample 2\n1 ray (camera 1), depth 0, "
+            "estimate (0.5, 0.5, 0.5)");
+  EXPECT_EQ(traceHeading(trace, Language::Chinese).rfind("Whitted 光线追踪", 0), 0u);
+  EXPECT_NE(traceHeading(trace, Language::Chinese).find("：像素 (3, 4)，第 2 号样本\n1 条光线"),
+            std::string::npos)
+      << traceHeading(trace, Language::Chinese);
+  trace.root = Ray::make(Point3(-8.0, 2.0, 0.0), Vec3(1.0, 0.0, 0.0));
+  EXPECT_NE(traceHeading(trace, Language::English)
+                .find(": a chosen ray from (-8, 2, 0) along (1, 0, 0)\n1 ray"),
+            std::string::npos)
+      << traceHeading(trace, Language::English);
+  GridTrace g;
+  g.traces.resize(4);
+  g.combined.segments.resize(9);
+  EXPECT_NE(gridHeading(Algorithm::PathTracing, 2, 2, g, Language::English)
+                .find(": Simulate 2 x 2, 4 pixels, 9 rays"),
+            std::string::npos);
+  EXPECT_NE(gridHeading(Algorithm::PathTracing, 2, 2, g, Language::Chinese)
+                .find("：仿真 2 × 2，4 个像素，9 条光线"),
+            std::string::npos);
+  EXPECT_NE(bundleHeading(Algorithm::Distributed, 5, 6, 0, g, Language::English)
+                .find(": pixel (5, 6), samples 0 to 3 drawn together, 9 rays"),
+            std::string::npos);
+  EXPECT_NE(bundleHeading(Algorithm::Distributed, 5, 6, 0, g, Language::Chinese)
+                .find("：像素 (5, 6)，第 0 到第 3 个采样画在一起，共 9 条光线"),
+            std::string::npos);
+}
+
 // The inspector's rows and lines from an inspection's facts, in both languages: English
 // in a column of 12, Chinese with its own field names and words, names in its quotes.
 TEST(InspectorWords, 01_RowsAndLinesInBothLanguages) {
@@ -241,6 +301,48 @@ TEST(InspectorWords, 01_RowsAndLinesInBothLanguages) {
       << zh;
   EXPECT_EQ(oracleText(r, Language::English), "Exact oracle: not computed\n");
   EXPECT_EQ(oracleText(r, Language::Chinese), "精确判定器：未计算\n");
+}
+
+// The inspector's first lines (the window's "Where / What it carried / Why it stopped"),
+// from the facts, in both languages: the words the window composed with tr() before, the
+// Chinese as its .ts had it.
+TEST(InspectorWords, 02_TheSummaryInBothLanguages) {
+  RayInspection r;
+  r.segment.kind = RayKind::Reflection;
+  r.segment.depth = 2;
+  r.segment.hit = true;
+  r.segment.endReason = EndReason::Spawned;
+  r.objectName = "ball";
+  r.distance = 2.123456;
+  r.energy = 0.25;
+  EXPECT_EQ(inspectionSummary(r, 1.0, Language::English),
+            "reflection ray, depth 2\nWhere: it hit 'ball', 2.123 units from where it started\n"
+            "What it carried: 25.0% of the light this pixel sample found\n"
+            "Why it stopped: spawned children\n");
+  EXPECT_EQ(inspectionSummary(r, 1.0, Language::Chinese),
+            "反射光线，深度 2\n去向：打中“ball”，距起点 2.123 个单位\n"
+            "携带：这个像素采样所得光能的 25.0%\n为何终止：产生子光线\n");
+  EXPECT_NE(inspectionSummary(r, 0.0, Language::English)
+                .find("\nWhat it carried: no light (this sample found none)\n"),
+            std::string::npos);
+  r.segment.kind = RayKind::Shadow;
+  r.segment.endReason = EndReason::Occluded;
+  EXPECT_NE(inspectionSummary(r, 1.0, Language::English)
+                .find("\nWhere: towards a light, but 'ball' is in the way, 2.123 units on\n"),
+            std::string::npos);
+  EXPECT_NE(inspectionSummary(r, 1.0, Language::Chinese)
+                .find("\n去向：射向光源，但在 2.123 个单位处被“ball”挡住\n"),
+            std::string::npos);
+  r.segment.endReason = EndReason::ReachedLight;
+  EXPECT_NE(inspectionSummary(r, 1.0, Language::English)
+                .find("\nWhere: from the surface to a point on the light, 2.123 units away\n"),
+            std::string::npos);
+  r.segment.kind = RayKind::Camera;
+  r.segment.hit = false;
+  r.segment.endReason = EndReason::Escaped;
+  EXPECT_NE(inspectionSummary(r, 1.0, Language::Chinese)
+                .find("\n去向：没有打中任何物体，离开了场景\n为何终止：逃逸出场景\n"),
+            std::string::npos);
 }
 
 TEST(Algorithms, 01_EveryAlgorithmHasOneRowWordsAndPhrases) {

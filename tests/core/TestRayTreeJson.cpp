@@ -2,6 +2,7 @@
 // name, the header names the pixel, sample, algorithm and objects, and bad documents and
 // unwritable files give errors naming the place.
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/RayWords.h"
 
 #include "TransportScenes.h"
 
@@ -26,7 +27,7 @@ RayTree handMadeTree() {
   tree.pixelY = 3;
   tree.sample = 5;
   tree.truncated = true;
-  tree.message = "ray tree truncated at 9 rays";
+  tree.stop = TreeStop{StopCause::Budget, 9, 9 * sizeof(RaySegment), 9};
   for (int i = 0; i < 9; ++i) {
     RaySegment s;
     s.id = i;
@@ -71,7 +72,13 @@ TEST(RayTreeJson, 01_EveryFieldRoundTripsExactly) {
   EXPECT_EQ(back.pixelY, 3);
   EXPECT_EQ(back.sample, 5);
   EXPECT_TRUE(back.truncated);
-  EXPECT_EQ(back.message, tree.message);
+  // The stop's words are written for people, in English from the phrase table; not read.
+  const nlohmann::json doc = nlohmann::json::parse(
+      RayTreeJson::serialize(tree, scene, settingsFor(Algorithm::Whitted, 1)));
+  EXPECT_EQ(doc.at("message").get<std::string>(), stopWords(tree.stop, Language::English));
+  EXPECT_EQ(
+      doc.at("message").get<std::string>().rfind("ray budget reached: the tree stops at 9 rays", 0),
+      0u);
   ASSERT_EQ(back.segments.size(), tree.segments.size());
   for (std::size_t i = 0; i < tree.segments.size(); ++i) {
     const RaySegment& a = tree.segments[i];

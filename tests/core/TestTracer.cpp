@@ -61,9 +61,9 @@ TEST(Tracer, 02_EndReasonsHaveOneTableOfWords) {
     const EndReasonWords& w = words(EndReason(r));
     EXPECT_EQ(w.reason, EndReason(r));
     EXPECT_EQ(endReasonFromJson(w.json), EndReason(r)) << w.json;
-    EXPECT_STREQ(toString(EndReason(r)), w.label);
+    EXPECT_EQ(toString(EndReason(r)), endReasonLabel(EndReason(r), Language::English));
     jsonNames.insert(w.json);
-    labels.insert(w.label);
+    labels.insert(toString(EndReason(r)));
   }
   EXPECT_EQ(jsonNames.size(), std::size_t(EndReason::Stopped) + 1);
   EXPECT_EQ(labels.size(), jsonNames.size());
@@ -342,20 +342,27 @@ TEST(Tracer, 08_MemoryBudgetBoundsTheRaysTraced) {
       if (tree.truncated) {
         ++truncatedTrees;
         EXPECT_GT(counts.total(), tree.segments.size()) << what;
-        EXPECT_NE(tree.message.find("ray budget reached: the tree stops at " +
-                                    std::to_string(tree.segments.size()) + " rays ("),
+        // The facts, and the phrase table's words for them.
+        EXPECT_EQ(tree.stop.cause, StopCause::Budget) << what;
+        EXPECT_EQ(tree.stop.rays, tree.segments.size()) << what;
+        EXPECT_EQ(tree.stop.maxRays, 40u) << what;
+        EXPECT_EQ(tree.stop.budgetBytes, budget) << what;
+        const std::string words = stopWords(tree.stop, Language::English);
+        EXPECT_NE(words.find("ray budget reached: the tree stops at " +
+                             std::to_string(tree.segments.size()) + " rays ("),
                   std::string::npos)
-            << tree.message;
-        EXPECT_NE(tree.message.find(" MiB, at most 40 rays); rays whose children did not fit "
-                                    "end as 'stopped'"),
+            << words;
+        EXPECT_NE(words.find(" MiB, at most 40 rays); rays whose children did not fit "
+                             "end as 'stopped'"),
                   std::string::npos)
-            << tree.message;
+            << words;
         EXPECT_TRUE(std::any_of(tree.segments.begin(), tree.segments.end(), [](const auto& s) {
           return s.endReason == EndReason::Stopped && s.childCount == 0;
         })) << what;
         expectNearRelative(stepper.estimate(), tree.estimate(), what);
       } else {
-        EXPECT_TRUE(tree.message.empty());
+        EXPECT_EQ(tree.stop.cause, StopCause::None) << what;
+        EXPECT_EQ(stopWords(tree.stop, Language::English), "") << what;
         EXPECT_EQ(stepper.estimate(), full) << what;
         EXPECT_EQ(stepper.counts().byKind, counts.byKind) << what;
       }
@@ -417,7 +424,8 @@ TEST(Tracer, 08b_BushyGlossyRoomEndsAtTheBudget) {
   EXPECT_LE(trace.tree.segments.size(), limit);
   EXPECT_GT(trace.tree.segments.size(), limit - 20);  // groups of at most 17 children
   EXPECT_EQ(trace.counts.total(), trace.tree.segments.size());
-  EXPECT_NE(trace.tree.message.find("ray budget reached"), std::string::npos) << trace.tree.message;
+  EXPECT_EQ(trace.tree.stop.cause, StopCause::Budget);
+  EXPECT_EQ(trace.tree.stop.maxRays, limit);
   expectFinishedTree(trace.tree, "glossy room");
   expectNearRelative(trace.estimate, trace.tree.estimate(), "glossy room");
   // A ray that could not spawn says so in its step: no children, and how many it wanted.
@@ -454,11 +462,16 @@ TEST(Tracer, 08c_TracePixelCanBeCancelledFromAnotherThread) {
   EXPECT_TRUE(before.cancelled);
   EXPECT_TRUE(before.tree.truncated);
   EXPECT_TRUE(before.tree.segments.empty());
-  EXPECT_EQ(before.tree.message, "cancelled after 0 rays: the tree is cut short");
+  EXPECT_EQ(before.tree.stop.cause, StopCause::Cancelled);
+  EXPECT_EQ(stopWords(before.tree.stop, Language::English),
+            "cancelled after 0 rays: the tree is cut short");
+  EXPECT_EQ(stopWords(before.tree.stop, Language::Chinese), "追踪 0 条光线后已取消：光线树不完整");
   const GridTrace grid = traceGrid(scene, settings, 4, 4, limits);
   EXPECT_TRUE(grid.cancelled);
   EXPECT_EQ(grid.traces.size(), 1u);
-  EXPECT_NE(grid.message.find("cancelled after 1 of 16 pixels"), std::string::npos) << grid.message;
+  EXPECT_EQ(grid.stop.cause, StopCause::Cancelled);
+  EXPECT_EQ(stopWords(grid.stop, Language::English),
+            "cancelled after 1 of 16 pixels; the last tree is cut short");
 
   cancel = false;
   limits.memoryBudget = std::size_t(1) << 30;
@@ -469,7 +482,8 @@ TEST(Tracer, 08c_TracePixelCanBeCancelledFromAnotherThread) {
   worker.join();
   EXPECT_TRUE(during.cancelled);
   EXPECT_TRUE(during.tree.truncated);
-  EXPECT_EQ(during.tree.message.rfind("cancelled after ", 0), 0u) << during.tree.message;
+  EXPECT_EQ(during.tree.stop.cause, StopCause::Cancelled);
+  EXPECT_EQ(during.tree.stop.rays, during.counts.total());
   EXPECT_LT(during.tree.segments.size(), limits.memoryBudget / sizeof(RaySegment));
   EXPECT_EQ(during.steps.size(), during.tree.segments.size());
   EXPECT_EQ(during.counts.total(), during.tree.segments.size());
@@ -587,8 +601,12 @@ TEST(Tracer, 12_GridTracesEachPixelAndStopsAtTheBudget) {
   EXPECT_TRUE(small.truncated);
   EXPECT_LT(small.traces.size(), 64u);
   EXPECT_LE(small.combined.segments.size(), 12u);
-  EXPECT_NE(small.message.find("memory budget"), std::string::npos) << small.message;
-  EXPECT_NE(small.message.find("of 64 pixels"), std::string::npos) << small.message;
+  EXPECT_EQ(small.stop.cause, StopCause::Budget);
+  EXPECT_EQ(small.stop.of, 64u);
+  EXPECT_EQ(small.stop.done, small.traces.size());
+  const std::string words = stopWords(small.stop, Language::English);
+  EXPECT_NE(words.find("memory budget (0 MiB) reached after"), std::string::npos) << words;
+  EXPECT_NE(words.find("of 64 pixels"), std::string::npos) << words;
 }
 
 // A bundle: samples first .. first + n - 1 of one pixel, each tree equal to tracePixel of

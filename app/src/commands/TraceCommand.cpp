@@ -97,7 +97,8 @@ int writeTrees(const TraceOptions& options, const Scene& scene, const RenderSett
   std::cout << printable(o.common.out) << "\n" << printable(json) << "\n";
   std::cout << what << ", " << toString(settings.algorithm) << ", seed " << settings.seed << ": "
             << rays << " rays" << std::endl;
-  if (traced.truncated) std::cerr << "raylab: warning: " << traced.message << std::endl;
+  if (traced.truncated)
+    std::cerr << "raylab: warning: " << stopWords(traced.stop, Language::English) << std::endl;
   return kExitOk;
 }
 
@@ -271,7 +272,8 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
       options.json.empty() ? replaceExtension(o.common.out, ".json") : options.json;
   saveTree(tree, scene, settings, json, drawn.picture, o.common.out);
   printTrace(options, o, scene, settings, root, trace, json, drawn.crossings);
-  if (tree.truncated) std::cerr << "raylab: warning: " << printable(tree.message) << std::endl;
+  if (tree.truncated)
+    std::cerr << "raylab: warning: " << stopWords(tree.stop, Language::English) << std::endl;
   return kExitOk;
 }
 

@@ -1,11 +1,10 @@
 #include "raylab/core/PixelTrace.h"
 
+#include "integrators/TraceSteps.h"
 #include "raylab/core/RayWords.h"
 
 #include <algorithm>
 #include <array>
-#include <iomanip>
-#include <sstream>
 
 namespace raylab {
 
@@ -15,11 +14,8 @@ int PixelTrace::depth() const {
   return deepest;
 }
 
-namespace {
-
-/// tracePixel, or traceRay when `root` is set.
-PixelTrace traceFrom(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits,
-                     const std::optional<Ray>& root) {
+PixelTrace traceSteps(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits,
+                      const std::optional<Ray>& root, const std::function<void(Stepper&)>& step) {
   PixelTrace trace;
   trace.algorithm = tracer.settings().algorithm;
   trace.x = x;
@@ -35,12 +31,14 @@ PixelTrace traceFrom(const Tracer& tracer, int x, int y, int sample, const Trace
   };
   while (!stepper.done()) {
     if (cancelled()) {
-      stepper.stop("cancelled after " + std::to_string(stepper.counts().total()) +
-                   " rays: the tree is cut short");
+      stepper.stop();
       trace.cancelled = true;
       break;
     }
-    stepper.step();
+    if (step)
+      step(stepper);
+    else
+      stepper.step();
     const StepEvent& event = stepper.lastEvent();
     if (event.ray < 0) continue;
     if (std::size_t(event.ray) >= trace.steps.size())
@@ -59,15 +57,13 @@ PixelTrace traceFrom(const Tracer& tracer, int x, int y, int sample, const Trace
   return trace;
 }
 
-}  // namespace
-
 PixelTrace tracePixel(const Tracer& tracer, int x, int y, int sample, const TraceLimits& limits) {
-  return traceFrom(tracer, x, y, sample, limits, std::nullopt);
+  return traceSteps(tracer, x, y, sample, limits, std::nullopt);
 }
 
 PixelTrace traceRay(const Tracer& tracer, const Ray& root, int x, int y, int sample,
                     const TraceLimits& limits) {
-  return traceFrom(tracer, x, y, sample, limits, root);
+  return traceSteps(tracer, x, y, sample, limits, root);
 }
 
 PixelTrace traceRay(const Scene& scene, const RenderSettings& settings, const Ray& root, int x,
@@ -104,11 +100,11 @@ std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, i
 
 namespace {
 
-/// Traces each (x, y, sample) of `jobs` in order into one GridTrace; `unit` names what a
-/// job is in the message ("pixels", "samples").
+/// Traces each (x, y, sample) of `jobs` in order into one GridTrace; `samples` tells
+/// what a job is (a bundle's sample or a grid's pixel) for GridStop.
 GridTrace traceAll(const Scene& scene, const RenderSettings& settings,
                    const std::vector<std::array<int, 3>>& jobs, const TraceLimits& limits,
-                   const std::string& unit) {
+                   bool samples) {
   GridTrace grid;
   const Tracer tracer(scene, settings);
   std::size_t used = 0;
@@ -131,18 +127,13 @@ GridTrace traceAll(const Scene& scene, const RenderSettings& settings,
     grid.traces.push_back(std::move(trace));
     if (full) {
       grid.truncated = true;
-      const std::string where = std::to_string(grid.traces.size()) + " of " +
-                                std::to_string(jobs.size()) + " " + unit +
-                                "; the last tree is cut short";
-      grid.message = grid.cancelled
-                         ? "cancelled after " + where
-                         : "ray-tree memory budget (" + std::to_string(limits.memoryBudget >> 20) +
-                               " MiB) reached after " + where;
+      grid.stop = GridStop{grid.cancelled ? StopCause::Cancelled : StopCause::Budget,
+                           grid.traces.size(), jobs.size(), samples, limits.memoryBudget};
+      grid.combined.stop = grid.traces.back().tree.stop;
       break;
     }
   }
   grid.combined.truncated = grid.truncated;
-  grid.combined.message = grid.message;
   return grid;
 }
 
@@ -153,14 +144,14 @@ GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int acro
   std::vector<std::array<int, 3>> jobs;
   for (const auto& [x, y] : gridPixels(scene.camera.width, scene.camera.height, across, down))
     jobs.push_back({x, y, 0});
-  return traceAll(scene, settings, jobs, limits, "pixels");
+  return traceAll(scene, settings, jobs, limits, false);
 }
 
 GridTrace traceBundle(const Scene& scene, const RenderSettings& settings, int x, int y,
                       int firstSample, int count, const TraceLimits& limits) {
   std::vector<std::array<int, 3>> jobs;
   for (int i = 0; i < count; ++i) jobs.push_back({x, y, firstSample + i});
-  GridTrace bundle = traceAll(scene, settings, jobs, limits, "samples");
+  GridTrace bundle = traceAll(scene, settings, jobs, limits, true);
   bundle.combined.pixelX = x;
   bundle.combined.pixelY = y;
   bundle.combined.sample = firstSample;

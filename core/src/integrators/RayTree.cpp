@@ -1,5 +1,6 @@
 #include "raylab/core/RayTree.h"
 
+#include "raylab/core/RayWords.h"
 #include "raylab/core/Scene.h"
 
 #include <iterator>
@@ -29,16 +30,16 @@ namespace {
 
 // One row per EndReason, in enum order.
 constexpr EndReasonWords kEndReasonWords[] = {
-    {EndReason::Pending, "pending", "pending"},
-    {EndReason::Escaped, "escaped", "escaped"},
-    {EndReason::HitLight, "hit_light", "hit a light"},
-    {EndReason::MaxDepth, "max_depth", "max depth"},
-    {EndReason::RussianRoulette, "russian_roulette", "Russian roulette"},
-    {EndReason::Absorbed, "absorbed", "absorbed"},
-    {EndReason::Occluded, "occluded", "occluded"},
-    {EndReason::ReachedLight, "reached_light", "reached its light"},
-    {EndReason::Spawned, "spawned", "spawned children"},
-    {EndReason::Stopped, "stopped", "stopped (budget)"},
+    {EndReason::Pending, "pending"},
+    {EndReason::Escaped, "escaped"},
+    {EndReason::HitLight, "hit_light"},
+    {EndReason::MaxDepth, "max_depth"},
+    {EndReason::RussianRoulette, "russian_roulette"},
+    {EndReason::Absorbed, "absorbed"},
+    {EndReason::Occluded, "occluded"},
+    {EndReason::ReachedLight, "reached_light"},
+    {EndReason::Spawned, "spawned"},
+    {EndReason::Stopped, "stopped"},
 };
 
 }  // namespace
@@ -52,7 +53,7 @@ static_assert(rowsInEnumOrder(), "one row of words per end reason, in enum order
 
 const EndReasonWords& words(EndReason reason) { return kEndReasonWords[std::size_t(reason)]; }
 
-const char* toString(EndReason reason) { return words(reason).label; }
+std::string toString(EndReason reason) { return endReasonLabel(reason, Language::English); }
 
 std::optional<EndReason> endReasonFromJson(const std::string& json) {
   for (const EndReasonWords& row : kEndReasonWords)
@@ -100,7 +101,7 @@ std::string RayTree::toString() const {
   std::ostringstream out;
   out << "RayTree[pixel=(" << pixelX << ", " << pixelY << "), sample=" << sample
       << ", rays=" << segments.size() << ", estimate=" << raylab::toString(estimate());
-  if (truncated) out << ", truncated: " << message;
+  if (truncated) out << ", truncated: " << stopWords(stop, Language::English);
   out << "]";
   return out.str();
 }

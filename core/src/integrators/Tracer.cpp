@@ -401,7 +401,7 @@ void Stepper::runToEnd() {
   }
 }
 
-void Stepper::stop(const std::string& why) {
+void Stepper::stop() {
   if (m_queue.empty()) return;
   // The waiting rays are the last ids of the tree (children are numbered in queue order):
   // drop them, and cut their parents' child lists where they start.
@@ -415,7 +415,7 @@ void Stepper::stop(const std::string& why) {
     s.endReason = EndReason::Stopped;
   }
   m_tree.truncated = true;
-  m_tree.message = why;
+  m_tree.stop = TreeStop{StopCause::Cancelled, std::size_t(m_counts.total()), 0, 0};
   m_tree.propagate();
 }
 

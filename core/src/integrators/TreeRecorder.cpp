@@ -1,8 +1,6 @@
 #include "integrators/TreeRecorder.h"
 
 #include <algorithm>
-#include <iomanip>
-#include <sstream>
 
 namespace raylab {
 
@@ -19,12 +17,7 @@ int TreeRecorder::reserve(std::size_t count) {
     // stepper ends, so the budget bounds the work (rays traced and queued), not only the
     // memory of the tree.
     m_tree.truncated = true;
-    std::ostringstream out;
-    out << "ray budget reached: the tree stops at " << m_tree.segments.size() << " rays ("
-        << std::setprecision(3) << double(m_budget) / double(1 << 20) << " MiB, at most " << limit
-        << " rays); rays whose children did not fit end as 'stopped', and the "
-        << "estimate covers the rays traced";
-    m_tree.message = out.str();
+    m_tree.stop = TreeStop{StopCause::Budget, m_tree.segments.size(), m_budget, limit};
     return -1;
   }
   if (needed > m_tree.segments.capacity())

@@ -17,7 +17,7 @@ namespace raylab {
  *
  * The engine step calls it only when it is given one: the image renderer passes none
  * (nullptr), so recording costs images nothing. Recording stops for good at `budget`
- * bytes of segments, with a message in RayTree::message; the estimate is still exact.
+ * bytes of segments, with the facts in RayTree::stop; the estimate is still exact.
  * Private to the integrators.
  */
 class TreeRecorder {

@@ -1,5 +1,6 @@
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/AtomicFile.h"
+#include "raylab/core/RayWords.h"
 
 #include "io/JsonChecks.h"
 
@@ -134,7 +135,7 @@ void readHeader(const json& doc, const std::string& origin, RayTree& tree,
   tree.pixelY = *y;
   tree.sample = headerInteger<int>(doc, "sample", origin);
   tree.truncated = doc.value("truncated", false);
-  tree.message = doc.value("message", std::string());
+  // "message" is words for people (stopWords): read by nobody, its facts are not kept.
   read.scene = doc.value("scene", std::string());
   read.algorithm = doc.value("algorithm", std::string());
   if (doc.contains("seed")) read.seed = headerInteger<std::uint64_t>(doc, "seed", origin);
@@ -203,41 +204,17 @@ std::string RayTreeJson::serialize(const RayTree& tree, const Scene& scene,
   for (int k = 0; k < kRayKindCount; ++k) kinds[toString(RayKind(k))] = byKind[std::size_t(k)];
   doc["rays_by_kind"] = kinds;
   doc["truncated"] = tree.truncated;
-  doc["message"] = tree.message;
+  doc["message"] = stopWords(tree.stop, Language::English);
 
   json segments = json::array();
   for (const RaySegment& s : tree.segments) {
-    const bool named = s.object >= 0 && s.object < int(scene.objects.size());
-    json j;
-    j["id"] = s.id;
-    j["parent"] = s.parent;
-    j["first_child"] = s.firstChild;
-    j["child_count"] = s.childCount;
-    j["kind"] = toString(s.kind);
-    j["depth"] = s.depth;
-    j["origin"] = vec(s.origin);
-    j["direction"] = vec(s.direction);
-    j["time"] = s.time;
-    j["hit"] = s.hit;
-    j["end_point"] = vec(s.endPoint);
-    j["light_point"] = vec(s.lightPoint);
-    j["object"] = s.object;
-    j["object_name"] = named ? scene.objects[std::size_t(s.object)].name : std::string();
-    // A shadow ray's light: an area light (an object) or a point light, and its name.
-    const std::string light = lightNameOf(s, scene);
-    if (!light.empty()) {
-      j[s.lightObject >= 0 ? "light_object" : "point_light"] =
-          s.lightObject >= 0 ? s.lightObject : s.pointLight;
-      j["light_name"] = light;
-    }
-    j["normal"] = vec(s.normal);
-    if (!isZero(s.shadingNormal)) j["shading_normal"] = vec(s.shadingNormal);
-    j["weight"] = vec(s.weight);
-    j["pdf"] = s.pdf;
-    j["throughput"] = vec(s.throughput);
-    j["emitted"] = vec(s.emitted);
-    j["radiance"] = vec(s.radiance);
-    j["end_reason"] = endReasonName(s.endReason);
+    json j = json::object();
+    forEachField(s, scene, [&j](const char* key, const auto& value) {
+      if constexpr (std::is_same_v<std::decay_t<decltype(value)>, Vec3>)
+        j[key] = vec(value);
+      else
+        j[key] = value;
+    });
     segments.push_back(std::move(j));
   }
   doc["segments"] = std::move(segments);

@@ -3,6 +3,7 @@
 
 #include "raylab/core/StudentHooks.h"
 
+#include "integrators/TraceSteps.h"
 #include "raylab/core/ExactOracle.h"
 #include "raylab/core/Tracer.h"
 
@@ -102,29 +103,12 @@ namespace {
 /// The student's tree, each call tagged with the ray whose step made it.
 PixelTrace traceWithLog(const Tracer& tracer, int x, int y, int sample,
                         const std::optional<Ray>& root, StudentLog& log) {
-  PixelTrace trace;
-  trace.algorithm = tracer.settings().algorithm;
-  trace.x = x;
-  trace.y = y;
-  trace.sample = sample;
-  trace.root = root;
-  Stepper stepper(tracer, x, y, sample, kDefaultTreeBudget, root);
-  while (!stepper.done()) {
+  return traceSteps(tracer, x, y, sample, TraceLimits{}, root, [&log](Stepper& stepper) {
     const int id = stepper.queue().front().id;
     const std::size_t before = log.calls.size();
     stepper.step();
     for (std::size_t i = before; i < log.calls.size(); ++i) log.calls[i].ray = id;
-    const StepEvent& event = stepper.lastEvent();
-    if (event.ray < 0) continue;
-    if (std::size_t(event.ray) >= trace.steps.size())
-      trace.steps.resize(std::size_t(event.ray) + 1);
-    trace.steps[std::size_t(event.ray)] = event;
-  }
-  trace.tree = stepper.tree();
-  trace.steps.resize(trace.tree.segments.size());
-  trace.counts = stepper.counts();
-  trace.estimate = stepper.estimate();
-  return trace;
+  });
 }
 
 }  // namespace

@@ -352,3 +352,47 @@ std::string crossingsText(const Scene& scene, const std::vector<SceneCrossing>& 
 }
 
 }  // namespace raylab
+
+namespace raylab {
+
+namespace {
+
+/// printf's `format` of one double ("%.4g"), for the summary's figures.
+std::string printed(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+/// "Where: it hit 'ball', 2.5 units from where it started": where the ray went.
+std::string whereWords(const RayInspection& r, Language language) {
+  const RaySegment& s = r.segment;
+  const std::string distance = printed("%.4g", r.distance);
+  if (s.kind == RayKind::Shadow && s.endReason == EndReason::Occluded)
+    return phrase("inspector.summary.blocked", language,
+                  {{"object", r.objectName}, {"distance", distance}});
+  if (s.kind == RayKind::Shadow)
+    return phrase("inspector.summary.to_light", language, {{"distance", distance}});
+  if (s.hit)
+    return phrase("inspector.summary.hit", language,
+                  {{"object", r.objectName}, {"distance", distance}});
+  return phrase("inspector.summary.miss", language);
+}
+
+}  // namespace
+
+std::string inspectionSummary(const RayInspection& r, double pixelEnergy, Language language) {
+  const RaySegment& s = r.segment;
+  const std::string carried =
+      pixelEnergy > 0.0 ? phrase("inspector.summary.carried", language,
+                                 {{"percent", printed("%.1f", 100.0 * r.energy / pixelEnergy)}})
+                        : phrase("inspector.summary.carried_none", language);
+  return phrase("inspector.summary.heading", language,
+                {{"kind", rayKindWord(s.kind, language)}, {"depth", std::to_string(s.depth)}}) +
+         "\n" + whereWords(r, language) + "\n" + carried + "\n" +
+         phrase("inspector.summary.why", language,
+                {{"reason", endReasonLabel(s.endReason, language)}}) +
+         "\n";
+}
+
+}  // namespace raylab

@@ -3,9 +3,6 @@
 #include "raylab/core/Phrases.h"
 #include "raylab/core/Scene.h"
 
-#include <iomanip>
-#include <sstream>
-
 namespace raylab {
 
 namespace {
@@ -123,14 +120,12 @@ std::string traceSummary(const PixelTrace& trace, Language language) {
   std::array<int, kRayKindCount> byKind{};
   for (const RaySegment& s : trace.tree.segments) ++byKind[std::size_t(s.kind)];
   const Vec3 e = trace.tree.estimate();
-  std::ostringstream estimate;
-  estimate << "(" << std::setprecision(6) << e.x << ", " << e.y << ", " << e.z << ")";
   const std::size_t count = trace.tree.segments.size();
   return phrase(count == 1 ? "trace.summary.one" : "trace.summary.many", language,
                 {{"count", std::to_string(count)},
                  {"kinds", kindCounts(byKind, language, false)},
                  {"depth", std::to_string(trace.depth())},
-                 {"estimate", estimate.str()}});
+                 {"estimate", vectorWords(e)}});
 }
 
 }  // namespace raylab

@@ -33,19 +33,10 @@ class Box final : public Shape {
   ShapeKind kind() const override { return ShapeKind::Box; }
   bool isClosed() const override { return true; }
   bool isFlat() const override { return false; }
-  std::optional<Hit> intersect(const Ray& ray) const override;
-  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
-  std::vector<Crossing> intersectAll(const Ray& ray) const override;
-  Normal3 normal(const Point3& p) const override;
-  bool inside(const Point3& p) const override;
-  void apply(const Mat4& m) override;
-  Bounds3 bounds() const override;
+  /// Shape's interface (RAYLAB_SHAPE_INTERFACE in Shape.h). area(): uniform over the six faces (a
+  /// parallelepiped's faces are parallelograms).
+  RAYLAB_SHAPE_INTERFACE;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Box>(*this); }
-  std::string toString() const override;
-  /// Uniform over the six faces (a parallelepiped's faces are parallelograms).
-  double area() const override;
-  ShapeSample sampleArea(const Vec2& u) const override;
-  double pdfArea(const Point3& p) const override;
 
   Point3 centre() const;
   /// Unit direction of box axis i (0, 1, 2), world space.

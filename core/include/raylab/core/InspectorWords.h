@@ -38,6 +38,12 @@ std::string oracleText(const RayInspection& inspection, Language language);
 /// rayText then oracleText: what `raylab trace --inspect` prints.
 std::string inspectorText(const RayInspection& inspection, Language language);
 
+/// What the window's inspector says first, one line each: "reflection ray, depth 2", where
+/// it went, what it carried (its share of `pixelEnergy`, the camera ray's energy; none when
+/// that is 0) and why it stopped; the last line ends with a newline.
+std::string inspectionSummary(const RayInspection& inspection, double pixelEnergy,
+                              Language language);
+
 /// "t = 7.13  enters 'sphere'" lines, one per crossing, with the objects' names of `scene`.
 std::string crossingsText(const Scene& scene, const std::vector<SceneCrossing>& crossings,
                           Language language);

@@ -68,7 +68,7 @@ struct TraceLimits {
 
 /// Traces sample `sample` of pixel (x, y) of `scene` with `settings` (its algorithm) to
 /// the end, within `limits` (a budget reached or a cancel ends it early, and the tree says
-/// so in RayTree::truncated and RayTree::message).
+/// so in RayTree::truncated and RayTree::stop).
 PixelTrace tracePixel(const Scene& scene, const RenderSettings& settings, int x, int y, int sample,
                       const TraceLimits& limits);
 /// The same, with an engine already built for the scene and settings (tracing many pixels).
@@ -98,19 +98,28 @@ PixelTrace traceRay(const Scene& scene, const RenderSettings& settings, const Ra
 /// centre pixel.
 std::vector<std::pair<int, int>> gridPixels(int width, int height, int across, int down);
 
+/// Why a grid or a bundle stopped early: facts; stopWords (RayWords.h) says them.
+struct GridStop {
+  StopCause cause = StopCause::None;
+  std::size_t done = 0;         ///< Traces made, the last one cut short ...
+  std::size_t of = 0;           ///< ... of those asked for.
+  bool samples = false;         ///< A bundle's samples (true) or a grid's pixels (false).
+  std::size_t budgetBytes = 0;  ///< The grid's memory budget of ray segments, bytes.
+};
+
 /// The traces of a grid of pixels, and one tree holding all their rays for drawing.
 struct GridTrace {
   std::vector<PixelTrace> traces;  ///< One per grid pixel traced, row by row.
   RayTree combined;                ///< Every trace's rays, ids offset (roots have parent -1).
   bool truncated = false;          ///< The budget ran out, or a cancel came, before the end.
   bool cancelled = false;          ///< TraceLimits::cancel stopped it.
-  std::string message;             ///< Why, for the user (how many pixels were traced).
+  GridStop stop;                   ///< Why, and after how many traces (stopWords says it).
 };
 
 /// Traces sample 0 of every pixel of gridPixels(camera size, across, down) with
 /// `settings`, within `limits.memoryBudget` bytes of ray segments for the whole grid: when
 /// the budget runs out, or limits.cancel is set, the grid stops there and says so
-/// (GridTrace::message).
+/// (GridTrace::stop).
 GridTrace traceGrid(const Scene& scene, const RenderSettings& settings, int across, int down,
                     const TraceLimits& limits);
 /// The traces of samples firstSample .. firstSample + count - 1 of one pixel (x, y), and

@@ -18,20 +18,10 @@ class Plane final : public Shape {
   ShapeKind kind() const override { return ShapeKind::Plane; }
   bool isClosed() const override { return true; }
   bool isFlat() const override { return true; }
-  std::optional<Hit> intersect(const Ray& ray) const override;
-  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
-  std::vector<Crossing> intersectAll(const Ray& ray) const override;
-  Normal3 normal(const Point3& p) const override;
-  bool inside(const Point3& p) const override;
-  void apply(const Mat4& m) override;
-  Bounds3 bounds() const override;
+  /// Shape's interface (RAYLAB_SHAPE_INTERFACE in Shape.h). area(): infinite; a plane cannot be an
+  /// area light: sampleArea throws InvalidGeometry and pdfArea is 0.
+  RAYLAB_SHAPE_INTERFACE;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Plane>(*this); }
-  std::string toString() const override;
-  /// Infinite; a plane cannot be an area light: sampleArea throws InvalidGeometry and
-  /// pdfArea is 0.
-  double area() const override;
-  ShapeSample sampleArea(const Vec2& u) const override;
-  double pdfArea(const Point3& p) const override;
 
   const Point3& point() const { return m_point; }
   const Normal3& planeNormal() const { return m_normal; }

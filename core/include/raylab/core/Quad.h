@@ -18,23 +18,14 @@ class Quad final : public Shape {
   ShapeKind kind() const override { return ShapeKind::Quad; }
   bool isClosed() const override { return false; }
   bool isFlat() const override { return true; }
-  std::optional<Hit> intersect(const Ray& ray) const override;
-  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
-  std::vector<Crossing> intersectAll(const Ray& ray) const override;
-  Normal3 normal(const Point3& p) const override;
-  bool inside(const Point3& p) const override;
-  void apply(const Mat4& m) override;
-  Bounds3 bounds() const override;
+  /// Shape's interface (RAYLAB_SHAPE_INTERFACE in Shape.h). area(): |edgeU x edgeV|; sampled
+  /// uniformly in (s, t).
+  RAYLAB_SHAPE_INTERFACE;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Quad>(*this); }
-  std::string toString() const override;
 
   const Point3& corner() const { return m_corner; }
   const Vec3& edgeU() const { return m_u; }
   const Vec3& edgeV() const { return m_v; }
-  /// |edgeU x edgeV|; sampled uniformly in (s, t).
-  double area() const override;
-  ShapeSample sampleArea(const Vec2& u) const override;
-  double pdfArea(const Point3& p) const override;
 
  private:
   void update();

@@ -5,6 +5,7 @@
 #include "raylab/core/Types.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,18 +29,18 @@ enum class EndReason {
   Stopped,          ///< Traced, but tracing stopped before all its children were: the ray
                     ///< budget ran out, or the trace was cancelled (Stepper::stop).
 };
-/// The short label of an end reason ("hit a light"): EndReasonWords::label.
-const char* toString(EndReason reason);
+/// The short English label of an end reason ("hit a light"), from the phrase table
+/// (endReasonLabel in RayWords.h), for debugging output.
+std::string toString(EndReason reason);
 
 /**
  * \brief How one end reason is named: its word in JSON dumps and scripts and in the phrase
- * table's keys (`end_reason.<json>`, `narrate.<json>`: RayWords.h says it to people), and
- * its English label for debugging output (toString).
+ * table's keys (`end_reason.<json>`, `narrate.<json>`: RayWords.h says it to people; the
+ * engine keeps no words of its own).
  */
 struct EndReasonWords {
   EndReason reason;
-  const char* json;   ///< Name in JSON dumps, scripts and phrase keys: "hit_light".
-  const char* label;  ///< Short English label (toString): "hit a light".
+  const char* json;  ///< Name in JSON dumps, scripts and phrase keys: "hit_light".
 };
 /// The words of `reason` (a row of one table, in enum order).
 const EndReasonWords& words(EndReason reason);
@@ -101,13 +102,25 @@ std::string lightNameOf(const RaySegment& s, const std::vector<std::string>& obj
 /// The same from a scene's objects and point lights.
 std::string lightNameOf(const RaySegment& s, const Scene& scene);
 
+/// Why a trace stopped before its end: the ray-tree budget ran out, or the front end
+/// cancelled. A fact, not words: stopWords (RayWords.h) says it from the phrase table.
+enum class StopCause : std::uint8_t { None, Budget, Cancelled };
+
+/// The facts of a tree that stopped early (RayTree::stop).
+struct TreeStop {
+  StopCause cause = StopCause::None;
+  std::size_t rays = 0;         ///< Budget: rays in the tree; Cancelled: rays traced.
+  std::size_t budgetBytes = 0;  ///< Budget: the memory budget of ray segments, bytes.
+  std::size_t maxRays = 0;      ///< Budget: the most rays that budget holds.
+};
+
 /// The rays of one (pixel, sample), in the engine's processing order.
 struct RayTree {
   int pixelX = 0, pixelY = 0, sample = 0;  ///< Which sample this is.
   std::vector<RaySegment> segments;        ///< segments[0] is the camera ray.
   bool truncated = false;  ///< Tracing stopped early (ray budget reached, or cancelled):
                            ///< rays ending Stopped lack some or all of their children.
-  std::string message;     ///< Why tracing stopped, for the user.
+  TreeStop stop;           ///< Why tracing stopped (cause None when it did not).
 
   /// Recomputes every `radiance` bottom-up from `emitted` and children's weights.
   void propagate();

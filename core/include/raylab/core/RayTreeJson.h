@@ -67,6 +67,48 @@ class RayTreeJson {
 
   /// Stable word of an end reason in dumps ("reached_light", "russian_roulette", ...).
   static const char* endReasonName(EndReason reason);
+
+  /// Calls `put(key, value)` for each field of ray `s` that its dump holds, under the dump's
+  /// key, in order; a value is an int, a bool, a double, a std::string or a Vec3. The one
+  /// list of a ray's fields: serialize writes it, Python's Segment.to_dict reads it.
+  template <typename Put>
+  static void forEachField(const RaySegment& s, const Scene& scene, Put&& put);
 };
+
+template <typename Put>
+void RayTreeJson::forEachField(const RaySegment& s, const Scene& scene, Put&& put) {
+  const bool named = s.object >= 0 && s.object < int(scene.objects.size());
+  put("id", s.id);
+  put("parent", s.parent);
+  put("first_child", s.firstChild);
+  put("child_count", s.childCount);
+  put("kind", std::string(toString(s.kind)));
+  put("depth", s.depth);
+  put("origin", s.origin);
+  put("direction", s.direction);
+  put("time", s.time);
+  put("hit", s.hit);
+  put("end_point", s.endPoint);
+  put("light_point", s.lightPoint);
+  put("object", s.object);
+  put("object_name", named ? scene.objects[std::size_t(s.object)].name : std::string());
+  // A shadow ray's light: an area light (an object) or a point light, and its name.
+  const std::string light = lightNameOf(s, scene);
+  if (!light.empty()) {
+    if (s.lightObject >= 0)
+      put("light_object", s.lightObject);
+    else
+      put("point_light", s.pointLight);
+    put("light_name", light);
+  }
+  put("normal", s.normal);
+  if (!isZero(s.shadingNormal)) put("shading_normal", s.shadingNormal);
+  put("weight", s.weight);
+  put("pdf", s.pdf);
+  put("throughput", s.throughput);
+  put("emitted", s.emitted);
+  put("radiance", s.radiance);
+  put("end_reason", std::string(endReasonName(s.endReason)));
+}
 
 }  // namespace raylab

@@ -51,6 +51,25 @@ std::string narrateRay(const RayTree& tree, int id, const SceneNames& names, Lan
 /// "22 rays (camera 1, shadow 9, ...), depth 3, estimate (0.1, 0.2, 0.3)": a trace's figures.
 std::string traceSummary(const PixelTrace& trace, Language language);
 
+/// Why a tree stopped early: "ray budget reached: the tree stops at 40 rays (...)",
+/// "cancelled after 12 rays: the tree is cut short"; "" when it did not stop early.
+std::string stopWords(const TreeStop& stop, Language language);
+/// Why a grid or a bundle stopped early: "cancelled after 3 of 16 pixels; the last tree is
+/// cut short"; "" when it did not.
+std::string stopWords(const GridStop& stop, Language language);
+
+/// "(0.1, 0.2, 0.3)": a vector as the trace's words print it (6 significant digits).
+std::string vectorWords(const Vec3& v);
+/// The trace's heading, then its figures (traceSummary) on the next line: "Whitted ray
+/// tracing: pixel (3, 4), sample 0", or "...: a chosen ray from (...) along (...)".
+std::string traceHeading(const PixelTrace& trace, Language language);
+/// "Whitted ray tracing: Simulate 4 x 3, 12 pixels, 80 rays": a grid of pixels traced.
+std::string gridHeading(Algorithm algorithm, int across, int down, const GridTrace& grid,
+                        Language language);
+/// "...: pixel (3, 4), samples 0 to 15 drawn together, 90 rays": a pixel's bundle.
+std::string bundleHeading(Algorithm algorithm, int x, int y, int first, const GridTrace& bundle,
+                          Language language);
+
 /// "camera 1, shadow 9" (`countFirst` false) or "1 camera, 9 shadow" (true, the animation's
 /// depth captions): the rays of `counts` by kind, the kinds with none left out.
 std::string kindCounts(const std::array<int, kRayKindCount>& counts, Language language,

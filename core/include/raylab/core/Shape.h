@@ -141,4 +141,21 @@ class Shape {
   std::optional<SurfaceInteraction> closestHit(const Ray& ray) const;
 };
 
+/// Declares, inside a concrete shape, the part of Shape's interface that every shape
+/// defines in its own source: intersect, surfaceAt, intersectAll, normal, inside, apply,
+/// bounds, toString, area, sampleArea and pdfArea (documented on Shape above). What the
+/// shape is (kind, isClosed, isFlat) and clone stay written out in its header.
+#define RAYLAB_SHAPE_INTERFACE                                                 \
+  std::optional<Hit> intersect(const Ray& ray) const override;                 \
+  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override; \
+  std::vector<Crossing> intersectAll(const Ray& ray) const override;           \
+  Normal3 normal(const Point3& p) const override;                              \
+  bool inside(const Point3& p) const override;                                 \
+  void apply(const Mat4& m) override;                                          \
+  Bounds3 bounds() const override;                                             \
+  std::string toString() const override;                                       \
+  double area() const override;                                                \
+  ShapeSample sampleArea(const Vec2& u) const override;                        \
+  double pdfArea(const Point3& p) const override
+
 }  // namespace raylab

@@ -28,8 +28,9 @@ class Sphere final : public Shape {
   ShapeKind kind() const override { return ShapeKind::Sphere; }
   bool isClosed() const override { return true; }
   bool isFlat() const override { return false; }
-  std::optional<Hit> intersect(const Ray& ray) const override;
-  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
+  /// Shape's interface (RAYLAB_SHAPE_INTERFACE in Shape.h). area(): exact for a sphere; for an
+  /// ellipsoid by Gauss-Legendre quadrature (no closed form), computed once per apply().
+  RAYLAB_SHAPE_INTERFACE;
   /// surfaceAt without the surface parameters (si.uv stays (0, 0)): the same point, normal
   /// and error bound, bit for bit, minus an atan2 and an acos. What the renderer asks
   /// (SceneIntersector): no material reads uv, and a texture would ask uvAt.
@@ -37,18 +38,7 @@ class Sphere final : public Shape {
   /// Spherical parameters of a world-space point on the surface: u = azimuth / 2pi about the
   /// object-space z axis, v = polar angle / pi (what surfaceAt puts in si.uv).
   Vec2 uvAt(const Point3& p) const;
-  std::vector<Crossing> intersectAll(const Ray& ray) const override;
-  Normal3 normal(const Point3& p) const override;
-  bool inside(const Point3& p) const override;
-  void apply(const Mat4& m) override;
-  Bounds3 bounds() const override;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Sphere>(*this); }
-  std::string toString() const override;
-  /// Exact for a sphere; for an ellipsoid by Gauss-Legendre quadrature (no closed form),
-  /// computed once per apply().
-  double area() const override;
-  ShapeSample sampleArea(const Vec2& u) const override;
-  double pdfArea(const Point3& p) const override;
 
   /// Centre in object space (equals world space while worldFromObject is the identity).
   const Point3& centre() const { return m_centre; }

@@ -128,8 +128,8 @@ class Tracer {
  * `memoryBudget` bounds the work, not only the tree: every ray queued is recorded, so at
  * most memoryBudget / sizeof(RaySegment) rays are ever queued and traced. When a ray's
  * children no longer fit, none of them is queued: the ray ends EndReason::Stopped, the
- * rays already waiting are still traced, and RayTree::truncated and RayTree::message say
- * "ray budget reached". A bushy distributed tree (depth 8, 8 shadow and 8 glossy samples)
+ * rays already waiting are still traced, and RayTree::truncated and RayTree::stop say
+ * that the budget was reached. A bushy distributed tree (depth 8, 8 shadow and 8 glossy samples)
  * thus ends after about 60,000 rays (default budget) instead of growing without end. Under the
  * budget the estimate equals Tracer::trace bit for bit; past it, it covers the rays traced (it
  * always equals the recorded tree's RayTree::estimate() once done()).
@@ -156,8 +156,9 @@ class Stepper {
   void reset();
   /// Ends the trace now (a cancel from the front end): the waiting rays are dropped from
   /// the queue and the tree, their parents end Stopped, the tree is propagated and marked
-  /// truncated with `why` as its message. Nothing happens when done().
-  void stop(const std::string& why);
+  /// truncated, its RayTree::stop a cancel after the rays traced so far. Nothing happens
+  /// when done().
+  void stop();
   /// True when every ray has been processed.
   bool done() const { return m_queue.empty(); }
 

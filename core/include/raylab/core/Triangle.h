@@ -39,19 +39,10 @@ class Triangle final : public Shape {
   ShapeKind kind() const override { return ShapeKind::Triangle; }
   bool isClosed() const override { return false; }
   bool isFlat() const override { return true; }
-  std::optional<Hit> intersect(const Ray& ray) const override;
-  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
-  std::vector<Crossing> intersectAll(const Ray& ray) const override;
-  Normal3 normal(const Point3& p) const override;
-  bool inside(const Point3& p) const override;
-  void apply(const Mat4& m) override;
-  Bounds3 bounds() const override;
+  /// Shape's interface (RAYLAB_SHAPE_INTERFACE in Shape.h). area(): half |(p1 - p0) x (p2 - p0)|;
+  /// sampled uniformly (square-root warp).
+  RAYLAB_SHAPE_INTERFACE;
   std::unique_ptr<Shape> clone() const override { return std::make_unique<Triangle>(*this); }
-  std::string toString() const override;
-  /// Half |(p1 - p0) x (p2 - p0)|; sampled uniformly (square-root warp).
-  double area() const override;
-  ShapeSample sampleArea(const Vec2& u) const override;
-  double pdfArea(const Point3& p) const override;
 
   const Point3& vertex(int i) const { return m_p[i]; }
 

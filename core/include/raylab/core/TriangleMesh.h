@@ -53,20 +53,11 @@ class TriangleMesh final : public Shape {
   ShapeKind kind() const override { return ShapeKind::TriangleMesh; }
   bool isClosed() const override { return true; }
   bool isFlat() const override { return false; }
-  std::optional<Hit> intersect(const Ray& ray) const override;
-  SurfaceInteraction surfaceAt(const Ray& ray, const Hit& hit) const override;
-  std::vector<Crossing> intersectAll(const Ray& ray) const override;
-  Normal3 normal(const Point3& p) const override;
-  bool inside(const Point3& p) const override;
-  void apply(const Mat4& m) override;
-  Bounds3 bounds() const override;
+  /// Shape's interface (RAYLAB_SHAPE_INTERFACE in Shape.h). area(): sum of the triangles' areas;
+  /// sampled by picking a triangle from the area CDF, then a uniform point on it. sampleArea throws
+  /// InvalidGeometry for a mesh of zero area.
+  RAYLAB_SHAPE_INTERFACE;
   std::unique_ptr<Shape> clone() const override;
-  std::string toString() const override;
-  /// Sum of the triangles' areas; sampled by picking a triangle from the area CDF, then
-  /// a uniform point on it. sampleArea throws InvalidGeometry for a mesh of zero area.
-  double area() const override;
-  ShapeSample sampleArea(const Vec2& u) const override;
-  double pdfArea(const Point3& p) const override;
 
   const std::vector<Point3>& vertices() const { return m_geometry->vertices; }
   const std::vector<Index3>& triangles() const { return m_geometry->triangles; }
