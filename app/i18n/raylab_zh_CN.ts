@@ -484,6 +484,163 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
     </message>
 </context>
 <context>
+    <name>raylab::app::CheckDialog</name>
+    <message>
+        <source>differs</source>
+        <translation>不一致</translation>
+    </message>
+    <message>
+        <source>wrong type</source>
+        <translation>返回类型错误</translation>
+    </message>
+    <message>
+        <source>Check my code</source>
+        <translation>检查我的代码</translation>
+    </message>
+    <message>
+        <source>The check did not end within %1 s and was stopped.</source>
+        <translation>检查在 %1 秒内没有结束，已被终止。</translation>
+    </message>
+    <message>
+        <source>Your Python file (.py)</source>
+        <translation>你的 Python 文件（.py）</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>&amp;Check</source>
+        <translation>检查(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Choose an exercise and your file, then Check.</source>
+        <translation>选择一个练习和你的文件，然后点击“检查”。</translation>
+    </message>
+    <message>
+        <source>Your tree, coloured by verdict</source>
+        <translation>你的光线树（按评判结果着色）</translation>
+    </message>
+    <message>
+        <source>The engine&apos;s tree, by ray kind</source>
+        <translation>引擎的光线树（按光线类型着色）</translation>
+    </message>
+    <message>
+        <source>Exercise:</source>
+        <translation>练习：</translation>
+    </message>
+    <message>
+        <source>File:</source>
+        <translation>文件：</translation>
+    </message>
+    <message>
+        <source>No exercises were found in %1.</source>
+        <translation>在 %1 中没有找到练习。</translation>
+    </message>
+    <message>
+        <source>Your Python file</source>
+        <translation>你的 Python 文件</translation>
+    </message>
+    <message>
+        <source>Python files (*.py)</source>
+        <translation>Python 文件 (*.py)</translation>
+    </message>
+    <message>
+        <source>Choose your Python file first.</source>
+        <translation>请先选择你的 Python 文件。</translation>
+    </message>
+    <message>
+        <source>%1: no such file.</source>
+        <translation>%1：文件不存在。</translation>
+    </message>
+    <message>
+        <source>Python 3 (%1) could not be started: install it (scripts/setup.sh).</source>
+        <translation>无法启动 Python 3（%1）：请先安装（见 scripts/setup.sh）。</translation>
+    </message>
+    <message>
+        <source>Checking %1 on %2 … (your code runs in a separate process)</source>
+        <translation>正在用练习 %2 检查 %1 …（你的代码在独立的子进程中运行）</translation>
+    </message>
+    <message>
+        <source>The check gave no report (exit status %1).</source>
+        <translation>检查没有生成报告（退出码 %1）。</translation>
+    </message>
+    <message>
+        <source>Every case passes.</source>
+        <translation>所有用例都通过了。</translation>
+    </message>
+    <message>
+        <source>%1 of %2 cases fail.</source>
+        <translation>%2 个用例中有 %1 个未通过。</translation>
+    </message>
+    <message>
+        <source>Your file could not be checked.</source>
+        <translation>无法检查你的文件。</translation>
+    </message>
+    <message>
+        <source>%1, line %2</source>
+        <translation>%1，第 %2 行</translation>
+    </message>
+    <message>
+        <source>Could not be checked</source>
+        <translation>无法检查</translation>
+    </message>
+    <message>
+        <source>The tree could not be read: %1</source>
+        <translation>无法读取光线树：%1</translation>
+    </message>
+    <message>
+        <source>pass</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>FAIL</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>yours %1, reference %2</source>
+        <translation>你的结果 %1，参考结果 %2</translation>
+    </message>
+    <message>
+        <source>PASS: all %1 cases agree with the reference.</source>
+        <translation>通过：全部 %1 个用例都与参考结果一致。</translation>
+    </message>
+    <message>
+        <source>FAIL: %1 of %2 cases differ from the reference.</source>
+        <translation>未通过：%2 个用例中有 %1 个与参考结果不一致。</translation>
+    </message>
+    <message>
+        <source>Known bug: %1</source>
+        <translation>常见错误：%1</translation>
+    </message>
+    <message>
+        <source>Your tree: pixel (%1, %2) of the default scene, %3 rays.</source>
+        <translation>你的光线树：默认场景的像素 (%1, %2)，共 %3 条光线。</translation>
+    </message>
+    <message>
+        <source>Every ray agrees with the exact answer.</source>
+        <translation>每条光线都与精确结果一致。</translation>
+    </message>
+    <message>
+        <source>First ray that differs: ray %1 (%2)</source>
+        <translation>第一条出错的光线：第 %1 号光线（%2）</translation>
+    </message>
+    <message>
+        <source>  origin %1, direction %2, t in [%3, %4]</source>
+        <translation>  起点 %1，方向 %2，t 的范围 [%3, %4]</translation>
+    </message>
+    <message>
+        <source>  yours: t = %1
+  exact: t = %2</source>
+        <translation>  你的结果：t = %1
+  精确结果：t = %2</translation>
+    </message>
+    <message>
+        <source>  error: %1</source>
+        <translation>  错误：%1</translation>
+    </message>
+</context>
+<context>
     <name>raylab::app::ComparePanel</name>
     <message>
         <source>Equal samples</source>
@@ -1513,6 +1670,14 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
     <message>
         <source>Cannot use this value</source>
         <translation>无法使用这个数值</translation>
+    </message>
+    <message>
+        <source>&amp;Check my code…</source>
+        <translation>检查我的代码(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Check your own function of an exercise against the reference</source>
+        <translation>用参考实现检查你为练习编写的函数</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include "RenderPanel.h"
 #include "SceneDocument.h"
 #include "window/ActionTable.h"
+#include "window/CheckDialog.h"
 #include "words/Language.h"
 #include "words/UiWords.h"
 
@@ -171,6 +172,16 @@ void MainWindow::fillLessonsMenu() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Open a lesson"), QString(),
                                                       tr("RayLab lessons (*.json)"));
     if (!path.isEmpty()) openLesson(path);
+  });
+  // Check my code: a dialog of its own (window/CheckDialog.cpp), made once, not modal.
+  QAction* check = m_lessonsMenu->addAction(tr("&Check my code…"));
+  check->setObjectName(QStringLiteral("checkMyCode"));
+  check->setToolTip(tr("Check your own function of an exercise against the reference"));
+  connect(check, &QAction::triggered, this, [this] {
+    auto* dialog = findChild<CheckDialog*>();
+    if (!dialog) dialog = new CheckDialog(this);
+    dialog->show();
+    dialog->raise();
   });
   m_lessonsMenu->addSeparator();
   QAction* next = m_lessonsMenu->addAction(tr("&Next step"));

@@ -131,7 +131,11 @@ def _tree(piece, fn):
         return None
     pixel, t = chosen
     out = {"pixel": list(pixel), "algorithm": "whitted", "verdicts": t.verdicts,
-           "first_divergent": t.first_divergent, "picture": None}
+           "first_divergent": t.first_divergent, "picture": None,
+           # The scene and both trees as RayLab's JSON (doc/ray-tree-json.md), for the
+           # window's Lessons > Check my code, which draws them itself.
+           "scene_json": scene.to_json(), "student_tree_json": t.student.to_json(),
+           "reference_tree_json": t.reference.to_json()}
     if t.first_divergent >= 0:
         out["call"] = t.calls[t.deciding_calls[t.first_divergent]]
     if os.environ.get("DISPLAY"):

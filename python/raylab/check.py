@@ -25,6 +25,11 @@ import sys
 import tempfile
 
 PASSING = ("agrees", "off_by_ulps", "not_judged")
+# What the child gives as JSON text and the report writes as files beside report.json
+# (report.json's "tree" names them): key -> file name.
+_TREE_FILES = ("scene_json", "student_tree_json", "reference_tree_json")
+_TREE_FILE_NAMES = {"scene_json": "scene.json", "student_tree_json": "student-tree.json",
+                    "reference_tree_json": "reference-tree.json"}
 
 
 def exercises_folder():
@@ -248,7 +253,12 @@ def _tree_lines(tree, out):
             lines.append("- error / 错误: %s" % call["error"])
     else:
         lines += ["", "Every ray agrees / 每条光线都一致。"]
-    out["tree"] = {k: v for k, v in tree.items() if k not in ("png", "picture")}
+    out["tree"] = {k: v for k, v in tree.items() if k not in ("png", "picture") + _TREE_FILES}
+    out["tree_files"] = {}
+    for key in _TREE_FILES:
+        if tree.get(key):
+            out["tree"][key[:-len("_json")]] = _TREE_FILE_NAMES[key]
+            out["tree_files"][_TREE_FILE_NAMES[key]] = tree[key]
     if tree.get("png"):
         out["tree"]["picture"] = "tree.png"
         lines += ["", "![Your tree coloured by verdict (left) beside the engine's (right) / "
@@ -282,7 +292,11 @@ def main(argv=None):
         with open(os.path.join(args.out, "report.md"), "w", encoding="utf-8") as f:
             f.write(r["markdown"])
         with open(os.path.join(args.out, "report.json"), "w", encoding="utf-8") as f:
-            json.dump({k: v for k, v in r.items() if k not in ("markdown", "png")}, f, indent=1)
+            json.dump({k: v for k, v in r.items() if k not in ("markdown", "png", "tree_files")},
+                      f, indent=1)
+        for name, text in r.get("tree_files", {}).items():
+            with open(os.path.join(args.out, name), "w", encoding="utf-8") as f:
+                f.write(text)
         if r.get("png"):
             with open(os.path.join(args.out, "tree.png"), "wb") as f:
                 f.write(r["png"])

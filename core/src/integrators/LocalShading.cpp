@@ -25,7 +25,11 @@ Vec3 localFactor(const HitContext& context, const Vec3& wi, Lobes lobes) {
   if (context.material.isPlastic())
     return lobes == Lobes::All ? bsdf::eval(context.material, context.hit.si, wo, wi)
                                : bsdf::plastic::evalBase(context.material, context.hit.si, wo, wi);
-  return classicShading(context.material, context.hit.si.facingShadingNormal(), wo, wi, lobes);
+  const Normal3 n = context.hit.si.facingShadingNormal();
+  const Vec3 f = classicShading(context.material, n, wo, wi, lobes);
+  // Fault::NoCosine (bug hunt): the classic model without its N.L factor.
+  const double cosThetaI = glm::dot(n, wi);
+  return context.settings.fault == Fault::NoCosine && cosThetaI > 0.0 ? f / cosThetaI : f;
 }
 
 /// The radiance a light of intensity `I` times `scale` (1, or a flat light's projected

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <deque>
 #include <optional>
+#include <utility>
 
 namespace raylab {
 
@@ -203,8 +204,20 @@ RAYLAB_STEP_INLINE EndReason spawnAtHit(const Tracer& tracer, const QueuedRay& r
   // shares.
   const Material& own = plain.texture.active() ? texturedMaterial(plain, hit) : plain;
   const Material& material = Nested && crossing.real ? nestedMaterial(own, hit, crossing) : own;
+  // A planted bug (RenderSettings::fault, bug hunt; never on unless asked for): the rule
+  // sees the normal flipped or the indices of refraction swapped (eta inverted).
+  std::optional<SceneHit> flipped;
+  std::optional<Material> swapped;
+  if (tracer.settings().fault == Fault::FlippedNormal) {
+    flipped = hit;
+    flipped->si.frontFace = !hit.si.frontFace;
+  } else if (tracer.settings().fault == Fault::EtaInverted) {
+    swapped = material;
+    std::swap(swapped->ior, swapped->iorOutside);
+  }
   const HitContext context{
-      tracer.intersector(), tracer.settings(), ray, hit, material, sampler, spawns};
+      tracer.intersector(),          tracer.settings(), ray,   flipped ? *flipped : hit,
+      swapped ? *swapped : material, sampler,           spawns};
   const HitDecision decision = tracer.rule().onHit(context, children);
   emitted = decision.emitted;
   dropInvalidChildren(hit.si, children);
@@ -290,11 +303,17 @@ void engineStep(const Tracer& tracer, Queue& queue, Sampler& sampler,
 
 #undef RAYLAB_STEP_INLINE
 
+/// The settings a Tracer keeps: Fault::NoOffset (bug hunt) is the rayOffset switch off.
+RenderSettings withFault(RenderSettings settings) {
+  if (settings.fault == Fault::NoOffset) settings.rayOffset = false;
+  return settings;
+}
+
 }  // namespace
 
 Tracer::Tracer(const Scene& scene, const RenderSettings& settings)
     : m_intersector(scene, settings),
-      m_settings(settings),
+      m_settings(withFault(settings)),
       m_camera(scene.camera),
       m_rule(SpawnRule::create(settings)) {
   // The drawing length of escaped rays: the diagonal of everything finite in the scene.

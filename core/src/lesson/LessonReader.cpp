@@ -133,7 +133,7 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
             "reveal",   "colour",        "filters",  "camera_view",   "select_ray", "samples",
             "measure",  "scene_changes", "question", "teacher_notes", "requires",   "bundle",
             "all_hits", "bvh",           "ray",      "exactness",     "try_value",  "minutes",
-            "recap",    "scene"});
+            "recap",    "scene",         "fault"});
   stepTexts(j, path, s);
   // The scene first: pixels and samples are checked against the step's own scene (its own
   // file, when it names one, with its changes).
@@ -143,6 +143,20 @@ LessonStep Reader::step(const json& j, const std::string& path, const Display& d
                 ? changedScene(j["scene_changes"], path + "/scene_changes", s.sceneChanges)
                 : m_scene;
   std::tie(m_scene, m_sceneDoc, m_scenePath) = lessonScene;
+  if (j.contains("fault")) {
+    // A bug hunt (issue 35): the step's engine has a typical student bug planted.
+    const std::string name = string(j["fault"], path + "/fault");
+    const std::optional<Fault> fault = parseFault(name);
+    if (!fault || *fault == Fault::None) {
+      std::string names;
+      for (int i = 1; i < kFaultCount; ++i)
+        names += (i > 1 ? ", " : "") + std::string(toString(Fault(i)));
+      fail(path + "/fault", "unknown fault \"" + name + "\": the faults are " + names);
+    }
+    auto faulty = std::make_shared<Scene>(*s.scene);
+    faulty->render.fault = *fault;
+    s.scene = faulty;
+  }
 
   stepDisplay(j, path, defaults, s);
   stepSamples(j, path, s);

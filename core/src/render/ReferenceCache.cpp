@@ -87,14 +87,18 @@ std::string hashBytes(const std::string& bytes) {
 
 /// The settings path tracing reads, as the sidecar records them.
 ojson settingsJson(const RenderSettings& s) {
-  return ojson{{"algorithm", toString(s.algorithm)},
-               {"samplesPerPixel", s.samplesPerPixel},
-               {"seed", s.seed},
-               {"maxDepth", s.maxDepth},
-               {"russianRouletteDepth", s.russianRouletteDepth},
-               {"nextEventEstimation", s.nextEventEstimation},
-               {"multipleImportance", s.multipleImportance},
-               {"background", {s.background.x, s.background.y, s.background.z}}};
+  ojson j{{"algorithm", toString(s.algorithm)},
+          {"samplesPerPixel", s.samplesPerPixel},
+          {"seed", s.seed},
+          {"maxDepth", s.maxDepth},
+          {"russianRouletteDepth", s.russianRouletteDepth},
+          {"nextEventEstimation", s.nextEventEstimation},
+          {"multipleImportance", s.multipleImportance},
+          {"background", {s.background.x, s.background.y, s.background.z}}};
+  // A planted bug (bug hunt) renders another image: never the clean one's key. Absent when
+  // none, so the keys of earlier caches stay valid.
+  if (s.fault != Fault::None) j["fault"] = toString(s.fault);
+  return j;
 }
 
 /// The text the key hashes: the scene as its file says it (name and render block left

@@ -131,6 +131,24 @@ std::optional<Algorithm> parseAlgorithm(const std::string& name) {
   return std::nullopt;
 }
 
+const char* toString(Fault fault) {
+  static const char* const words[kFaultCount] = {"none",
+                                                 "no_offset",
+                                                 "no_cosine",
+                                                 "eta_inverted",
+                                                 "flipped_normal",
+                                                 "pdf_forgotten",
+                                                 "roulette_uncompensated"};
+  const int i = int(fault);
+  return i >= 0 && i < kFaultCount ? words[i] : "none";
+}
+
+std::optional<Fault> parseFault(const std::string& name) {
+  for (int i = 0; i < kFaultCount; ++i)
+    if (name == toString(Fault(i))) return Fault(i);
+  return std::nullopt;
+}
+
 std::string RenderSettings::toString() const {
   return std::string("RenderSettings[") + raylab::toString(algorithm) +
          ", spp=" + std::to_string(samplesPerPixel) + ", maxDepth=" + std::to_string(maxDepth) +
@@ -142,7 +160,8 @@ std::string RenderSettings::toString() const {
          ", background=" + raylab::toString(background) +
          ", rayOffset=" + (rayOffset ? "on" : "off") +
          ", acceleration=" + (acceleration ? "bvh" : "none") +
-         ", bvhSplit=" + raylab::toString(bvhSplit) + "]";
+         ", bvhSplit=" + raylab::toString(bvhSplit) +
+         (fault != Fault::None ? std::string(", fault=") + raylab::toString(fault) : "") + "]";
 }
 
 const char* toString(NearClipShape shape) {

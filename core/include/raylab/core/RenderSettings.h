@@ -23,6 +23,24 @@ const char* toString(Algorithm algorithm);
 /// Parses the names above; nothing for an unknown name.
 std::optional<Algorithm> parseAlgorithm(const std::string& name);
 
+/// A typical student bug planted in the engine for a bug hunt (`--fault NAME`, a lesson
+/// step's "fault"; issue 35): off unless asked for, per render (RenderSettings::fault).
+enum class Fault {
+  None,                   ///< The engine as it is.
+  NoOffset,               ///< Secondary rays start on the computed hit point: shadow acne.
+  NoCosine,               ///< The Lambert (and Phong) term without its cos theta.
+  EtaInverted,            ///< Refraction with eta inverted (n2 / n1 in place of n1 / n2).
+  FlippedNormal,          ///< The facing normal points into the surface.
+  PdfForgotten,           ///< Path tracing: f cos / pdf estimated as f cos.
+  RouletteUncompensated,  ///< Path tracing: Russian roulette survivors not weighted by 1 / q.
+};
+constexpr int kFaultCount = 7;
+/// "none", "no_offset", "no_cosine", "eta_inverted", "flipped_normal", "pdf_forgotten",
+/// "roulette_uncompensated".
+const char* toString(Fault fault);
+/// Parses the names above; nothing for an unknown name.
+std::optional<Fault> parseFault(const std::string& name);
+
 /**
  * \brief Parameters of a render. Every algorithm reads the fields it needs.
  *
@@ -43,6 +61,7 @@ std::optional<Algorithm> parseAlgorithm(const std::string& name);
  * | | | triangle of every mesh (brute force, lesson 8): the same hits, bit for bit, slower |
  * | bvhSplit | sah | all: how the meshes' BVHs split nodes (surface-area heuristic or median); |
  * | | | the hits are the same either way, only the boxes visited differ (lesson 8) |
+ * | fault | none | all: a typical student bug planted for a bug hunt (Fault) |
  */
 struct RenderSettings {
   Algorithm algorithm = Algorithm::PathTracing;  ///< Which algorithm renders.
@@ -63,6 +82,8 @@ struct RenderSettings {
   /// How the meshes' hierarchies choose their splits; a mesh built with another split is
   /// rebuilt for the render (SceneIntersector). The hits are identical either way.
   BvhSettings::Split bvhSplit = BvhSettings::Split::Sah;
+  /// A planted bug (bug hunt); Fault::None unless a command line or a lesson step asks.
+  Fault fault = Fault::None;
   std::string toString() const;
 };
 

@@ -63,7 +63,9 @@ void shadowRayToAreaLight(const HitContext& context, const Vec3& wo, double roul
   const double w = context.settings.multipleImportance
                        ? powerHeuristic(ls->pdf, bsdf::pdf(m, si, wo, ls->wi))
                        : 1.0;
-  const Vec3 weight = fCos * (w * rouletteScale / ls->pdf);
+  // Fault::PdfForgotten (bug hunt): the estimate f cos Le without dividing by the pdf.
+  const double pdf = context.settings.fault == Fault::PdfForgotten ? 1.0 : ls->pdf;
+  const Vec3 weight = fCos * (w * rouletteScale / pdf);
   if (isUsable(weight) && isUsable(ls->Le))
     shading::shadowRayToSample(children.emplace_back(), context, ref, *ls, weight);
 }
@@ -113,7 +115,8 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
   if (ray.depth >= settings.russianRouletteDepth) {
     const double q = std::min(0.95, maxComponent(ray.throughput));
     if (!(q > 0.0) || context.sampler.next1D() >= q) return {emitted, EndReason::RussianRoulette};
-    rouletteScale = 1.0 / q;
+    // Fault::RouletteUncompensated (bug hunt): the survivors keep their weight: dark.
+    rouletteScale = settings.fault == Fault::RouletteUncompensated ? 1.0 : 1.0 / q;
   }
 
   // 4. Next-event estimation: a shadow ray to a sampled light point, and to point lights.
@@ -126,7 +129,9 @@ HitDecision PathTracingRule::onHit(const HitContext& context,
   // 5. Continue the path in one direction sampled from the BSDF.
   const std::optional<BsdfSample> bs = bsdf::sample(m, si, wo, context.sampler);
   if (bs && (bs->specular || (bs->pdf > 0.0 && std::isfinite(bs->pdf)))) {
-    const Vec3 weight = bs->weight * rouletteScale;
+    // bs->weight is f cos / pdf; Fault::PdfForgotten multiplies the pdf back in.
+    const bool forgot = settings.fault == Fault::PdfForgotten && !bs->specular;
+    const Vec3 weight = bs->weight * (rouletteScale * (forgot ? bs->pdf : 1.0));
     if (isUsable(weight))
       shading::childRay(children.emplace_back(), context, bs->wi, bs->kind, weight,
                         bs->specular ? 0.0 : bs->pdf);
