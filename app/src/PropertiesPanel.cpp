@@ -65,6 +65,43 @@ const std::vector<const char*> kMaterialTypes = {
     "diffuse",     "mirror",          "dielectric",       "glossy", "phong",
     "blinn_phong", "rough_conductor", "rough_dielectric", "plastic"};
 
+/// `material` (its file form) switched to scattering model `type`: the keys every material
+/// has, and those of `type`'s parameters that it had (the others go; the loader gives the
+/// missing ones their defaults), so that the form shows exactly that model's fields. The
+/// same sets as the scene writer's (core SceneWriter.cpp, materialToJson).
+json switchedMaterial(const json& material, const std::string& type) {
+  static const std::set<std::string> kEvery = {"name",        "display_name", "colour",
+                                               "texture",     "emission",     "opacity",
+                                               "ior_outside", "priority"};
+  const std::string old = material.value("type", "diffuse");
+  const auto in = [](const std::string& t, std::initializer_list<const char*> types) {
+    for (const char* one : types)
+      if (t == one) return true;
+    return false;
+  };
+  const bool rates = in(type, {"mirror", "phong", "blinn_phong"});
+  const auto uses = [&](const std::string& key) {
+    if (key == "reflection_rate" || key == "refraction_rate") return rates;
+    if (key == "ior") return rates || in(type, {"dielectric", "rough_dielectric", "plastic"});
+    if (key == "exponent" || key == "specular") return in(type, {"glossy", "phong", "blinn_phong"});
+    if (key == "ambient" || key == "diffuse" || key == "attenuation")
+      return in(type, {"phong", "blinn_phong"});
+    if (key == "distribution" || key == "roughness" || key == "visible_normals")
+      return in(type, {"rough_conductor", "rough_dielectric", "plastic"});
+    // The rates' weighting and an interface's reflectance share the key: kept only
+    // between models that read it the same way.
+    if (key == "fresnel") return rates == in(old, {"mirror", "phong", "blinn_phong"});
+    return kEvery.count(key) > 0;
+  };
+  json switched = json::object();
+  for (auto it = material.begin(); it != material.end(); ++it)
+    if (it.key() == "type")
+      switched["type"] = type;
+    else if (uses(it.key()))
+      switched[it.key()] = it.value();
+  return switched;
+}
+
 /// What a key means, for the keys a student may not know from their words (empty for
 /// the others: the form then names the key's place in the file).
 QString tipFor(const std::string& key) {
@@ -334,7 +371,12 @@ QWidget* PropertiesPanel::makeMaterialTypeBox(const std::string& place,
          "half-vector highlight), rough_conductor (microfacet metal), rough_dielectric "
          "(microfacet glass), plastic (a rough dielectric coating over a diffuse base)"));
   connect(box, QOverload<int>::of(&QComboBox::activated), this, [this, place, box, undoText](int) {
-    setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
+    // The whole material at once: the new model's parameters only.
+    const std::string type = box->currentData().toString().toStdString();
+    const std::string material = place.substr(0, place.rfind('/'));
+    const json now = json::parse(edit::valueAt(m_document.scene(), material, m_document.origin()));
+    if (now.value("type", "diffuse") != type)
+      setValue(material, switchedMaterial(now, type).dump(), undoText);
   });
   return box;
 }

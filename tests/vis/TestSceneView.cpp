@@ -2,6 +2,7 @@
 // Needs an X server (Debian's VTK renders offscreen through GLX): run under xvfb-run -a.
 #include "BaselineTest.h"
 #include "ImageChecks.h"
+#include "TextFonts.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
@@ -18,6 +19,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <utility>
 
 namespace raylab::vis {
 namespace {
@@ -303,6 +306,38 @@ TEST(SceneView, 11_SampleCloudNamesItsAxis) {
   for (int y = 0; y < kSize / 2; ++y)
     for (int x = 0; x < kSize; ++x) more += isYellow(named.at(x, y)) && !isYellow(bare.at(x, y));
   EXPECT_GT(more, 20);
+}
+
+/// Rows and columns of `picture` that differ from `bare` (where a caption's band is).
+std::pair<int, int> changedRowsAndColumns(const SrgbImage& picture, const SrgbImage& bare) {
+  int rows = 0, right = -1;
+  for (int y = 0; y < picture.height; ++y) {
+    bool changed = false;
+    for (int x = 0; x < picture.width; ++x)
+      if (picture.at(x, y) != bare.at(x, y)) changed = true, right = std::max(right, x);
+    rows += changed;
+  }
+  return {rows, right + 1};
+}
+
+TEST(SceneView, 12_ALongCaptionGoesOnTwoLinesAtTheSameSize) {
+  // Issue 33 item 9: `animate`'s last frame adds "The whole tree is shown." to its
+  // caption, which then shrank to about 60% to fit the width. It keeps its size and wraps.
+  const std::string line = "Depth 8 of 8: 3 rays travel (1 reflection, 1 refraction, 1 shadow).";
+  SceneView view(defaultScene());
+  const SrgbImage bare = view.renderOffscreen(640, 480);
+  view.setCaption(line);
+  const auto [oneLine, oneWidth] = changedRowsAndColumns(view.renderOffscreen(640, 480), bare);
+  view.setCaption(line + " The whole tree is shown.");
+  const auto [twoLines, twoWidth] = changedRowsAndColumns(view.renderOffscreen(640, 480), bare);
+  ASSERT_GT(oneLine, 10);
+  EXPECT_GT(twoLines, oneLine * 3 / 2)
+      << "one line: " << oneLine << " rows, the long one " << twoLines;
+  EXPECT_LE(twoWidth, 640);
+  // The words wrap at spaces, and Chinese between characters.
+  EXPECT_EQ(wrapText("one two three", 4.0), "one\ntwo\nthree");
+  EXPECT_EQ(wrapText("one two", 10.0), "one two");
+  EXPECT_EQ(wrapText("光线追踪", 2.0), "光线\n追踪");
 }
 
 TEST(SceneView, 07_MatchesBaseline) {

@@ -18,4 +18,9 @@ const std::string& cjkFontFile();
 /// installed), else Arial.
 void useFontFor(vtkTextProperty* property, Language language);
 
+/// `text` broken into lines (at spaces, else between Chinese characters) no wider than
+/// `widthInFonts` font sizes: a Latin glyph counts about 0.55 of the font size, a Chinese
+/// one 1. Line breaks already in `text` stay; a word longer than a line is kept whole.
+std::string wrapText(const std::string& text, double widthInFonts);
+
 }  // namespace raylab::vis

@@ -49,9 +49,11 @@ QString forPeople(const std::string& text) {
 }  // namespace
 
 void MainWindow::fillObjectList() {
-  // The list of objects, the selection kept where it still exists.
+  // The list of objects, the document's selection kept where it still exists (after an
+  // undo or redo: the selection that went with that scene).
   const Scene& scene = m_document->scene();
-  const int selected = m_selected < int(scene.objects.size()) ? m_selected : -1;
+  const int wanted = m_document->selection();
+  const int selected = wanted < int(scene.objects.size()) ? wanted : -1;
   {
     const QSignalBlocker block(m_objectList);
     m_objectList->clear();
@@ -81,6 +83,7 @@ void MainWindow::selectObject(int row) {
 void MainWindow::showSelection(int row) {
   const Scene& scene = m_document->scene();
   m_selected = row >= 0 && row < int(scene.objects.size()) ? row : -1;
+  m_document->setSelection(m_selected);
   m_view->setHighlighted(m_selected);
   m_editPanel->setSelection(m_selected);
   if (m_properties->object() != m_selected) m_properties->showObject(m_selected);
