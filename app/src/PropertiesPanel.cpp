@@ -105,6 +105,10 @@ json switchedMaterial(const json& material, const std::string& type) {
 /// What a key means, for the keys a student may not know from their words (empty for
 /// the others: the form then names the key's place in the file).
 QString tipFor(const std::string& key) {
+  if (key == "m" || key == "n")
+    return PropertiesPanel::tr(
+        "How finely the sphere is drawn in the 3D view: m bands from pole to pole, n slices "
+        "around its axis (the rays still meet the exact sphere)");
   if (key == "diffuse")
     return PropertiesPanel::tr("Diffuse coefficient kd of the Phong model, in [0, 1]");
   if (key == "roughness")
@@ -169,8 +173,11 @@ QString tipFor(const std::string& key) {
 }
 
 /// Words for a key ("vertical_fov" -> "vertical fov"), in the window's language
-/// (SceneWords.h lists them for the translators).
+/// (SceneWords.h lists them for the translators); the sphere's one-letter `m` and `n` with
+/// what they count.
 QString label(const std::string& key) {
+  if (key == "m") return PropertiesPanel::tr("m (bands from pole to pole)");
+  if (key == "n") return PropertiesPanel::tr("n (slices around the axis)");
   QString text = QString::fromStdString(key);
   text.replace(QLatin1Char('_'), QLatin1Char(' '));
   return QCoreApplication::translate("SceneKeys", text.toUtf8().constData());
@@ -182,6 +189,13 @@ QString label(const std::string& key) {
 /// (SceneWords.h).
 QString valueLabel(const char* value) {
   const Language language = uiLanguage();
+  // The file's words that are not English words.
+  if (language == Language::English) {
+    const std::string word = value;
+    if (word == "blinn_phong") return PropertiesPanel::tr("Blinn-Phong");
+    if (word == "rough_conductor") return PropertiesPanel::tr("rough metal");
+    if (word == "rough_dielectric") return PropertiesPanel::tr("rough glass");
+  }
   if (parseAlgorithm(value))
     return language == Language::English
                ? QString::fromLatin1(value)
@@ -362,7 +376,11 @@ QWidget* PropertiesPanel::makeMaterialTypeBox(const std::string& place,
                                               const QString& undoText) {
   // The scattering model: the form then shows that model's parameters.
   auto* box = new QComboBox;
-  for (const char* type : kMaterialTypes) box->addItem(valueLabel(type), QString::fromLatin1(type));
+  for (const char* type : kMaterialTypes) {
+    box->addItem(valueLabel(type), QString::fromLatin1(type));
+    box->setItemData(box->count() - 1, tr("\"%1\" in the scene file").arg(QLatin1String(type)),
+                     Qt::ToolTipRole);
+  }
   box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
   box->setToolTip(
       tr("Scattering model: diffuse (Lambert), mirror (reflection and "
