@@ -430,8 +430,9 @@ TEST(RayTreeStyle, 12_SelectionOutlineIsAColourNoRayUses) {
     // Clearly another colour (35 units) and, where the hue is close (under 30 units apart
     // in a*b*), also of another lightness (10 units), for readers who see hues poorly.
     EXPECT_GT(glm::length(outline - ray), 35.0) << name;
-    if (std::hypot(outline.y - ray.y, outline.z - ray.z) < 30.0)
+    if (std::hypot(outline.y - ray.y, outline.z - ray.z) < 30.0) {
       EXPECT_GT(std::abs(outline.x - ray.x), 10.0) << name;
+    }
   }
   // Light enough to stand out on the dark view (its background has L* about 13).
   EXPECT_GT(outline.x, 60.0);

@@ -151,9 +151,9 @@ void setAxes(vtkChartXY* chart, bool samples, const Extent& extent, Language lan
 /// The title (the scene, the picture size, the budget), every text in the language's font,
 /// and the legend at the bottom left. Against time, the plot compares the algorithms at
 /// equal time (read it along a vertical line), whatever budget the passes were run at.
-void setTitleAndLegend(vtkChartXY* chart, const ComparisonResult& result, ConvergenceAxis axis,
+void setTitleAndLegend(vtkChartXY* chart, const ComparisonResult& result, ConvergenceAxis across,
                        Language language) {
-  const bool equalTime = axis == ConvergenceAxis::Time || result.compare.equalTime();
+  const bool equalTime = across == ConvergenceAxis::Time || result.compare.equalTime();
   const LocalText sceneName{result.sceneName,
                             result.sceneNameZh.empty() ? result.sceneName : result.sceneNameZh};
   const std::string& name = sceneName.in(language);

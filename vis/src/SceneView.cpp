@@ -482,12 +482,18 @@ SrgbImage SceneView::renderOffscreen(int width, int height) {
   m_impl->offscreen->SetSize(width, height);
 
   // The caption's size follows the picture's height (28 lines of it would fill it); a
-  // caption too long for the width goes on more lines, never smaller (the last frame's
-  // "The whole tree is shown." shrank it to 60%).
+  // caption a little too long for the width shrinks to at most 85% of that, a longer one
+  // goes on more lines (the last frame's "The whole tree is shown." shrank it to 60%).
   if (m_impl->caption) {
-    const int font = std::max(7, height / 28);
+    const int full = std::max(7, height / 28);
+    const double needed = std::max(1.0, textWidth(m_impl->captionText));
+    const int fit = int(std::floor((width - 16) / needed));
+    const int font = fit >= full ? full : fit >= int(std::ceil(0.85 * full)) ? fit : full;
     m_impl->caption->GetTextProperty()->SetFontSize(font);
-    m_impl->caption->SetInput(wrapText(m_impl->captionText, double(width - 16) / font).c_str());
+    m_impl->caption->SetInput((font == full
+                                   ? wrapText(m_impl->captionText, double(width - 16) / full)
+                                   : m_impl->captionText)
+                                  .c_str());
   }
 
   // Step 2: render, then read the back buffer.

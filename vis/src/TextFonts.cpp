@@ -2,6 +2,7 @@
 
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -30,6 +31,18 @@ void useFontFor(vtkTextProperty* property, Language language) {
   } else {
     property->SetFontFamilyToArial();
   }
+}
+
+double textWidth(const std::string& text) {
+  double widest = 0.0, line = 0.0;
+  for (std::size_t i = 0; i < text.size();) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    const std::size_t bytes = lead < 0x80 ? 1 : lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : 2;
+    line = text[i] == '\n' ? 0.0 : line + (bytes >= 3 ? 1.0 : 0.55);
+    widest = std::max(widest, line);
+    i += bytes;
+  }
+  return widest;
 }
 
 std::string wrapText(const std::string& text, double widthInFonts) {

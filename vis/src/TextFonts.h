@@ -22,5 +22,7 @@ void useFontFor(vtkTextProperty* property, Language language);
 /// `widthInFonts` font sizes: a Latin glyph counts about 0.55 of the font size, a Chinese
 /// one 1. Line breaks already in `text` stay; a word longer than a line is kept whole.
 std::string wrapText(const std::string& text, double widthInFonts);
+/// The width of `text`'s longest line in font sizes, by wrapText's measure.
+double textWidth(const std::string& text);
 
 }  // namespace raylab::vis
