@@ -1,7 +1,10 @@
 #include "ImageView.h"
 
+#include <QCursor>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -77,13 +80,45 @@ double ImageView::scale() const {
       1e-3, std::min(double(width()) / m_picture.width(), double(height()) / m_picture.height()));
 }
 
-void ImageView::zoomIn() {
-  setZoom(m_zoom == 0 ? std::max(1, int(std::floor(scale())) + 1) : std::min(kMaxZoom, m_zoom * 2));
+void ImageView::zoomIn() { zoomInAt(zoomAnchor()); }
+
+void ImageView::zoomOut() { zoomOutAt(zoomAnchor()); }
+
+void ImageView::zoomInAt(const QPoint& anchor) {
+  zoomAt(m_zoom == 0 ? std::max(1, int(std::floor(scale())) + 1) : std::min(kMaxZoom, m_zoom * 2),
+         anchor);
 }
 
-void ImageView::zoomOut() {
+void ImageView::zoomOutAt(const QPoint& anchor) {
   if (m_zoom == 0) return;
-  setZoom(m_zoom / 2);  // 1 -> 0: fit
+  zoomAt(m_zoom / 2, anchor);  // 1 -> 0: fit
+}
+
+QPoint ImageView::zoomAnchor() const {
+  // The cursor when it is over the part of the image on screen (Ctrl++ with the mouse
+  // over it), else the middle of that part.
+  const QRect visible = visibleRegion().boundingRect();
+  const QPoint cursor = mapFromGlobal(QCursor::pos());
+  if (visible.contains(cursor)) return cursor;
+  return visible.isEmpty() ? rect().center() : visible.center();
+}
+
+void ImageView::zoomAt(int zoom, const QPoint& anchor) {
+  // The image point under `anchor` stays under it: where it is in the image (in image
+  // pixels) and on the screen (in the scroll area's viewport) before the zoom...
+  const double before = scale();
+  const QPointF point = (QPointF(anchor) - imageRect().topLeft()) / before;
+  const QPoint onScreen = mapToParent(anchor);
+  setZoom(zoom);
+  auto* area =
+      parentWidget() ? qobject_cast<QScrollArea*>(parentWidget()->parentWidget()) : nullptr;
+  if (!area || area->widget() != this) return;
+  // ...then the scroll area sizes this view for the new zoom now (setWidgetResizable
+  // updates its scroll bars at once), and scrolls the point back under the anchor.
+  area->setWidgetResizable(true);
+  const QPointF after = imageRect().topLeft() + point * scale();
+  area->horizontalScrollBar()->setValue(int(std::lround(after.x() - onScreen.x())));
+  area->verticalScrollBar()->setValue(int(std::lround(after.y() - onScreen.y())));
 }
 
 void ImageView::setMarkedPixel(int x, int y) {
@@ -183,10 +218,11 @@ void ImageView::wheelEvent(QWheelEvent* event) {
     event->ignore();  // the scroll area scrolls
     return;
   }
+  // The pixel under the cursor stays under it.
   if (event->angleDelta().y() > 0)
-    zoomIn();
+    zoomInAt(event->position().toPoint());
   else if (event->angleDelta().y() < 0)
-    zoomOut();
+    zoomOutAt(event->position().toPoint());
   event->accept();
 }
 

@@ -13,7 +13,8 @@ namespace raylab::app {
  * trace it), and the chosen pixel is marked with a frame.
  *
  * Zoom is either "fit" (the largest scale that shows the whole image, fractional) or a
- * whole number of screen pixels per image pixel (1 to 32); the wheel with Ctrl zooms.
+ * whole number of screen pixels per image pixel (1 to 32); the wheel with Ctrl zooms,
+ * keeping the pixel under the cursor where it is.
  * Put it in a QScrollArea with widgetResizable(true).
  */
 class ImageView : public QWidget {
@@ -38,8 +39,14 @@ class ImageView : public QWidget {
   int zoom() const { return m_zoom; }
   /// Screen pixels per image pixel as drawn now.
   double scale() const;
+  /// One step in or out, keeping the image point under the cursor where it is (else the
+  /// one in the middle of what is on screen): Ctrl++, Ctrl+-, the buttons.
   void zoomIn();
   void zoomOut();
+  /// One step in or out keeping the image point at widget position `anchor` under it
+  /// (scrolling the QScrollArea the view is in).
+  void zoomInAt(const QPoint& anchor);
+  void zoomOutAt(const QPoint& anchor);
 
   /// Marks pixel (x, y); (-1, -1) removes the mark.
   void setMarkedPixel(int x, int y);
@@ -69,6 +76,10 @@ class ImageView : public QWidget {
   /// The image's rectangle on the widget.
   QRectF imageRect() const;
   void updateSize();
+  /// Where zoomIn and zoomOut anchor: the cursor over the view, else its visible middle.
+  QPoint zoomAnchor() const;
+  /// Zooms to `zoom`, scrolling so that the image point at `anchor` stays where it is.
+  void zoomAt(int zoom, const QPoint& anchor);
 
   FloatImage m_image;
   QImage m_picture;

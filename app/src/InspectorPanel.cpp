@@ -61,6 +61,12 @@ InspectorPanel::InspectorPanel(const SceneDocument& document, const RayTreePanel
   header->addWidget(m_exact);
   m_text = new QPlainTextEdit;
   m_text->setReadOnly(true);
+  m_text->setToolTip(
+      tr("weight: what this ray's light is multiplied by where it joins its parent.\n"
+         "pdf: the probability density with which this direction was sampled (none: a fixed "
+         "direction, such as a mirror's, a refraction's or a shadow ray's).\n"
+         "throughput: the share of light this path passes on to the camera, the product of "
+         "the weights from the camera to here."));
   m_text->setLineWrapMode(QPlainTextEdit::WidgetWidth);
   QFont font = QFontDatabase::systemFont(QFontDatabase::FixedFont);
   font.setPointSizeF(std::max(10.0, font.pointSizeF()));

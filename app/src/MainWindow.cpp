@@ -32,14 +32,18 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QHash>
 #include <QListWidget>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QPainter>
 #include <QPixmap>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QSpinBox>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabWidget>
 
 namespace raylab::app {
@@ -52,6 +56,19 @@ std::unique_ptr<SceneDocument> newDocument(const Scene& scene) {
   return document;
 }
 
+/// The window's first place: 80% of the screen's available area, centred (not a fixed
+/// size in a corner); the geometry of last time, restored from the settings, wins.
+void placeOnScreen(QWidget& window) {
+  const QScreen* screen = QGuiApplication::primaryScreen();
+  if (!screen) {
+    window.resize(1400, 860);
+    return;
+  }
+  const QRect area = screen->availableGeometry();
+  const QSize size(area.width() * 4 / 5, area.height() * 4 / 5);
+  window.setGeometry(QStyle::alignedRect(Qt::LeftToRight, Qt::AlignCenter, size, area));
+}
+
 }  // namespace
 
 MainWindow::MainWindow(const Scene& scene, QWidget* parent)
@@ -62,7 +79,7 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
       m_document(std::move(document)),
       m_view(std::make_unique<vis::SceneView>(m_document->scene())),
       m_actions(std::make_unique<ActionTable>()) {
-  resize(1400, 860);
+  placeOnScreen(*this);
   setAcceptDrops(true);
   // The 3D view beside the image tabs, the docks around them (window/WindowLayout.cpp).
   buildCentralArea();
@@ -90,10 +107,12 @@ void MainWindow::connectPanels() {
   connect(m_renderPanel, &RenderPanel::saveRequested, this, [this] { saveImageAs(); });
   connect(m_objectList, &QListWidget::currentRowChanged, this,
           [this](int row) { showSelection(row); });
-  connect(m_editPanel, &EditPanel::editRefused, this,
-          [this](const QString& message) { showError(tr("Edit refused"), message); });
-  connect(m_properties, &PropertiesPanel::editRefused, this,
-          [this](const QString& message) { showError(tr("Value refused"), message); });
+  connect(m_editPanel, &EditPanel::editRefused, this, [this](const QString& message) {
+    showError(tr("Edit refused"), m_document->forReaders(message));
+  });
+  connect(m_properties, &PropertiesPanel::editRefused, this, [this](const QString& message) {
+    showError(tr("Value refused"), m_document->forReaders(message));
+  });
   connect(m_editPanel, &EditPanel::selectionRequested, this,
           [this](int row) { selectObject(row); });
   connect(m_lessonPanel, &LessonPanel::stepChanged, this, [this](int i) { showLessonStep(i); });
@@ -249,7 +268,7 @@ void MainWindow::addObject(const QString& what, const std::function<Scene(const 
     m_document->apply(what, edit);
     selectObject(int(m_document->scene().objects.size()) - 1);
   } catch (const Exception& e) {
-    showError(tr("Cannot add"), QString::fromStdString(e.what()));
+    showError(tr("Cannot add"), m_document->forReaders(QString::fromStdString(e.what())));
   }
 }
 
@@ -259,8 +278,15 @@ void MainWindow::render() {
 }
 
 bool MainWindow::saveScreenshot(const QString& path) {
-  const QPixmap picture = grab();
-  return !picture.isNull() && picture.save(path, "PNG");
+  QPixmap picture = grab();
+  if (picture.isNull()) return false;
+  // The dialogs open over the window (an error), where they are on the screen.
+  QPainter painter(&picture);
+  for (QMessageBox* box : findChildren<QMessageBox*>())
+    if (box->isVisible())
+      painter.drawPixmap(box->mapToGlobal(QPoint(0, 0)) - mapToGlobal(QPoint(0, 0)), box->grab());
+  painter.end();
+  return picture.save(path, "PNG");
 }
 
 void MainWindow::showError(const QString& title, const QString& text) {

@@ -65,9 +65,50 @@ const std::vector<const char*> kMaterialTypes = {
     "diffuse",     "mirror",          "dielectric",       "glossy", "phong",
     "blinn_phong", "rough_conductor", "rough_dielectric", "plastic"};
 
+/// `material` (its file form) switched to scattering model `type`: the keys every material
+/// has, and those of `type`'s parameters that it had (the others go; the loader gives the
+/// missing ones their defaults), so that the form shows exactly that model's fields. The
+/// same sets as the scene writer's (core SceneWriter.cpp, materialToJson).
+json switchedMaterial(const json& material, const std::string& type) {
+  static const std::set<std::string> kEvery = {"name",        "display_name", "colour",
+                                               "texture",     "emission",     "opacity",
+                                               "ior_outside", "priority"};
+  const std::string old = material.value("type", "diffuse");
+  const auto in = [](const std::string& t, std::initializer_list<const char*> types) {
+    for (const char* one : types)
+      if (t == one) return true;
+    return false;
+  };
+  const bool rates = in(type, {"mirror", "phong", "blinn_phong"});
+  const auto uses = [&](const std::string& key) {
+    if (key == "reflection_rate" || key == "refraction_rate") return rates;
+    if (key == "ior") return rates || in(type, {"dielectric", "rough_dielectric", "plastic"});
+    if (key == "exponent" || key == "specular") return in(type, {"glossy", "phong", "blinn_phong"});
+    if (key == "ambient" || key == "diffuse" || key == "attenuation")
+      return in(type, {"phong", "blinn_phong"});
+    if (key == "distribution" || key == "roughness" || key == "visible_normals")
+      return in(type, {"rough_conductor", "rough_dielectric", "plastic"});
+    // The rates' weighting and an interface's reflectance share the key: kept only
+    // between models that read it the same way.
+    if (key == "fresnel") return rates == in(old, {"mirror", "phong", "blinn_phong"});
+    return kEvery.count(key) > 0;
+  };
+  json switched = json::object();
+  for (auto it = material.begin(); it != material.end(); ++it)
+    if (it.key() == "type")
+      switched["type"] = type;
+    else if (uses(it.key()))
+      switched[it.key()] = it.value();
+  return switched;
+}
+
 /// What a key means, for the keys a student may not know from their words (empty for
 /// the others: the form then names the key's place in the file).
 QString tipFor(const std::string& key) {
+  if (key == "m" || key == "n")
+    return PropertiesPanel::tr(
+        "How finely the sphere is drawn in the 3D view: m bands from pole to pole, n slices "
+        "around its axis (the rays still meet the exact sphere)");
   if (key == "diffuse")
     return PropertiesPanel::tr("Diffuse coefficient kd of the Phong model, in [0, 1]");
   if (key == "roughness")
@@ -132,8 +173,11 @@ QString tipFor(const std::string& key) {
 }
 
 /// Words for a key ("vertical_fov" -> "vertical fov"), in the window's language
-/// (SceneWords.h lists them for the translators).
+/// (SceneWords.h lists them for the translators); the sphere's one-letter `m` and `n` with
+/// what they count.
 QString label(const std::string& key) {
+  if (key == "m") return PropertiesPanel::tr("m (bands from pole to pole)");
+  if (key == "n") return PropertiesPanel::tr("n (slices around the axis)");
   QString text = QString::fromStdString(key);
   text.replace(QLatin1Char('_'), QLatin1Char(' '));
   return QCoreApplication::translate("SceneKeys", text.toUtf8().constData());
@@ -145,6 +189,13 @@ QString label(const std::string& key) {
 /// (SceneWords.h).
 QString valueLabel(const char* value) {
   const Language language = uiLanguage();
+  // The file's words that are not English words.
+  if (language == Language::English) {
+    const std::string word = value;
+    if (word == "blinn_phong") return PropertiesPanel::tr("Blinn-Phong");
+    if (word == "rough_conductor") return PropertiesPanel::tr("rough metal");
+    if (word == "rough_dielectric") return PropertiesPanel::tr("rough glass");
+  }
   if (parseAlgorithm(value))
     return language == Language::English
                ? QString::fromLatin1(value)
@@ -325,7 +376,11 @@ QWidget* PropertiesPanel::makeMaterialTypeBox(const std::string& place,
                                               const QString& undoText) {
   // The scattering model: the form then shows that model's parameters.
   auto* box = new QComboBox;
-  for (const char* type : kMaterialTypes) box->addItem(valueLabel(type), QString::fromLatin1(type));
+  for (const char* type : kMaterialTypes) {
+    box->addItem(valueLabel(type), QString::fromLatin1(type));
+    box->setItemData(box->count() - 1, tr("\"%1\" in the scene file").arg(QLatin1String(type)),
+                     Qt::ToolTipRole);
+  }
   box->setCurrentIndex(box->findData(QString::fromStdString(value.get<std::string>())));
   box->setToolTip(
       tr("Scattering model: diffuse (Lambert), mirror (reflection and "
@@ -334,7 +389,12 @@ QWidget* PropertiesPanel::makeMaterialTypeBox(const std::string& place,
          "half-vector highlight), rough_conductor (microfacet metal), rough_dielectric "
          "(microfacet glass), plastic (a rough dielectric coating over a diffuse base)"));
   connect(box, QOverload<int>::of(&QComboBox::activated), this, [this, place, box, undoText](int) {
-    setValue(place, json(box->currentData().toString().toStdString()).dump(), undoText);
+    // The whole material at once: the new model's parameters only.
+    const std::string type = box->currentData().toString().toStdString();
+    const std::string material = place.substr(0, place.rfind('/'));
+    const json now = json::parse(edit::valueAt(m_document.scene(), material, m_document.origin()));
+    if (now.value("type", "diffuse") != type)
+      setValue(material, switchedMaterial(now, type).dump(), undoText);
   });
   return box;
 }

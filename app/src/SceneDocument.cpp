@@ -7,7 +7,8 @@
 
 namespace raylab::app {
 
-/// One edit on the undo stack: the scenes before and after it, both kept whole.
+/// One edit on the undo stack: the scenes before and after it, both kept whole, and the
+/// selection in each (the one after it as it was when the edit was undone).
 class EditCommand : public QUndoCommand {
  public:
   EditCommand(SceneDocument& document, const QString& text, std::shared_ptr<const Scene> before,
@@ -16,10 +17,20 @@ class EditCommand : public QUndoCommand {
         m_document(document),
         m_before(std::move(before)),
         m_after(std::move(after)),
-        m_mergeId(mergeId) {}
+        m_mergeId(mergeId),
+        m_selectedBefore(document.selection()) {}
 
-  void redo() override { m_document.setScene(m_after); }
-  void undo() override { m_document.setScene(m_before); }
+  void redo() override {
+    // The first redo is the edit itself: the window selects what it made.
+    if (m_undone) m_document.setSelection(m_selectedAfter);
+    m_document.setScene(m_after);
+  }
+  void undo() override {
+    m_selectedAfter = m_document.selection();
+    m_undone = true;
+    m_document.setSelection(m_selectedBefore);
+    m_document.setScene(m_before);
+  }
   int id() const override { return m_mergeId; }
   bool mergeWith(const QUndoCommand* other) override {
     // Repeated changes of one value (spin box arrows) are one step: keep the first
@@ -34,6 +45,8 @@ class EditCommand : public QUndoCommand {
   SceneDocument& m_document;
   std::shared_ptr<const Scene> m_before, m_after;
   int m_mergeId;
+  int m_selectedBefore, m_selectedAfter = -1;
+  bool m_undone = false;
 };
 
 SceneDocument::SceneDocument(QObject* parent)
@@ -51,6 +64,12 @@ std::string SceneDocument::origin() const {
                           : m_path.toStdString();
 }
 
+QString SceneDocument::forReaders(const QString& message) const {
+  const QString untitled = QString::fromStdString(origin());
+  if (!m_path.isEmpty() || !message.startsWith(untitled)) return message;
+  return tr("the unsaved scene") + message.mid(untitled.size());
+}
+
 void SceneDocument::setScene(std::shared_ptr<const Scene> scene) {
   m_scene = std::move(scene);
   emit sceneChanged();
@@ -58,6 +77,7 @@ void SceneDocument::setScene(std::shared_ptr<const Scene> scene) {
 
 void SceneDocument::reset(std::shared_ptr<const Scene> scene, const QString& path) {
   m_path = path;
+  m_selection = -1;  // another scene: rows of the old one mean nothing in it
   m_undo.clear();
   m_undo.setClean();
   emit sceneReplaced();

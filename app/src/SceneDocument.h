@@ -19,9 +19,10 @@ namespace raylab::app {
  * values by the loader's rules), pushed on the undo stack as a command that holds the
  * scene before and after it, so undo and redo give back the very same scenes and undoing
  * every edit saves byte for byte what was loaded. The document is modified while the
- * stack is not at its clean index (set on open and save). Files are read with SceneIO::load
- * and written with SceneIO::save (temporary file, flush, rename: a failed save leaves the
- * old file as it was).
+ * stack is not at its clean index (set on open and save). Each edit also keeps the
+ * selection before it and after it, so that undo gives the selection back with the scene. Files are
+ * read with SceneIO::load and written with SceneIO::save (temporary file, flush, rename: a failed
+ * save leaves the old file as it was).
  */
 class SceneDocument : public QObject {
   Q_OBJECT
@@ -38,6 +39,9 @@ class SceneDocument : public QObject {
   /// The name the messages and mesh paths start from: the file, or "untitled.json" in the
   /// current folder for a new scene.
   std::string origin() const;
+  /// `message` (a refused edit's, which starts with origin()) for people: a scene never
+  /// saved is "the unsaved scene" (未保存的场景), not a file that does not exist.
+  QString forReaders(const QString& message) const;
   /// True when the scene differs from the file (edits since open or save).
   bool isModified() const { return !m_undo.isClean(); }
   QUndoStack& undoStack() { return m_undo; }
@@ -54,6 +58,11 @@ class SceneDocument : public QObject {
   void saveAs(const QString& path);
   /// Reads the document's file again, dropping every edit (no file: the default scene).
   void revert();
+
+  /// The object selected in the window (a row of scene().objects, -1 for none), kept with
+  /// each edit so that undo and redo give back the selection of their scene too.
+  int selection() const { return m_selection; }
+  void setSelection(int row) { m_selection = row; }
 
   /// Applies `edit` (the scene before -> the scene after) as one undo step named `text`.
   /// An edit that throws (a refused value) changes nothing and the exception propagates.
@@ -80,6 +89,7 @@ class SceneDocument : public QObject {
   std::shared_ptr<const Scene> m_scene;
   QString m_path;
   QUndoStack m_undo;
+  int m_selection = -1;
 };
 
 }  // namespace raylab::app

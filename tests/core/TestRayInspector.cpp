@@ -102,7 +102,7 @@ TEST(RayInspector, 01_CameraRayHitsTheBallAtFour) {
   EXPECT_DOUBLE_EQ(r.energy, 0.2126 * e.x + 0.7152 * e.y + 0.0722 * e.z);
   EXPECT_EQ(r.segment.pdf, 0.0);
   EXPECT_TRUE(contains(text, "Ray #0: camera ray, depth 0")) << text;
-  EXPECT_TRUE(contains(text, "pdf         none (deterministic)")) << text;
+  EXPECT_TRUE(contains(text, "pdf         none (a fixed direction, not sampled)")) << text;
   EXPECT_TRUE(contains(text, "object      'ball'\n  material    'red' (diffuse)\n")) << text;
   EXPECT_TRUE(contains(text, "parameters  albedo (0.7, 0.1, 0.1)")) << text;
   EXPECT_TRUE(contains(text, "spawned 1 ray (#1)")) << text;

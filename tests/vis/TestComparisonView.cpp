@@ -388,5 +388,19 @@ TEST(ComparisonView, 10_ChineseCaptions) {
            std::string(RAYLAB_TEMP_DIR) + "/TestComparisonView_Chinese.png");
 }
 
+TEST(ConvergencePlot, 11_AgainstTimeItIsTitledForEqualTime) {
+  // Issue 33 item 9 (`raylab plot --x time`): the passes run at equal samples, but a plot
+  // against time compares the algorithms at equal time; its title said "equal samples".
+  const ComparisonResult result = syntheticComparison();
+  ASSERT_FALSE(result.compare.equalTime());
+  const ConvergencePlot samples(result, ConvergenceAxis::Samples);
+  EXPECT_NE(samples.title().find("equal samples"), std::string::npos) << samples.title();
+  ConvergencePlot time(result, ConvergenceAxis::Time);
+  EXPECT_NE(time.title().find("equal time"), std::string::npos) << time.title();
+  EXPECT_EQ(time.title().find("equal samples"), std::string::npos) << time.title();
+  time.setLanguage(Language::Chinese);
+  EXPECT_NE(time.title().find("等时间"), std::string::npos) << time.title();
+}
+
 }  // namespace
 }  // namespace raylab::vis

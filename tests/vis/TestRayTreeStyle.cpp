@@ -17,6 +17,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace raylab::vis {
 namespace {
@@ -392,6 +395,47 @@ TEST(RayTreeStyle, 11_VerdictColouringColoursEachRayByItsVerdict) {
   EXPECT_NE(verdictColour(int(Verdict::Agrees)), verdictColour(int(Verdict::WrongHit)));
   EXPECT_EQ(verdictLabel(int(Verdict::MissedHit), Language::English), "missed hit");
   EXPECT_EQ(verdictLabel(int(Verdict::MissedHit), Language::Chinese), "漏掉的交点");
+}
+
+/// CIELAB (D65) of a linear-RGB-in-[0,1] colour as the view draws it (sRGB-encoded), for
+/// distances people see: about 2.3 is just noticeable, above 30 clearly another colour.
+Vec3 cieLab(const Vec3& colour) {
+  const auto linear = [](double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+  };
+  const double r = linear(colour.x), g = linear(colour.y), b = linear(colour.z);
+  const double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+  const double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+  const double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+  const auto f = [](double t) { return t > 0.008856 ? std::cbrt(t) : 7.787 * t + 16.0 / 116.0; };
+  return {116.0 * f(y) - 16.0, 500.0 * (f(x) - f(y)), 200.0 * (f(y) - f(z))};
+}
+
+TEST(RayTreeStyle, 12_SelectionOutlineIsAColourNoRayUses) {
+  // Issue 33 item 2: the outline was the shadow rays' yellow (15 CIELAB units apart). Every
+  // colour a ray can take: the kinds, the energy and depth ramps, the verdicts, the
+  // selected ray's magenta ({1, 0.2, 0.8}, RayTreeActors.cpp).
+  std::vector<std::pair<std::string, Vec3>> rays;
+  for (int k = 0; k < kRayKindCount; ++k)
+    rays.emplace_back(toString(RayKind(k)), kindColour(RayKind(k)));
+  for (int i = 0; i <= 20; ++i) {
+    rays.emplace_back("energy " + std::to_string(i), EnergyScale::colour(i / 20.0));
+    rays.emplace_back("depth " + std::to_string(i), depthColour(i, 20));
+  }
+  for (int v = 0; v < 8; ++v) rays.emplace_back("verdict " + std::to_string(v), verdictColour(v));
+  rays.emplace_back("selected ray", Vec3(1.0, 0.2, 0.8));
+  const Vec3 outline = cieLab(selectionOutlineColour());
+  for (const auto& [name, colour] : rays) {
+    const Vec3 ray = cieLab(colour);
+    // Clearly another colour (35 units) and, where the hue is close (under 30 units apart
+    // in a*b*), also of another lightness (10 units), for readers who see hues poorly.
+    EXPECT_GT(glm::length(outline - ray), 35.0) << name;
+    if (std::hypot(outline.y - ray.y, outline.z - ray.z) < 30.0) {
+      EXPECT_GT(std::abs(outline.x - ray.x), 10.0) << name;
+    }
+  }
+  // Light enough to stand out on the dark view (its background has L* about 13).
+  EXPECT_GT(outline.x, 60.0);
 }
 
 }  // namespace

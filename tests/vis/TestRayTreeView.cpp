@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace raylab::vis {
 namespace {
@@ -177,6 +178,35 @@ TEST(RayTreeView, 05_PickingAndSelection) {
   view.setSelectedSegment(int(tree.segments.size()));  // out of range clears
   EXPECT_EQ(view.selectedSegment(), -1);
   EXPECT_EQ(pixelsNear(view.renderOffscreen(kWidth, kHeight), bare, magenta), 0);
+}
+
+TEST(RayTreeView, 06_EnergyLegendTakesAtMostAnEighthOfTheView) {
+  // Issue 33 item 9: beside the image tabs the 3D view was about 475 px wide, and the
+  // energy legend (title, bar, numbers, words) covered a quarter of it. Its box (the pixels
+  // the legend changes) within an eighth of the view, narrow or wide, and still there.
+  const RayTree tree = traceGlassPixel(materialsScene(), Algorithm::PathTracing);
+  for (const auto& [width, height] : {std::pair{475, 800}, std::pair{900, 800}, {640, 480}}) {
+    SceneView view(materialsScene());
+    RayTreeStyle style;
+    view.setRayTree(tree, style);
+    view.resetViewCamera(double(width) / height);
+    const SrgbImage with = view.renderOffscreen(width, height);
+    style.showLegend = false;
+    view.setRayTreeStyle(style);
+    const SrgbImage without = view.renderOffscreen(width, height);
+    int left = width, right = -1, top = height, bottom = -1;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        if (with.at(x, y) != without.at(x, y)) {
+          left = std::min(left, x), right = std::max(right, x);
+          top = std::min(top, y), bottom = std::max(bottom, y);
+        }
+    ASSERT_GE(right, 0) << width << "x" << height << ": no legend";
+    const double share = double(right - left + 1) * (bottom - top + 1) / (double(width) * height);
+    EXPECT_LE(share, 1.0 / 8.0) << width << "x" << height << ": the legend's box " << left << ".."
+                                << right << " x " << top << ".." << bottom;
+    EXPECT_LE(right - left + 1, width * 2 / 5) << width << "x" << height;
+  }
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // Needs an X server (Debian's VTK renders offscreen through GLX): run under xvfb-run -a.
 #include "BaselineTest.h"
 #include "ImageChecks.h"
+#include "TextFonts.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/core/PixelTrace.h"
@@ -18,6 +19,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <utility>
 
 namespace raylab::vis {
 namespace {
@@ -138,10 +141,15 @@ TEST(SceneView, 04_ProjectionAgreesWithVtkWorldToDisplay) {
   }
 }
 
-TEST(SceneView, 05_SelectionDrawsAYellowOutline) {
+/// The selection outline's pale orchid ({1, 0.7, 0.95} drawn unlit: about 255, 178, 242).
+bool isOrchid(const Rgb8& c) {
+  return c[0] >= 220 && c[1] >= 140 && c[1] <= 215 && c[2] >= 200 && c[2] >= c[1] + 20;
+}
+
+TEST(SceneView, 05_SelectionDrawsAnOrchidOutline) {
   SceneView view(defaultScene());
   const SrgbImage plain = view.renderOffscreen(kSize, kSize);
-  EXPECT_EQ(fractionOf(plain, isYellow), 0.0);
+  EXPECT_EQ(fractionOf(plain, isOrchid), 0.0);
 
   // The sphere's radius in pixels: project its rim seen from the view camera.
   const int sphere = view.scene().findObject("red sphere");
@@ -152,17 +160,18 @@ TEST(SceneView, 05_SelectionDrawsAYellowOutline) {
   const int radius = static_cast<int>(glm::length(*rim - c));
   ASSERT_GT(radius, 8);
 
-  // Selected: a yellow ring around the sphere, whose middle stays red.
+  // Selected: a pale orchid ring around the sphere (selectionOutlineColour, a colour no
+  // ray uses: issue 33 item 2), whose middle stays red.
   view.setHighlighted(sphere);
   EXPECT_EQ(view.highlighted(), sphere);
   const SrgbImage selected = view.renderOffscreen(kSize, kSize);
   vis::writePng(selected, std::string(RAYLAB_TEMP_DIR) + "/TestSceneView_05.png");
-  EXPECT_GT(fractionNear(selected, c, radius + 3, isYellow), 0.05);
-  EXPECT_EQ(fractionNear(selected, c, radius / 2, isYellow), 0.0);
+  EXPECT_GT(fractionNear(selected, c, radius + 3, isOrchid), 0.05);
+  EXPECT_EQ(fractionNear(selected, c, radius / 2, isOrchid), 0.0);
   EXPECT_GE(fractionNear(selected, c, 3, isRed), 0.9);
-  // Nowhere else: the yellow stays within the ring's box.
+  // Nowhere else: the orchid stays within the ring's box.
   const double ringBox = std::pow(2.0 * (radius + 3) + 1.0, 2.0) / (kSize * kSize);
-  EXPECT_LE(fractionOf(selected, isYellow), ringBox);
+  EXPECT_LE(fractionOf(selected, isOrchid), ringBox);
 
   // Cleared: the picture is the plain one again.
   view.setHighlighted(-1);
@@ -303,6 +312,39 @@ TEST(SceneView, 11_SampleCloudNamesItsAxis) {
   for (int y = 0; y < kSize / 2; ++y)
     for (int x = 0; x < kSize; ++x) more += isYellow(named.at(x, y)) && !isYellow(bare.at(x, y));
   EXPECT_GT(more, 20);
+}
+
+/// Rows and columns of `picture` that differ from `bare` (where a caption's band is).
+std::pair<int, int> changedRowsAndColumns(const SrgbImage& picture, const SrgbImage& bare) {
+  int rows = 0, right = -1;
+  for (int y = 0; y < picture.height; ++y) {
+    bool changed = false;
+    for (int x = 0; x < picture.width; ++x)
+      if (picture.at(x, y) != bare.at(x, y)) changed = true, right = std::max(right, x);
+    rows += changed;
+  }
+  return {rows, right + 1};
+}
+
+TEST(SceneView, 12_ALongCaptionGoesOnTwoLinesAtTheSameSize) {
+  // Issue 33 item 9: `animate`'s last frame adds "The whole tree is shown." to its
+  // caption, which then shrank to about 60% to fit the width. It keeps its size and wraps.
+  const std::string line = "Depth 8 of 8: 3 rays travel (1 reflection, 1 refraction, 1 shadow).";
+  const std::string shortLine = "Depth 8 of 8: 3 rays travel.";
+  SceneView view(defaultScene());
+  const SrgbImage bare = view.renderOffscreen(640, 480);
+  view.setCaption(shortLine);
+  const auto [oneLine, oneWidth] = changedRowsAndColumns(view.renderOffscreen(640, 480), bare);
+  view.setCaption(line + " The whole tree is shown.");
+  const auto [twoLines, twoWidth] = changedRowsAndColumns(view.renderOffscreen(640, 480), bare);
+  ASSERT_GT(oneLine, 10);
+  EXPECT_GT(twoLines, oneLine * 3 / 2)
+      << "one line: " << oneLine << " rows, the long one " << twoLines;
+  EXPECT_LE(twoWidth, 640);
+  // The words wrap at spaces, and Chinese between characters.
+  EXPECT_EQ(wrapText("one two three", 3.0), "one\ntwo\nthree");
+  EXPECT_EQ(wrapText("one two", 10.0), "one two");
+  EXPECT_EQ(wrapText("光线追踪", 2.0), "光线\n追踪");
 }
 
 TEST(SceneView, 07_MatchesBaseline) {

@@ -141,7 +141,7 @@ void BvhActors::addTo(vtkRenderer* renderer) {
 void BvhActors::layoutLegend(int width, int height) {
   if (width <= 0 || height <= 0) return;
   // The ray tree legend's size, in the other top corner.
-  const auto [font, margin, line] = legendMetrics(height);
+  const auto [font, margin, line] = legendMetrics(width, height);
   int y = height - margin - font;
   for (const auto& row : legend) {
     row->GetTextProperty()->SetFontSize(font);

@@ -149,8 +149,11 @@ void setAxes(vtkChartXY* chart, bool samples, const Extent& extent, Language lan
 }
 
 /// The title (the scene, the picture size, the budget), every text in the language's font,
-/// and the legend at the bottom left.
-void setTitleAndLegend(vtkChartXY* chart, const ComparisonResult& result, Language language) {
+/// and the legend at the bottom left. Against time, the plot compares the algorithms at
+/// equal time (read it along a vertical line), whatever budget the passes were run at.
+void setTitleAndLegend(vtkChartXY* chart, const ComparisonResult& result, ConvergenceAxis across,
+                       Language language) {
+  const bool equalTime = across == ConvergenceAxis::Time || result.compare.equalTime();
   const LocalText sceneName{result.sceneName,
                             result.sceneNameZh.empty() ? result.sceneName : result.sceneNameZh};
   const std::string& name = sceneName.in(language);
@@ -159,8 +162,7 @@ void setTitleAndLegend(vtkChartXY* chart, const ComparisonResult& result, Langua
       {{"scene", name},
        {"size", std::to_string(result.width) + "x" + std::to_string(result.height)},
        {"budget",
-        phrase(result.compare.equalTime() ? "plot.budget.equal_time" : "plot.budget.equal_samples",
-               language)}}));
+        phrase(equalTime ? "plot.budget.equal_time" : "plot.budget.equal_samples", language)}}));
   useFontFor(chart->GetTitleProperties(), language);
   for (vtkAxis* axis : {chart->GetAxis(vtkAxis::BOTTOM), chart->GetAxis(vtkAxis::LEFT)}) {
     useFontFor(axis->GetTitleProperties(), language);
@@ -204,6 +206,8 @@ void ConvergencePlot::setResult(const ComparisonResult& result) {
   m_result = result;
   build();
 }
+
+std::string ConvergencePlot::title() const { return m_impl->chart->GetTitle(); }
 
 void ConvergencePlot::setAxis(ConvergenceAxis axis) {
   m_axis = axis;
@@ -249,7 +253,7 @@ void ConvergencePlot::build() {
 
   // Step 3: the axes, the title and the legend.
   setAxes(chart, samples, extent, m_language);
-  setTitleAndLegend(chart, m_result, m_language);
+  setTitleAndLegend(chart, m_result, m_axis, m_language);
 }
 
 void ConvergencePlot::layout(int width, int height) {

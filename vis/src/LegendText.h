@@ -30,15 +30,18 @@ inline void styleLegendText(vtkTextProperty* text, const Vec3& colour, const Vec
   text->SetBackgroundOpacity(kLegendBackdropOpacity);
 }
 
-/// A legend's sizes in a view `height` pixels tall: text about 1/36 of it (readable when
-/// projected, small beside the scene), the margin to the view's edge and the line spacing.
+/// A legend's sizes in a view of `width` x `height` pixels: text about 1/36 of its height
+/// (readable when projected, small beside the scene) but at most 1/40 of its width (a
+/// narrow view beside the image tabs: the energy legend, some 12 fonts wide, then keeps to
+/// a third of the width and an eighth of the view), the margin to the view's edge and the
+/// line spacing.
 struct LegendMetrics {
   int font;
   int margin;
   int line;
 };
-inline LegendMetrics legendMetrics(int height) {
-  const int font = std::clamp(int(std::lround(height / 36.0)), 10, 28);
+inline LegendMetrics legendMetrics(int width, int height) {
+  const int font = std::clamp(int(std::lround(std::min(height / 36.0, width / 40.0))), 10, 28);
   return {font, std::max(4, int(std::lround(0.02 * height))), int(std::lround(1.3 * font))};
 }
 

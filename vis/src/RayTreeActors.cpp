@@ -286,7 +286,7 @@ void RayTreeActors::updateLegend() {
 
 void RayTreeActors::layoutLegend(int width, int height) {
   if (width <= 0 || height <= 0) return;
-  const auto [font, margin, line] = legendMetrics(height);
+  const auto [font, margin, line] = legendMetrics(width, height);
   int y = height - margin - font;
   m_legendTitle->GetTextProperty()->SetFontSize(font);
   m_legendTitle->SetDisplayPosition(margin, y);
@@ -298,7 +298,7 @@ void RayTreeActors::layoutLegend(int width, int height) {
   }
   // The energy bar under the title: labels half a line tall above and below the bar.
   const int barTop = height - margin - font - line / 2;
-  const int barHeight = std::max(4 * font, int(0.3 * height));
+  const int barHeight = std::max(4 * font, int(0.18 * height));
   m_energyBar->GetLabelTextProperty()->SetFontSize(font);
   m_energyBar->GetPositionCoordinate()->SetValue(margin + font / 2, barTop - barHeight);
   m_energyBar->GetPosition2Coordinate()->SetValue(5 * font, barHeight);

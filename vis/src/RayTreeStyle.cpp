@@ -89,6 +89,12 @@ Vec3 kindColour(RayKind kind) {
   return Vec3(0.5);
 }
 
+Vec3 selectionOutlineColour() {
+  // Chosen by CIELAB distance: the nearest ray colour (the energy scale's light grey) is 38
+  // units away and 26 darker; the old yellow was 15 from the shadow rays' yellow.
+  return Vec3(1.0, 0.7, 0.95);
+}
+
 Vec3 depthColour(int depth, int maxDepth) {
   // A sequential ramp without a dark end (the background is dark): yellow for the
   // camera rays, through orange and pink, to violet for the deepest.

@@ -16,6 +16,7 @@
 #include "raylab/core/Sphere.h"
 #include "raylab/vis/Display.h"
 #include "raylab/vis/ImageIO.h"
+#include "raylab/vis/RayTreeStyle.h"
 
 #include <vtkActor.h>
 #include <vtkBox.h>
@@ -45,8 +46,6 @@ namespace raylab::vis {
 namespace {
 
 /// Background of the 3D view: a dark slate that none of the scene colours uses.
-/// Colour of the selection outline.
-constexpr double kHighlight[3] = {1.0, 0.85, 0.0};
 /// Colour and opacity of the scene camera's body, colour of its frustum lines: the lime of
 /// camera rays (kindColour), never the light grey that means "no energy" on rays; the
 /// frustum a darker lime in thin lines, so that a camera ray inside it stands out.
@@ -134,7 +133,8 @@ vtkSmartPointer<vtkActor> outlineActor(vtkPolyData* geometry, vtkCamera* camera)
   auto outline = vtkSmartPointer<vtkActor>::New();
   outline->SetMapper(outlineMapper);
   vtkProperty* c = outline->GetProperty();
-  c->SetColor(kHighlight[0], kHighlight[1], kHighlight[2]);
+  const Vec3 colour = selectionOutlineColour();
+  c->SetColor(colour.x, colour.y, colour.z);
   c->SetLineWidth(4.0);
   c->LightingOff();
   outline->VisibilityOff();
@@ -351,11 +351,12 @@ void SceneView::setCaption(const std::string& text, Language language) {
   if (text.empty()) return;
   auto caption = vtkSmartPointer<vtkTextActor>::New();
   caption->SetInput(text.c_str());
+  m_impl->captionText = text;
   vtkTextProperty* p = caption->GetTextProperty();
   useFontFor(p, language);
   p->SetColor(0.95, 0.95, 0.95);
   p->SetBackgroundColor(0.0, 0.0, 0.0);
-  p->SetBackgroundOpacity(0.65);
+  p->SetBackgroundOpacity(0.85);  // a ray behind it does not cross the words
   p->SetFrame(false);
   caption->SetDisplayPosition(8, 8);
   m_impl->caption = caption;
@@ -480,12 +481,19 @@ SrgbImage SceneView::renderOffscreen(int width, int height) {
   }
   m_impl->offscreen->SetSize(width, height);
 
-  // The caption's size follows the picture's height (28 lines of it would fill it), and
-  // shrinks to fit its width (a glyph is about 0.55 of the font size wide).
+  // The caption's size follows the picture's height (28 lines of it would fill it); a
+  // caption a little too long for the width shrinks to at most 85% of that, a longer one
+  // goes on more lines (the last frame's "The whole tree is shown." shrank it to 60%).
   if (m_impl->caption) {
-    const double chars = std::max<double>(1.0, std::strlen(m_impl->caption->GetInput()));
-    const int fit = int(std::floor((width - 16) / (0.55 * chars)));
-    m_impl->caption->GetTextProperty()->SetFontSize(std::max(7, std::min(height / 28, fit)));
+    const int full = std::max(7, height / 28);
+    const double needed = std::max(1.0, textWidth(m_impl->captionText));
+    const int fit = int(std::floor((width - 16) / needed));
+    const int font = fit >= full ? full : fit >= int(std::ceil(0.85 * full)) ? fit : full;
+    m_impl->caption->GetTextProperty()->SetFontSize(font);
+    m_impl->caption->SetInput((font == full
+                                   ? wrapText(m_impl->captionText, double(width - 16) / full)
+                                   : m_impl->captionText)
+                                  .c_str());
   }
 
   // Step 2: render, then read the back buffer.

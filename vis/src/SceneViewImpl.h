@@ -35,7 +35,8 @@ struct SceneView::Impl {
   std::vector<int> crossed;  ///< Solids the crossings' ray passes through (drawn see-through).
   std::vector<vtkSmartPointer<vtkProp>> cloud;  ///< setSampleCloud's props; empty = scene.
   vtkSmartPointer<vtkTextActor> caption;        ///< setCaption's text; null when none.
-  Point3 inside{0.0};  ///< The room's inside, which one-sided surfaces face.
+  std::string captionText;  ///< setCaption's text as given (drawn wrapped to the width).
+  Point3 inside{0.0};       ///< The room's inside, which one-sided surfaces face.
 
   ~Impl() {
     if (offscreen) {

@@ -18,4 +18,11 @@ const std::string& cjkFontFile();
 /// installed), else Arial.
 void useFontFor(vtkTextProperty* property, Language language);
 
+/// `text` broken into lines (at spaces, else between Chinese characters) no wider than
+/// `widthInFonts` font sizes: a Latin glyph counts about 0.55 of the font size, a Chinese
+/// one 1. Line breaks already in `text` stay; a word longer than a line is kept whole.
+std::string wrapText(const std::string& text, double widthInFonts);
+/// The width of `text`'s longest line in font sizes, by wrapText's measure.
+double textWidth(const std::string& text);
+
 }  // namespace raylab::vis

@@ -54,6 +54,7 @@ bool isLessonFile(const std::string& path) {
 struct WindowArgs {
   std::string scene;
   std::string openFile;
+  bool sceneGivenAlone = false;  ///< The scene is `openFile` (a file manager's double-click).
   int quitAfterMs = -1;
   std::string screenshot;
   std::string select;
@@ -200,6 +201,7 @@ std::optional<int> parse(CLI::App& cli, int argc, char** argv) {
 WindowOptions windowOptions(const WindowArgs& args) {
   WindowOptions window;
   window.scene = args.scene;
+  window.sceneGivenAlone = args.sceneGivenAlone;
   window.quitAfterMs = args.quitAfterMs;
   window.screenshot = args.screenshot;
   window.select = args.select;
@@ -257,6 +259,7 @@ int runCommandLine(int argc, char** argv) {
     args.lesson = openFile;
   } else if (!openFile.empty()) {
     args.scene = openFile;
+    args.sceneGivenAlone = true;
   }
   for (const Subcommand& subcommand : subcommands) {
     if (subcommand.parser->parsed()) return subcommand.run(args.scene);

@@ -9,6 +9,7 @@
 #include "commands/ExitCodes.h"
 #include "commands/SceneSource.h"
 #include "commands/TraceCommand.h"
+#include "commands/Subcommand.h"
 #include "window/LanguageSwitch.h"
 #include "words/Language.h"
 
@@ -187,11 +188,27 @@ void reportFirstFrame(QApplication& application, std::unique_ptr<MainWindow>& wi
                    });
 }
 
+/// Step 1's scene: the file, else the built-in scene. A file given alone that cannot be
+/// read is said on stderr and left for the window's dialog (`unreadable` set).
+Scene firstScene(const WindowOptions& options, bool& unreadable) {
+  unreadable = false;
+  try {
+    return loadSceneOrDefault(options.scene);
+  } catch (const Exception& e) {
+    if (!options.sceneGivenAlone) throw;
+    std::cerr << "raylab: error: " << printable(e.what()) << " (shown in the window)" << std::endl;
+    unreadable = true;
+    return defaultScene();
+  }
+}
+
 }  // namespace
 
 int runWindow(int argc, char** argv, const WindowOptions& options) {
-  // Step 1: the scene first, so a bad file fails before any window appears.
-  const Scene scene = loadSceneOrDefault(options.scene);
+  // Step 1: the scene first, so a bad file fails before any window appears (but for a
+  // double-clicked file: nobody reads a terminal then, so the window says it).
+  bool unreadable = false;
+  const Scene scene = firstScene(options, unreadable);
   if (const std::optional<int> usage = checkAgainstScene(options, scene)) return *usage;
   const int selected = options.select.empty() ? -1 : scene.findObject(options.select);
 
@@ -211,7 +228,7 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
               << translationFolders().join(QStringLiteral(", ")).toStdString()
               << "; the window stays in English" << std::endl;
   auto window = std::make_unique<MainWindow>(scene);
-  if (!options.scene.empty())
+  if (!options.scene.empty() && !unreadable)
     window->adoptScene(scene, QString::fromStdString(options.scene));
   else
     window->startUp();  // the scene open last time, or the default (the status
@@ -219,6 +236,8 @@ int runWindow(int argc, char** argv, const WindowOptions& options) {
   window->selectObject(
       options.select.empty() ? selected : window->document().scene().findObject(options.select));
   window->show();
+  // File > Open's dialog, over the scene behind it, naming the file, the place and the fault.
+  if (unreadable) window->openFile(QString::fromStdString(options.scene), false);
   showRayTreeOptions(*window, options);
   showStartOptions(*window, options);
 

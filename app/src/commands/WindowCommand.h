@@ -10,7 +10,11 @@ namespace raylab::app {
 
 /// Options of the window (`raylab` with no subcommand).
 struct WindowOptions {
-  std::string scene;                   ///< Scene file; empty for the built-in default scene.
+  std::string scene;  ///< Scene file; empty for the built-in default scene.
+  /// The scene is the file given alone (`raylab FILE`, a file manager's double-click): one
+  /// that cannot be read opens the window anyway, on the scene open last time or the
+  /// built-in one, with the error in File > Open's dialog.
+  bool sceneGivenAlone = false;
   int quitAfterMs = -1;                ///< Close by itself this long after showing; -1 stays open.
   std::string screenshot;              ///< When set: grab the window into this PNG, then quit.
   std::string select;                  ///< Object to select at start (by name); empty selects none.
@@ -36,8 +40,9 @@ struct WindowOptions {
  *
  * For tests, `quitAfterMs` and/or `screenshot` make the window leave by itself after it
  * has been shown and painted (a screenshot alone waits 1500 ms). The scene is loaded
- * before any window appears, so a bad file (or an unknown `select` name) fails like in
- * the headless commands, with a raylab::Exception; so does a `trace` pixel outside the
+ * before any window appears, so a bad `--scene` file (or an unknown `select` name) fails
+ * like in the headless commands, with a raylab::Exception (a bad file given alone is shown
+ * in the window instead, see `sceneGivenAlone`); so does a `trace` pixel outside the
  * scene camera's film, a `sample` outside its samples per pixel, or a `ray` the traced
  * tree does not have.
  * \return kExitOk, or kExitRuntimeError when the screenshot cannot be written.

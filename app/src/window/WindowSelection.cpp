@@ -31,7 +31,8 @@ bool sameCamera(const vis::ViewCamera& a, const vis::ViewCamera& b) {
 }
 
 /// `text` with every number written with 4 significant digits, for people
-/// ("(-1.6000000000000001, 1.2, ...)" -> "(-1.6, 1.2, ...)").
+/// ("(-1.6000000000000001, 1.2, ...)" -> "(-1.6, 1.2, ...)"), and a sphere's "m=24, n=32"
+/// as "drawn with 24 bands x 32 slices".
 QString forPeople(const std::string& text) {
   static const QRegularExpression number(
       QStringLiteral("-?\\d+\\.\\d+(?:[eE][-+]?\\d+)?|-?\\d+[eE][-+]?\\d+"));
@@ -43,15 +44,25 @@ QString forPeople(const std::string& text) {
     out += in.mid(last, m.capturedStart() - last) + number4(m.captured().toDouble());
     last = m.capturedEnd();
   }
-  return out + in.mid(last);
+  out += in.mid(last);
+  // A sphere's tessellation hints (m=24, n=32) in words.
+  static const QRegularExpression tessellation(QStringLiteral("\\bm=(\\d+), n=(\\d+)"));
+  const QRegularExpressionMatch m = tessellation.match(out);
+  if (m.hasMatch())
+    out.replace(
+        m.capturedStart(), m.capturedLength(),
+        MainWindow::tr("drawn with %1 bands x %2 slices").arg(m.captured(1), m.captured(2)));
+  return out;
 }
 
 }  // namespace
 
 void MainWindow::fillObjectList() {
-  // The list of objects, the selection kept where it still exists.
+  // The list of objects, the document's selection kept where it still exists (after an
+  // undo or redo: the selection that went with that scene).
   const Scene& scene = m_document->scene();
-  const int selected = m_selected < int(scene.objects.size()) ? m_selected : -1;
+  const int wanted = m_document->selection();
+  const int selected = wanted < int(scene.objects.size()) ? wanted : -1;
   {
     const QSignalBlocker block(m_objectList);
     m_objectList->clear();
@@ -81,6 +92,7 @@ void MainWindow::selectObject(int row) {
 void MainWindow::showSelection(int row) {
   const Scene& scene = m_document->scene();
   m_selected = row >= 0 && row < int(scene.objects.size()) ? row : -1;
+  m_document->setSelection(m_selected);
   m_view->setHighlighted(m_selected);
   m_editPanel->setSelection(m_selected);
   if (m_properties->object() != m_selected) m_properties->showObject(m_selected);

@@ -45,6 +45,9 @@ class ConvergencePlot {
   ConvergenceAxis axis() const { return m_axis; }
   void setLanguage(Language language);
   Language language() const { return m_language; }
+  /// The title drawn over the plot: the scene, the picture size and the budget read
+  /// across (equal samples, or equal time when the axis is time).
+  std::string title() const;
   /// Number of points drawn for each algorithm, in the result's order.
   std::vector<int> pointCounts() const;
 

@@ -62,6 +62,10 @@ Vec3 depthColour(int depth, int maxDepth);
 Vec3 verdictColour(int verdict);
 /// The legend's words of a verdict ("wrong hit" / "交点错误").
 std::string verdictLabel(int verdict, Language language);
+/// Colour of the selected object's outline in the 3D view: a pale orchid that no ray
+/// colouring uses (kind, energy, depth, verdict, nor the selected ray's magenta), at least
+/// 35 CIELAB units from each of them and lighter than the colours nearest to it in hue.
+Vec3 selectionOutlineColour();
 
 /// Which segments are drawn. A segment is drawn when it passes every filter.
 struct RayFilter {

@@ -34,8 +34,8 @@ namespace raylab::vis {
  *  - open surfaces (planes, quads, triangles) face the room and are drawn one-sided
  *    (back faces culled), so from outside one looks through the near walls into the room
  *    (a dollhouse cut-away); an infinite plane is drawn as a large finite square;
- *  - the selected object gets a yellow outline: its silhouette as seen from the view
- *    camera, its border edges and its sharp creases, drawn over it in thick lines.
+ *  - the selected object gets a pale orchid outline (selectionOutlineColour): its silhouette as
+ * seen from the view camera, its border edges and its sharp creases, drawn over it in thick lines.
  *
  * The renderer can be shown in one render window at a time: either the app's widget
  * (take `renderer()`), or this class's own offscreen window (`renderOffscreen`).
@@ -77,7 +77,7 @@ class SceneView {
   /// core's SceneIntersector (exact, no GL picking); -1 when it meets none.
   int objectAt(double x, double y, int width, int height) const;
 
-  /// Highlights object `index` with a yellow outline; -1 (or any index out of range) clears.
+  /// Highlights object `index` with an outline; -1 (or any index out of range) clears.
   void setHighlighted(int index);
   /// The highlighted object, or -1.
   int highlighted() const { return m_highlighted; }
