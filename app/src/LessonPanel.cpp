@@ -1,8 +1,10 @@
 #include "LessonPanel.h"
 
+#include "LessonSummary.h"
 #include "ScaledFont.h"
 #include "words/Language.h"
 
+#include "raylab/core/Phrases.h"
 #include "raylab/vis/BvhCaptions.h"
 
 #include <QButtonGroup>
@@ -34,6 +36,11 @@ namespace {
 
 QString text(const LocalText& t, Language language) {
   return QString::fromStdString(t.in(language));
+}
+
+/// A phrase of the table (core/src/words/phrases.json) as a QString.
+QString words(const char* key, Language language, const PhraseArguments& arguments = {}) {
+  return QString::fromStdString(phrase(key, language, arguments));
 }
 
 /// The property holding a widget's font size relative to the panel's.
@@ -129,6 +136,11 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   m_notes->setStyleSheet(QStringLiteral("color: #555555"));
   layout->addWidget(m_notesButton);
   layout->addWidget(m_notes);
+
+  // Step 4b: at the last step, the lesson's summary with the steps to review.
+  m_summary = new LessonSummary;
+  m_summary->setProperty(kFontScale, 1.1);
+  layout->addWidget(m_summary);
   layout->addStretch(1);
   auto* scroll = new QScrollArea;
   scroll->setWidget(page);
@@ -150,6 +162,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   connect(m_back, &QPushButton::clicked, this, [this] { back(); });
   connect(m_next, &QPushButton::clicked, this, [this] { next(); });
   connect(m_notesButton, &QToolButton::toggled, m_notes, &QWidget::setVisible);
+  connect(m_summary, &LessonSummary::stepRequested, this, [this](int index) { showStep(index); });
   connect(m_languageBox, qOverload<int>(&QComboBox::activated), this,
           [this] { setLanguage(Language(m_languageBox->currentData().toInt())); });
   setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
@@ -231,6 +244,9 @@ void LessonPanel::changeEvent(QEvent* event) {
 void LessonPanel::setLesson(std::shared_ptr<const Lesson> lesson) {
   m_lesson = std::move(lesson);
   m_step = -1;
+  const std::size_t steps = m_lesson ? m_lesson->steps.size() : 0;
+  m_attempts.assign(steps, QuestionAttempts{});
+  m_chosen.assign(steps, -1);
   showStep(0);
 }
 
@@ -243,11 +259,9 @@ void LessonPanel::setLanguage(Language language) {
 
 void LessonPanel::showStep(int index) {
   if (!m_lesson || m_lesson->steps.empty()) return;
+  // Each step keeps how its question stands: coming back shows its verdict, and the
+  // summary counts it.
   m_step = std::clamp(index, 0, int(m_lesson->steps.size()) - 1);
-  m_tries = 0;
-  m_final = false;
-  m_outcome = Outcome::Shown;
-  m_chosen = -1;
   refresh();
   emit stepChanged(m_step);
 }
@@ -275,6 +289,7 @@ void LessonPanel::refresh() {
     m_try->hide();
     m_notesButton->hide();
     m_notes->hide();
+    m_summary->hide();
     return;
   }
   const LessonStep& step = m_lesson->steps[std::size_t(m_step)];
@@ -297,6 +312,22 @@ void LessonPanel::refresh() {
   m_notesButton->setVisible(notes);
   m_notes->setText(text(step.teacherNotes, m_language));
   m_notes->setVisible(notes && m_notesButton->isChecked());
+  updateSummary();
+}
+
+void LessonPanel::updateSummary() {
+  const bool last = m_lesson && m_step >= 0 && m_step + 1 == int(m_lesson->steps.size());
+  m_summary->setVisible(last);
+  if (last) m_summary->setScore(*m_lesson, score(), m_language);
+}
+
+LessonScore LessonPanel::score() const {
+  return m_lesson ? scoreLesson(*m_lesson, m_attempts) : LessonScore{};
+}
+
+bool LessonPanel::answerFinal() const {
+  return m_step >= 0 && std::size_t(m_step) < m_attempts.size() &&
+         m_attempts[std::size_t(m_step)].final();
 }
 
 void LessonPanel::setRayText(const QString& text) {
@@ -337,7 +368,10 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   }
   m_verdict->clear();
   m_explanation->clear();
-  if (!m_final) m_number->clear();  // a final answer stays, with its verdict
+  // A final answer stays with its verdict (the language switched, the view revealed); a
+  // step shown anew starts with an empty box.
+  if (!answerFinal() || m_number->property("raylabStep").toInt() != m_step) m_number->clear();
+  m_number->setProperty("raylabStep", m_step);
   if (!step.question) {
     m_question->hide();
     return;
@@ -347,8 +381,8 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   m_prompt->setText(text(q.prompt, m_language));
   const bool choice = q.type == LessonQuestion::Type::Choice;
   m_number->setVisible(!choice);
-  m_predictNote->setVisible(q.predict && !m_final);
-  m_showAnswer->setVisible(!m_final);
+  m_predictNote->setVisible(q.predict && !answerFinal());
+  m_showAnswer->setVisible(!answerFinal());
   // The choices in the order the lesson fixes for the step (the handout's); each button's
   // id is the choice's index in the file.
   for (std::size_t k = 0; choice && k < q.choices.size(); ++k) {
@@ -368,31 +402,31 @@ void LessonPanel::showQuestion(const LessonStep& step) {
   }
   // Shown again (the language switched, the view revealed what it hid): the final verdict
   // stays, in the lesson's language.
-  if (m_final) showOutcome();
+  if (answerFinal()) showOutcome();
 }
 
 void LessonPanel::showOutcome() {
+  using Settled = QuestionAttempts::Settled;
   const LessonQuestion& q = *m_lesson->steps[std::size_t(m_step)].question;
-  if (QAbstractButton* b = m_choices->button(m_chosen)) b->setChecked(true);
-  const QString expected = expectedAnswer();
-  m_verdict->setStyleSheet(m_outcome == Outcome::Right   ? QStringLiteral("color: #1b7a1b")
-                           : m_outcome == Outcome::Wrong ? QStringLiteral("color: #b00020")
-                                                         : QStringLiteral("color: #2a5d8a"));
-  m_verdict->setText(m_outcome == Outcome::Right ? tr("✓ Right.")
-                     : m_outcome == Outcome::Wrong
-                         ? tr("✗ Not quite: the answer is %1.").arg(expected)
-                         : tr("The answer is %1.").arg(expected));
+  if (QAbstractButton* b = m_choices->button(m_chosen[std::size_t(m_step)])) b->setChecked(true);
+  const std::string expected = expectedAnswer().toStdString();
+  const Settled settled = current().settled;
+  m_verdict->setStyleSheet(settled == Settled::Right   ? QStringLiteral("color: #1b7a1b")
+                           : settled == Settled::Wrong ? QStringLiteral("color: #b00020")
+                                                       : QStringLiteral("color: #2a5d8a"));
+  m_verdict->setText(settled == Settled::Right ? words("lesson.answer.right", m_language)
+                     : settled == Settled::Wrong
+                         ? words("lesson.answer.wrong", m_language, {{"answer", expected}})
+                         : words("lesson.answer.shown", m_language, {{"answer", expected}}));
   m_explanation->setText(text(q.explanation, m_language));
   m_predictNote->hide();
   m_showAnswer->hide();
 }
 
-void LessonPanel::finish(Outcome outcome) {
-  const bool was = m_final;
-  m_final = true;
-  m_outcome = outcome;
+void LessonPanel::finish(bool wasFinal) {
   showOutcome();
-  if (!was) {
+  updateSummary();
+  if (!wasFinal) {
     m_tryApply->setEnabled(true);
     emit answerRevealed();
   }
@@ -420,22 +454,30 @@ void LessonPanel::showTryValue(const LessonStep& step) {
 }
 
 LessonPanel::AnswerState LessonPanel::answerState() const {
-  return {m_tries, m_final, int(m_outcome), m_chosen, m_number->text()};
+  if (m_step < 0 || std::size_t(m_step) >= m_attempts.size()) return {};
+  const QuestionAttempts& a = m_attempts[std::size_t(m_step)];
+  return {a.wrong,          a.final(), int(a.settled), m_chosen[std::size_t(m_step)],
+          m_number->text(), m_attempts};
 }
 
 void LessonPanel::restoreAnswer(const AnswerState& state) {
   if (!m_lesson || m_step < 0 || !m_lesson->steps[std::size_t(m_step)].question) return;
-  m_tries = state.tries;
-  m_chosen = state.chosen;
+  if (state.steps.size() == m_attempts.size()) m_attempts = state.steps;
+  QuestionAttempts& a = current();
+  a.wrong = state.tries;
+  a.settled = QuestionAttempts::Settled(state.outcome);
+  if (!state.final) a.settled = QuestionAttempts::Settled::Open;
+  m_chosen[std::size_t(m_step)] = state.chosen;
   if (QAbstractButton* b = m_choices->button(state.chosen)) b->setChecked(true);
   m_number->setText(state.number);
-  if (state.final) finish(Outcome(state.outcome));
+  if (state.final) finish(false);
+  updateSummary();
 }
 
 bool LessonPanel::waitingForPrediction() const {
   if (!m_lesson || m_step < 0) return false;
   const auto& q = m_lesson->steps[std::size_t(m_step)].question;
-  return q && q->predict && !m_final;
+  return q && q->predict && !answerFinal();
 }
 
 QStringList LessonPanel::shownChoices() const {
@@ -464,10 +506,12 @@ void LessonPanel::submit() {
   }
   bool ok = false;
   const double value = QLocale::c().toDouble(m_number->text().trimmed(), &ok);
-  if (ok)
+  if (ok) {
     answerNumber(value);
-  else
-    showVerdict(false, QString());
+    return;
+  }
+  m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
+  m_verdict->setText(words("lesson.answer.not_a_number", m_language));
 }
 
 QString LessonPanel::expectedAnswer() const {
@@ -476,13 +520,17 @@ QString LessonPanel::expectedAnswer() const {
     return QStringLiteral("%1. %2")
         .arg(QChar('A' + q.shownAnswer()))
         .arg(text(q.choices[std::size_t(q.answerIndex)], m_language));
-  return q.tolerance > 0.0 ? tr("%1 (± %2)").arg(number(q.answer), number(q.tolerance))
+  return q.tolerance > 0.0 ? words("lesson.answer.tolerance", m_language,
+                                   {{"answer", number(q.answer).toStdString()},
+                                    {"tolerance", number(q.tolerance).toStdString()}})
                            : number(q.answer);
 }
 
 void LessonPanel::showAnswer() {
   if (!m_lesson || m_step < 0 || !m_lesson->steps[std::size_t(m_step)].question) return;
-  finish(m_final ? m_outcome : Outcome::Shown);
+  const bool was = answerFinal();
+  current().reveal();
+  finish(was);
 }
 
 bool LessonPanel::answerChoice(int index) {
@@ -491,9 +539,9 @@ bool LessonPanel::answerChoice(int index) {
   if (!q || q->type != LessonQuestion::Type::Choice || index < 0 || index >= int(q->choices.size()))
     return false;
   if (QAbstractButton* b = m_choices->button(index)) b->setChecked(true);
-  m_chosen = index;
+  m_chosen[std::size_t(m_step)] = index;
   const bool right = index == q->answerIndex;
-  showVerdict(right, expectedAnswer());
+  judge(right);
   return right;
 }
 
@@ -503,25 +551,24 @@ bool LessonPanel::answerNumber(double value) {
   if (!q || q->type != LessonQuestion::Type::Number) return false;
   m_number->setText(number(value));
   const bool right = std::isfinite(value) && std::abs(value - q->answer) <= q->tolerance;
-  showVerdict(right, expectedAnswer());
+  judge(right);
   return right;
 }
 
-void LessonPanel::showVerdict(bool right, const QString& expected) {
-  if (expected.isEmpty()) {
-    m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
-    m_verdict->setText(tr("Please write a number, such as 0.25."));
-    m_explanation->clear();
+void LessonPanel::judge(bool right) {
+  const bool was = answerFinal();
+  if (current().answer(right) != AnswerOutcome::TryAgain) {
+    finish(was);
     return;
   }
-  if (!right && !m_final && ++m_tries < 2) {
-    // A first wrong answer gives nothing away.
-    m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
-    m_verdict->setText(tr("✗ Not yet: try again."));
-    m_explanation->clear();
-    return;
-  }
-  finish(right ? Outcome::Right : Outcome::Wrong);
+  // A first wrong answer gives nothing away: "try again", with the question's hint.
+  const LocalText& hint = m_lesson->steps[std::size_t(m_step)].question->hint;
+  m_verdict->setStyleSheet(QStringLiteral("color: #b00020"));
+  m_verdict->setText(hint.empty() ? words("lesson.answer.try_again", m_language)
+                                  : words("lesson.answer.try_again.hint", m_language,
+                                          {{"hint", hint.in(m_language)}}));
+  m_explanation->clear();
+  updateSummary();
 }
 
 QString LessonPanel::verdict() const { return m_verdict->text(); }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "raylab/core/Answers.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/vis/BvhStyle.h"
 
@@ -7,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QButtonGroup;
 class QComboBox;
@@ -20,17 +22,22 @@ class QGroupBox;
 
 namespace raylab::app {
 
+class LessonSummary;
+
 /**
  * \brief The lesson panel: a step's title and text in a large font, Back / Next, the
  * step's question with an answer box, the teacher's notes on demand, and the lesson's
  * language (English or Chinese, by default the window's, switchable within the lesson).
  *
  * The question's choices are shown in the lesson's order for the step (LessonQuestion::
- * shownOrder, as in the handout). A first wrong answer only says "try again"; the answer and
- * its explanation come with a right answer, a second wrong one or "Show answer" (Enter
- * checks). A "predict" question's step keeps its tree or image hidden until then: the
- * panel emits answerFinal and the window shows them. A step with a "try_value" has a spin
- * box for the value and "Show the effect" (emits tryValueApplied).
+ * shownOrder, as in the handout). The rules are core's (QuestionAttempts): a first wrong
+ * answer only says "try again", with the question's hint; the answer and its explanation
+ * come with a right answer, a second wrong one or "Show answer" (Enter checks). Each step
+ * keeps how its question stands while the lesson is open, and the last step ends with the
+ * lesson's summary (LessonSummary: answered, right, the steps to review as buttons). A "predict"
+ * question's step keeps its tree or image hidden until then: the panel emits answerFinal and the
+ * window shows them. A step with a "try_value" has a spin box for the value and "Show the effect"
+ * (emits tryValueApplied).
  *
  * The panel shows words only; when the step changes it emits stepChanged, and the window
  * sets its 3D view, image, filters and animation for the step (MainWindow::showLessonStep).
@@ -78,7 +85,7 @@ class LessonPanel : public QWidget {
   /// Answers a number question; true when within the tolerance.
   bool answerNumber(double value);
   /// The verdict shown ("Right." / "Not yet: try again." / "Not quite: …"), empty before
-  /// answering.
+  /// answering (words from the phrase table, in the lesson's language).
   QString verdict() const;
   /// The explanation shown (empty until the answer is final).
   QString explanation() const;
@@ -91,7 +98,13 @@ class LessonPanel : public QWidget {
   /// Shows the answer and the explanation without another try ("Show answer").
   void showAnswer();
   /// True once the step's answer is final (right, the second try, or shown).
-  bool answerFinal() const { return m_final; }
+  bool answerFinal() const;
+  /// How each step's question stands (element i: step i), in this lesson.
+  const std::vector<QuestionAttempts>& attempts() const { return m_attempts; }
+  /// The lesson's summary so far (core's scoreLesson).
+  LessonScore score() const;
+  /// The summary box under the last step.
+  LessonSummary* summary() const { return m_summary; }
   /// True while the step's view waits for the student's prediction (a "predict" question
   /// not yet answered finally).
   bool waitingForPrediction() const;
@@ -99,9 +112,11 @@ class LessonPanel : public QWidget {
   struct AnswerState {
     int tries = 0;       ///< Wrong answers given.
     bool final = false;  ///< The answer is shown.
-    int outcome = 0;     ///< How it was settled (right, wrong, shown), once final.
+    int outcome = 0;     ///< How it was settled (QuestionAttempts::Settled), once final.
     int chosen = -1;     ///< The choice ticked (its index in the file).
     QString number;      ///< The number typed.
+    /// Every step's question (element i: step i), for the lesson's summary.
+    std::vector<QuestionAttempts> steps;
   };
   AnswerState answerState() const;
   /// Gives the step shown the answer `state` (another window's, same step): a final answer
@@ -148,13 +163,15 @@ class LessonPanel : public QWidget {
   /// The larger fonts of the title, text and question, relative to the panel's font.
   void applyFontScales();
   void showQuestion(const LessonStep& step);
-  /// How the step's question was settled, once final.
-  enum class Outcome { Right, Wrong, Shown };
-  void showVerdict(bool right, const QString& expected);
-  /// The final verdict and the explanation, as `outcome` settled them; emits answerRevealed
-  /// the first time.
-  void finish(Outcome outcome);
+  /// An answer, right or not: the outcome by core's rules, shown.
+  void judge(bool right);
+  /// The step's question as it stands (its attempts, a settled answer's verdict).
+  QuestionAttempts& current() { return m_attempts[std::size_t(m_step)]; }
+  /// The final verdict and the explanation; emits answerRevealed when it was not final.
+  void finish(bool wasFinal);
   void showOutcome();
+  /// The summary under the last step, brought up to date.
+  void updateSummary();
   void showTryValue(const LessonStep& step);
   /// The right answer in words ("C. …", "3 (± 0.5)").
   QString expectedAnswer() const;
@@ -182,10 +199,9 @@ class LessonPanel : public QWidget {
   QPushButton* m_check = nullptr;
   QPushButton* m_showAnswer = nullptr;
   QLabel* m_predictNote = nullptr;
-  int m_tries = 0;       ///< Wrong answers given to the step's question.
-  bool m_final = false;  ///< The answer is shown (right, second try, or asked for).
-  Outcome m_outcome = Outcome::Shown;
-  int m_chosen = -1;  ///< The choice last ticked (its index in the file).
+  std::vector<QuestionAttempts> m_attempts;  ///< Each step's question, as it stands.
+  std::vector<int> m_chosen;  ///< Each step's choice last ticked (its index in the file).
+  LessonSummary* m_summary = nullptr;
   QWidget* m_try = nullptr;
   QLabel* m_tryLabel = nullptr;
   QDoubleSpinBox* m_tryBox = nullptr;

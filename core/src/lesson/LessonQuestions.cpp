@@ -95,16 +95,19 @@ LessonQuestion Reader::question(const json& j, const std::string& path,
   LessonQuestion q;
   if (type == "choice") {
     onlyKeys(j, path,
-             {"type", "prompt", "choices", "answer", "explanation", "predict", "shuffle", "check"});
+             {"type", "prompt", "choices", "answer", "explanation", "hint", "predict", "shuffle",
+              "check"});
     q.type = LessonQuestion::Type::Choice;
   } else if (type == "number") {
-    onlyKeys(j, path, {"type", "prompt", "answer", "tolerance", "check", "explanation", "predict"});
+    onlyKeys(j, path,
+             {"type", "prompt", "answer", "tolerance", "check", "explanation", "hint", "predict"});
     q.type = LessonQuestion::Type::Number;
   } else {
     fail(path + "/type", "unknown question type \"" + type + "\" (expected choice or number)");
   }
   q.prompt = text(member(j, path, "prompt"), path + "/prompt");
   q.explanation = text(member(j, path, "explanation"), path + "/explanation");
+  if (j.contains("hint")) q.hint = text(j["hint"], path + "/hint");
   if (j.contains("predict")) q.predict = boolean(j["predict"], path + "/predict");
   if (q.predict && !step.traces() && step.view != LessonView::Image && !step.tryValue)
     fail(path + "/predict",

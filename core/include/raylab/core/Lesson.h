@@ -164,6 +164,9 @@ struct LessonQuestion {
   double tolerance = 0.0;            ///< Number: accepted |given - answer|, >= 0.
   std::optional<LessonCheck> check;  ///< How the answer is computed (number; choice: ray_target).
   LocalText explanation;             ///< Why, shown after answering.
+  /// "hint": said with the "try again" of a first wrong answer (QuestionAttempts); empty
+  /// when the question has none. It must not give the answer away.
+  LocalText hint;
   /// "predict": asked before the step's view shows what it is about (the tree, the image,
   /// the effect of a tried value); the window shows it once the answer is final.
   bool predict = false;
