@@ -1546,6 +1546,18 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Cannot use this value</source>
         <translation>无法使用这个数值</translation>
     </message>
+    <message>
+        <source>&amp;Continue the last lesson</source>
+        <translation>继续上次的课程(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Continue: %1, step %2</source>
+        <translation>继续上次的课程(&amp;C)：%1，第 %2 步</translation>
+    </message>
+    <message>
+        <source>Reopen the lesson shown last, at the step it was left at</source>
+        <translation>重新打开上次讲到的课程，并回到停下的那一步</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::PropertiesPanel</name>
