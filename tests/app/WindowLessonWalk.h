@@ -65,7 +65,7 @@ inline double viewShare(const MainWindow& window) {
 /// image beside the 3D view on an image step (half the area each), the comparison on a
 /// comparison step and its plot on a plot step only, nothing beside the 3D view on a 3D
 /// step (or one whose picture waits for a prediction), where the view is at least half
-/// the window high and a third wide; no comparison or render left running from another
+/// the window high and a quarter wide; no comparison or render left running from another
 /// step (asked to stop, they end within seconds); the Lesson tab in front.
 inline void expectStepLayout(const MainWindow& window, const std::string& where = {}) {
   const LessonPanel& panel = *window.lessonPanel();
@@ -99,7 +99,7 @@ inline void expectStepLayout(const MainWindow& window, const std::string& where 
   }
   if (!compares && !image) {
     EXPECT_GE(window.viewWidget()->height(), window.height() / 2) << at << ": the 3D view";
-    EXPECT_GE(window.viewWidget()->width(), window.width() / 3) << at << ": the 3D view";
+    EXPECT_GE(window.viewWidget()->width(), window.width() / 4) << at << ": the 3D view";
   }
 }
 
