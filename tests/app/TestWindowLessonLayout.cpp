@@ -94,16 +94,20 @@ TEST_F(WindowLessonLayoutTest, 06_TheComparisonStopsWhenTheStepChanges) {
   LessonPanel& panel = *m_window->lessonPanel();
   const Lesson& lesson = *panel.lesson();
   int compare = -1;
-  for (std::size_t i = 0; i + 1 < lesson.steps.size() && compare < 0; ++i)
-    if (lesson.steps[i].view == LessonView::Compare &&
-        lesson.steps[i + 1].view != LessonView::Compare &&
-        lesson.steps[i + 1].view != LessonView::Plot)
+  // A comparison step whose next step traces a pixel in the 3D view (its pane is laid out
+  // once the trace is in, off the UI thread).
+  for (std::size_t i = 0; i + 1 < lesson.steps.size() && compare < 0; ++i) {
+    const LessonStep& next = lesson.steps[i + 1];
+    if (lesson.steps[i].view == LessonView::Compare && next.view == LessonView::Scene &&
+        next.pixelX && !(next.question && next.question->predict))
       compare = int(i);
+  }
   ASSERT_GE(compare, 0);
   panel.showStep(compare);
   settle();
   ASSERT_TRUE(m_window->comparePanel()->running());
   panel.next();  // no settle: the next step's trace has not even started
+  ASSERT_TRUE(m_window->rayTreePanel()->tracing());
   EXPECT_FALSE(m_window->imageTabs()->isVisibleTo(m_window.get()))
       << "the comparison pane waits for the next step's tree";
   EXPECT_TRUE(walk::waitUntil([this] { return !m_window->comparePanel()->running(); }, 5000))
@@ -161,6 +165,23 @@ TEST_F(WindowLessonLayoutTest, 08_ALessonsChoicesAreNotSavedAsPreferences) {
   EXPECT_FALSE(s.value(QStringLiteral("window/imagesShown")).toBool())
       << "the lesson's comparison pane was saved as the user's";
   EXPECT_EQ(m_window->lessonPanel()->step(), 4) << "the language switch kept the step";
+}
+
+// The language switch in presentation mode (turned on before the lesson opened, as a
+// teacher does before class) keeps the Lesson tab in front, not the ray tree.
+TEST_F(WindowLessonLayoutTest, 09_TheLanguageSwitchWhilePresentingKeepsTheLessonInFront) {
+  m_window->setPresentationMode(true);
+  ASSERT_TRUE(m_window->openLesson(walk::lessonFile("04-"), false));
+  m_window->lessonPanel()->showStep(2);
+  settle();
+  EXPECT_TRUE(walk::lessonTabInFront(*m_window));
+  m_window.reset(rebuildWindow(*m_window).release());
+  settle();
+  ASSERT_TRUE(m_window->presentationMode());
+  EXPECT_TRUE(walk::lessonTabInFront(*m_window)) << "the ray tree is in front";
+  m_window->lessonPanel()->next();
+  settle();
+  walk::expectStepLayout(*m_window);
 }
 
 }  // namespace
