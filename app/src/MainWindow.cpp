@@ -164,6 +164,7 @@ QStringList MainWindow::lessonFiles() const {
 
 void MainWindow::fillLessonsMenu() {
   m_lessonsMenu->clear();
+  addContinueAction();  // the last lesson at its last step, first
   const Language language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
   for (const QString& path : lessonFiles()) {
     // The title from the file (cached: the menu is filled each time it opens). Only the

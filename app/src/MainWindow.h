@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QAction;
@@ -139,10 +140,16 @@ class MainWindow : public QMainWindow {
 
   /// \name Lessons
   /// @{
-  /// Opens the lesson file at `path` at its first step (asking about unsaved changes
-  /// first, unless `ask` is false). On failure: a dialog with the loader's message, nothing
-  /// changed; returns false.
-  bool openLesson(const QString& path, bool ask = true);
+  /// Opens the lesson file at `path` at step `step` (0-based, clamped; asking about unsaved
+  /// changes first, unless `ask` is false). On failure: a dialog with the loader's message,
+  /// nothing changed; returns false.
+  bool openLesson(const QString& path, bool ask = true, int step = 0);
+  /// The lesson file and step (0-based) last shown, from the settings; none when no lesson
+  /// was played or its file is gone.
+  std::optional<std::pair<QString, int>> lastLesson() const;
+  /// Lessons > Continue: reopens the last lesson at its last step (openLesson); false when
+  /// there is none or it does not open.
+  bool continueLesson();
   /// Shows `lesson` (loaded, with steps) at step `step` (0-based, clamped): the Lesson tab
   /// raised, the menu's step keys enabled (openLesson, and the language switch).
   void playLesson(std::shared_ptr<const Lesson> lesson, int step);
@@ -175,7 +182,8 @@ class MainWindow : public QMainWindow {
   QList<QStringList> shortcutTable() const;
   /// Shows Help > Keyboard shortcuts (not blocking).
   void showShortcuts();
-  /// Writes the layout, the algorithm and the ray colouring to the settings (on close).
+  /// Writes the layout to the settings (on close), and the user's preferences (algorithms,
+  /// ray colouring, image pane) unless a lesson plays: its choices are not the user's.
   void saveLayout();
   /// @}
   QMenu* addMenu() const { return m_addMenu; }
@@ -249,6 +257,18 @@ class MainWindow : public QMainWindow {
   /// The step's pane beside the 3D view (image, comparison, plot), the others hidden and
   /// stopped.
   void showLessonPane(const LessonStep& step, const vis::TreeViewState& state);
+  /// On a step change: stops the old step's comparison and render, hides a pane the new
+  /// step (its view state) does not use.
+  void leaveLessonPane(const vis::TreeViewState& state);
+  /// Lessons > Continue (the last lesson and step), at the top of the Lessons menu.
+  void addContinueAction();
+  /// Remembers the open lesson's file and step `index` for Lessons > Continue.
+  void rememberLessonStep(int index);
+  /// The user's preferences (algorithms, ray colouring, image pane) to the settings.
+  void savePreferences();
+  /// Shows the image tabs with `viewQuarters` quarters of the central area left to the 3D
+  /// view (once the layout has made room for them).
+  void shareCentralArea(int viewQuarters);
   /// Hides the image and comparison tabs (the 3D view takes the central area).
   void hideImageTabs();
   /// A dialog (not blocking the event loop) with `text`; kept for lastError().
@@ -276,9 +296,6 @@ class MainWindow : public QMainWindow {
   QAction* m_imagesAction = nullptr;   ///< View > Image beside the 3D view.
   QAction* m_presentAction = nullptr;  ///< View > Presentation mode.
   bool m_presenting = false;
-  /// The ray colouring the user chose before a lesson set its own: the preference saved
-  /// while a lesson is open (a lesson's colouring is never saved as the user's; issue 33).
-  vis::RayColouring m_userColouring = vis::RayColouring::Energy;
   QByteArray m_layoutBeforePresenting;     ///< saveState() before presentation mode.
   bool m_layoutRestored = false;           ///< The settings had a layout: keep its sizes.
   QDockWidget* m_raysDock = nullptr;       ///< Tab of the ray-tree panel.

@@ -26,6 +26,11 @@ std::unique_ptr<MainWindow> rebuildWindow(MainWindow& window) {
   window.rayTreePanel()->pause();
   window.rayTreePanel()->cancelTrace();
   auto next = std::make_unique<MainWindow>(window.takeDocument());
+  // Shown (and presenting) before the lesson plays: a Lesson dock shown and raised in a
+  // window not yet shown stayed off screen behind the ray tree, and no later raise()
+  // brought it forward (presentation mode's layout; issue 33).
+  next->show();
+  if (presenting) next->setPresentationMode(true);
   if (lesson) {
     next->playLesson(lesson, step);
     next->lessonPanel()->restoreAnswer(answer);  // an answered prediction stays answered
@@ -40,8 +45,6 @@ std::unique_ptr<MainWindow> rebuildWindow(MainWindow& window) {
   }
   next->renderPanel()->setAlgorithm(renderAlgorithm);
   next->renderPanel()->setSamplesPerPixel(spp);
-  next->show();
-  if (presenting) next->setPresentationMode(true);
   if (rendered && !lesson) {
     next->showImageTab(next->renderPanel());
     next->renderPanel()->render();

@@ -20,6 +20,9 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
+#include <QMenu>
+#include <QSettings>
 #include <QSignalBlocker>
 #include <QTabWidget>
 
@@ -43,7 +46,7 @@ Language lessonLanguage() {
 
 }  // namespace
 
-bool MainWindow::openLesson(const QString& path, bool ask) {
+bool MainWindow::openLesson(const QString& path, bool ask, int step) {
   // Ask about unsaved edits before reading a stranger's file: whatever the file holds, the
   // edits are saved or dropped by the user's choice first (issue 38).
   if (ask && !maybeSave()) return false;
@@ -58,14 +61,50 @@ bool MainWindow::openLesson(const QString& path, bool ask) {
     showError(tr("Cannot open the lesson"), tr("%1: the lesson has no steps").arg(path));
     return false;
   }
-  playLesson(lesson, 0);
+  playLesson(lesson, step);
   return true;
+}
+
+std::optional<std::pair<QString, int>> MainWindow::lastLesson() const {
+  const QSettings s = raylabSettings();
+  const QString file = s.value(QStringLiteral("lesson/file")).toString();
+  if (file.isEmpty() || !QFileInfo(file).isFile()) return std::nullopt;
+  return std::make_pair(file, std::max(0, s.value(QStringLiteral("lesson/step")).toInt()));
+}
+
+bool MainWindow::continueLesson() {
+  const auto last = lastLesson();
+  return last && openLesson(last->first, true, last->second);
+}
+
+void MainWindow::addContinueAction() {
+  // For the next class: the lesson and step the last one ended at, named in the lesson's
+  // title (the file's name when the title cannot be read).
+  const auto last = lastLesson();
+  QAction* resume = m_lessonsMenu->addAction(tr("&Continue the last lesson"));
+  resume->setObjectName(QStringLiteral("continueLesson"));
+  resume->setEnabled(last.has_value());
+  if (last) {
+    QString title = QFileInfo(last->first).completeBaseName();
+    try {
+      title = QString::fromStdString(
+          LessonIO::readTitle(last->first.toStdString()).in(lessonLanguage()));
+    } catch (const std::exception&) {
+      // Its file says what is wrong when it is opened.
+    }
+    resume->setText(tr("&Continue: %1, step %2").arg(title).arg(last->second + 1));
+  }
+  resume->setToolTip(tr("Reopen the lesson shown last, at the step it was left at"));
+  connect(resume, &QAction::triggered, this, [this] { continueLesson(); });
+  m_lessonsMenu->addSeparator();
 }
 
 void MainWindow::playLesson(std::shared_ptr<const Lesson> lesson, int step) {
   m_lessonDock->show();
   m_lessonDock->raise();
-  if (!m_lessonPanel->lesson()) m_userColouring = m_rayPanel->treeStyle().colouring;
+  // The user's own choices are saved before the lesson's colourings, algorithms and panes
+  // take the window: while it plays, saveLayout leaves them alone (issue 33).
+  if (!m_lessonPanel->lesson()) savePreferences();
   m_lessonPanel->setLesson(lesson);  // shows step 1 (stepChanged)
   const int last = int(lesson->steps.size()) - 1;
   if (step > 0) m_lessonPanel->showStep(std::min(step, last));
@@ -85,6 +124,8 @@ void MainWindow::showLessonStep(int index) {
   // (revealLessonStep). A step whose value the student changes shows its scene as it is.
   const vis::TreeViewState state =
       vis::stepViewState(step, m_lessonPanel->waitingForPrediction(), lessonLanguage());
+  leaveLessonPane(state);
+  rememberLessonStep(index);
   showLessonResult(step, state, [this, state] {
     m_lessonPanel->setBvhView(state.bvh, m_view->bvhSummary());
     if (state.layout != vis::ViewLayout::Inspector || state.hidden) m_lessonPanel->setRayText({});
@@ -182,6 +223,7 @@ void MainWindow::showLessonPane(const LessonStep& step, const vis::TreeViewState
   if (image) {
     m_renderPanel->setSamplesPerPixel(std::min(step.settings().samplesPerPixel, kLessonImageSpp));
     showImageTab(m_renderPanel);
+    shareCentralArea(2);  // half each, also after a comparison's quarter
     m_renderPanel->render();
     return;
   }
@@ -197,6 +239,26 @@ void MainWindow::showLessonPane(const LessonStep& step, const vis::TreeViewState
   if (step.pixelX && step.pixelY) pixel = std::make_pair(*step.pixelX, *step.pixelY);
   m_comparePanel->traceWhenDone(pixel);
   m_comparePanel->compare();
+}
+
+void MainWindow::leaveLessonPane(const vis::TreeViewState& state) {
+  // The old step's comparison or render stops as the step changes, not once the new step's
+  // tree is in (a long trace left it running past its step), and a pane the new step does
+  // not use goes now: the 3D view has its size when the tree is framed.
+  m_comparePanel->cancel();
+  m_renderPanel->cancel();
+  if (state.hidden || vis::shows3D(state.layout)) hideImageTabs();
+}
+
+void MainWindow::rememberLessonStep(int index) {
+  // Lessons > Continue reopens it here next time (a lesson read from a file only).
+  const Lesson* lesson = m_lessonPanel->lesson();
+  if (!lesson || lesson->file.empty() || !QFileInfo(QString::fromStdString(lesson->file)).isFile())
+    return;
+  QSettings s = raylabSettings();
+  s.setValue(QStringLiteral("lesson/file"),
+             QFileInfo(QString::fromStdString(lesson->file)).absoluteFilePath());
+  s.setValue(QStringLiteral("lesson/step"), index);
 }
 
 void MainWindow::hideImageTabs() {

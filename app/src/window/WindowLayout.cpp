@@ -172,15 +172,21 @@ void MainWindow::saveLayout() {
   QSettings s = raylabSettings();
   s.setValue(QStringLiteral("window/geometry"), saveGeometry());
   s.setValue(QStringLiteral("window/state"), m_presenting ? m_layoutBeforePresenting : saveState());
+  // While a lesson plays the window shows its algorithm, colouring and panes: the user's
+  // own were saved when it opened (playLesson; issue 33).
+  if (!m_lessonPanel->lesson()) savePreferences();
+}
+
+void MainWindow::savePreferences() {
+  QSettings s = raylabSettings();
   s.setValue(QStringLiteral("window/splitter"), m_splitter->saveState());
-  s.setValue(QStringLiteral("window/imagesShown"), m_imageTabs->isVisible());
+  // Not isVisible(): the language switch saves them before its new window is shown.
+  s.setValue(QStringLiteral("window/imagesShown"), !m_imageTabs->isHidden());
   s.setValue(QStringLiteral("algorithm"), QString::fromLatin1(toString(m_rayPanel->algorithm())));
   s.setValue(QStringLiteral("renderAlgorithm"),
              QString::fromLatin1(toString(m_renderPanel->algorithm())));
-  // The user's colouring: a lesson's own is never saved as the preference.
-  const vis::RayColouring colouring =
-      m_lessonPanel->lesson() ? m_userColouring : m_rayPanel->treeStyle().colouring;
-  s.setValue(QStringLiteral("rayColouring"), QString::fromLatin1(vis::toString(colouring)));
+  s.setValue(QStringLiteral("rayColouring"),
+             QString::fromLatin1(vis::toString(m_rayPanel->treeStyle().colouring)));
 }
 
 void MainWindow::restoreLayout() {
@@ -212,19 +218,21 @@ void MainWindow::showImageTab(QWidget* tab) {
   // a quarter beside the comparison (four panels need room); sized once the layout has
   // made room for the tabs.
   const int viewQuarters = tab == m_comparePanel ? 1 : first ? 2 : 0;
-  if (viewQuarters > 0) {
-    QTimer::singleShot(0, this, [this, viewQuarters] {
-      fitSplitter();
-      const int total =
-          m_splitter->orientation() == Qt::Horizontal ? m_splitter->width() : m_splitter->height();
-      const int view = total * viewQuarters / 4;
-      m_splitter->setSizes({view, total - view});
-    });
-  }
+  if (viewQuarters > 0) shareCentralArea(viewQuarters);
   if (m_imagesAction) {
     const QSignalBlocker block(m_imagesAction);
     m_imagesAction->setChecked(true);
   }
+}
+
+void MainWindow::shareCentralArea(int viewQuarters) {
+  QTimer::singleShot(0, this, [this, viewQuarters] {
+    fitSplitter();
+    const int total =
+        m_splitter->orientation() == Qt::Horizontal ? m_splitter->width() : m_splitter->height();
+    const int view = total * viewQuarters / 4;
+    m_splitter->setSizes({view, total - view});
+  });
 }
 
 void MainWindow::fitScrollingDocks() {
