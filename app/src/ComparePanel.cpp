@@ -31,10 +31,14 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
 namespace raylab::app {
 
 namespace {
+
+/// The smallest text of the comparison in the window, in screen pixels.
+constexpr double kMinimumFontPx = 12.0;
 
 /// A VTK widget with its own render window.
 QVTKOpenGLNativeWidget* vtkWidget() {
@@ -203,9 +207,22 @@ void ComparePanel::compare() {
     return;
   }
   comparison->setReferenceCache(ReferenceCache::fromEnvironment());
+  // The four pictures first, the long reference after them: something on screen at once.
+  comparison->setPicturesFirst(true);
+  startJob(comparison);
+  m_trees.clear();
+  m_traced = {-1, -1};
+  m_progress->setValue(0);
+  m_status->setText(tr("Comparing…"));
+  emit statusChanged(tr("Comparing the four algorithms on the open scene…"));
+  updateControls();
+}
+
+void ComparePanel::startJob(const std::shared_ptr<Comparison>& comparison) {
   BackgroundTask::Job job;
   job.stop = [comparison] { comparison->cancel(); };
-  job.run = [this, comparison, scene = m_scene](const BackgroundTask::Post& post) {
+  job.run = [this, comparison, scene = m_scene,
+             newest = m_newestPass](const BackgroundTask::Post& post) {
     // Each stage and pass goes to the UI thread; a superseded comparison's are dropped.
     comparison->setProgress([this, post](const std::string& stage, double fraction, int spp) {
       // The stage in the window's language: an algorithm's name, or the reference.
@@ -218,10 +235,15 @@ void ComparePanel::compare() {
         m_status->setText(tr("Comparing: %1, %2 spp…").arg(what).arg(spp));
       });
     });
+    // Only the newest pass is drawn: one still queued when a newer one is posted is skipped,
+    // so a slow redraw never makes the pictures lag behind the renders.
     comparison->setPassCallback(
-        [this, post, scene](const ComparisonResult& soFar, int, double fraction) {
+        [this, post, scene, newest](const ComparisonResult& soFar, int, double fraction) {
           auto copy = std::make_shared<const ComparisonResult>(soFar);
-          post([this, copy, scene, fraction] { showPass(copy, scene, fraction); });
+          const int number = ++*newest;
+          post([this, copy, scene, fraction, newest, number] {
+            if (number == newest->load()) showPass(copy, scene, fraction);
+          });
         });
     std::shared_ptr<const ComparisonResult> result;
     try {
@@ -232,12 +254,6 @@ void ComparePanel::compare() {
     return std::function<void()>([this, result, scene] { ended(result, scene); });
   };
   m_task->start(std::move(job));
-  m_trees.clear();
-  m_traced = {-1, -1};
-  m_progress->setValue(0);
-  m_status->setText(tr("Comparing…"));
-  emit statusChanged(tr("Comparing the four algorithms on the open scene…"));
-  updateControls();
 }
 
 void ComparePanel::cancel() {
@@ -255,11 +271,14 @@ void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& resul
     // The error is explained in the picture's bottom band, in the window's language.
     vis::ComparisonViewOptions options;
     options.language = currentLanguage() == kChinese ? Language::Chinese : Language::English;
+    // Readable in the normal window: the figures never under 12 px (issue 33 item 8).
+    options.minimumFont = int(std::lround(kMinimumFontPx * m_widget->devicePixelRatioF()));
     m_view = std::make_unique<vis::ComparisonView>(*m_result, options);
   } else
     m_view->setResult(*m_result);
   redraw();
   if (m_plotWidget->isVisible()) showPlot();
+  emit passShown(result->provisional);
 }
 
 void ComparePanel::ended(const std::shared_ptr<const ComparisonResult>& result,
@@ -314,20 +333,40 @@ void ComparePanel::showPlot() {
   m_plotWidget->update();
 }
 
-std::optional<std::pair<int, int>> ComparePanel::pixelAt(const QPoint& p) const {
-  if (!m_view || !m_result) return std::nullopt;
+void ComparePanel::followPixel(std::optional<std::pair<int, int>> pixel) {
+  if (m_trees.empty() || (pixel && *pixel == m_traced)) return;
+  if (pixel && traceAll(pixel->first, pixel->second)) return;
+  // A grid, or a pixel outside the compared image: no tree of another pixel stays.
+  m_trees.clear();
+  m_traced = {-1, -1};
+  if (m_view) m_view->clearRayTrees();
+  redraw();
+}
+
+int ComparePanel::panelAt(const QPoint& p) const {
+  if (!m_view || !m_result) return -1;
   const double ratio = m_widget->devicePixelRatioF();
   const int w = int(m_widget->width() * ratio), h = int(m_widget->height() * ratio);
   const int x = int(p.x() * ratio), y = int(p.y() * ratio);
   for (int panel = 0; panel < m_view->panelCount(); ++panel) {
     const vis::PixelRect r = m_view->imageRect(panel, w, h);
-    if (r.width <= 0 || x < r.x || y < r.y || x >= r.x + r.width || y >= r.y + r.height) continue;
-    const FloatImage& image = m_result->algorithms[std::size_t(panel)].image;
-    if (image.width <= 0) return std::nullopt;
-    return std::pair{std::min(image.width - 1, (x - r.x) * image.width / r.width),
-                     std::min(image.height - 1, (y - r.y) * image.height / r.height)};
+    if (r.width > 0 && x >= r.x && y >= r.y && x < r.x + r.width && y < r.y + r.height)
+      return panel;
   }
-  return std::nullopt;
+  return -1;
+}
+
+std::optional<std::pair<int, int>> ComparePanel::pixelAt(const QPoint& p) const {
+  const int panel = panelAt(p);
+  if (panel < 0) return std::nullopt;
+  const double ratio = m_widget->devicePixelRatioF();
+  const int w = int(m_widget->width() * ratio), h = int(m_widget->height() * ratio);
+  const int x = int(p.x() * ratio), y = int(p.y() * ratio);
+  const vis::PixelRect r = m_view->imageRect(panel, w, h);
+  const FloatImage& image = m_result->algorithms[std::size_t(panel)].image;
+  if (image.width <= 0) return std::nullopt;
+  return std::pair{std::min(image.width - 1, (x - r.x) * image.width / r.width),
+                   std::min(image.height - 1, (y - r.y) * image.height / r.height)};
 }
 
 bool ComparePanel::traceAll(int x, int y) {
@@ -359,7 +398,14 @@ bool ComparePanel::eventFilter(QObject* watched, QEvent* event) {
     } else if (event->type() == QEvent::MouseButtonRelease) {
       const auto* mouse = static_cast<QMouseEvent*>(event);
       if (mouse->button() == Qt::LeftButton && (mouse->pos() - m_press).manhattanLength() <= 3)
-        if (const auto pixel = pixelAt(mouse->pos())) traceAll(pixel->first, pixel->second);
+        if (const auto pixel = pixelAt(mouse->pos())) {
+          const int panel = panelAt(mouse->pos());
+          traceAll(pixel->first, pixel->second);
+          // The window's one current pixel: the dock and the 3D view take it too.
+          if (panel >= 0 && std::size_t(panel) < m_result->algorithms.size())
+            emit pixelChosen(m_result->algorithms[std::size_t(panel)].algorithm, pixel->first,
+                             pixel->second);
+        }
     }
   } else if (watched == m_plotWidget && event->type() == QEvent::Resize &&
              m_plotWidget->isVisible()) {

@@ -6,6 +6,7 @@
 
 #include <QWidget>
 
+#include <atomic>
 #include <memory>
 #include <optional>
 
@@ -36,11 +37,16 @@ class BackgroundTask;
  * bottom band, and the convergence plot.
  *
  * The comparison (core Comparison, with the reference cache of the environment) runs as a
- * BackgroundTask job and shows every pass as it finishes; Cancel keeps what is done; Compare
- * while one runs supersedes it (never two at once). A new scene clears the comparison shown
- * at once: no picture or figure of an older scene stays on screen.
- * Clicking a pixel of any panel traces that pixel with all four algorithms and shows the
- * four trees beside the images.
+ * BackgroundTask job, pictures first (Comparison::setPicturesFirst): each panel fills in as
+ * its first pass ends and refines, the figures marked provisional while the reference is
+ * still rendering (its progress in the header and the status line); only the newest pass
+ * waiting is drawn, so drawing never falls behind the renders. Cancel keeps what is done;
+ * Compare while one runs supersedes it (never two at once). A new scene clears the
+ * comparison shown at once: no picture or figure of an older scene stays on screen.
+ * Clicking a pixel of any panel traces that pixel with all four algorithms, shows the four
+ * trees beside the images and makes it the window's one current pixel (pixelChosen: the
+ * ray-tree dock and the 3D view); when the current pixel changes elsewhere, the trees
+ * follow it (followPixel).
  */
 class ComparePanel : public QWidget {
   Q_OBJECT
@@ -75,6 +81,9 @@ class ComparePanel : public QWidget {
   /// When the next comparison ends complete, traces `pixel` (of the scene camera's image,
   /// the size compared) as a click would; nothing to forget it.
   void traceWhenDone(std::optional<std::pair<int, int>> pixel);
+  /// The window's current pixel changed (the dock traced it): trees shown for another
+  /// pixel are traced again at this one; nothing (a grid is shown) removes them.
+  void followPixel(std::optional<std::pair<int, int>> pixel);
   /// The pixel whose trees are shown, (-1, -1) when none.
   std::pair<int, int> tracedPixel() const { return m_traced; }
   /// The trees shown, one per algorithm (empty when none).
@@ -82,6 +91,8 @@ class ComparePanel : public QWidget {
   /// The image pixel under position `p` of the comparison widget, and its panel; nothing
   /// when `p` is on no image.
   std::optional<std::pair<int, int>> pixelAt(const QPoint& p) const;
+  /// The panel (index into result()->algorithms) under position `p`, -1 when none.
+  int panelAt(const QPoint& p) const;
   /// Comparisons ended (complete or cancelled), for tests.
   int comparisonsEnded() const { return m_ended; }
 
@@ -96,6 +107,11 @@ class ComparePanel : public QWidget {
   void statusChanged(const QString& text);
   /// A comparison ended.
   void comparisonEnded(bool cancelled);
+  /// A pixel of the panel of `algorithm` was clicked: the window's current pixel.
+  void pixelChosen(raylab::Algorithm algorithm, int x, int y);
+  /// A pass (or the reference's progress) was drawn; `provisional` while the reference is
+  /// not in (for tests and benchmarks: the time to the first picture).
+  void passShown(bool provisional);
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override;
@@ -106,6 +122,8 @@ class ComparePanel : public QWidget {
                 const std::shared_ptr<const Scene>& scene, double fraction);
   void ended(const std::shared_ptr<const ComparisonResult>& result,
              const std::shared_ptr<const Scene>& scene);
+  /// Starts the comparison job of `comparison` on the scene compared now.
+  void startJob(const std::shared_ptr<Comparison>& comparison);
   /// Forgets the comparison shown: its pictures, figures, plot and traced trees.
   void clearResult();
   /// The comparison's renderers in the widget, laid out for its size.
@@ -115,6 +133,8 @@ class ComparePanel : public QWidget {
 
   std::shared_ptr<const Scene> m_scene;
   std::unique_ptr<BackgroundTask> m_task;
+  /// The newest pass posted; an older one still queued is not drawn (coalesced).
+  std::shared_ptr<std::atomic<int>> m_newestPass = std::make_shared<std::atomic<int>>(0);
   int m_ended = 0;
   std::shared_ptr<const ComparisonResult> m_result;
   std::shared_ptr<const Scene> m_resultScene;  ///< The scene m_result was made from.

@@ -101,6 +101,9 @@ MainWindow::MainWindow(std::unique_ptr<SceneDocument> document, QWidget* parent)
 void MainWindow::connectPanels() {
   const auto status = [this](const QString& text) { statusBar()->showMessage(text); };
   connect(m_comparePanel, &ComparePanel::statusChanged, this, status);
+  // One current pixel: a click on a comparison panel traces it in the dock and the 3D view.
+  connect(m_comparePanel, &ComparePanel::pixelChosen, this,
+          [this](Algorithm a, int x, int y) { tracePixel(a, x, y); });
   connect(m_renderPanel, &RenderPanel::pixelChosen, this,
           [this](Algorithm a, int x, int y) { tracePixel(a, x, y); });
   connect(m_renderPanel, &RenderPanel::statusChanged, this, status);
@@ -121,13 +124,16 @@ void MainWindow::connectPanels() {
   connect(m_lessonPanel, &LessonPanel::tryValueApplied, this,
           [this](double value) { tryLessonValue(value); });
   connect(m_rayPanel, &RayTreePanel::viewChanged, this, [this] { render(); });
-  // The rendered image marks the pixel whose tree is shown.
+  // The rendered image marks the pixel whose tree is shown; the comparison's trees follow it.
   connect(m_rayPanel, &RayTreePanel::treeChanged, this, [this] {
-    if (m_rayPanel->showsGrid())
+    if (m_rayPanel->showsGrid()) {
       m_renderPanel->imageView()->setMarkedPixel(-1, -1);
-    else
-      m_renderPanel->imageView()->setMarkedPixel(*m_rayPanel->viewState().pixelX,
-                                                 *m_rayPanel->viewState().pixelY);
+      m_comparePanel->followPixel(std::nullopt);
+      return;
+    }
+    const int x = *m_rayPanel->viewState().pixelX, y = *m_rayPanel->viewState().pixelY;
+    m_renderPanel->imageView()->setMarkedPixel(x, y);
+    m_comparePanel->followPixel(std::pair{x, y});
   });
   connect(m_rayPanel, &RayTreePanel::statusChanged, this, status);
   connect(m_rayPanel, &RayTreePanel::segmentSelected, m_inspector, [this](int id) {

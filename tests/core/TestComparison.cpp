@@ -459,5 +459,101 @@ TEST(Comparison, 13_CancelDuringTheReferenceLeavesNoAlgorithm) {
   EXPECT_EQ(result.reference.samplesPerPixel, 2);  // the passes finished: 1, then 2
 }
 
+// Pictures first (issue 33 item 3): the algorithms before the reference, each pass shown at
+// once and marked provisional; the reference's passes refine the errors; the end result is
+// the reference-first one (times aside).
+TEST(Comparison, 14_PicturesFirstShowsProvisionalPicturesThenTheSameFigures) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  const RenderSettings settings = smallSettings(scene);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 4;
+  compare.referenceSamplesPerPixel = 16;
+  compare.threads = 2;
+  const ComparisonResult before = Comparison(scene, settings, compare).run();
+
+  Comparison comparison(scene, settings, compare);
+  comparison.setPicturesFirst(true);
+  std::vector<std::string> stages;
+  comparison.setProgress([&](const std::string& stage, double, int) {
+    if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+  });
+  struct Seen {
+    int index, algorithms, referenceSpp;
+    bool provisional;
+    double rmse;
+  };
+  std::vector<Seen> seen;
+  comparison.setPassCallback([&](const ComparisonResult& soFar, int index, double) {
+    const AlgorithmFigures& last = soFar.algorithms.back();
+    seen.push_back({index, int(soFar.algorithms.size()), soFar.reference.samplesPerPixel,
+                    soFar.provisional, last.rmse});
+    if (soFar.reference.samplesPerPixel > 0) {
+      EXPECT_DOUBLE_EQ(last.rmse, displayRmse(last.image, soFar.reference.image));
+    }
+  });
+  const ComparisonResult after = comparison.run();
+
+  // The four algorithms' passes (1, 2, 4 spp) came first, with no error yet; then one
+  // callback per reference pass (1, 2, 4, 8, 16 spp), provisional to the end.
+  const std::vector<std::string> order = {"raycast", "whitted", "distributed", "path", "reference"};
+  EXPECT_EQ(stages, order);
+  ASSERT_EQ(seen.size(), 12u + 5u);
+  for (std::size_t i = 0; i < 12; ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(seen[i].index, int(i / 3));
+    EXPECT_TRUE(seen[i].provisional);
+    EXPECT_EQ(seen[i].referenceSpp, 0);
+    EXPECT_TRUE(std::isnan(seen[i].rmse));
+  }
+  for (std::size_t i = 12; i < seen.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(seen[i].index, -1);
+    EXPECT_EQ(seen[i].algorithms, 4);
+    EXPECT_TRUE(seen[i].provisional);
+    EXPECT_EQ(seen[i].referenceSpp, 1 << (i - 12));
+  }
+  // The end: the reference-first figures, final.
+  EXPECT_FALSE(after.provisional);
+  EXPECT_FALSE(after.cancelled);
+  EXPECT_EQ(differingPixels(after.reference.image, before.reference.image), 0);
+  ASSERT_EQ(after.algorithms.size(), before.algorithms.size());
+  for (std::size_t i = 0; i < before.algorithms.size(); ++i) {
+    const AlgorithmFigures& a = after.algorithms[i];
+    const AlgorithmFigures& b = before.algorithms[i];
+    SCOPED_TRACE(toString(b.algorithm));
+    EXPECT_EQ(differingPixels(a.image, b.image), 0);
+    EXPECT_EQ(a.rmse, b.rmse);
+    EXPECT_EQ(a.rmseLinear, b.rmseLinear);
+    EXPECT_EQ(a.stats.rays.byKind, b.stats.rays.byKind);
+    ASSERT_EQ(a.series.size(), b.series.size());
+    for (std::size_t p = 0; p < b.series.size(); ++p) {
+      EXPECT_EQ(a.series[p].samplesPerPixel, b.series[p].samplesPerPixel);
+      EXPECT_EQ(a.series[p].rmse, b.series[p].rmse);
+      EXPECT_EQ(a.series[p].rmseLinear, b.series[p].rmseLinear);
+    }
+  }
+}
+
+TEST(Comparison, 15_PicturesFirstCancelledDuringTheReferenceKeepsProvisionalPictures) {
+  const Scene scene = shippedScene("cornell", 16, 12);
+  ComparisonSettings compare;
+  compare.samplesPerPixel = 2;
+  compare.referenceSamplesPerPixel = 64;
+  Comparison comparison(scene, smallSettings(scene), compare);
+  comparison.setPicturesFirst(true);
+  comparison.setProgress([&](const std::string& stage, double, int spp) {
+    if (stage == "reference" && spp == 2) comparison.cancel();
+  });
+  const ComparisonResult result = comparison.run();
+  EXPECT_TRUE(result.cancelled);
+  EXPECT_TRUE(result.provisional);
+  EXPECT_EQ(result.reference.samplesPerPixel, 2);
+  ASSERT_EQ(result.algorithms.size(), 4u);
+  for (const AlgorithmFigures& figures : result.algorithms) {
+    EXPECT_EQ(figures.stats.samplesPerPixel, 2);
+    EXPECT_DOUBLE_EQ(figures.rmse, displayRmse(figures.image, result.reference.image));
+  }
+}
+
 }  // namespace
 }  // namespace raylab

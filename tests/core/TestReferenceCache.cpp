@@ -292,5 +292,28 @@ TEST(ReferenceCache, 06_AnUnwritableFolderIsANoteNotAFailure) {
       << result.reference.cacheNote;
 }
 
+// The window's order (pictures first) with a cached reference: nothing rendered for the
+// reference, nothing provisional, the figures of the first run (issue 33 item 3).
+TEST(ReferenceCache, 07_PicturesFirstWithACachedReferenceRendersNoReference) {
+  TempFolder folder;
+  const Scene scene = smallCornell();
+  const RenderSettings settings = smallSettings(scene);
+  const ComparisonResult first = compareWith(scene, settings, ReferenceCache(folder.path()));
+  Comparison comparison(scene, settings, smallCompare());
+  comparison.setReferenceCache(ReferenceCache(folder.path()));
+  comparison.setPicturesFirst(true);
+  int referencePasses = 0, provisionalPasses = 0;
+  comparison.setProgress(
+      [&](const std::string& stage, double, int) { referencePasses += stage == "reference"; });
+  comparison.setPassCallback(
+      [&](const ComparisonResult& soFar, int, double) { provisionalPasses += soFar.provisional; });
+  const ComparisonResult second = comparison.run();
+  EXPECT_TRUE(second.reference.cached);
+  EXPECT_EQ(referencePasses, 0) << "the cached reference was rendered again";
+  EXPECT_EQ(provisionalPasses, 0);
+  EXPECT_FALSE(second.provisional);
+  EXPECT_EQ(withoutTimes(comparisonJson(second)), withoutTimes(comparisonJson(first)));
+}
+
 }  // namespace
 }  // namespace raylab

@@ -402,5 +402,57 @@ TEST(ConvergencePlot, 11_AgainstTimeItIsTitledForEqualTime) {
   EXPECT_NE(time.title().find("等时间"), std::string::npos) << time.title();
 }
 
+// Pictures first (issue 33 item 3): before the reference is in, the figures say the error
+// is to come, then mark it provisional with the reference's progress; no "lowest" claim
+// and no conclusion about path tracing until it is final, in either language.
+TEST(ComparisonView, 11_ProvisionalFiguresAreMarked) {
+  ComparisonResult result = syntheticComparison();
+  result.provisional = true;
+  result.reference.samplesPerPixel = 0;
+  for (AlgorithmFigures& f : result.algorithms) f.rmse = std::nan("");
+  ComparisonView view(result, baselineOptions());
+  EXPECT_TRUE(contains(view.panelText(3), "error: once the reference is in"))
+      << ::testing::PrintToString(view.panelText(3));
+  EXPECT_NE(view.headerText().find("path tracing at 256 spp (not rendered yet)"), std::string::npos)
+      << view.headerText();
+  ASSERT_EQ(view.explanationText().size(), 2u);
+  EXPECT_NE(view.explanationText()[1].find("provisional"), std::string::npos);
+  EXPECT_EQ(lowestErrorIndex(result), -1);
+
+  result.reference.samplesPerPixel = 8;
+  for (AlgorithmFigures& f : result.algorithms) f.rmse = 0.25;
+  result.algorithms[3].rmse = 0.039;
+  view.setResult(result);
+  EXPECT_TRUE(contains(view.panelText(3), "error 0.039 (provisional)"))
+      << ::testing::PrintToString(view.panelText(3));
+  EXPECT_NE(view.headerText().find("path tracing at 8 of 256 spp (still rendering)"),
+            std::string::npos)
+      << view.headerText();
+  EXPECT_EQ(view.explanationText()[1].find("lowest"), std::string::npos);
+
+  ComparisonViewOptions chinese = baselineOptions();
+  chinese.language = Language::Chinese;
+  view.setOptions(chinese);
+  EXPECT_TRUE(contains(view.panelText(3), "误差 0.039（暂定）"))
+      << ::testing::PrintToString(view.panelText(3));
+  EXPECT_NE(view.headerText().find("路径追踪 8/256 spp（仍在渲染）"), std::string::npos);
+  EXPECT_NE(view.explanationText()[1].find("暂定"), std::string::npos);
+}
+
+// A window's readable size (issue 33 item 8): with minimumFont the figures never go below
+// it, however small the picture.
+TEST(ComparisonView, 12_TheSmallestFontIsKept) {
+  const ComparisonResult result = syntheticComparison();
+  ComparisonViewOptions options = baselineOptions();
+  ComparisonView view(result, options);
+  view.layout(700, 520);
+  EXPECT_LT(view.figuresFontSize(), 12) << "the picture's own rule at this size";
+  options.minimumFont = 12;
+  view.setOptions(options);
+  view.layout(700, 520);
+  EXPECT_GE(view.figuresFontSize(), 12);
+  EXPECT_EQ(view.imageRect(0, 700, 520).width > 0, true);
+}
+
 }  // namespace
 }  // namespace raylab::vis

@@ -3,6 +3,7 @@
 #include "raylab/core/AlgorithmInfo.h"
 #include "raylab/core/Phrases.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -60,6 +61,14 @@ std::string budgetPhrase(const ComparisonResult& result, Language language) {
 std::string referencePhrase(const ComparisonResult& result, Language language) {
   if (!result.reference.file.empty())
     return phrase("compare.reference.file", language, {{"file", result.reference.file}});
+  if (result.provisional) {
+    // Pictures first: the reference is still to come, or refining.
+    const std::string target = std::to_string(result.compare.referenceSpp());
+    if (result.reference.samplesPerPixel <= 0)
+      return phrase("compare.reference.pending", language, {{"target", target}});
+    return phrase("compare.reference.partial", language,
+                  {{"spp", std::to_string(result.reference.samplesPerPixel)}, {"target", target}});
+  }
   return phrase("compare.reference.path", language,
                 {{"spp", std::to_string(result.reference.samplesPerPixel)}});
 }
@@ -77,6 +86,7 @@ std::string headerLine(const ComparisonResult& result, Language language) {
 }
 
 int lowestErrorIndex(const ComparisonResult& result) {
+  if (result.provisional) return -1;  // no claim before the reference is in
   int best = -1;
   for (std::size_t i = 0; i < result.algorithms.size(); ++i)
     if (best < 0 || result.algorithms[i].rmse < result.algorithms[std::size_t(best)].rmse)
@@ -104,8 +114,13 @@ std::vector<std::string> figureLines(const ComparisonResult& result,
   lines.push_back(samples);
   const int lowest = lowestErrorIndex(result);
   const bool isLowest = lowest >= 0 && &result.algorithms[std::size_t(lowest)] == &figures;
-  lines.push_back(phrase(isLowest ? "compare.figures.error_lowest" : "compare.figures.error",
-                         language, {{"error", formatError(figures.rmse)}}));
+  if (result.provisional && !std::isfinite(figures.rmse))
+    lines.push_back(phrase("compare.figures.error_pending", language));
+  else
+    lines.push_back(phrase(result.provisional ? "compare.figures.error_provisional"
+                           : isLowest         ? "compare.figures.error_lowest"
+                                              : "compare.figures.error",
+                           language, {{"error", formatError(figures.rmse)}}));
   const std::string count = formatCount(stats.rays.total());
   if (showTimes && stats.seconds > 0.0)
     lines.push_back(
@@ -125,6 +140,10 @@ std::vector<std::string> figureLines(const ComparisonResult& result,
 std::vector<std::string> errorExplanation(const ComparisonResult& result, Language language) {
   std::vector<std::string> lines = {phrase("compare.explain.error", language,
                                            {{"reference", referencePhrase(result, language)}})};
+  if (result.provisional) {
+    lines.push_back(phrase("compare.explain.provisional", language));
+    return lines;
+  }
   const AlgorithmFigures* path = pathFigures(result);
   if (path == nullptr) {
     lines.push_back(phrase("compare.explain.no_path", language));

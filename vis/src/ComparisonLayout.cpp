@@ -8,11 +8,12 @@ namespace raylab::vis {
 
 PanelLayout layoutComparisonPanel(const PixelRect& rect, int imageWidth, int imageHeight,
                                   bool trees, int font, const MeasureText& measureFigures,
-                                  const MeasureTitle& measureTitle) {
+                                  const MeasureTitle& measureTitle, int smallest) {
   PanelLayout out;
   const double imageW = std::max(1, imageWidth);
   const double imageH = std::max(1, imageHeight);
-  font = std::max(8, font);
+  smallest = std::max(8, smallest);
+  font = std::max(smallest, font);
 
   // Step 1: for the text at `font`, the largest image beside the column (side) and under
   // the title band (stacked); the text shrinks only while the image would be small.
@@ -46,7 +47,7 @@ PanelLayout layoutComparisonPanel(const PixelRect& rect, int imageWidth, int ima
     out.side = sideScale >= stackScale;
     scale = std::max(sideScale, stackScale);
     band = out.side ? sideBand : stackBand;
-    if (font <= 8 || scale * imageH >= 0.6 * rect.height) break;
+    if (font <= smallest || scale * imageH >= 0.6 * rect.height) break;
   }
 
   // Step 2: place the block (image, tree, title, figures) centred in the panel.

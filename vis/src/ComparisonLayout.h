@@ -38,11 +38,11 @@ using MeasureTitle = std::function<std::pair<int, int>(int font, bool twoLines)>
  * (side) the image takes the panel's whole height and the title and figures stand in a
  * column beside it, or (stacked) a title band across the top, the image, and the figures
  * below, whichever gives the larger image. The text is `font` points (figures) and 1.2 x
- * that (title); it shrinks (down to 8 points) only while the image would be under 60% of
- * the panel's height. The block is centred in the panel.
+ * that (title); it shrinks (down to `smallest`, at least 8 points) only while the image
+ * would be under 60% of the panel's height. The block is centred in the panel.
  */
 PanelLayout layoutComparisonPanel(const PixelRect& panel, int imageWidth, int imageHeight,
                                   bool trees, int font, const MeasureText& measureFigures,
-                                  const MeasureTitle& measureTitle);
+                                  const MeasureTitle& measureTitle, int smallest = 8);
 
 }  // namespace raylab::vis

@@ -172,7 +172,8 @@ std::string ComparisonViewOptions::toString() const {
          ", showTimes=" + (showTimes ? "on" : "off") +
          ", showHeader=" + (showHeader ? "on" : "off") +
          ", showExplanation=" + (showExplanation ? "on" : "off") +
-         ", language=" + raylab::toString(language) + "]";
+         ", language=" + raylab::toString(language) +
+         ", minimumFont=" + std::to_string(minimumFont) + "]";
 }
 
 /// One algorithm's panel: its renderers and actors.
@@ -267,8 +268,8 @@ void ComparisonView::Impl::layoutPanel(Panel& panel, const PixelRect& rect, int 
     return largest;
   };
   const bool trees = panel.tree != nullptr;
-  const PanelLayout laid =
-      layoutComparisonPanel(rect, result.width, result.height, trees, font, measure, measureTitle);
+  const PanelLayout laid = layoutComparisonPanel(rect, result.width, result.height, trees, font,
+                                                 measure, measureTitle, options.minimumFont);
   figuresFont = laid.figuresFont;
 
   // Viewports and text, in VTK's coordinates.
@@ -296,7 +297,8 @@ int ComparisonView::Impl::layoutBand(vtkRenderer* band, vtkTextActor* text,
   const int margin = std::max(4, width / 100);
   vtkTextProperty* p = text->GetTextProperty();
   std::vector<std::string> shown;
-  for (size = std::max(8, size);; --size) {
+  const int smallest = std::max(8, options.minimumFont);
+  for (size = std::max(smallest, size);; --size) {
     styleText(p, size, colour, false, options.language);
     shown.clear();
     for (const std::string& line : lines) {
@@ -308,7 +310,7 @@ int ComparisonView::Impl::layoutBand(vtkRenderer* band, vtkTextActor* text,
         shown.push_back(piece);
     }
     const std::string caption = joinLines(shown);
-    if (size <= 8) break;
+    if (size <= smallest) break;
     if (wrap ? shown.size() <= 4 : textSize(p, caption).first <= width - 2 * margin) break;
   }
   // Still too wide at the smallest font (a narrow window): wrapped rather than cut off.

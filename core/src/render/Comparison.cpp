@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -174,30 +175,33 @@ FloatImage Comparison::renderCancellably(Renderer& renderer) {
   return renderer.render();
 }
 
-ComparisonReference Comparison::renderReference(const std::function<void(double, int)>& report) {
+std::optional<ComparisonReference> Comparison::cachedReference(std::string& key,
+                                                               std::string& note) {
+  if (!m_cache) return std::nullopt;
   const RenderSettings settings = referenceSettings(m_settings, m_compare);
+  try {
+    key = ReferenceCache::key(m_scene, settings);
+  } catch (const Exception& e) {
+    note = std::string("the reference cache cannot key this scene: ") + e.what();
+    return std::nullopt;
+  }
+  ReferenceCache::Lookup lookup = m_cache->load(m_scene, settings);
+  if (lookup.reference) return std::move(lookup.reference);
+  note = lookup.problem;
+  return std::nullopt;
+}
 
-  // Step 1: a verified entry of the cache, when there is one.
+ComparisonReference Comparison::renderReference(
+    const std::string& key, std::string note,
+    const std::function<void(double, int, const FloatImage&)>& report) {
+  // Path tracing at high spp with its own seed, stored for the next time.
+  const RenderSettings settings = referenceSettings(m_settings, m_compare);
   ComparisonReference reference;
-  std::string key;
-  if (m_cache) {
-    try {
-      key = ReferenceCache::key(m_scene, settings);
-    } catch (const Exception& e) {
-      reference.cacheNote = std::string("the reference cache cannot key this scene: ") + e.what();
-    }
-  }
-  if (!key.empty()) {
-    ReferenceCache::Lookup lookup = m_cache->load(m_scene, settings);
-    if (lookup.reference) return std::move(*lookup.reference);
-    reference.cacheNote = lookup.problem;
-  }
-
-  // Step 2: path tracing at high spp with its own seed, stored for the next time.
+  reference.cacheNote = std::move(note);
   Renderer renderer(m_scene, settings);
   renderer.setThreads(m_compare.threads);
-  renderer.setProgress([&](double fraction, const FloatImage&) {
-    report(fraction, renderer.stats().samplesPerPixel);
+  renderer.setProgress([&](double fraction, const FloatImage& image) {
+    report(fraction, renderer.stats().samplesPerPixel, image);
   });
   reference.image = renderCancellably(renderer);
   reference.samplesPerPixel = renderer.stats().samplesPerPixel;
@@ -248,6 +252,16 @@ ConvergencePoint measurePass(const RenderStats& stats, const FloatImage& image,
   return point;
 }
 
+/// One point of a convergence curve before the reference is in: its error still unknown.
+ConvergencePoint unmeasuredPass(const RenderStats& stats, double seconds) {
+  ConvergencePoint point;
+  point.samplesPerPixel = stats.samplesPerPixel;
+  point.seconds = seconds;
+  point.rays = stats.rays.total();
+  point.rmse = point.rmseLinear = std::numeric_limits<double>::quiet_NaN();
+  return point;
+}
+
 /// An algorithm's figures as they stand after the pass measured as `point`.
 void setFromPass(AlgorithmFigures& figures, const FloatImage& image, const RenderStats& stats,
                  const ConvergencePoint& point) {
@@ -260,6 +274,65 @@ void setFromPass(AlgorithmFigures& figures, const FloatImage& image, const Rende
 
 }  // namespace
 
+bool Comparison::renderAlgorithm(int index, ComparisonResult& result,
+                                 const std::function<double(double)>& fractionOf,
+                                 std::vector<FloatImage>* passes) {
+  const Algorithm algorithm = m_compare.algorithms[std::size_t(index)];
+  RenderSettings settings = m_settings;
+  settings.algorithm = algorithm;
+  settings.samplesPerPixel = m_compare.samplesPerPixel;
+  Renderer renderer(m_scene, settings);
+  renderer.setThreads(m_compare.threads);
+  if (m_compare.equalTime()) renderer.setTimeLimit(m_compare.secondsPerAlgorithm);
+
+  result.algorithms.emplace_back();
+  AlgorithmFigures& figures = result.algorithms.back();
+  figures.algorithm = algorithm;
+  // Every pass measured against the reference (or, without one yet, kept to measure
+  // later); the time spent measuring and in the callbacks is taken out of the times.
+  double measuring = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  renderer.setProgress([&](double fraction, const FloatImage& image) {
+    const auto measureStart = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(measureStart - start).count() - measuring;
+    ConvergencePoint point;
+    if (passes) {
+      passes->push_back(image);
+      point = unmeasuredPass(renderer.stats(), seconds);
+    } else {
+      point = measurePass(renderer.stats(), image, m_reference.image, seconds);
+    }
+    figures.series.push_back(point);
+    const double stageFraction =
+        std::min(1.0, m_compare.equalTime()
+                          ? std::max(fraction, point.seconds / m_compare.secondsPerAlgorithm)
+                          : fraction);
+    if (m_progress)
+      m_progress(toString(algorithm), fractionOf(stageFraction), point.samplesPerPixel);
+    if (m_passCallback) {
+      // The algorithm as it stands after this pass.
+      setFromPass(figures, image, renderer.stats(), point);
+      m_passCallback(result, index, fractionOf(stageFraction));
+    }
+    measuring += secondsSince(measureStart);
+  });
+  figures.image = renderCancellably(renderer);
+  figures.stats = renderer.stats();
+  figures.stats.seconds = std::max(0.0, figures.stats.seconds - measuring);
+  if (figures.stats.samplesPerPixel == 0) {
+    // Cancelled before its first pass: nothing of it to show.
+    result.algorithms.pop_back();
+    return false;
+  }
+  if (passes) {
+    figures.rmse = figures.rmseLinear = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    figures.rmse = displayRmse(figures.image, m_reference.image);
+    figures.rmseLinear = imageio::rmse(figures.image, m_reference.image);
+  }
+  return true;
+}
+
 ComparisonResult Comparison::run() {
   ComparisonResult result = emptyResult(m_scene, m_settings, m_compare);
 
@@ -267,21 +340,26 @@ ComparisonResult Comparison::run() {
   // samples (the reference counts as its spp), one budget each with equal time. A cached
   // reference turns out to cost nothing: the fraction then jumps past it.
   const int count = static_cast<int>(m_compare.algorithms.size());
-  const double stageWeight = 1.0;
   const double referenceWeight = m_hasReference ? 0.0 : referenceStageWeight(m_compare);
-  const double totalWeight = referenceWeight + count * stageWeight;
+  const double totalWeight = referenceWeight + count;
   double doneWeight = 0.0;
   const auto fractionOf = [&](double stageFraction, double weight) {
     return std::clamp((doneWeight + stageFraction * weight) / totalWeight, 0.0, 1.0);
   };
-  const auto report = [&](const std::string& stage, double stageFraction, double weight, int spp) {
-    if (m_progress) m_progress(stage, fractionOf(stageFraction, weight), spp);
-  };
 
-  // Step 2: the reference — path tracing at high spp with its own seed — unless given.
+  // Step 2: the reference — path tracing at high spp with its own seed — unless given or
+  // cached; rendered after the algorithms when the pictures come first.
   if (!m_hasReference) {
-    m_reference = renderReference(
-        [&](double fraction, int spp) { report("reference", fraction, referenceWeight, spp); });
+    std::string key, note;
+    if (auto cached = cachedReference(key, note)) {
+      m_reference = std::move(*cached);
+    } else if (m_picturesFirst) {
+      return runPicturesFirst(std::move(result), key, note, referenceWeight);
+    } else {
+      m_reference = renderReference(key, note, [&](double fraction, int spp, const FloatImage&) {
+        if (m_progress) m_progress("reference", fractionOf(fraction, referenceWeight), spp);
+      });
+    }
     doneWeight += referenceWeight;
   }
   result.reference = m_reference;
@@ -290,52 +368,70 @@ ComparisonResult Comparison::run() {
     return result;
   }
 
-  // Step 3: each algorithm, measuring every pass against the reference. The time spent
-  // measuring (and in the pass callback) is taken out of the reported times.
+  // Step 3: each algorithm, measuring every pass against the reference.
   for (int index = 0; index < count && !m_cancelled; ++index) {
-    const Algorithm algorithm = m_compare.algorithms[std::size_t(index)];
-    RenderSettings settings = m_settings;
-    settings.algorithm = algorithm;
-    settings.samplesPerPixel = m_compare.samplesPerPixel;
-    Renderer renderer(m_scene, settings);
-    renderer.setThreads(m_compare.threads);
-    if (m_compare.equalTime()) renderer.setTimeLimit(m_compare.secondsPerAlgorithm);
-
-    result.algorithms.emplace_back();
-    AlgorithmFigures& figures = result.algorithms.back();
-    figures.algorithm = algorithm;
-    double measuring = 0.0;
-    const auto start = std::chrono::steady_clock::now();
-    renderer.setProgress([&](double fraction, const FloatImage& image) {
-      const auto measureStart = std::chrono::steady_clock::now();
-      const ConvergencePoint point =
-          measurePass(renderer.stats(), image, m_reference.image,
-                      std::chrono::duration<double>(measureStart - start).count() - measuring);
-      figures.series.push_back(point);
-      const double stageFraction =
-          m_compare.equalTime() ? std::max(fraction, point.seconds / m_compare.secondsPerAlgorithm)
-                                : fraction;
-      report(toString(algorithm), std::min(stageFraction, 1.0), stageWeight, point.samplesPerPixel);
-      if (m_passCallback) {
-        // The algorithm as it stands after this pass.
-        setFromPass(figures, image, renderer.stats(), point);
-        m_passCallback(result, index, fractionOf(std::min(stageFraction, 1.0), stageWeight));
-      }
-      measuring += secondsSince(measureStart);
-    });
-    figures.image = renderCancellably(renderer);
-    figures.stats = renderer.stats();
-    figures.stats.seconds = std::max(0.0, figures.stats.seconds - measuring);
-    if (figures.stats.samplesPerPixel == 0) {
-      // Cancelled before its first pass: nothing of it to show.
-      result.algorithms.pop_back();
+    if (!renderAlgorithm(
+            index, result, [&](double f) { return fractionOf(f, 1.0); }, nullptr))
       break;
+    doneWeight += 1.0;
+  }
+  result.cancelled = m_cancelled;
+  return result;
+}
+
+ComparisonResult Comparison::runPicturesFirst(ComparisonResult result, const std::string& key,
+                                              const std::string& note, double referenceWeight) {
+  const int count = static_cast<int>(m_compare.algorithms.size());
+  const double totalWeight = referenceWeight + count;
+  double doneWeight = 0.0;
+  const auto fractionOf = [&](double stageFraction, double weight) {
+    return std::clamp((doneWeight + stageFraction * weight) / totalWeight, 0.0, 1.0);
+  };
+
+  // Step 1: each algorithm, every pass kept to be measured once the reference is in.
+  result.provisional = true;
+  std::vector<std::vector<FloatImage>> passes(static_cast<std::size_t>(count));
+  for (int index = 0; index < count && !m_cancelled; ++index) {
+    if (!renderAlgorithm(
+            index, result, [&](double f) { return fractionOf(f, 1.0); },
+            &passes[std::size_t(index)]))
+      break;
+    doneWeight += 1.0;
+  }
+  if (m_cancelled) {
+    result.cancelled = true;
+    return result;
+  }
+
+  // Step 2: the reference; each of its passes gives the errors so far (provisional).
+  m_reference = renderReference(key, note, [&](double fraction, int spp, const FloatImage& image) {
+    if (m_progress) m_progress("reference", fractionOf(fraction, referenceWeight), spp);
+    result.reference.image = image;
+    result.reference.samplesPerPixel = spp;
+    for (AlgorithmFigures& figures : result.algorithms) {
+      figures.rmse = displayRmse(figures.image, image);
+      figures.rmseLinear = imageio::rmse(figures.image, image);
+    }
+    if (m_passCallback) m_passCallback(result, -1, fractionOf(fraction, referenceWeight));
+  });
+  result.reference = m_reference;
+  if (m_cancelled) {
+    result.cancelled = true;
+    return result;
+  }
+
+  // Step 3: every pass of every algorithm measured against the reference: the figures of
+  // the reference-first order.
+  for (std::size_t i = 0; i < result.algorithms.size(); ++i) {
+    AlgorithmFigures& figures = result.algorithms[i];
+    for (std::size_t p = 0; p < figures.series.size() && p < passes[i].size(); ++p) {
+      figures.series[p].rmse = displayRmse(passes[i][p], m_reference.image);
+      figures.series[p].rmseLinear = imageio::rmse(passes[i][p], m_reference.image);
     }
     figures.rmse = displayRmse(figures.image, m_reference.image);
     figures.rmseLinear = imageio::rmse(figures.image, m_reference.image);
-    doneWeight += stageWeight;
   }
-  result.cancelled = m_cancelled;
+  result.provisional = false;
   return result;
 }
 

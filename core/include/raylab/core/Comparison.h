@@ -110,6 +110,11 @@ struct ComparisonResult {
   /// stopped while rendering the reference, no algorithm and the reference's finished
   /// passes (never stored in the cache).
   bool cancelled = false;
+  /// True while the errors are not yet final (Comparison::setPicturesFirst): the
+  /// algorithms are rendered before the reference, and until it is complete each rmse is
+  /// measured against the reference's passes so far (reference.samplesPerPixel of
+  /// compare.referenceSpp()), or is NaN while it has none. A cancelled run can end so.
+  bool provisional = false;
 };
 
 /// True when the rendered reference has fewer than 16 times the samples path tracing
@@ -157,7 +162,9 @@ class Comparison {
   /// algorithms before `index` final, algorithm `index` at this pass (its image, stats with
   /// the spp, rays and seconds so far, rmse and series to this pass). `fraction` is the
   /// part of the whole comparison done (0..1). Copy what you keep: the reference is valid
-  /// only during the call.
+  /// only during the call. With setPicturesFirst, `soFar.provisional` is true until the
+  /// reference is in, and each pass of the reference is delivered too, with `index` -1:
+  /// every algorithm final but its errors measured against the reference so far.
   using PassCallback =
       std::function<void(const ComparisonResult& soFar, int index, double fraction)>;
 
@@ -174,6 +181,15 @@ class Comparison {
   /// Reads and stores the rendered reference in `cache` (nothing: no cache, the default).
   /// A reference given with setReference is neither read nor stored.
   void setReferenceCache(std::optional<ReferenceCache> cache);
+  /**
+   * \brief Pictures first (off by default): when the reference has to be rendered (not
+   * given, not in the cache), renders the algorithms before it, so that a window shows
+   * each picture within its first pass instead of after the long reference. Until the
+   * reference is in, the results are provisional (ComparisonResult::provisional); its
+   * passes are delivered as it refines. The final result equals the reference-first
+   * order's (same images, reference, errors and series): only the times differ.
+   */
+  void setPicturesFirst(bool on) { m_picturesFirst = on; }
 
   /// Renders the reference (unless given or cached) and each algorithm; returns the
   /// figures (result.cancelled when cancel() stopped it). Call it once.
@@ -197,6 +213,7 @@ class Comparison {
   ComparisonSettings m_compare;
   ComparisonReference m_reference;
   bool m_hasReference = false;
+  bool m_picturesFirst = false;
   Progress m_progress;
   PassCallback m_passCallback;
   std::shared_ptr<const ReferenceCache> m_cache;
@@ -204,9 +221,24 @@ class Comparison {
   std::mutex m_activeMutex;      ///< Guards m_active against cancel() from other threads.
   Renderer* m_active = nullptr;  ///< The renderer run() is in, for cancel().
 
+  /// The reference's cache entry for this comparison: `key` set when the cache can key
+  /// the scene, the verified entry when there is one, else what went wrong in `note`.
+  std::optional<ComparisonReference> cachedReference(std::string& key, std::string& note);
   /// Renders with `renderer`, reachable by cancel() meanwhile.
   FloatImage renderCancellably(Renderer& renderer);
-  ComparisonReference renderReference(const std::function<void(double, int)>& report);
+  /// Renders the reference (each pass reported with its image) and stores it under `key`.
+  ComparisonReference renderReference(
+      const std::string& key, std::string note,
+      const std::function<void(double, int, const FloatImage&)>& report);
+  /// Renders algorithm `index` into a new entry of result.algorithms, each pass measured
+  /// against m_reference, or (`passes` given: no reference yet) kept there to measure
+  /// later. False when it was cancelled before its first pass (no entry then).
+  bool renderAlgorithm(int index, ComparisonResult& result,
+                       const std::function<double(double)>& fractionOf,
+                       std::vector<FloatImage>* passes);
+  /// The pictures-first order: the algorithms, then the reference, then the errors.
+  ComparisonResult runPicturesFirst(ComparisonResult result, const std::string& key,
+                                    const std::string& note, double referenceWeight);
 };
 
 /// The figures as JSON (nlohmann-json, 2-space indent): scene, mode, error metric and

@@ -30,6 +30,9 @@ struct ComparisonViewOptions {
   /// The language of every word drawn (ComparisonCaptions); Chinese is drawn with a CJK
   /// font (Noto Sans CJK, fonts-noto-cjk) when one is installed.
   Language language = Language::English;
+  /// The smallest text in pixels (0: 8): the fonts follow the picture's size but never go
+  /// below it. A window sets the size its text is readable at (ComparePanel: 12).
+  int minimumFont = 0;
   std::string toString() const;
 };
 
