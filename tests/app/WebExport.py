@@ -7,13 +7,16 @@ CHECK is one of: rays (every 3D step's rays equal `raylab trace --json`'s tree: 
 kinds, end points to 1e-6), hostile (a lesson's title `</script><script>...` and names with
 quotes stay text), survive (an export that fails leaves the old site intact, names what
 failed, exits 1), student (--student: no notes, no answer key), bounded (--max-size refuses
-a site beyond it)."""
+a site beyond it), interrupt (Ctrl-C leaves the old site), fulldisk (a full tmpfs leaves the
+old site; skipped, exit 77, where no tmpfs can be mounted)."""
 import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 CHECK, RAYLAB, SOURCE, WORK = sys.argv[1:5]
 DISPLAY = sys.argv[5:6]  # the with-display wrapper, when given
@@ -206,5 +209,99 @@ def check_bounded():
     print("one lesson: %d bytes; zip with manifest; --max-size 1 refused" % size)
 
 
-{"rays": check_rays, "hostile": check_hostile, "survive": check_survive,
+def old_site(out):
+    """A stand-in earlier site (files with the names a site has)."""
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(os.path.join(out, "lessons"))
+    for name in ("index.html", "course.js"):
+        with open(os.path.join(out, name), "w") as f:
+            f.write("old " + name)
+    return lambda: all(open(os.path.join(out, n)).read() == "old " + n
+                       for n in ("index.html", "course.js")) and \
+        os.listdir(os.path.join(out, "lessons")) == []
+
+
+def raylab_below(root):
+    """The raylab process started by `root` (itself or a descendant), or None."""
+    parents = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                stat = open("/proc/%s/stat" % entry).read()
+                parents[int(entry)] = int(stat[stat.rindex(")") + 2:].split()[1])
+            except (OSError, ValueError):
+                pass
+    for pid in sorted(parents):
+        p = pid
+        while p > 1 and p != root:
+            p = parents.get(p, 0)
+        if p != root:
+            continue
+        try:
+            name = open("/proc/%d/cmdline" % pid).read().split("\0")[0]
+        except OSError:
+            continue
+        if os.path.basename(name) == "raylab":
+            return pid
+    return None
+
+
+def check_interrupt():
+    top = os.path.join(WORK, "web-interrupt")
+    shutil.rmtree(top, ignore_errors=True)
+    out = os.path.join(top, "site")
+    intact = old_site(out)
+    child = subprocess.Popen(DISPLAY + [RAYLAB, "web", "--out", out, "--max-spp", "1"] + bundle(),
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    for _ in range(1200):  # until the new folder holds a lesson (at most two minutes)
+        news = [n for n in os.listdir(top) if n != "site"]
+        if news and any(f.endswith(".js") for f in
+                        os.listdir(os.path.join(top, news[0], "lessons")) if
+                        os.path.isdir(os.path.join(top, news[0], "lessons"))):
+            break
+        time.sleep(0.1)
+    else:
+        child.kill()
+        fail("no lesson written into a new folder")
+    # The display wrapper (xvfb-run) passes no signal on: signal raylab itself.
+    target = raylab_below(child.pid)
+    if target is None:
+        child.kill()
+        fail("raylab's process not found")
+    os.kill(target, signal.SIGINT)
+    _, err = child.communicate(timeout=120)
+    if "raylab: interrupted: %s was not changed" % out not in err:
+        fail("no message on Ctrl-C: " + err)
+    if not intact():
+        fail("the old site changed")
+    if os.listdir(top) != ["site"]:
+        fail("left beside the site: %s" % os.listdir(top))
+    print("Ctrl-C: old site intact, nothing left")
+
+
+def check_fulldisk():
+    top = os.path.join(WORK, "web-fulldisk")
+    os.makedirs(top, exist_ok=True)
+    subprocess.run(["umount", top], capture_output=True)
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", top],
+                      capture_output=True).returncode != 0:
+        print("SKIP: cannot mount a 1 MB tmpfs (needs root)")
+        sys.exit(77)
+    try:
+        out = os.path.join(top, "site")
+        intact = old_site(out)
+        result = export(out, "--lang", "en", "04-whitted", code=1)
+        if not re.search(r"raylab: error: .*(No space left on device|cannot be written)",
+                         result.stderr):
+            fail("the message does not say the disk is full: " + result.stderr)
+        if not intact():
+            fail("the old site changed")
+        if os.listdir(top) != ["site"]:
+            fail("left beside the site: %s" % os.listdir(top))
+        print("full disk: old site intact: " + result.stderr.strip())
+    finally:
+        subprocess.run(["umount", top], capture_output=True)
+
+
+{"rays": check_rays, "interrupt": check_interrupt, "fulldisk": check_fulldisk, "hostile": check_hostile, "survive": check_survive,
  "student": check_student, "bounded": check_bounded}[CHECK]()

@@ -11,7 +11,6 @@
 #include "raylab/vis/SceneView.h"
 
 #include <vtkActor.h>
-#include <vtkActorCollection.h>
 #include <vtkAlgorithm.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -22,6 +21,7 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPropCollection.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
@@ -100,10 +100,13 @@ ExportedView exportView(SceneView& view, std::size_t maxPoints) {
   double background[3];
   view.renderer()->GetBackground(background);
   out.background = Vec3(background[0], background[1], background[2]);
-  vtkActorCollection* actors = view.renderer()->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* actor = actors->GetNextActor()) {
-    if (!actor->GetVisibility()) continue;
+  // The view's props as added (not vtkRenderer::GetActors, which asks 3D text labels for
+  // their actors, and they need a render window): the text labels are left out.
+  vtkPropCollection* props = view.renderer()->GetViewProps();
+  props->InitTraversal();
+  while (vtkProp* prop = props->GetNextProp()) {
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    if (!actor || !actor->GetVisibility()) continue;
     std::string role = exportRole(actor);
     if (role == "rays") continue;  // exportRays gives them from the tree
     ExportedMesh mesh;

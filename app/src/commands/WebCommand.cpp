@@ -19,8 +19,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -36,6 +38,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+/// The zip while it is made: inside the new folder (so an interrupt removes it with the
+/// folder), moved beside DIR once the site is in place.
+constexpr const char* kZipInside = ".raylab-site.zip";
 
 struct WebCommandOptions {
   std::vector<std::string> lessons;  ///< Files or ids; empty: every lesson in `dir`.
@@ -64,7 +70,8 @@ std::string bundleFolder(const std::string& given) {
 /// The files of a site: nothing else may be in a folder the export replaces.
 bool siteFile(const std::string& name) {
   static const std::set<std::string> kNames = {"index.html",     "course.js", "raylab-web.js",
-                                               "raylab-web.css", "lessons",   "imsmanifest.xml"};
+                                               "raylab-web.css", "lessons",   "imsmanifest.xml",
+                                               kZipInside};
   return kNames.count(name) > 0;
 }
 
@@ -119,14 +126,15 @@ json courseData(const std::vector<json>& lessons, const WebOptions& o) {
           {"phrases", phrases},     {"lessons", list}};
 }
 
-/// Zips the site folder `site` into `zip` (Debian's zip, run in the folder).
+/// Zips the site folder `site` into `zip`, a name inside it (Debian's zip, run there).
 void zipSite(const std::string& site, const std::string& zip) {
   const pid_t child = ::fork();
   if (child == 0) {
     if (::chdir(site.c_str()) != 0) ::_exit(127);
     const int devnull = ::open("/dev/null", O_WRONLY);
     if (devnull >= 0) ::dup2(devnull, STDOUT_FILENO);
-    ::execlp("zip", "zip", "-q", "-r", "-X", zip.c_str(), ".", static_cast<char*>(nullptr));
+    ::execlp("zip", "zip", "-q", "-r", "-X", zip.c_str(), ".", "-x", zip.c_str(),
+             static_cast<char*>(nullptr));
     ::_exit(127);
   }
   int status = 0;
@@ -203,15 +211,14 @@ int runWeb(const WebCommandOptions& o) {
   writeSiteFile(folder->file("imsmanifest.xml"), imsManifest(title, out.files), out.written,
                 options.limits);
   // The zip is made beside DIR from the new folder, then both are put in place.
-  std::string zipTemporary;
-  const std::string zipPath = fs::path(o.out).lexically_normal().string() + ".zip";
-  if (o.zip) {
-    zipTemporary = fs::absolute(folder->path() + ".zip").string();
-    zipSite(folder->path(), zipTemporary);
-  }
+  fs::path site = fs::path(o.out).lexically_normal();
+  if (!site.has_filename()) site = site.parent_path();  // "out/" is "out"
+  const std::string zipPath = site.string() + ".zip";
+  if (o.zip) zipSite(folder->path(), kZipInside);
   folder->commit();
-  if (o.zip && std::rename(zipTemporary.c_str(), zipPath.c_str()) != 0)
-    throw WebError(zipPath + ": cannot be written (the site " + o.out + " was)");
+  if (o.zip && std::rename((site / kZipInside).c_str(), zipPath.c_str()) != 0)
+    throw WebError(zipPath + ": cannot be written (" + std::strerror(errno) + "; the site " +
+                   o.out + " was)");
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << printable(o.out) << ": " << lessons.size() << " lessons, " << megabytes(out.written)
