@@ -95,7 +95,7 @@ std::string readFile(const std::string& path) {
   if (!in)
     throw WebError(path +
                    ": the page's bundle is missing; build it (cmake --build build "
-                   "--target raylab_web) or give --bundle DIR");
+                   "--target raylab_web_bundle) or give --bundle DIR");
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
@@ -120,7 +120,7 @@ json courseData(const std::vector<json>& lessons, const WebOptions& o) {
                     {"steps", l["steps"].size()},
                     {"minutes", l["minutes"]}});
   json languages = json::array();
-  for (Language l : o.languages) languages.push_back(l == Language::Chinese ? "zh" : "en");
+  for (Language l : o.languages) languages.push_back(languageTag(l));
   return {{"version", 1},           {"student", o.student},
           {"languages", languages}, {"defaultLanguage", languages[0]},
           {"phrases", phrases},     {"lessons", list}};

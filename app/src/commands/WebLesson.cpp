@@ -22,8 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-bool exported(const WebOptions& o, Language language) {
-  return std::find(o.languages.begin(), o.languages.end(), language) != o.languages.end();
+/// The text of `language` in `text`, to fill (LocalText::in reads it).
+std::string& textOf(LocalText& text, Language language) {
+  static std::string LocalText::*const kMembers[] = {&LocalText::en, &LocalText::zh};
+  return text.*kMembers[std::size_t(language)];
 }
 
 json vec3(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
@@ -90,7 +92,7 @@ json narrationJson(const LessonStep& step, const RayTree& tree, const WebOptions
       for (const RaySegment& s : tree.segments)
         if (s.depth == d && told++ < kRaysNarrated)
           lines += "\n" + narrateRay(tree, s.id, names, language);
-      (language == Language::Chinese ? text.zh : text.en) = lines;
+      textOf(text, language) = lines;
     }
     out.push_back({{"depth", d}, {"text", localJson(text, o)}});
   }
@@ -110,9 +112,8 @@ json view3dJson(const LessonStep& step, const WebOptions& o, LocalText& caption,
   json view;
   for (Language language : o.languages) {
     StagedStep staged = stageStep(step, 4.0 / 3.0, language);
-    (language == Language::Chinese ? caption.zh : caption.en) = staged.words.caption;
-    (language == Language::Chinese ? inspector.zh : inspector.en) =
-        staged.words.inspectorText + staged.words.crossingsText;
+    textOf(caption, language) = staged.words.caption;
+    textOf(inspector, language) = staged.words.inspectorText + staged.words.crossingsText;
     if (!view.is_null()) continue;
     const vis::ExportedView data = vis::exportView(*staged.view, o.limits.pointsPerMesh);
     view["camera"] = {{"position", vec3(data.camera.eye)},
@@ -178,7 +179,7 @@ json picturesJson(const Lesson& lesson, std::size_t index, const WebOptions& o, 
   json src, alt;
   std::string shared;  // an image without words, written once
   for (Language language : o.languages) {
-    const std::string tag = language == Language::Chinese ? "zh" : "en";
+    const std::string tag = languageTag(language);
     std::string name = "s" + twoDigits(index + 1) + "-" + tag + ".png";
     if (step.view == LessonView::Image && !shared.empty()) {
       name = shared;
@@ -191,7 +192,7 @@ json picturesJson(const Lesson& lesson, std::size_t index, const WebOptions& o, 
         throw WebError(path.string() + ": the site would be larger than " +
                        std::to_string(o.limits.siteBytes >> 20) + " MB");
       out.files.push_back("lessons/" + id + "/" + name);
-      (tag == "zh" ? caption.zh : caption.en) =
+      textOf(caption, language) =
           picture.caption + (picture.note.empty() ? "" : "\n" + picture.note);
       if (step.view == LessonView::Image) shared = name;
     }
@@ -253,8 +254,14 @@ json stepJson(const Lesson& lesson, std::size_t index, const WebOptions& o, WebO
 }  // namespace
 
 json localJson(const LocalText& text, const WebOptions& options) {
-  return {{"en", exported(options, Language::English) ? text.en : std::string()},
-          {"zh", exported(options, Language::Chinese) ? text.zh : std::string()}};
+  json out = {{"en", ""}, {"zh", ""}};
+  for (Language language : options.languages) out[languageTag(language)] = text.in(language);
+  return out;
+}
+
+const char* languageTag(Language language) {
+  static const char* const kTags[] = {"en", "zh"};
+  return kTags[std::size_t(language)];
 }
 
 json lessonData(const Lesson& lesson, const WebOptions& options, WebOutput& out) {

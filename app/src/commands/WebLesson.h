@@ -30,6 +30,9 @@ struct WebOutput {
   std::vector<std::string> files;  ///< Every file written, relative to the site.
 };
 
+/// "en" or "zh": a language's name in the site's data and file names.
+const char* languageTag(Language language);
+
 /// `{en, zh}` of `text`, the languages not exported empty.
 nlohmann::json localJson(const LocalText& text, const WebOptions& options);
 
