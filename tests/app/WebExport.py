@@ -80,7 +80,7 @@ def check_rays():
         run(["trace", "--scene", scene, "--algorithm", trace["algorithm"], "--pixel",
              str(trace["pixel"][0]), str(trace["pixel"][1]), "--sample", str(trace["sample"]),
              "--json", dump, "--out", os.path.join(WORK, "web-rays-step.png"),
-             "--image-size", "64x48"])
+             "--size", "160x120"])
         with open(dump) as f:
             segments = json.load(f)["segments"]
         rays = view["rays"]
@@ -111,10 +111,11 @@ def hostile_lesson():
     os.makedirs(folder)
     with open(os.path.join(LESSONS, "03-ray-casting.json"), encoding="utf-8") as f:
         lesson = json.load(f)
-    lesson["id"] = "99-\"hostile'\u2028"
-    lesson["title"] = {"en": "</script><script>alert(1)</script>", "zh": "<img src=x onerror=alert(2)>"}
+    lesson["id"] = "99-hostile"
+    lesson["title"] = {"en": "</script><script>alert(1)</script> \"quoted\" 'single'",
+                       "zh": "课程<img src=x onerror=alert(2)>"}
     lesson["steps"] = lesson["steps"][:2]
-    lesson["steps"][0]["title"] = {"en": "\"quoted\" & <b>bold</b> \u2029", "zh": "'单引号'"}
+    lesson["steps"][0]["title"] = {"en": "\"quoted\" & <b>bold</b> \u2029", "zh": "'单引号' <i>斜体</i>"}
     lesson["scene"] = os.path.join(LESSONS, lesson["scene"])
     with open(os.path.join(folder, "99-hostile.json"), "w", encoding="utf-8") as f:
         json.dump(lesson, f, ensure_ascii=False)
@@ -194,18 +195,22 @@ def check_student():
 
 def check_bounded():
     out = os.path.join(WORK, "web-bounded")
-    result = export(out, "--lang", "en", "03-ray-casting", "--zip")
+    result = export(out, "--lang", "en", "04-whitted", "--zip")
     size = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(out) for f in fs)
     if size > 30 * 1024 * 1024:
         fail("one lesson's site is %d bytes" % size)
     zipped = subprocess.run(["unzip", "-l", out + ".zip"], capture_output=True, text=True).stdout
-    for name in ("imsmanifest.xml", "index.html", "course.js", "lessons/03-ray-casting.js"):
+    for name in ("imsmanifest.xml", "index.html", "course.js", "lessons/04-whitted.js"):
         if name not in zipped:
             fail("%s is not in the zip" % name)
     manifest = open(os.path.join(out, "imsmanifest.xml"), encoding="utf-8").read()
     if 'href="index.html"' not in manifest or "imscp_v1p1" not in manifest:
         fail("imsmanifest.xml is not an IMS CP 1.1 manifest")
-    export(out, "--lang", "en", "03-ray-casting", "--max-size", "1", code=1)
+    result = export(out, "--lang", "en", "04-whitted", "--max-size", "1", code=1)
+    if "larger than 1 MB" not in result.stderr:
+        fail("--max-size 1: the message does not say why: " + result.stderr)
+    if os.path.exists(out):
+        fail("--max-size 1: a site was written")
     print("one lesson: %d bytes; zip with manifest; --max-size 1 refused" % size)
 
 
@@ -290,7 +295,8 @@ def check_fulldisk():
     try:
         out = os.path.join(top, "site")
         intact = old_site(out)
-        result = export(out, "--lang", "en", "04-whitted", code=1)
+        result = run(["web", "--out", out, "--max-spp", "1", "--lang", "en", "04-whitted"] +
+                     bundle(), code=1)
         if not re.search(r"raylab: error: .*(No space left on device|cannot be written)",
                          result.stderr):
             fail("the message does not say the disk is full: " + result.stderr)
