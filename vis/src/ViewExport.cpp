@@ -87,6 +87,7 @@ bool readMesh(vtkActor* actor, ExportedMesh& mesh, std::size_t maxPoints) {
   mesh.lineWidth = p->GetLineWidth();
   mesh.pointSize = p->GetPointSize();
   mesh.lit = p->GetLighting();
+  mesh.backfaceCulling = p->GetBackfaceCulling();
   return true;
 }
 

@@ -46,7 +46,8 @@ json meshJson(const vis::ExportedMesh& m) {
               {"lineWidth", m.lineWidth},
               {"pointSize", m.pointSize},
               {"lit", m.lit},
-              {"cellColors", packed(m.cellColours)}};
+              {"cellColors", packed(m.cellColours)},
+              {"backfaceCulling", m.backfaceCulling}};
   return out;
 }
 

@@ -34,6 +34,9 @@ struct ExportedMesh {
   Vec3 colour{1.0};
   double opacity = 1.0, lineWidth = 1.0, pointSize = 1.0;
   bool lit = true;
+  /// Drawn one-sided: open surfaces face the room, so the near walls are seen through
+  /// from outside (the window's dollhouse cut-away).
+  bool backfaceCulling = false;
 };
 
 /// What a SceneView shows, as data.
