@@ -28,6 +28,7 @@ packages=(
   help2man desktop-file-utils appstream               # man page; desktop files' checks
   debootstrap librsvg2-bin                            # package test's fresh root; icon PNGs
   ffmpeg                                              # animate --video and its test (ffprobe)
+  zip unzip                                           # raylab web --zip (Moodle) and its test
 )
 
 missing=()

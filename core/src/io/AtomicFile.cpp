@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
@@ -50,12 +51,10 @@ class TrackedTemporary {
 std::atomic<const char*> g_interruptNote{nullptr};
 std::atomic<const char*> g_interruptFolder{nullptr};
 
-/// Removes the files of `folder`, then the folder, with system calls only (a signal
-/// handler may call no library function that allocates or locks): its entries are read
-/// with getdents64 and unlinked one by one.
-void removeFolderInHandler(const char* folder) {
-  const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
+/// Removes everything in the open folder `fd` (sub-folders too, down to `depth` levels),
+/// with system calls only (a signal handler may call no library function that allocates or
+/// locks): its entries are read with getdents64 and unlinked one by one.
+void removeEntriesInHandler(int fd, int depth) {
   alignas(8) char buffer[4096];
   for (;;) {
     const long n = ::syscall(SYS_getdents64, fd, buffer, sizeof buffer);
@@ -64,12 +63,31 @@ void removeFolderInHandler(const char* folder) {
       // struct linux_dirent64: inode (8), offset (8), record length (2), type (1), name.
       unsigned short length = 0;
       std::memcpy(&length, buffer + at + 16, sizeof length);
+      const unsigned char type = static_cast<unsigned char>(buffer[at + 18]);
       const char* name = buffer + at + 19;
-      if (!(name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0'))))
-        ::unlinkat(fd, name, 0);
+      if (!(name[0] == '.' && (name[1] == '\0' || (name[1] == '.' && name[2] == '\0')))) {
+        if (type == DT_DIR && depth > 0) {
+          // A site's lessons/ and its picture folders (raylab web).
+          const int sub = ::openat(fd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+          if (sub >= 0) {
+            removeEntriesInHandler(sub, depth - 1);
+            ::close(sub);
+          }
+          ::unlinkat(fd, name, AT_REMOVEDIR);
+        } else {
+          ::unlinkat(fd, name, 0);
+        }
+      }
       at += length;
     }
   }
+}
+
+/// Removes `folder` with what it holds (removeEntriesInHandler).
+void removeFolderInHandler(const char* folder) {
+  const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  removeEntriesInHandler(fd, 4);
   ::close(fd);
   ::rmdir(folder);
 }
