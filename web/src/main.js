@@ -1,0 +1,24 @@
+// RayLab's web page: the bundle defines window.RayLabSite; the data scripts after it
+// (course.js, lessons/<id>.js) call RayLabSite.course({...}) and RayLabSite.lesson({...});
+// once the document is parsed the page is drawn into #raylab-app (doc/web-data.md).
+import './style.css';
+import { renderIndex } from './indexPage.js';
+import { startLesson } from './lessonPage.js';
+import { initWords } from './words.js';
+
+const data = { course: null, lesson: null };
+window.RayLabSite = {
+  course(course) { data.course = course; },
+  lesson(lesson) { data.lesson = lesson; },
+};
+
+function start() {
+  const root = document.getElementById('raylab-app');
+  if (!root || !data.course) return;
+  initWords(data.course);
+  if (root.dataset.page === 'lesson' && data.lesson) startLesson(root, data.course, data.lesson);
+  else renderIndex(root, data.course);
+}
+
+if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
+else start();
