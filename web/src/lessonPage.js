@@ -115,7 +115,7 @@ function fillTree(page, box, step, state) {
       el('button', { type: 'button', class: 'reset-view', text: t('web.reset_view'), onclick: () => page.view?.resetCamera() })));
     page.view = createView(container, view3d);
     container.addEventListener('keydown', (event) => viewKeys(page.view, event));
-    window.raylabTimings ??= { firstView: performance.now() };
+    window.raylabTimings.firstView ??= performance.now();
   }
   if (view3d.legend.length) box.append(legendList(view3d.legend));
   const show = (depth) => page.view?.showDepth(waiting ? -1 : depth);

@@ -6,6 +6,8 @@ import { renderIndex } from './indexPage.js';
 import { startLesson } from './lessonPage.js';
 import { initWords } from './words.js';
 
+// Milliseconds since navigation start, read by the browser test (reported, never asserted).
+window.raylabTimings = { bundleStart: performance.now() };
 const data = { course: null, lesson: null };
 window.RayLabSite = {
   course(course) { data.course = course; },
@@ -15,6 +17,7 @@ window.RayLabSite = {
 function start() {
   const root = document.getElementById('raylab-app');
   if (!root || !data.course) return;
+  window.raylabTimings.start = performance.now();
   initWords(data.course);
   if (root.dataset.page === 'lesson' && data.lesson) startLesson(root, data.course, data.lesson);
   else renderIndex(root, data.course);

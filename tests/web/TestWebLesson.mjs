@@ -5,9 +5,12 @@
 // answered wrong then right, the page switched to Chinese, the progress kept and reset,
 // and screenshots of chosen steps close to baselines in tests/baselines/web/.
 //
-//   node lesson_test.mjs --site DIR --lesson ID --baselines DIR --out DIR [--chromium PATH]
+//   node TestWebLesson.mjs --lesson ID --baselines DIR --out DIR [--chromium PATH] [--modules DIR]
+//       either --raylab EXE --lesson-file FILE   (the site `raylab web` exports)
+//       or     --fixture DIR --bundle DIR        (a hand-made site + the built bundle)
 // Exit 0: passed, 1: failed, 77: skipped (no Chromium or no web/node_modules).
-import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
+import { cpSync, existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -31,12 +34,23 @@ if (!existsSync(chromium)) {
   process.exit(77);
 }
 
-const site = resolve(args.site);
+mkdirSync(args.out, { recursive: true });
+const site = resolve(args.out, 'site');
+rmSync(site, { recursive: true, force: true });
+if (args.raylab) {
+  const run = spawnSync(args.raylab, ['web', '--out', site, args['lesson-file']], { encoding: 'utf8' });
+  if (run.status !== 0) {
+    console.log(`FAIL raylab web --out ${site} ${args['lesson-file']}: exit ${run.status}\n${run.stdout}${run.stderr}`);
+    process.exit(1);
+  }
+} else {
+  cpSync(args.fixture, site, { recursive: true });
+  for (const name of ['raylab-web.js', 'raylab-web.css']) cpSync(join(args.bundle, name), join(site, name));
+}
 const course = decodeSiteData(join(site, 'course.js'), 'course');
 const lesson = decodeSiteData(join(site, 'lessons', `${args.lesson}.js`), 'lesson');
 const phrase = (key, lang, values = {}) =>
   course.phrases[key][lang].replace(/\{(\w+)\}/g, (w, name) => String(values[name] ?? w));
-mkdirSync(args.out, { recursive: true });
 
 const browser = await puppeteer.launch({
   executablePath: chromium, headless: true,
@@ -69,8 +83,10 @@ try {
   check(Boolean(link), 'index: a link to the lesson');
   await Promise.all([page.waitForNavigation(), link.click()]);
   await page.waitForSelector('#step-title');
-  const firstView = await page.evaluate(() => window.raylabTimings?.firstView ?? null);
-  console.log(`measure: first 3D view drawn ${firstView === null ? 'never' : `${firstView.toFixed(0)} ms`} after navigation start`);
+  const times = await page.evaluate(() => window.raylabTimings);
+  console.log(`measure: ms after navigation start: bundle running ${times.bundleStart.toFixed(0)}, ` +
+    `data read and page started ${times.start.toFixed(0)}, first 3D view drawn ${times.firstView?.toFixed(0)}`);
+  check(times.firstView !== undefined, 'the first step\'s 3D view was drawn');
 
   // Every step, forwards with the → key; the step title and "Step n of N" follow.
   for (const step of lesson.steps) {
@@ -107,7 +123,7 @@ try {
   check(reset.changed < 0.001, '"Reset view" brings the camera back');
 
   await answerQuestions(page, text, check, phrase, lesson);
-  await screenshot(page, 'web_lesson_step_en', lesson.steps.find((step) => step.view3d && step.question));
+  await screenshot(page, 'TestWebLesson_step_en', lesson.steps.find((step) => step.view3d && step.question));
 
   // Chinese: the page's words and the lesson's text switch.
   await page.click('[data-lang="zh"]');
@@ -117,7 +133,7 @@ try {
   check(await text('.step-of') === phrase('web.step_of', 'zh', { n: zhStep.index + 1, total: lesson.steps.length }),
     'Chinese: "第 n 步" from the phrases');
   check(await page.evaluate(() => document.documentElement.lang) === 'zh-CN', 'Chinese: <html lang="zh-CN">');
-  await screenshot(page, 'web_lesson_predict_zh', zhStep);
+  await screenshot(page, 'TestWebLesson_predict_zh', zhStep);
   await page.reload();
   await page.waitForSelector('#step-title');
   check(await text('#step-title') === zhStep.title.zh, 'after a reload: the same step, still in Chinese');
@@ -126,7 +142,7 @@ try {
   await Promise.all([page.waitForNavigation(), page.click('a.back')]);
   const total = lesson.steps.length;
   check(await text('.progress-text') === phrase('web.progress', 'zh', { done: total, total }), 'index: every step counted as seen');
-  await screenshot(page, 'web_index_zh', null);
+  await screenshot(page, 'TestWebLesson_index_zh', null);
   await page.click('button.reset');
   check(await text('.progress-text') === phrase('web.progress', 'zh', { done: 0, total }), 'index: reset forgets the progress');
   const leftover = await page.evaluate(() => document.body.innerText.match(/\bweb\.[a-z_]+/g));
