@@ -62,10 +62,11 @@ fi
 cd "$here"
 # The web page's npm packages, exactly as web/package-lock.json pins them (no browser is
 # downloaded: the test drives Debian's chromium through puppeteer-core). Skipped when
-# node_modules was installed after the lock file last changed.
+# node_modules was installed after the lock file last changed. --ignore-scripts: no package's
+# own install code runs (esbuild finds its binary in @esbuild/linux-x64 without it).
 if ! [[ web/node_modules/.package-lock.json -nt web/package-lock.json ]]; then
   echo "raylab setup: npm ci --prefix web"
-  PUPPETEER_SKIP_DOWNLOAD=1 npm ci --prefix web --no-audit --no-fund
+  PUPPETEER_SKIP_DOWNLOAD=1 npm ci --prefix web --ignore-scripts --no-audit --no-fund
 fi
 cmake --preset "$preset" >/dev/null
 if (($#)); then

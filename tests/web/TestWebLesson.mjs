@@ -122,6 +122,21 @@ try {
   const reset = await compareScreenshot(browser, before, await canvas.screenshot());
   check(reset.changed < 0.001, '"Reset view" brings the camera back');
 
+  // By keyboard: the view takes focus and turns with the arrow keys; the depth slider takes
+  // the tree back to depth 0 and the narration of that depth is read out (aria-live).
+  await page.focus('.view');
+  await page.keyboard.press('ArrowLeft');
+  const keyed = await compareScreenshot(browser, before, await canvas.screenshot());
+  check(keyed.changed > 0.02, 'the ← key turns the focused 3D view');
+  check(await text('#step-title') === viewStep.title.en, 'the ← key in the 3D view does not change the step');
+  await page.click('.reset-view');
+  await page.focus('#depth');
+  await page.keyboard.press('Home');
+  const spoken = viewStep.narration.filter((line) => line.depth === 0).map((line) => line.text.en).join(' ');
+  check(await text('.narration-live') === spoken, 'depth slider at 0: the narration of depth 0 is read out');
+  const shallower = await compareScreenshot(browser, before, await canvas.screenshot());
+  check(shallower.changed > 0.002, `depth slider at 0: only the camera ray is left (${(100 * shallower.changed).toFixed(2)}% of pixels change)`);
+
   await answerQuestions(page, text, check, phrase, lesson);
   await screenshot(page, 'TestWebLesson_step_en', lesson.steps.find((step) => step.view3d && step.question));
 

@@ -8,6 +8,12 @@ import { initWords } from './words.js';
 
 // Milliseconds since navigation start, read by the browser test (reported, never asserted).
 window.raylabTimings = { bundleStart: performance.now() };
+// The stylesheet lies beside the bundle; link it unless the page already does.
+const bundle = document.currentScript;
+if (bundle && !document.querySelector('link[href$="raylab-web.css"]')) {
+  document.head.append(Object.assign(document.createElement('link'),
+    { rel: 'stylesheet', href: bundle.src.replace(/\.js(\?.*)?$/, '.css') }));
+}
 const data = { course: null, lesson: null };
 window.RayLabSite = {
   course(course) { data.course = course; },
