@@ -5,7 +5,8 @@
 // answered wrong then right, the page switched to Chinese, the progress kept and reset,
 // and screenshots of chosen steps close to baselines in tests/baselines/web/.
 //
-//   node TestWebLesson.mjs --lesson ID --baselines DIR --out DIR [--chromium PATH] [--modules DIR]
+//   node TestWebLesson.mjs --lesson ID --baselines DIR --out DIR [--prefix NAME] [--chromium PATH]
+//       [--modules DIR]   (baselines: DIR/NAME_step_en.png, ...; NAME TestWebLesson by default)
 //       either --raylab EXE --lesson-file FILE   (the site `raylab web` exports)
 //       or     --fixture DIR --bundle DIR        (a hand-made site + the built bundle)
 // Exit 0: passed, 1: failed, 77: skipped (no Chromium or no web/node_modules).
@@ -19,6 +20,7 @@ import { compareScreenshot, decodeSiteData } from './support.mjs';
 const args = Object.fromEntries(process.argv.slice(2).reduce((pairs, word, i, all) =>
   (word.startsWith('--') ? [...pairs, [word.slice(2), all[i + 1]]] : pairs), []));
 const chromium = args.chromium || '/usr/bin/chromium';
+args.prefix ??= 'TestWebLesson';
 const failures = [];
 const check = (ok, what) => { if (!ok) failures.push(what); console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); };
 
@@ -83,7 +85,16 @@ try {
   check(Boolean(link), 'index: a link to the lesson');
   await Promise.all([page.waitForNavigation(), link.click()]);
   await page.waitForSelector('#step-title');
+  // Time to the first interactive 3D step: the lesson opened (reloaded) at its first 3D step.
+  const firstViewStep = lesson.steps.find((step) => step.view3d);
+  await page.evaluate((id, index) => localStorage.setItem(`raylab.lesson.${id}`,
+    JSON.stringify({ step: index, seen: [], answers: {} })), lesson.id, firstViewStep.index);
+  await page.reload();
+  await page.waitForSelector('.view canvas');
   const times = await page.evaluate(() => window.raylabTimings);
+  await page.evaluate((id) => localStorage.removeItem(`raylab.lesson.${id}`), lesson.id);
+  await page.reload();
+  await page.waitForSelector('#step-title');
   console.log(`measure: ms after navigation start: bundle running ${times.bundleStart.toFixed(0)}, ` +
     `data read and page started ${times.start.toFixed(0)}, first 3D view drawn ${times.firstView?.toFixed(0)}`);
   check(times.firstView !== undefined, 'the first step\'s 3D view was drawn');
@@ -102,7 +113,8 @@ try {
   check(await text('#step-title') === lesson.steps.at(-2).title.en, 'the ← key goes back');
 
   // The 3D view turns under the mouse: its pixels change.
-  const viewStep = lesson.steps.find((step) => step.view3d && !step.view3d.hidden);
+  const shown = lesson.steps.filter((step) => step.view3d && !step.view3d.hidden && step.view3d.rays.length);
+  const viewStep = shown.find((step) => step.layout === 'scene') ?? shown[0];
   await page.click(`nav.steps li:nth-child(${viewStep.index + 1}) button`);
   const canvas = await page.waitForSelector('.view canvas');
   const box = await canvas.boundingBox();
@@ -138,7 +150,7 @@ try {
   check(shallower.changed > 0.002, `depth slider at 0: only the camera ray is left (${(100 * shallower.changed).toFixed(2)}% of pixels change)`);
 
   await answerQuestions(page, text, check, phrase, lesson);
-  await screenshot(page, 'TestWebLesson_step_en', lesson.steps.find((step) => step.view3d && step.question));
+  await screenshot(page, `${args.prefix}_step_en`, lesson.steps.find((step) => step.view3d && step.question));
 
   // Chinese: the page's words and the lesson's text switch.
   await page.click('[data-lang="zh"]');
@@ -148,7 +160,7 @@ try {
   check(await text('.step-of') === phrase('web.step_of', 'zh', { n: zhStep.index + 1, total: lesson.steps.length }),
     'Chinese: "第 n 步" from the phrases');
   check(await page.evaluate(() => document.documentElement.lang) === 'zh-CN', 'Chinese: <html lang="zh-CN">');
-  await screenshot(page, 'TestWebLesson_predict_zh', zhStep);
+  await screenshot(page, `${args.prefix}_predict_zh`, zhStep);
   await page.reload();
   await page.waitForSelector('#step-title');
   check(await text('#step-title') === zhStep.title.zh, 'after a reload: the same step, still in Chinese');
@@ -157,7 +169,7 @@ try {
   await Promise.all([page.waitForNavigation(), page.click('a.back')]);
   const total = lesson.steps.length;
   check(await text('.progress-text') === phrase('web.progress', 'zh', { done: total, total }), 'index: every step counted as seen');
-  await screenshot(page, 'TestWebLesson_index_zh', null);
+  await screenshot(page, `${args.prefix}_index_zh`, null);
   await page.click('button.reset');
   check(await text('.progress-text') === phrase('web.progress', 'zh', { done: 0, total }), 'index: reset forgets the progress');
   const leftover = await page.evaluate(() => document.body.innerText.match(/\bweb\.[a-z_]+/g));
@@ -206,18 +218,19 @@ async function answerQuestions(page, text, check, phrase, lesson) {
     await page.keyboard.press('Enter');
     check((await text('.feedback')).includes(phrase('web.correct', 'en')), 'the right answer: "correct"');
   }
-  const predict = lesson.steps.find((step) => step.view3d?.hidden && step.question);
-  if (predict) {
+  const predicts = lesson.steps.filter((step) => step.view3d?.hidden && step.question && step !== numberStep);
+  const predict = predicts.find((step) => step.question.type === 'choice') ?? predicts[0];
+  if (predict && predict.question.answer !== null) {
     await page.click(`nav.steps li:nth-child(${predict.index + 1}) button`);
     check(!(await page.$('#depth')), 'predict step: the tree waits for an answer');
-    const wrong = predict.question.type === 'choice' ? (predict.question.answer + 1) % predict.question.choices.length : null;
-    if (wrong !== null) {
-      await page.click(`.question input[value="${wrong}"]`);
-      await page.click('.question .check');
-      check(Boolean(await page.$('#depth')), `predict step: the tree is shown once an answer is committed (${await text('.feedback')})`);
-      await page.click('.question .reveal');
-      check((await text('.feedback')).includes(phrase('web.answer_is', 'en', { answer: predict.question.choices[predict.question.answer].en })),
-        'predict step: "Show the answer" reveals it');
-    }
+    const q = predict.question;
+    if (q.type === 'choice') await page.click(`.question input[value="${(q.answer + 1) % q.choices.length}"]`);
+    else await page.type('.question input', String(q.answer + 10 * (q.tolerance || 1) + 1));
+    await page.click('.question .check');
+    check(Boolean(await page.$('#depth')), 'predict step: the tree is shown once an answer is committed');
+    await page.click('.question .reveal');
+    const answer = q.type === 'choice' ? q.choices[q.answer].en : String(q.answer);
+    check((await text('.feedback')).includes(phrase('web.answer_is', 'en', { answer })),
+      'predict step: "Show the answer" reveals it');
   }
 }

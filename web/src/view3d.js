@@ -30,6 +30,7 @@ function meshActor(mesh) {
   const polyData = vtkPolyData.newInstance();
   polyData.getPoints().setData(decode(mesh.points, Float32Array), 3);
   if (mesh.polys) polyData.getPolys().setData(decode(mesh.polys, Uint32Array));
+  if (mesh.strips) polyData.getStrips().setData(decode(mesh.strips, Uint32Array));
   if (mesh.lines) polyData.getLines().setData(decode(mesh.lines, Uint32Array));
   if (mesh.verts) polyData.getVerts().setData(decode(mesh.verts, Uint32Array));
   const mapper = vtkMapper.newInstance();
@@ -51,6 +52,8 @@ function meshActor(mesh) {
   property.setLineWidth(mesh.lineWidth || 1);
   property.setPointSize(mesh.pointSize || 1);
   property.setLighting(mesh.lit !== false);
+  // One-sided walls (the window culls their back faces, so a camera outside the box sees in).
+  property.setBackfaceCulling(Boolean(mesh.backfaceCulling));
   return actor;
 }
 
@@ -58,6 +61,7 @@ function meshActor(mesh) {
 function rayActors(rays) {
   const groups = new Map();
   for (const ray of rays) {
+    if (ray.drawn === false) continue;
     const key = `${ray.depth}|${ray.color.join(',')}|${ray.width}`;
     if (!groups.has(key)) groups.set(key, { depth: ray.depth, color: ray.color, width: ray.width, rays: [] });
     groups.get(key).rays.push(ray);
