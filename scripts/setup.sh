@@ -29,6 +29,7 @@ packages=(
   debootstrap librsvg2-bin                            # package test's fresh root; icon PNGs
   ffmpeg                                              # animate --video and its test (ffprobe)
   chromium                                            # the web export's browser test (headless)
+  zip unzip                                           # raylab web --zip (Moodle) and its test
 )
 # Node.js and npm build the web page's bundle (web/, esbuild + vtk.js); Debian's, unless a
 # node is already on PATH (then its own npm comes with it).

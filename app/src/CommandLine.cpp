@@ -12,6 +12,7 @@
 #include "SnapshotCommand.h"
 #include "Subcommand.h"
 #include "TraceCommand.h"
+#include "WebCommand.h"
 
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/LessonAliases.h"
@@ -246,6 +247,7 @@ int runCommandLine(int argc, char** argv) {
       addSnapshotCommand(cli), addRenderCommand(cli), addTraceCommand(cli),
       addCompareCommand(cli),  addPlotCommand(cli),   addAnimateCommand(cli),
       addLessonCommand(cli),   addCheckCommand(cli),  addDiffCommand(cli),
+      addWebCommand(cli),
   };
   if (const std::optional<int> exitCode = parse(cli, argc, argv)) return *exitCode;
 

@@ -1,6 +1,7 @@
 #include "LessonCommand.h"
 
 #include "LessonHandout.h"
+#include "LessonPictures.h"
 
 #include "CompareCommand.h"
 #include "ExitCodes.h"
@@ -179,47 +180,12 @@ std::string inspectorLines(const Scene& scene, const RayTree& tree, int id, Lang
          (exactness ? "\n" + oracleText(inspection, language) : std::string());
 }
 
-/// What one step's picture is, and what the handout says beside it.
-struct StepPicture : PictureWords {
-  SrgbImage image;
-};
-
-/// The 3D view of the step as the lesson stager sets it (vis::stepViewState, as the
-/// window's lesson player shows it): the step's scene with its pixel's tree when it has one,
-/// the selected ray in the inspector view, or a sampler's directions; and the words beside.
+/// The 3D view of the step as the lesson stager sets it (stageStep), rendered.
 StepPicture scenePicture(const LessonStep& step, std::pair<int, int> size, Language language) {
-  const Scene& scene = *step.scene;
-  // The names the reader sees (Chinese display names in a zh handout), for words only.
-  const Scene shown = sceneAsShown(scene, language == Language::Chinese);
-  const vis::TreeViewState state = vis::stepViewState(step, false, language);
-  vis::SceneView view(scene);
+  StagedStep staged = stageStep(step, double(size.first) / size.second, language);
   StepPicture result;
-  std::shared_ptr<const RayTree> tree;
-  if (state.traced) {
-    // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
-    // together.
-    tree = std::make_shared<const RayTree>(step.bundle > 1
-                                               ? traceBundle(scene, step.settings(), *step.pixelX,
-                                                             *step.pixelY, step.sample, step.bundle)
-                                                     .combined
-                                               : step.trace().tree);
-  }
-  view.show(state, tree, double(size.first) / size.second);
-  if (tree && !tree->segments.empty()) {
-    const int id = std::max(0, state.selectedSegment);
-    if (state.layout == vis::ViewLayout::Inspector)
-      result.inspectorText = inspectorLines(shown, *tree, id, language, step.exactness);
-    if (state.allHits) {
-      const RaySegment& ray = tree->segments.at(std::size_t(id));
-      result.crossingsText = crossingsText(
-          shown, sceneCrossings(scene, ray.origin, ray.direction, ray.time), language);
-    }
-  }
-  // A mesh's BVH boxes (lesson 8), said in words under the picture.
-  if (state.bvh.shown())
-    result.caption = vis::bvhCaption(shown, state.bvh, view.bvhSummary(), language,
-                                     step.pixelX.value_or(-1), step.pixelY.value_or(-1));
-  result.image = view.renderOffscreen(size.first, size.second);
+  static_cast<PictureWords&>(result) = staged.words;
+  result.image = staged.view->renderOffscreen(size.first, size.second);
   return result;
 }
 
@@ -409,6 +375,50 @@ int runRender(const LessonOptions& o) {
 }
 
 }  // namespace
+
+StagedStep stageStep(const LessonStep& step, double aspect, Language language) {
+  const Scene& scene = *step.scene;
+  // The names the reader sees (Chinese display names in a zh handout), for words only.
+  const Scene shown = sceneAsShown(scene, language == Language::Chinese);
+  StagedStep result;
+  result.state = vis::stepViewState(step, false, language);
+  const vis::TreeViewState& state = result.state;
+  result.view = std::make_unique<vis::SceneView>(scene);
+  vis::SceneView& view = *result.view;
+  if (state.traced) {
+    // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
+    // together.
+    result.tree = std::make_shared<const RayTree>(
+        step.bundle > 1 ? traceBundle(scene, step.settings(), *step.pixelX, *step.pixelY,
+                                      step.sample, step.bundle)
+                              .combined
+                        : step.trace().tree);
+  }
+  const std::shared_ptr<const RayTree>& tree = result.tree;
+  view.show(state, tree, aspect);
+  PictureWords& words = result.words;
+  if (tree && !tree->segments.empty()) {
+    const int id = std::max(0, state.selectedSegment);
+    if (state.layout == vis::ViewLayout::Inspector)
+      words.inspectorText = inspectorLines(shown, *tree, id, language, step.exactness);
+    if (state.allHits) {
+      const RaySegment& ray = tree->segments.at(std::size_t(id));
+      words.crossingsText = crossingsText(
+          shown, sceneCrossings(scene, ray.origin, ray.direction, ray.time), language);
+    }
+  }
+  // A mesh's BVH boxes (lesson 8), said in words under the picture.
+  if (state.bvh.shown())
+    words.caption = vis::bvhCaption(shown, state.bvh, view.bvhSummary(), language,
+                                    step.pixelX.value_or(-1), step.pixelY.value_or(-1));
+  return result;
+}
+
+StepPicture lessonStepPicture(const LessonStep& step,
+                              const std::optional<std::pair<int, int>>& size, Language language,
+                              int maxSpp) {
+  return stepPicture(step, size, language, maxSpp);
+}
 
 Subcommand addLessonCommand(CLI::App& cli) {
   auto options = std::make_shared<LessonOptions>();

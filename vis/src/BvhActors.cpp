@@ -1,5 +1,7 @@
 #include "BvhActors.h"
 
+#include "ExportRole.h"
+
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Phrases.h"
 #include "raylab/core/TriangleMesh.h"
@@ -127,6 +129,7 @@ BvhActors::~BvhActors() {
 }
 
 void BvhActors::addTo(vtkRenderer* renderer) {
+  for (vtkActor* actor : {levels.Get(), entered.Get(), skipped.Get()}) setExportRole(actor, "bvh");
   renderer->AddActor(levels);
   renderer->AddActor(entered);
   renderer->AddActor(skipped);

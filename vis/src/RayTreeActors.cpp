@@ -1,5 +1,7 @@
 #include "RayTreeActors.h"
 
+#include "ExportRole.h"
+
 #include "LegendText.h"
 #include "TextFonts.h"
 #include "raylab/core/Phrases.h"
@@ -145,7 +147,10 @@ std::vector<vtkProp*> RayTreeActors::props() const {
 }
 
 void RayTreeActors::addTo(vtkRenderer* renderer) {
-  for (vtkProp* prop : props()) renderer->AddViewProp(prop);
+  for (vtkProp* prop : props()) {
+    setExportRole(prop, "rays");  // exported from the tree itself (ViewExport.cpp)
+    renderer->AddViewProp(prop);
+  }
   if (m_observed != renderer) {
     if (m_observed) m_observed->RemoveObserver(m_observer);
     m_observer = renderer->AddObserver(vtkCommand::StartEvent, m_layout);

@@ -1,6 +1,7 @@
 #include "raylab/vis/SceneView.h"
 
 #include "BvhActors.h"
+#include "ExportRole.h"
 #include "RayTreeActors.h"
 #include "SceneViewImpl.h"
 #include "ShapeGeometry.h"
@@ -148,12 +149,14 @@ void addCameraAndLights(const Scene& scene, vtkRenderer* renderer) {
   body->GetProperty()->SetColor(kCameraBody[0], kCameraBody[1], kCameraBody[2]);
   body->GetProperty()->SetOpacity(kCameraBodyOpacity);
   body->GetProperty()->SetInterpolationToFlat();
+  setExportRole(body, "camera");
   renderer->AddActor(body);
   auto frustum = makeActor(
       cameraFrustumGeometry(scene.camera, kFrustumLengthInGlyphs * cameraGlyphSize(scene)));
   frustum->GetProperty()->SetColor(kFrustum[0], kFrustum[1], kFrustum[2]);
   frustum->GetProperty()->SetLineWidth(kFrustumLineWidth);
   frustum->GetProperty()->LightingOff();
+  setExportRole(frustum, "camera");
   renderer->AddActor(frustum);
 
   for (const PointLight& light : scene.pointLights) {
@@ -166,6 +169,7 @@ void addCameraAndLights(const Scene& scene, vtkRenderer* renderer) {
     auto glyph = makeActor(ball->GetOutput());
     glyph->GetProperty()->SetColor(kPointLight[0], kPointLight[1], kPointLight[2]);
     glyph->GetProperty()->LightingOff();
+    setExportRole(glyph, "light");
     renderer->AddActor(glyph);
   }
 }
@@ -254,10 +258,12 @@ void SceneView::setScene(const Scene& scene) {
     const bool oneSided = (object.shape->isFlat() || wall) && !material.isEmitter();
     if (oneSided) actor->GetProperty()->BackfaceCullingOn();
     m_impl->oneSided.push_back(oneSided);
+    setExportRole(actor, "object:" + std::to_string(index));
     renderer->AddActor(actor);
     m_impl->objects.push_back(actor);
 
     const vtkSmartPointer<vtkActor> outline = outlineActor(geometry, renderer->GetActiveCamera());
+    setExportRole(outline, "outline");
     renderer->AddActor(outline);
     m_impl->highlights.push_back(outline);
   }
@@ -296,6 +302,7 @@ void SceneView::setCrossings(const std::vector<SceneCrossing>& crossings, const 
                              const Vec3& direction) {
   clearCrossings();
   m_impl->crossings = crossingProps(crossings, origin, direction, 0.6 * m_impl->rays.glyphLength);
+  for (const auto& prop : m_impl->crossings) setExportRole(prop, "crossings");
   m_impl->crossingCount = int(crossings.size());
   for (const SceneCrossing& c : crossings)
     if (c.closed) m_impl->crossed.push_back(c.object);
@@ -326,6 +333,7 @@ int SceneView::crossingCount() const { return m_impl->crossingCount; }
 void SceneView::setSampleCloud(const std::vector<Vec3>& directions, bool fullSphere,
                                const std::string& axisLabel, Language language) {
   m_impl->cloud = sampleCloudProps(directions, fullSphere, axisLabel, language);
+  for (const auto& prop : m_impl->cloud) setExportRole(prop, "samples");
   showOnlyCloud();
 }
 

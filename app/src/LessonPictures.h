@@ -1,0 +1,42 @@
+#pragma once
+
+#include "LessonHandout.h"
+
+#include "raylab/core/Image.h"
+#include "raylab/core/Lesson.h"
+#include "raylab/core/RayTree.h"
+#include "raylab/vis/SceneView.h"
+#include "raylab/vis/TreeViewState.h"
+
+#include <memory>
+#include <optional>
+#include <utility>
+
+namespace raylab::app {
+
+/// What one step's picture is, and what the handout says beside it.
+struct StepPicture : PictureWords {
+  SrgbImage image;
+};
+
+/// A lesson step staged in the 3D view as the lesson stager sets it (vis::stepViewState, as
+/// the window's lesson player shows it): the state, the traced tree (null when none) and the
+/// view showing them, with the words beside the picture.
+struct StagedStep {
+  vis::TreeViewState state;
+  std::shared_ptr<const RayTree> tree;
+  std::unique_ptr<vis::SceneView> view;
+  PictureWords words;
+};
+
+/// Stages `step` for a picture of aspect `aspect` (width / height) in `language`.
+StagedStep stageStep(const LessonStep& step, double aspect, Language language);
+
+/// The picture of one step of `raylab lesson --out` (and of `raylab web` for image,
+/// comparison and plot steps): `size` or the view's default size, at most `maxSpp` samples
+/// per pixel (0: the defaults).
+StepPicture lessonStepPicture(const LessonStep& step,
+                              const std::optional<std::pair<int, int>>& size, Language language,
+                              int maxSpp);
+
+}  // namespace raylab::app

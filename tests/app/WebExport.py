@@ -1,0 +1,307 @@
+#!/usr/bin/env python3
+"""Checks of `raylab web` (issue 34; doc/web-data.md), one per CTest test:
+
+  WebExport.py CHECK RAYLAB_EXE SOURCE_DIR WORK_DIR [WITH_DISPLAY]
+
+CHECK is one of: rays (every 3D step's rays equal `raylab trace --json`'s tree: count,
+kinds, end points to 1e-6), hostile (a lesson's title `</script><script>...` and names with
+quotes stay text), survive (an export that fails leaves the old site intact, names what
+failed, exits 1), student (--student: no notes, no answer key), bounded (--max-size refuses
+a site beyond it), interrupt (Ctrl-C leaves the old site), fulldisk (a full tmpfs leaves the
+old site; skipped, exit 77, where no tmpfs can be mounted)."""
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+CHECK, RAYLAB, SOURCE, WORK = sys.argv[1:5]
+DISPLAY = sys.argv[5:6]  # the with-display wrapper, when given
+LESSONS = os.path.join(SOURCE, "lessons")
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def run(args, code=0):
+    result = subprocess.run(DISPLAY + [RAYLAB] + args, capture_output=True, text=True)
+    if result.returncode != code:
+        fail("raylab %s: exit %d (expected %d)\nstdout: %s\nstderr: %s" %
+             (" ".join(args), result.returncode, code, result.stdout, result.stderr))
+    return result
+
+
+def bundle():
+    """A stand-in bundle (the real one is tested by tests/web): the export copies it."""
+    folder = os.path.join(WORK, "web-bundle")
+    os.makedirs(folder, exist_ok=True)
+    for name, text in (("raylab-web.js", "window.RayLabSite = {};\n"), ("raylab-web.css", "")):
+        with open(os.path.join(folder, name), "w") as f:
+            f.write(text)
+    return ["--bundle", folder]
+
+
+def load_call(path, function):
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    prefix = "RayLabSite.%s(" % function
+    if not text.startswith(prefix) or not text.endswith(");\n"):
+        fail("%s: not one call of %s" % (path, prefix))
+    return text, json.loads(text[len(prefix):-3])
+
+
+def export(out, *args, code=0):
+    shutil.rmtree(out, ignore_errors=True)
+    return run(["web", "--out", out, "--max-spp", "1"] + bundle() + list(args), code)
+
+
+def check_rays():
+    out = os.path.join(WORK, "web-rays")
+    lesson_id = "04-whitted"
+    export(out, "--lang", "en", lesson_id)
+    _, lesson = load_call(os.path.join(out, "lessons", lesson_id + ".js"), "lesson")
+    with open(os.path.join(LESSONS, lesson_id + ".json"), encoding="utf-8") as f:
+        source = json.load(f)
+    scene = os.path.join(LESSONS, source["scene"])
+    compared = 0
+    for step, written in zip(lesson["steps"], source["steps"]):
+        view = step["view3d"]
+        if view is None or view["trace"]["pixel"] is None:
+            continue
+        if any(k in written for k in ("scene_changes", "try_value", "ray")) or view["trace"]["bundle"] > 1:
+            continue  # a changed scene: trace would need the same changes
+        trace = view["trace"]
+        dump = os.path.join(WORK, "web-rays-step.json")
+        run(["trace", "--scene", scene, "--algorithm", trace["algorithm"], "--pixel",
+             str(trace["pixel"][0]), str(trace["pixel"][1]), "--sample", str(trace["sample"]),
+             "--json", dump, "--out", os.path.join(WORK, "web-rays-step.png"),
+             "--image-size", "64x48"])
+        with open(dump) as f:
+            segments = json.load(f)["segments"]
+        rays = view["rays"]
+        where = "step %d" % (step["index"] + 1)
+        if len(rays) != len(segments):
+            fail("%s: %d rays exported, trace has %d" % (where, len(rays), len(segments)))
+        for ray, seg in zip(rays, segments):
+            if (ray["id"], ray["parent"], ray["kind"], ray["depth"], ray["ends"]) != \
+               (seg["id"], seg["parent"], seg["kind"], seg["depth"], seg["end_reason"]):
+                fail("%s: ray %d differs: %s against %s" % (where, ray["id"], ray, seg))
+            for a, b in zip(ray["origin"] + ray["end"], seg["origin"] + seg["end_point"]):
+                if abs(a - b) > 1e-6:
+                    fail("%s: ray %d's ends differ by %g" % (where, ray["id"], abs(a - b)))
+        hits = sum(1 for s in segments if s["hit"])
+        if len(view["hits"]) != hits:
+            fail("%s: %d hits exported, trace has %d" % (where, len(view["hits"]), hits))
+        if not view["objects"] or not any(e["kind"] == "camera" for e in view["extras"]):
+            fail("%s: no objects or no camera glyph exported" % where)
+        compared += 1
+    if compared < 5:
+        fail("only %d steps compared with raylab trace" % compared)
+    print("%d steps' trees equal raylab trace's" % compared)
+
+
+def hostile_lesson():
+    folder = os.path.join(WORK, "web-hostile-lessons")
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    with open(os.path.join(LESSONS, "03-ray-casting.json"), encoding="utf-8") as f:
+        lesson = json.load(f)
+    lesson["id"] = "99-\"hostile'\u2028"
+    lesson["title"] = {"en": "</script><script>alert(1)</script>", "zh": "<img src=x onerror=alert(2)>"}
+    lesson["steps"] = lesson["steps"][:2]
+    lesson["steps"][0]["title"] = {"en": "\"quoted\" & <b>bold</b> \u2029", "zh": "'单引号'"}
+    lesson["scene"] = os.path.join(LESSONS, lesson["scene"])
+    with open(os.path.join(folder, "99-hostile.json"), "w", encoding="utf-8") as f:
+        json.dump(lesson, f, ensure_ascii=False)
+    return folder
+
+
+def check_hostile():
+    out = os.path.join(WORK, "web-hostile")
+    export(out, "--dir", hostile_lesson())
+    pages = os.listdir(os.path.join(out, "lessons"))
+    scripts = [p for p in pages if p.endswith(".js")]
+    if len(scripts) != 1 or not re.fullmatch(r"[A-Za-z0-9_-]+\.js", scripts[0]):
+        fail("the lesson's file name is not made safe: %s" % pages)
+    for path in [os.path.join(out, "course.js"), os.path.join(out, "lessons", scripts[0])]:
+        text, data = load_call(path, "course" if path.endswith("course.js") else "lesson")
+        for bad in ("<", ">", "&", "\u2028", "\u2029"):
+            if bad in text:
+                fail("%s: %r written raw" % (path, bad))
+        if "</script><script>alert(1)</script>" not in json.dumps(data):
+            fail("%s: the title did not come back as the same text" % path)
+    html = open(os.path.join(out, "lessons", scripts[0][:-3] + ".html"), encoding="utf-8").read()
+    if "<script>alert" in html or "alert(1)</script>" in html:
+        fail("the lesson's page has the title's markup raw:\n" + html)
+    if "&lt;/script&gt;" not in html:
+        fail("the page's <title> is not the escaped title:\n" + html)
+    print("hostile lesson stays text")
+
+
+def check_survive():
+    out = os.path.join(WORK, "web-survive")
+    export(out, "--lang", "en", "03-ray-casting")
+    marker = os.path.join(out, "index.html")
+    before = open(marker, encoding="utf-8").read()
+    listing = sorted(os.listdir(os.path.join(out, "lessons")))
+    # A failing step (a site beyond --max-size), then a lesson that does not exist.
+    result = run(["web", "--out", out, "--max-size", "1", "--lang", "zh"] + bundle(), code=1)
+    if not re.search(r"raylab: error: .*(lesson|\.png|\.js).*larger than 1 MB", result.stderr):
+        fail("the message does not name what failed: " + result.stderr)
+    result = run(["web", "--out", out] + bundle() + ["no-such-lesson"], code=1)
+    if "no-such-lesson" not in result.stderr:
+        fail("the message does not name the missing lesson: " + result.stderr)
+    if open(marker, encoding="utf-8").read() != before or \
+       sorted(os.listdir(os.path.join(out, "lessons"))) != listing:
+        fail("the old site changed")
+    leftovers = [n for n in os.listdir(WORK) if n.startswith(".web-survive") or
+                 (n.startswith("web-survive") and n != "web-survive")]
+    if leftovers:
+        fail("half-written folders left: %s" % leftovers)
+    print("old site intact after two failed exports")
+
+
+def check_student():
+    out = os.path.join(WORK, "web-student")
+    export(out, "--student", "04-whitted", "08-four-side-by-side")
+    text = ""
+    for name in os.listdir(os.path.join(out, "lessons")):
+        if name.endswith(".js"):
+            text_one, lesson = load_call(os.path.join(out, "lessons", name), "lesson")
+            text += text_one
+            for step in lesson["steps"]:
+                q = step["question"]
+                if step["notes"] is not None or (q and (q["answer"] is not None or
+                   q["explanation"] is not None or q["tolerance"] is not None)):
+                    fail("%s step %d: a note or the key is in the student's site" %
+                         (name, step["index"] + 1))
+    source = json.load(open(os.path.join(LESSONS, "04-whitted.json"), encoding="utf-8"))
+    for step in source["steps"]:
+        for key in ("teacher_notes", "notes"):
+            note = step.get(key)
+            if note and json.dumps(note["en"])[1:-1][:40] in text:
+                fail("a teacher's note is in the student's site: " + note["en"][:40])
+    _, course = load_call(os.path.join(out, "course.js"), "course")
+    if course["student"] is not True:
+        fail("course.student is not true")
+    print("student site without notes and key")
+
+
+def check_bounded():
+    out = os.path.join(WORK, "web-bounded")
+    result = export(out, "--lang", "en", "03-ray-casting", "--zip")
+    size = sum(os.path.getsize(os.path.join(d, f)) for d, _, fs in os.walk(out) for f in fs)
+    if size > 30 * 1024 * 1024:
+        fail("one lesson's site is %d bytes" % size)
+    zipped = subprocess.run(["unzip", "-l", out + ".zip"], capture_output=True, text=True).stdout
+    for name in ("imsmanifest.xml", "index.html", "course.js", "lessons/03-ray-casting.js"):
+        if name not in zipped:
+            fail("%s is not in the zip" % name)
+    manifest = open(os.path.join(out, "imsmanifest.xml"), encoding="utf-8").read()
+    if 'href="index.html"' not in manifest or "imscp_v1p1" not in manifest:
+        fail("imsmanifest.xml is not an IMS CP 1.1 manifest")
+    export(out, "--lang", "en", "03-ray-casting", "--max-size", "1", code=1)
+    print("one lesson: %d bytes; zip with manifest; --max-size 1 refused" % size)
+
+
+def old_site(out):
+    """A stand-in earlier site (files with the names a site has)."""
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(os.path.join(out, "lessons"))
+    for name in ("index.html", "course.js"):
+        with open(os.path.join(out, name), "w") as f:
+            f.write("old " + name)
+    return lambda: all(open(os.path.join(out, n)).read() == "old " + n
+                       for n in ("index.html", "course.js")) and \
+        os.listdir(os.path.join(out, "lessons")) == []
+
+
+def raylab_below(root):
+    """The raylab process started by `root` (itself or a descendant), or None."""
+    parents = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                stat = open("/proc/%s/stat" % entry).read()
+                parents[int(entry)] = int(stat[stat.rindex(")") + 2:].split()[1])
+            except (OSError, ValueError):
+                pass
+    for pid in sorted(parents):
+        p = pid
+        while p > 1 and p != root:
+            p = parents.get(p, 0)
+        if p != root:
+            continue
+        try:
+            name = open("/proc/%d/cmdline" % pid).read().split("\0")[0]
+        except OSError:
+            continue
+        if os.path.basename(name) == "raylab":
+            return pid
+    return None
+
+
+def check_interrupt():
+    top = os.path.join(WORK, "web-interrupt")
+    shutil.rmtree(top, ignore_errors=True)
+    out = os.path.join(top, "site")
+    intact = old_site(out)
+    child = subprocess.Popen(DISPLAY + [RAYLAB, "web", "--out", out, "--max-spp", "1"] + bundle(),
+                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    for _ in range(1200):  # until the new folder holds a lesson (at most two minutes)
+        news = [n for n in os.listdir(top) if n != "site"]
+        if news and any(f.endswith(".js") for f in
+                        os.listdir(os.path.join(top, news[0], "lessons")) if
+                        os.path.isdir(os.path.join(top, news[0], "lessons"))):
+            break
+        time.sleep(0.1)
+    else:
+        child.kill()
+        fail("no lesson written into a new folder")
+    # The display wrapper (xvfb-run) passes no signal on: signal raylab itself.
+    target = raylab_below(child.pid)
+    if target is None:
+        child.kill()
+        fail("raylab's process not found")
+    os.kill(target, signal.SIGINT)
+    _, err = child.communicate(timeout=120)
+    if "raylab: interrupted: %s was not changed" % out not in err:
+        fail("no message on Ctrl-C: " + err)
+    if not intact():
+        fail("the old site changed")
+    if os.listdir(top) != ["site"]:
+        fail("left beside the site: %s" % os.listdir(top))
+    print("Ctrl-C: old site intact, nothing left")
+
+
+def check_fulldisk():
+    top = os.path.join(WORK, "web-fulldisk")
+    os.makedirs(top, exist_ok=True)
+    subprocess.run(["umount", top], capture_output=True)
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=1m", "tmpfs", top],
+                      capture_output=True).returncode != 0:
+        print("SKIP: cannot mount a 1 MB tmpfs (needs root)")
+        sys.exit(77)
+    try:
+        out = os.path.join(top, "site")
+        intact = old_site(out)
+        result = export(out, "--lang", "en", "04-whitted", code=1)
+        if not re.search(r"raylab: error: .*(No space left on device|cannot be written)",
+                         result.stderr):
+            fail("the message does not say the disk is full: " + result.stderr)
+        if not intact():
+            fail("the old site changed")
+        if os.listdir(top) != ["site"]:
+            fail("left beside the site: %s" % os.listdir(top))
+        print("full disk: old site intact: " + result.stderr.strip())
+    finally:
+        subprocess.run(["umount", top], capture_output=True)
+
+
+{"rays": check_rays, "interrupt": check_interrupt, "fulldisk": check_fulldisk, "hostile": check_hostile, "survive": check_survive,
+ "student": check_student, "bounded": check_bounded}[CHECK]()
