@@ -28,8 +28,14 @@ packages=(
   help2man desktop-file-utils appstream               # man page; desktop files' checks
   debootstrap librsvg2-bin                            # package test's fresh root; icon PNGs
   ffmpeg                                              # animate --video and its test (ffprobe)
+  chromium                                            # the web export's browser test (headless)
   zip unzip                                           # raylab web --zip (Moodle) and its test
 )
+# Node.js and npm build the web page's bundle (web/, esbuild + vtk.js); Debian's, unless a
+# node is already on PATH (then its own npm comes with it).
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -55,6 +61,14 @@ if ((${#missing[@]})); then
 fi
 
 cd "$here"
+# The web page's npm packages, exactly as web/package-lock.json pins them (no browser is
+# downloaded: the test drives Debian's chromium through puppeteer-core). Skipped when
+# node_modules was installed after the lock file last changed. --ignore-scripts: no package's
+# own install code runs (esbuild finds its binary in @esbuild/linux-x64 without it).
+if ! [[ web/node_modules/.package-lock.json -nt web/package-lock.json ]]; then
+  echo "raylab setup: npm ci --prefix web"
+  PUPPETEER_SKIP_DOWNLOAD=1 npm ci --prefix web --ignore-scripts --no-audit --no-fund
+fi
 cmake --preset "$preset" >/dev/null
 if (($#)); then
   cmake --build --preset "$preset" --target "$@"
