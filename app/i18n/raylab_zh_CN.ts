@@ -957,6 +957,14 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>(The exact oracle&apos;s check of the hit: press Exactness figures in the Ray inspector.)</source>
         <translation>（精确判定器对交点的检验：在“光线检查器”中按“精确性数据”按钮即可查看。）</translation>
     </message>
+    <message>
+        <source>weight: what this ray&apos;s light is multiplied by where it joins its parent.
+pdf: the probability density with which this direction was sampled (none: a fixed direction, such as a mirror&apos;s, a refraction&apos;s or a shadow ray&apos;s).
+throughput: the share of light this path passes on to the camera, the product of the weights from the camera to here.</source>
+        <translation>权重（weight）：这条光线的光汇入其父光线时要乘上的系数。
+概率密度（pdf）：抽样得到这个方向的概率密度（无：方向是确定的，例如镜面反射、折射或阴影光线）。
+路径吞吐量（throughput）：这条路径把光传回相机时保留的比例，即从相机到此处各段权重的乘积。</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::LessonPanel</name>
@@ -1017,22 +1025,6 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>本步骤需要一个尚未实现的功能（%1）：这里暂以场景视图代替。</translation>
     </message>
     <message>
-        <source>%1 (± %2)</source>
-        <translation>%1（± %2）</translation>
-    </message>
-    <message>
-        <source>Please write a number, such as 0.25.</source>
-        <translation>请填写一个数值，例如 0.25。</translation>
-    </message>
-    <message>
-        <source>✓ Right.</source>
-        <translation>✓ 回答正确。</translation>
-    </message>
-    <message>
-        <source>✗ Not quite: the answer is %1.</source>
-        <translation>✗ 不太对：正确答案是 %1。</translation>
-    </message>
-    <message>
         <source>Predict first: the view shows the answer once you have answered.</source>
         <translation>先预测：作答之后，视图才会显示答案。</translation>
     </message>
@@ -1065,16 +1057,8 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <translation>用这个数值追踪并渲染本步骤的场景</translation>
     </message>
     <message>
-        <source>The answer is %1.</source>
-        <translation>答案是 %1。</translation>
-    </message>
-    <message>
         <source>%1 (now %2; the task: %3)</source>
         <translation>%1（当前 %2；任务：%3）</translation>
-    </message>
-    <message>
-        <source>✗ Not yet: try again.</source>
-        <translation>✗ 还不对，再试一次。</translation>
     </message>
 </context>
 <context>
@@ -1679,6 +1663,22 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>Check your own function of an exercise against the reference</source>
         <translation>用参考实现检查你为练习编写的函数</translation>
     </message>
+    <message>
+        <source>&amp;Continue the last lesson</source>
+        <translation>继续上次的课程(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Continue: %1, step %2</source>
+        <translation>继续上次的课程(&amp;C)：%1，第 %2 步</translation>
+    </message>
+    <message>
+        <source>Reopen the lesson shown last, at the step it was left at</source>
+        <translation>重新打开上次讲到的课程，并回到停下的那一步</translation>
+    </message>
+    <message>
+        <source>drawn with %1 bands x %2 slices</source>
+        <translation>绘制时分为 %1 段（从极到极）× %2 段（绕轴一周）</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::PropertiesPanel</name>
@@ -1846,6 +1846,34 @@ Equal time: every algorithm renders for the same time (the fair race).</source>
         <source>The colour of every other checker cube, linear RGB in [0, 1]</source>
         <translation>每隔一个棋盘格立方体所取的颜色，线性 RGB，取值 [0, 1]</translation>
     </message>
+    <message>
+        <source>How finely the sphere is drawn in the 3D view: m bands from pole to pole, n slices around its axis (the rays still meet the exact sphere)</source>
+        <translation>三维视图中球面绘制的精细程度：m 为从一极到另一极的分段数，n 为绕轴一周的分段数（光线求交仍使用精确的球面）</translation>
+    </message>
+    <message>
+        <source>m (bands from pole to pole)</source>
+        <translation>m（从极到极的分段数）</translation>
+    </message>
+    <message>
+        <source>n (slices around the axis)</source>
+        <translation>n（绕轴一周的分段数）</translation>
+    </message>
+    <message>
+        <source>Blinn-Phong</source>
+        <translation>Blinn–Phong 光照模型</translation>
+    </message>
+    <message>
+        <source>rough metal</source>
+        <translation>粗糙导体</translation>
+    </message>
+    <message>
+        <source>rough glass</source>
+        <translation>粗糙电介质</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; in the scene file</source>
+        <translation>场景文件中写作“%1”</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::RayTreePanel</name>
@@ -1983,6 +2011,13 @@ Then click a pixel to see its ray tree.</source>
     <message>
         <source>capped samples: %1</source>
         <translation>达到光线上限的样本：%1</translation>
+    </message>
+</context>
+<context>
+    <name>raylab::app::SceneDocument</name>
+    <message>
+        <source>the unsaved scene</source>
+        <translation>未保存的场景</translation>
     </message>
 </context>
 <context>
