@@ -7,7 +7,7 @@
 //
 //   node TestWebLesson.mjs --lesson ID --baselines DIR --out DIR [--prefix NAME] [--chromium PATH]
 //       [--modules DIR]   (baselines: DIR/NAME_step_en.png, ...; NAME TestWebLesson by default)
-//       either --raylab EXE --lesson-file FILE   (the site `raylab web` exports)
+//       either --raylab EXE --lesson-file FILE [--with-display SCRIPT]  (`raylab web`'s site)
 //       or     --fixture DIR --bundle DIR        (a hand-made site + the built bundle)
 // Exit 0: passed, 1: failed, 77: skipped (no Chromium or no web/node_modules).
 import { spawnSync } from 'node:child_process';
@@ -40,7 +40,12 @@ mkdirSync(args.out, { recursive: true });
 const site = resolve(args.out, 'site');
 rmSync(site, { recursive: true, force: true });
 if (args.raylab) {
-  const run = spawnSync(args.raylab, ['web', '--out', site, args['lesson-file']], { encoding: 'utf8' });
+  // raylab draws each step's view with VTK, which needs an X display (with-display.sh).
+  const command = [args.raylab, 'web', '--out', site, args['lesson-file']];
+  if (args['with-display']) command.unshift(args['with-display']);
+  const started = performance.now();
+  const run = spawnSync(command[0], command.slice(1), { encoding: 'utf8' });
+  console.log(`measure: raylab web of ${args['lesson-file']} took ${((performance.now() - started) / 1000).toFixed(1)} s`);
   if (run.status !== 0) {
     console.log(`FAIL raylab web --out ${site} ${args['lesson-file']}: exit ${run.status}\n${run.stdout}${run.stderr}`);
     process.exit(1);
@@ -150,17 +155,24 @@ try {
   check(shallower.changed > 0.002, `depth slider at 0: only the camera ray is left (${(100 * shallower.changed).toFixed(2)}% of pixels change)`);
 
   await answerQuestions(page, text, check, phrase, lesson);
-  await screenshot(page, `${args.prefix}_step_en`, lesson.steps.find((step) => step.view3d && step.question));
+  const stepEn = lesson.steps.find((step) => step.view3d && step.question);
+  await screenshot(page, `${args.prefix}_step_en`, stepEn, null);
+
+  // A 3D step other than the first, shown from its view down (legend, depth, narration),
+  // in English (the README's picture) and, below, in Chinese.
+  const zhSteps = lesson.steps.filter((step) => step.view3d && !step.view3d.hidden && step.narration.length &&
+    step !== stepEn);
+  const zhStep = zhSteps.find((step) => step.layout === 'scene') ?? zhSteps[0] ?? lesson.steps[0];
+  await screenshot(page, `${args.prefix}_view_en`, zhStep, '.tree-box');
 
   // Chinese: the page's words and the lesson's text switch.
   await page.click('[data-lang="zh"]');
-  const zhStep = lesson.steps.find((step) => step.view3d?.hidden) ?? lesson.steps[0];
   await page.click(`nav.steps li:nth-child(${zhStep.index + 1}) button`);
   check(await text('#step-title') === zhStep.title.zh, 'Chinese: the step title is the Chinese one');
   check(await text('.step-of') === phrase('web.step_of', 'zh', { n: zhStep.index + 1, total: lesson.steps.length }),
     'Chinese: "第 n 步" from the phrases');
   check(await page.evaluate(() => document.documentElement.lang) === 'zh-CN', 'Chinese: <html lang="zh-CN">');
-  await screenshot(page, `${args.prefix}_predict_zh`, zhStep);
+  await screenshot(page, `${args.prefix}_view_zh`, zhStep, '.tree-box');
   await page.reload();
   await page.waitForSelector('#step-title');
   check(await text('#step-title') === zhStep.title.zh, 'after a reload: the same step, still in Chinese');
@@ -169,7 +181,7 @@ try {
   await Promise.all([page.waitForNavigation(), page.click('a.back')]);
   const total = lesson.steps.length;
   check(await text('.progress-text') === phrase('web.progress', 'zh', { done: total, total }), 'index: every step counted as seen');
-  await screenshot(page, `${args.prefix}_index_zh`, null);
+  await screenshot(page, `${args.prefix}_index_zh`, null, null);
   await page.click('button.reset');
   check(await text('.progress-text') === phrase('web.progress', 'zh', { done: 0, total }), 'index: reset forgets the progress');
   const leftover = await page.evaluate(() => document.body.innerText.match(/\bweb\.[a-z_]+/g));
@@ -187,10 +199,14 @@ if (failures.length) {
 }
 console.log('all checks passed');
 
-/// Takes the page's screenshot and compares it with tests/baselines/web/NAME.png.
-async function screenshot(page, name, step) {
+/// Takes the page's screenshot (of a step, scrolled to an element) and compares it with
+/// tests/baselines/web/NAME.png.
+async function screenshot(page, name, step, scrollTo) {
   if (step) await page.click(`nav.steps li:nth-child(${step.index + 1}) button`);
-  await page.evaluate(() => { document.activeElement?.blur(); window.scrollTo(0, 0); });
+  await page.evaluate((selector) => {
+    document.activeElement?.blur();
+    window.scrollTo(0, selector ? document.querySelector(selector).getBoundingClientRect().top + window.scrollY - 8 : 0);
+  }, scrollTo);
   const shot = await page.screenshot({ fullPage: false });
   writeFileSync(join(args.out, `${name}.png`), shot);
   const baseline = join(args.baselines, `${name}.png`);

@@ -154,10 +154,11 @@ export function createView(container, view3d) {
 
   for (const mesh of view3d.objects) renderer.addActor(meshActor(mesh));
   for (const mesh of view3d.extras) renderer.addActor(meshActor(mesh));
-  renderer.resetCamera();
-  const bounds = renderer.computeVisiblePropBounds();
-  const diagonal = Math.hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-  const layered = [...rayActors(view3d.rays), ...hitActors(view3d.hits, view3d.rays, 0.006 * diagonal)];
+  // Hit points about 1% of the view's height across, whether the step is a close-up or not.
+  const { position, focalPoint, viewAngle } = view3d.camera;
+  const distance = Math.hypot(...position.map((p, i) => p - focalPoint[i]));
+  const radius = 0.012 * distance * Math.tan((viewAngle * Math.PI) / 360);
+  const layered = [...rayActors(view3d.rays), ...hitActors(view3d.hits, view3d.rays, radius)];
   for (const { actor } of layered) renderer.addActor(actor);
 
   const camera = renderer.getActiveCamera();
