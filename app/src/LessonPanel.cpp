@@ -77,6 +77,14 @@ class ChoiceWords : public QLabel {
   QAbstractButton* m_button;
 };
 
+/// The end-of-lesson summary of `panel`: a button of it shows that step.
+LessonSummary* summaryFor(LessonPanel* panel) {
+  auto* summary = new LessonSummary;
+  summary->setProperty(kFontScale, 1.1);
+  QObject::connect(summary, &LessonSummary::stepRequested, panel, &LessonPanel::showStep);
+  return summary;
+}
+
 /// "0.25" for people: up to 6 significant digits.
 /// 15 significant digits: 98304000 as typed, not 9.8304e+07.
 QString number(double value) { return QString::number(value, 'g', 15); }
@@ -136,11 +144,7 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   m_notes->setStyleSheet(QStringLiteral("color: #555555"));
   layout->addWidget(m_notesButton);
   layout->addWidget(m_notes);
-
-  // Step 4b: at the last step, the lesson's summary with the steps to review.
-  m_summary = new LessonSummary;
-  m_summary->setProperty(kFontScale, 1.1);
-  layout->addWidget(m_summary);
+  layout->addWidget(m_summary = summaryFor(this));  // at the last step: answers, what to review
   layout->addStretch(1);
   auto* scroll = new QScrollArea;
   scroll->setWidget(page);
@@ -162,7 +166,6 @@ LessonPanel::LessonPanel(QWidget* parent) : QWidget(parent) {
   connect(m_back, &QPushButton::clicked, this, [this] { back(); });
   connect(m_next, &QPushButton::clicked, this, [this] { next(); });
   connect(m_notesButton, &QToolButton::toggled, m_notes, &QWidget::setVisible);
-  connect(m_summary, &LessonSummary::stepRequested, this, [this](int index) { showStep(index); });
   connect(m_languageBox, qOverload<int>(&QComboBox::activated), this,
           [this] { setLanguage(Language(m_languageBox->currentData().toInt())); });
   setLanguage(currentLanguage() == kChinese ? Language::Chinese : Language::English);
