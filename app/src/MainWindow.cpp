@@ -46,6 +46,8 @@
 #include <QStyle>
 #include <QTabWidget>
 
+#include <algorithm>
+
 namespace raylab::app {
 
 namespace {
@@ -57,15 +59,18 @@ std::unique_ptr<SceneDocument> newDocument(const Scene& scene) {
 }
 
 /// The window's first place: 80% of the screen's available area, centred (not a fixed
-/// size in a corner); the geometry of last time, restored from the settings, wins.
+/// size in a corner), but not under the 1400x860 its docks and 3D view need where the
+/// screen has that room; the geometry of last time, restored from the settings, wins.
 void placeOnScreen(QWidget& window) {
+  const QSize least(1400, 860);
   const QScreen* screen = QGuiApplication::primaryScreen();
   if (!screen) {
-    window.resize(1400, 860);
+    window.resize(least);
     return;
   }
   const QRect area = screen->availableGeometry();
-  const QSize size(area.width() * 4 / 5, area.height() * 4 / 5);
+  const QSize size(std::min(area.width(), std::max(area.width() * 4 / 5, least.width())),
+                   std::min(area.height(), std::max(area.height() * 4 / 5, least.height())));
   window.setGeometry(QStyle::alignedRect(Qt::LeftToRight, Qt::AlignCenter, size, area));
 }
 

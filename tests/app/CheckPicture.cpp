@@ -6,7 +6,7 @@
 //       their centres projected with the default view camera (as in TestSceneView).
 //   raylab_check_picture FILE.png --window
 //       FILE is a grab of the whole window with "red sphere" selected: at least 640x400,
-//       and red, blue, flesh and the yellow selection outline must each cover some pixels.
+//       and red, blue, flesh and the orchid selection outline must each cover some pixels.
 //
 // Prints what it measured; exit code 0 when every check passes, 1 otherwise. Needs no
 // display: projecting through the view camera does not render.
@@ -71,14 +71,16 @@ void checkWindow(const SrgbImage& image) {
   check(image.width >= 640 && image.height >= 400, "window " + std::to_string(image.width) + "x" +
                                                        std::to_string(image.height) +
                                                        " at least 640x400");
+  // (The red sphere, ringed by the outline, in a 3D view of about 360 px beside the docks of
+  // a 1280x860 window: about 0.2% of it.)
   const struct {
     const char* name;
     ColourClass colour;
     double minimum;
-  } expectations[] = {{"red (sphere)", isRed, 0.003},
+  } expectations[] = {{"red (sphere)", isRed, 0.0015},
                       {"blue (cube)", isBlue, 0.003},
                       {"flesh (light)", isFlesh, 0.0005},
-                      {"yellow (selection outline)", isYellow, 0.0002}};
+                      {"orchid (selection outline)", isOrchid, 0.0002}};
   for (const auto& e : expectations) {
     const double fraction = fractionOf(image, e.colour);
     check(fraction >= e.minimum, std::string(e.name) + " covers " + std::to_string(fraction) +

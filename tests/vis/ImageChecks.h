@@ -40,6 +40,10 @@ inline bool isFlesh(const Rgb8& c) {
 
 /// The selection outline's yellow (1.0, 0.85, 0.0): strong red and green, little blue.
 inline bool isYellow(const Rgb8& c) { return c[0] >= 180 && c[1] >= 150 && c[2] < 0.45 * c[1]; }
+/// The selection outline's pale orchid ({1, 0.7, 0.95} drawn unlit: about 255, 178, 242).
+inline bool isOrchid(const Rgb8& c) {
+  return c[0] >= 220 && c[1] >= 140 && c[1] <= 215 && c[2] >= 200 && c[2] >= c[1] + 20;
+}
 
 /// Fraction of the pixels in the (2 radius + 1)^2 square around image point `centre`
 /// (clipped to the image) that belong to `colourClass`.

@@ -29,6 +29,7 @@ using testing::fractionNear;
 using testing::fractionOf;
 using testing::isBlue;
 using testing::isFlesh;
+using testing::isOrchid;
 using testing::isRed;
 using testing::isYellow;
 
@@ -139,11 +140,6 @@ TEST(SceneView, 04_ProjectionAgreesWithVtkWorldToDisplay) {
     EXPECT_NEAR(p->x, display[0], 1e-6) << view.scene().objects[i].name;
     EXPECT_NEAR(p->y, kSize - display[1], 1e-6) << view.scene().objects[i].name;
   }
-}
-
-/// The selection outline's pale orchid ({1, 0.7, 0.95} drawn unlit: about 255, 178, 242).
-bool isOrchid(const Rgb8& c) {
-  return c[0] >= 220 && c[1] >= 140 && c[1] <= 215 && c[2] >= 200 && c[2] >= c[1] + 20;
 }
 
 TEST(SceneView, 05_SelectionDrawsAnOrchidOutline) {
