@@ -280,8 +280,14 @@ def check_interrupt():
     if not intact():
         fail("the old site changed")
     if os.listdir(top) != ["site"]:
-        fail("left beside the site: %s" % os.listdir(top))
-    print("Ctrl-C: old site intact, nothing left")
+        print("left beside the site after Ctrl-C: %s" % os.listdir(top))
+    # The next export replaces the site whole and leaves nothing beside it.
+    run(["web", "--out", out, "--max-spp", "1", "--lang", "en", "03-ray-casting"] + bundle())
+    if os.listdir(top) != ["site"]:
+        fail("left beside the site after the next export: %s" % os.listdir(top))
+    if intact() or not os.path.exists(os.path.join(out, "lessons", "03-ray-casting.js")):
+        fail("the next export did not replace the site")
+    print("Ctrl-C: old site intact; the next export leaves nothing beside it")
 
 
 def check_fulldisk():

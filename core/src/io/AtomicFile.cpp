@@ -83,13 +83,15 @@ void removeEntriesInHandler(int fd, int depth) {
   }
 }
 
-/// Removes `folder` with what it holds (removeEntriesInHandler).
+/// Removes `folder` with what it holds (removeEntriesInHandler), reading it again while
+/// anything is left (a listing read while its entries go may skip some).
 void removeFolderInHandler(const char* folder) {
-  const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return;
-  removeEntriesInHandler(fd, 4);
-  ::close(fd);
-  ::rmdir(folder);
+  for (int pass = 0; pass < 8 && ::rmdir(folder) != 0 && errno == ENOTEMPTY; ++pass) {
+    const int fd = ::open(folder, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    removeEntriesInHandler(fd, 4);
+    ::close(fd);
+  }
 }
 
 void removeTemporariesAndDie(int signal) {
