@@ -59,7 +59,19 @@ struct LessonOptions {
   bool check = false;
   bool student = false;  ///< --student: the handout without answers and teacher's notes.
   int maxSpp = 0;  ///< --max-spp N: most spp of image, comparison and plot steps (0: defaults).
+  std::optional<Fault> fault;  ///< --fault NAME: a planted bug in every step (bug hunt).
 };
+
+/// The lesson with --fault planted in every step's scene (a step's own "fault" gives way).
+Lesson withFault(Lesson lesson, const std::optional<Fault>& fault) {
+  if (!fault) return lesson;
+  for (LessonStep& step : lesson.steps) {
+    auto faulty = std::make_shared<Scene>(*step.scene);
+    faulty->render.fault = *fault;
+    step.scene = faulty;
+  }
+  return lesson;
+}
 
 /// An output folder that cannot be made or written in.
 class OutputError : public Exception {
@@ -336,7 +348,7 @@ bool handoutFile(const std::string& name) {
 int runRender(const LessonOptions& o) {
   namespace fs = std::filesystem;
   const std::string path = resolveLesson(o);
-  const Lesson lesson = LessonIO::load(path);
+  const Lesson lesson = withFault(LessonIO::load(path), o.fault);
   const Language language = *parseLanguage(o.lang);
   // The folder's problems first, then the display's (without one, nothing stays behind).
   // The handout is written into a new folder beside DIR and swapped in when whole: an
@@ -466,6 +478,7 @@ Subcommand addLessonCommand(CLI::App& cli) {
                        "128-spp reference, plots up to 16 against 256)")
           ->check(CLI::Range(1, 1 << 16));
   command->add_option("--dir", options->dir, "Folder of the lesson files")->capture_default_str();
+  addFaultOption(command, options->fault);
   command->add_option("--lang", options->lang, "Language of titles and the handout: en or zh")
       ->check(CLI::IsMember({"en", "zh"}))
       ->capture_default_str();

@@ -109,6 +109,7 @@ Subcommand addRenderCommand(CLI::App& cli) {
       "Needs no display: the image is ray traced on the CPU. Progress goes to stderr.");
   options->common.add(command, "Image to write: .png, .ppm or .pfm (linear)",
                       "Image size WIDTHxHEIGHT (default: the scene's)");
+  addFaultOption(command, options->common.fault);
   command->get_option("--out")->check(CLI::Validator(
       [](const std::string& path) {
         return vis::isImageFile(path) ? std::string()

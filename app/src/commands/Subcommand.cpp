@@ -6,6 +6,7 @@
 #include "raylab/core/Exception.h"
 #include "raylab/core/FilePaths.h"
 #include "raylab/core/Limits.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/SceneEdit.h"
 #include "raylab/core/Text.h"
 #include "raylab/vis/Display.h"
@@ -74,6 +75,34 @@ namespace {
 constexpr int kMinSize = 16;
 constexpr int kMaxSize = limits::kMaxImageSide;
 }  // namespace
+
+CLI::Option* addFaultOption(CLI::App* command, std::optional<Fault>& fault) {
+  std::vector<std::string> words{"list"};
+  std::string names;
+  for (int i = 1; i < kFaultCount; ++i) {
+    words.push_back(toString(Fault(i)));
+    names += (i > 1 ? ", " : "") + words.back();
+  }
+  return command
+      ->add_option_function<std::string>(
+          "--fault",
+          [&fault](const std::string& text) {
+            if (text == "list") {
+              for (int i = 1; i < kFaultCount; ++i)
+                std::cout << toString(Fault(i)) << "\n  "
+                          << phrase("fault." + std::string(toString(Fault(i))), Language::English)
+                          << "\n  "
+                          << phrase("fault." + std::string(toString(Fault(i))), Language::Chinese)
+                          << "\n";
+              throw CLI::Success();
+            }
+            fault = parseFault(text);
+          },
+          "Plant a typical student bug in the engine, for a bug hunt: " + names +
+              " ('--fault list' says what each does)")
+      ->type_name("NAME")
+      ->check(CLI::IsMember(words));
+}
 
 std::optional<std::pair<int, int>> parseSize(const std::string& text) {
   const std::size_t x = text.find_first_of("xX");
@@ -183,6 +212,7 @@ RenderSettings CommonOptions::settings(const Scene& loaded) const {
   RenderSettings result = loaded.render;
   if (algorithm) result.algorithm = *algorithm;
   if (seed) result.seed = *seed;
+  if (fault) result.fault = *fault;
   return result;
 }
 

@@ -58,6 +58,8 @@ struct CommonOptions {
   /// the loader (PLACE a JSON pointer, /camera/aperture, or a key of the render block,
   /// max_depth; VALUE JSON, a bare word read as a string).
   std::vector<std::string> sets;
+  /// --fault NAME (addFault): a typical student bug planted in the engine (bug hunt).
+  std::optional<Fault> fault;
 
   /// Adds the options to `command`. `outHelp` describes --out (required when `outRequired`);
   /// `sizeHelp` describes --size. With `withAlgorithm` false there is no --algorithm.
@@ -82,6 +84,12 @@ struct CommonOptions {
   CLI::Option* m_sizeOption = nullptr;
   void finish();  ///< Fills the optionals from the parsed text (CLI11 final callback).
 };
+
+/// Adds `--fault NAME` to `command` (trace, render, lesson; never compare, whose reference
+/// must be right): a typical student bug planted in the engine for a bug hunt, stored in
+/// `fault` (which must outlive the parse). `--fault list` prints the faults, each with what
+/// it does in English and Chinese, and stops (exit 0).
+CLI::Option* addFaultOption(CLI::App* command, std::optional<Fault>& fault);
 
 /// Parses "WIDTHxHEIGHT" (e.g. "300x300", each 16..8192); nothing when malformed.
 std::optional<std::pair<int, int>> parseSize(const std::string& text);

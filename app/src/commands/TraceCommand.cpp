@@ -283,6 +283,7 @@ void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
                          const std::string& defaultSize, bool pixelRequired) {
   m_defaultSize = parseSize(defaultSize).value_or(m_defaultSize);
   common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
+  addFaultOption(command, common.fault);
   CLI::Option* pixelOption = command->add_option(
       "--pixel", pixel, "Pixel X Y (or X,Y) of the scene camera's image to trace (y down)");
   // Each a whole number from 0: "-1 -1" was read as no pixel given (issue 38).
