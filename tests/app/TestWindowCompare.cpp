@@ -229,8 +229,11 @@ TEST_F(WindowCompareTest, 05_PicturesComeFirstMarkedProvisional) {
       if (!shown || shown->algorithms.size() != 4 || shown->reference.samplesPerPixel >= target)
         continue;
       ++early;
-      if (earlyText.empty() && panel.view())
+      if (earlyText.empty() && panel.view()) {
         for (const std::string& line : panel.view()->panelText(0)) earlyText += line + "\n";
+        panel.window()->grab().save(QString::fromLatin1(RAYLAB_TEMP_DIR) +
+                                    QStringLiteral("/TestWindowCompare_provisional.png"));
+      }
     }
     return early;
   };

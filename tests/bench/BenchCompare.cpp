@@ -46,18 +46,19 @@ struct CompareTimes {
   double first = -1.0, four = -1.0, done = -1.0;
 };
 
-/// One comparison in `panel`, timed from compare() on the UI thread (polled every few ms,
-/// as the event loop would run between inputs).
+/// One comparison in `panel`, timed from compare() on the UI thread to the passes it draws
+/// (passShown: the comparison shown before is not counted) and to its end.
 CompareTimes timeComparison(ComparePanel& panel) {
   CompareTimes times;
   const Clock::time_point start = Clock::now();
-  panel.compare();
-  while (panel.running()) {
-    QApplication::processEvents(QEventLoop::AllEvents, 5);
+  const auto drawn = QObject::connect(&panel, &ComparePanel::passShown, [&] {
     const ComparisonResult* shown = panel.result();
-    if (shown && times.first < 0.0 && !shown->algorithms.empty()) times.first = msSince(start);
-    if (shown && times.four < 0.0 && shown->algorithms.size() == 4) times.four = msSince(start);
-  }
+    if (times.first < 0.0) times.first = msSince(start);
+    if (times.four < 0.0 && shown && shown->algorithms.size() == 4) times.four = msSince(start);
+  });
+  panel.compare();
+  while (panel.running()) QApplication::processEvents(QEventLoop::AllEvents, 5);
+  QObject::disconnect(drawn);
   times.done = msSince(start);
   if (times.first < 0.0) times.first = times.done;
   if (times.four < 0.0) times.four = times.done;
