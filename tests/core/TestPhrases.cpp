@@ -341,7 +341,8 @@ TEST(InspectorWords, 02_TheSummaryInBothLanguages) {
   r.segment.hit = false;
   r.segment.endReason = EndReason::Escaped;
   EXPECT_NE(inspectionSummary(r, 1.0, Language::Chinese)
-                .find("\n去向：没有打中任何物体，离开了场景\n为何终止：逃逸出场景\n"),
+                .find("\n去向：没有打中任何物体，离开了场景\n携带：这个像素采样所得光能的 "
+                      "25.0%\n为何终止：逃逸出场景\n"),
             std::string::npos);
 }
 
