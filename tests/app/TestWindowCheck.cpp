@@ -3,8 +3,8 @@
 // the build's Python module (the raylab_python target).
 #include "WindowTest.h"
 
-#include "Language.h"
 #include "window/CheckDialog.h"
+#include "words/Language.h"
 
 #include "raylab/core/StudentHooks.h"
 #include "raylab/vis/RayTreeStyle.h"

@@ -6,8 +6,8 @@
 
 #include "ComparePanel.h"
 #include "ImageView.h"
-#include "Language.h"
 #include "RenderPanel.h"
+#include "words/Language.h"
 
 #include "raylab/core/Comparison.h"
 #include "raylab/core/RayTreeJson.h"

@@ -6,9 +6,9 @@
 #include "WindowTest.h"
 
 #include "ComparePanel.h"
-#include "Language.h"
 #include "LessonPanel.h"
 #include "RenderPanel.h"
+#include "words/Language.h"
 
 #include "raylab/core/Lesson.h"
 #include "raylab/vis/TreeViewState.h"

@@ -1,7 +1,7 @@
 #include "commands/LessonCommand.h"
 
-#include "LessonPictures.h"
 #include "commands/LessonHandout.h"
+#include "commands/LessonPictures.h"
 
 #include "commands/CompareCommand.h"
 #include "commands/ExitCodes.h"

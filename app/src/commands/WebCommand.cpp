@@ -1,11 +1,11 @@
 // `raylab web`: every lesson as a static, self-contained site (issue 34; doc/web-data.md),
 // written beside DIR and swapped in whole.
-#include "WebCommand.h"
+#include "commands/WebCommand.h"
 
-#include "ExitCodes.h"
-#include "InstalledData.h"
-#include "WebLesson.h"
-#include "WebSite.h"
+#include "commands/ExitCodes.h"
+#include "commands/InstalledData.h"
+#include "commands/WebLesson.h"
+#include "commands/WebSite.h"
 
 #include "raylab/core/AtomicFolder.h"
 #include "raylab/core/Lesson.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "Subcommand.h"
+#include "commands/Subcommand.h"
 
 namespace CLI {
 class App;

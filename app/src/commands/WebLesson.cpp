@@ -2,7 +2,7 @@
 // (stageStep, lessonStepPicture), its 3D view read back from the view (vis::exportView).
 #include "WebLesson.h"
 
-#include "LessonPictures.h"
+#include "commands/LessonPictures.h"
 
 #include "raylab/core/Phrases.h"
 #include "raylab/core/PixelTrace.h"

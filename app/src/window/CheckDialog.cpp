@@ -3,7 +3,7 @@
 #include "window/CheckDialog.h"
 
 #include "InteractorStyle.h"
-#include "Language.h"
+#include "words/Language.h"
 
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/SceneIO.h"

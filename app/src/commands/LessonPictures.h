@@ -1,6 +1,6 @@
 #pragma once
 
-#include "LessonHandout.h"
+#include "commands/LessonHandout.h"
 
 #include "raylab/core/Image.h"
 #include "raylab/core/Lesson.h"
