@@ -102,6 +102,17 @@ def check_rays():
         compared += 1
     if compared < 5:
         fail("only %d steps compared with raylab trace" % compared)
+    # A question's hint (said with "try again", issue 33.6) reaches the page.
+    hinted = 0
+    for step, written in zip(lesson["steps"], source["steps"]):
+        hint = written.get("question", {}).get("hint")
+        if hint:
+            got = step["question"]["hint"]
+            if not got or got.get("en") != hint["en"]:
+                fail("step %d: the question's hint is not exported (%r)" % (step["index"] + 1, got))
+            hinted += 1
+    if hinted == 0:
+        fail("lesson 4 has no question with a hint to check")
     print("%d steps' trees equal raylab trace's" % compared)
 
 

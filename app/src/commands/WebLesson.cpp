@@ -217,7 +217,7 @@ json questionJson(const LessonQuestion& q, const WebOptions& o) {
           {"choices", choices},
           {"answer", o.student ? json(nullptr) : answer},
           {"tolerance", o.student || choice ? json(nullptr) : json(q.tolerance)},
-          {"hint", nullptr},
+          {"hint", q.hint.empty() ? json(nullptr) : localJson(q.hint, o)},
           {"explanation", o.student ? json(nullptr) : localJson(q.explanation, o)}};
 }
 

@@ -1,6 +1,7 @@
 #include "raylab/core/Comparison.h"
 
 #include "raylab/core/Limits.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/ReferenceCache.h"
 
 #include <nlohmann/json.hpp>
@@ -452,17 +453,10 @@ std::string comparisonJson(const ComparisonResult& result) {
     out["mode"] = "equal-samples";
     out["samplesPerPixel"] = result.compare.samplesPerPixel;
   }
-  out["error"] = {
-      {"metric",
-       "rmse: root-mean-square difference of the displayed pictures (radiance clamped to [0, 1], "
-       "sRGB curve; 0 = identical, 1 = black against white) over all pixels and channels; "
-       "rmseLinear: the same on linear radiance (unbounded, dominated by bright lights)"},
-      {"against",
-       "the path-traced reference: how far each image is from the full light transport. Ray "
-       "casting, Whitted and distributed tracing converge to different images (no diffuse "
-       "interreflection; ray casting and Whitted also see area lights as points), so their "
-       "error levels off above zero however many samples they take"},
-  };
+  // What the error figures measure: the phrase table's words (core writes no sentence of
+  // its own), in English, the one language of the JSON files scripts read.
+  out["error"] = {{"metric", phrase("compare.json.metric", Language::English)},
+                  {"against", phrase("compare.json.against", Language::English)}};
   ojson reference;
   reference["algorithm"] = "path";
   reference["source"] = result.reference.file.empty() ? "rendered" : "file";
