@@ -100,13 +100,15 @@ void checkSame(const std::string& a, const std::string& b) {
 }
 
 /// `captioned` is `plain` with a caption along its bottom: the same size, the same pixels
-/// above the bottom fifth, and over a hundred pixels changed within it (the words).
+/// above the bottom third, and over a hundred pixels changed within it (the words). A caption
+/// too long for one line wraps onto more lines at its full size (issue 33 item 9: it used to
+/// shrink), so at 160 x 120 two lines reach above the bottom fifth.
 void checkCaptioned(const std::string& captioned, const std::string& plain) {
   const SrgbImage x = vis::readPng(captioned), y = vis::readPng(plain);
   check(x.width == y.width && x.height == y.height,
         "same size " + x.toString() + " " + y.toString());
   if (x.width != y.width || x.height != y.height) return;
-  const int band = x.height - x.height / 5;
+  const int band = x.height - x.height / 3;
   std::size_t above = 0, within = 0;
   for (int j = 0; j < x.height; ++j)
     for (int i = 0; i < x.width; ++i)

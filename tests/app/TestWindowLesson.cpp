@@ -59,7 +59,11 @@ TEST_F(WindowLessonTest, 01_TheLessonsMenuListsTheNineLessons) {
     if (a->text().remove(QLatin1Char('&')) == QStringLiteral("Lessons")) lessons = a->menu();
   ASSERT_NE(lessons, nullptr);
   QStringList titles;
-  for (QAction* a : lessons->actions()) titles << a->text();
+  // Lessons > Continue (issue 33.5) and its separator come before the lessons.
+  for (QAction* a : lessons->actions())
+    if (!a->isSeparator() && a->objectName() != QStringLiteral("continueLesson"))
+      titles << a->text();
+  ASSERT_FALSE(titles.isEmpty());
   const Lesson first = LessonIO::load(files.front().toStdString());
   EXPECT_TRUE(titles.front().contains(QString::fromStdString(first.title.en)))
       << titles.front().toStdString();

@@ -8,8 +8,8 @@
 #include "SceneDocument.h"
 #include "commands/ExitCodes.h"
 #include "commands/SceneSource.h"
-#include "commands/TraceCommand.h"
 #include "commands/Subcommand.h"
+#include "commands/TraceCommand.h"
 #include "window/LanguageSwitch.h"
 #include "words/Language.h"
 
