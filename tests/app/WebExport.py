@@ -3,7 +3,8 @@
 
   WebExport.py CHECK RAYLAB_EXE SOURCE_DIR WORK_DIR [WITH_DISPLAY]
 
-CHECK is one of: rays (every 3D step's rays equal `raylab trace --json`'s tree: count,
+CHECK is one of: course (every step of every lesson exported, in both languages; the
+trees as in rays), rays (lesson 4's 3D steps' rays equal `raylab trace --json`'s tree: count,
 kinds, end points to 1e-6), hostile (a lesson's title `</script><script>...` and names with
 quotes stay text), survive (an export that fails leaves the old site intact, names what
 failed, exits 1), student (--student: no notes, no answer key), bounded (--max-size refuses
@@ -60,10 +61,9 @@ def export(out, *args, code=0):
     return run(["web", "--out", out, "--max-spp", "1"] + bundle() + list(args), code)
 
 
-def check_rays():
-    out = os.path.join(WORK, "web-rays")
-    lesson_id = "04-whitted"
-    export(out, "--lang", "en", lesson_id)
+def compare_rays(out, lesson_id):
+    """The rays of `lesson_id`'s exported 3D steps against `raylab trace --json`: the number
+    of steps compared (steps that change the scene, choose a ray or draw a bundle aside)."""
     _, lesson = load_call(os.path.join(out, "lessons", lesson_id + ".js"), "lesson")
     with open(os.path.join(LESSONS, lesson_id + ".json"), encoding="utf-8") as f:
         source = json.load(f)
@@ -84,7 +84,7 @@ def check_rays():
         with open(dump) as f:
             segments = json.load(f)["segments"]
         rays = view["rays"]
-        where = "step %d" % (step["index"] + 1)
+        where = "%s step %d" % (lesson_id, step["index"] + 1)
         if len(rays) != len(segments):
             fail("%s: %d rays exported, trace has %d" % (where, len(rays), len(segments)))
         for ray, seg in zip(rays, segments):
@@ -100,6 +100,17 @@ def check_rays():
         if not view["objects"] or not any(e["kind"] == "camera" for e in view["extras"]):
             fail("%s: no objects or no camera glyph exported" % where)
         compared += 1
+    if len(lesson["steps"]) != len(source["steps"]):
+        fail("%s: %d steps exported, the lesson has %d" %
+             (lesson_id, len(lesson["steps"]), len(source["steps"])))
+    return compared, lesson, source
+
+
+def check_rays():
+    out = os.path.join(WORK, "web-rays")
+    lesson_id = "04-whitted"
+    export(out, "--lang", "en", lesson_id)
+    compared, lesson, source = compare_rays(out, lesson_id)
     if compared < 5:
         fail("only %d steps compared with raylab trace" % compared)
     # A question's hint (said with "try again", issue 33.6) reaches the page.
@@ -131,6 +142,27 @@ def hostile_lesson():
     with open(os.path.join(folder, "99-hostile.json"), "w", encoding="utf-8") as f:
         json.dump(lesson, f, ensure_ascii=False)
     return folder
+
+
+def check_course():
+    """Every step of every shipped lesson is in the site, in both languages, and every 3D
+    step's tree (but those that change the scene) equals `raylab trace`'s."""
+    out = os.path.join(WORK, "web-course")
+    export(out)
+    _, course = load_call(os.path.join(out, "course.js"), "course")
+    shipped = sorted(f[:-5] for f in os.listdir(LESSONS) if re.match(r"[0-9]{2}-.*\.json$", f))
+    listed = [entry["id"] for entry in course["lessons"]]
+    if listed != shipped:
+        fail("the course lists %s, the lessons folder has %s" % (listed, shipped))
+    total = 0
+    for lesson_id in shipped:
+        compared, lesson, _ = compare_rays(out, lesson_id)
+        for step in lesson["steps"]:
+            if not step["title"].get("en") or not step["title"].get("zh"):
+                fail("%s step %d: a title is missing in one language" %
+                     (lesson_id, step["index"] + 1))
+        total += compared
+    print("%d lessons, %d 3D steps' trees equal raylab trace's" % (len(shipped), total))
 
 
 def check_hostile():
@@ -326,5 +358,5 @@ def check_fulldisk():
         subprocess.run(["umount", top], capture_output=True)
 
 
-{"rays": check_rays, "interrupt": check_interrupt, "fulldisk": check_fulldisk, "hostile": check_hostile, "survive": check_survive,
+{"rays": check_rays, "course": check_course, "interrupt": check_interrupt, "fulldisk": check_fulldisk, "hostile": check_hostile, "survive": check_survive,
  "student": check_student, "bounded": check_bounded}[CHECK]()
