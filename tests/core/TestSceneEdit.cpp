@@ -84,6 +84,12 @@ TEST(SceneEdit, 02_InvalidValuesAreRefusedWithTheLoadersMessage) {
               edit::setValue(scene, "/materials/99/ior", "1.5", kOrigin);
             }).find("no such place"),
             std::string::npos);
+  // Found by fuzzing `--set` (FuzzSet): an empty name where an array's index goes made
+  // the JSON library throw past the refusal, and the command line abort.
+  EXPECT_NE(refusal([&] {
+              edit::setValue(scene, "/materials///5/r", "0e20", kOrigin);
+            }).find("no such place"),
+            std::string::npos);
   EXPECT_NE(refusal([&] {
               edit::setValue(scene, "/camera/vertical_fov", "wide", kOrigin);
             }).find("not a JSON value"),

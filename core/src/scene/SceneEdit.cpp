@@ -166,10 +166,17 @@ Scene setValue(const Scene& scene, const std::string& pointer, const std::string
   }
   // The value's parent must exist. In an object the key itself may be new (an optional
   // key); in an array only an element that is there can be replaced.
-  if (where.empty() || !doc.contains(where.parent_pointer()))
-    refuse(origin, pointer, "the scene file has no such place");
-  const json& parent = doc[where.parent_pointer()];
-  const bool replaceable = parent.is_object() || (parent.is_array() && doc.contains(where));
+  bool replaceable = false;
+  try {
+    if (!where.empty() && doc.contains(where.parent_pointer())) {
+      const json& parent = doc[where.parent_pointer()];
+      replaceable = parent.is_object() || (parent.is_array() && doc.contains(where));
+    }
+  } catch (const json::exception&) {
+    // nlohmann 3.11's contains() throws for an empty name in an array's place
+    // ("/materials//5", found by fuzzing `--set`) instead of answering false.
+    replaceable = false;
+  }
   if (!replaceable) refuse(origin, pointer, "the scene file has no such place");
   doc[where] = parsed;
   return readBack(doc, origin);
