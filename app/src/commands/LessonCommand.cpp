@@ -62,17 +62,6 @@ struct LessonOptions {
   std::optional<Fault> fault;  ///< --fault NAME: a planted bug in every step (bug hunt).
 };
 
-/// The lesson with --fault planted in every step's scene (a step's own "fault" gives way).
-Lesson withFault(Lesson lesson, const std::optional<Fault>& fault) {
-  if (!fault) return lesson;
-  for (LessonStep& step : lesson.steps) {
-    auto faulty = std::make_shared<Scene>(*step.scene);
-    faulty->render.fault = *fault;
-    step.scene = faulty;
-  }
-  return lesson;
-}
-
 /// An output folder that cannot be made or written in.
 class OutputError : public Exception {
  public:
@@ -388,24 +377,42 @@ int runRender(const LessonOptions& o) {
 
 }  // namespace
 
+Lesson withFault(Lesson lesson, const std::optional<Fault>& fault) {
+  if (!fault) return lesson;
+  for (LessonStep& step : lesson.steps) {
+    auto faulty = std::make_shared<Scene>(*step.scene);
+    faulty->render.fault = *fault;
+    step.scene = faulty;
+  }
+  return lesson;
+}
+
+StagedTree stageTree(const LessonStep& step, Language language) {
+  StagedTree result;
+  result.state = vis::stepViewState(step, false, language);
+  if (result.state.traced) {
+    // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
+    // together.
+    result.tree = std::make_shared<const RayTree>(
+        step.bundle > 1 ? traceBundle(*step.scene, step.settings(), *step.pixelX, *step.pixelY,
+                                      step.sample, step.bundle)
+                              .combined
+                        : step.trace().tree);
+  }
+  return result;
+}
+
 StagedStep stageStep(const LessonStep& step, double aspect, Language language) {
   const Scene& scene = *step.scene;
   // The names the reader sees (Chinese display names in a zh handout), for words only.
   const Scene shown = sceneAsShown(scene, language == Language::Chinese);
   StagedStep result;
-  result.state = vis::stepViewState(step, false, language);
+  StagedTree traced = stageTree(step, language);
+  result.state = std::move(traced.state);
+  result.tree = std::move(traced.tree);
   const vis::TreeViewState& state = result.state;
   result.view = std::make_unique<vis::SceneView>(scene);
   vis::SceneView& view = *result.view;
-  if (state.traced) {
-    // One sample's tree (or the chosen ray's), or a bundle of the pixel's samples drawn
-    // together.
-    result.tree = std::make_shared<const RayTree>(
-        step.bundle > 1 ? traceBundle(scene, step.settings(), *step.pixelX, *step.pixelY,
-                                      step.sample, step.bundle)
-                              .combined
-                        : step.trace().tree);
-  }
   const std::shared_ptr<const RayTree>& tree = result.tree;
   view.show(state, tree, aspect);
   PictureWords& words = result.words;

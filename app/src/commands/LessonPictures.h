@@ -29,6 +29,22 @@ struct StagedStep {
   PictureWords words;
 };
 
+/// The lesson with --fault planted in every step's scene (a step's own "fault" gives way):
+/// `raylab lesson --fault` and `raylab trace --lesson --fault`.
+Lesson withFault(Lesson lesson, const std::optional<Fault>& fault);
+
+/// What the lesson stager traces for `step`: the state (vis::stepViewState, not waiting for
+/// a prediction) and the step's tree (one sample's, the chosen ray's, or a bundle's samples
+/// combined; null when the step traces none). stageStep draws these; `raylab trace --lesson`
+/// dumps them, so the window, the handout, the web export and trace show the same rays.
+struct StagedTree {
+  vis::TreeViewState state;
+  std::shared_ptr<const RayTree> tree;
+};
+
+/// Traces `step` as the lesson stager stages it, with the words in `language`.
+StagedTree stageTree(const LessonStep& step, Language language);
+
 /// Stages `step` for a picture of aspect `aspect` (width / height) in `language`.
 StagedStep stageStep(const LessonStep& step, double aspect, Language language);
 

@@ -2,6 +2,7 @@
 
 #include "commands/ExitCodes.h"
 #include "commands/SceneSource.h"
+#include "commands/TraceLesson.h"
 
 #include "raylab/core/AtomicFile.h"
 #include "raylab/core/FilePaths.h"
@@ -43,13 +44,14 @@ std::optional<std::pair<int, int>> gridSize(const std::string& text) {
 
 struct TraceOptions {
   RayTreeOptions tree;
-  std::string json;         ///< --json; default: --out with .json.
-  int frame = -1;           ///< --frame: draw this frame of the animation; -1 the whole tree.
-  std::string grid;         ///< --grid NxM: the Simulate grid instead of --pixel.
-  int bundle = 1;           ///< --bundle N: samples sample .. sample + N - 1 drawn together.
-  bool allHits = false;     ///< --all-hits: mark every surface the camera ray crosses.
-  std::vector<double> ray;  ///< --ray OX,OY,OZ,DX,DY,DZ: traced in place of the camera ray.
-  int inspect = -1;         ///< --inspect ID: print the inspector's text of that ray.
+  std::string json;           ///< --json; default: --out with .json.
+  int frame = -1;             ///< --frame: draw this frame of the animation; -1 the whole tree.
+  std::string grid;           ///< --grid NxM: the Simulate grid instead of --pixel.
+  int bundle = 1;             ///< --bundle N: samples sample .. sample + N - 1 drawn together.
+  bool allHits = false;       ///< --all-hits: mark every surface the camera ray crosses.
+  std::vector<double> ray;    ///< --ray OX,OY,OZ,DX,DY,DZ: traced in place of the camera ray.
+  int inspect = -1;           ///< --inspect ID: print the inspector's text of that ray.
+  LessonTraceOptions lesson;  ///< --lesson FILE --step N: a lesson step's own tree.
 };
 
 /// --ray's six numbers as a ray, or why they are not one.
@@ -280,9 +282,10 @@ int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
 }  // namespace
 
 void RayTreeOptions::add(CLI::App* command, const std::string& outHelp,
-                         const std::string& defaultSize, bool pixelRequired) {
+                         const std::string& defaultSize, bool pixelRequired, bool outRequired) {
   m_defaultSize = parseSize(defaultSize).value_or(m_defaultSize);
-  common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")");
+  common.add(command, outHelp, "Picture size WIDTHxHEIGHT (default: " + defaultSize + ")",
+             outRequired);
   addFaultOption(command, common.fault);
   CLI::Option* pixelOption = command->add_option(
       "--pixel", pixel, "Pixel X Y (or X,Y) of the scene camera's image to trace (y down)");
@@ -452,7 +455,7 @@ Subcommand addTraceCommand(CLI::App& cli) {
       "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable output),\n"
       "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
       "Rendering needs an X server, also headless: run under xvfb-run -a.");
-  options->tree.add(command, "PNG file of the 3D view to write", "1024x768", false);
+  options->tree.add(command, "PNG file of the 3D view to write", "1024x768", false, false);
   command->get_option("--out")->check(endsIn(".png"));
   command
       ->add_option("--bundle", options->bundle,
@@ -492,7 +495,13 @@ Subcommand addTraceCommand(CLI::App& cli) {
                    "Draw the tree as in this frame of `raylab animate` (default: all of it)")
       ->check(CLI::Range(0, 1 << 30))
       ->group("Animation");
-  return {command, [options](const std::string& topLevelScene) {
+  options->lesson.add(command);
+  return {command, [options, command](const std::string& topLevelScene) {
+            if (!options->lesson.lesson.empty())
+              return runLessonTrace(options->lesson, options->tree, options->json, *command,
+                                    topLevelScene);
+            if (options->tree.common.out.empty())
+              return usageError("--out is required (or --lesson FILE --step N with --json)");
             return runTrace(*options, topLevelScene);
           }};
 }

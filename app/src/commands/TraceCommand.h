@@ -45,8 +45,9 @@ struct RayTreeOptions {
 
   /// Registers the options on `command`; `defaultSize` is the picture size without --size.
   /// `pixelRequired` false lets the command trace something else instead (trace --grid).
+  /// `outRequired` false: the command checks --out itself (trace --lesson may write JSON only).
   void add(CLI::App* command, const std::string& outHelp, const std::string& defaultSize,
-           bool pixelRequired = true);
+           bool pixelRequired = true, bool outRequired = true);
   /// The scene with --image-size applied (not --size: that is the picture).
   Scene loadScene(const std::string& topLevelScene) const;
   /// Checks --pixel against the scene camera's image and --kinds; the message on failure.
