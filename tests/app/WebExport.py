@@ -3,13 +3,15 @@
 
   WebExport.py CHECK RAYLAB_EXE SOURCE_DIR WORK_DIR [WITH_DISPLAY]
 
-CHECK is one of: course (every step of every lesson exported, in both languages; the
-trees as in rays), rays (lesson 4's 3D steps' rays equal `raylab trace --json`'s tree: count,
-kinds, end points to 1e-6), hostile (a lesson's title `</script><script>...` and names with
-quotes stay text), survive (an export that fails leaves the old site intact, names what
-failed, exits 1), student (--student: no notes, no answer key), bounded (--max-size refuses
-a site beyond it), interrupt (Ctrl-C leaves the old site), fulldisk (a full tmpfs leaves the
-old site; skipped, exit 77, where no tmpfs can be mounted)."""
+CHECK is one of: course (every step of every lesson exported, in both languages; every 3D
+step's tree equal to `raylab trace --lesson`'s, 3D steps without a traced pixel with no tree),
+rays (lesson 4's 3D steps' rays equal `raylab trace --lesson --json`'s tree, and plain
+`raylab trace --pixel`'s where the step changes nothing: count, ids, kinds, depths, end
+reasons, end points to 1e-6, hits), hostile (a lesson's title `</script><script>...` and
+names with quotes stay text), survive (an export that fails leaves the old site intact,
+names what failed, exits 1), student (--student: no notes, no answer key), bounded
+(--max-size refuses a site beyond it), interrupt (Ctrl-C leaves the old site), fulldisk (a
+full tmpfs leaves the old site; skipped, exit 77, where no tmpfs can be mounted)."""
 import json
 import os
 import re
@@ -61,20 +63,87 @@ def export(out, *args, code=0):
     return run(["web", "--out", out, "--max-spp", "1"] + bundle() + list(args), code)
 
 
+def lesson_trees(lesson_file):
+    """`raylab trace --lesson FILE --step all --json`: every step's tree as the lesson stager
+    traces it (null, with why, where the step traces none), in one process, no display."""
+    dump = os.path.join(WORK, "web-lesson-trees.json")
+    result = subprocess.run([RAYLAB, "trace", "--lesson", lesson_file, "--step", "all",
+                             "--json", dump], capture_output=True, text=True)
+    if result.returncode != 0:
+        fail("raylab trace --lesson %s --step all: exit %d\n%s" %
+             (lesson_file, result.returncode, result.stderr))
+    with open(dump, encoding="utf-8") as f:
+        return json.load(f)["steps"]
+
+
+def compare_tree(where, view, segments):
+    """The exported rays and hits of one step against the dump's segments: ids, parents,
+    kinds, depths, end reasons, hit flags, end points to 1e-6, the hits' points."""
+    rays = view["rays"]
+    if len(rays) != len(segments):
+        fail("%s: %d rays exported, trace has %d" % (where, len(rays), len(segments)))
+    for ray, seg in zip(rays, segments):
+        if (ray["id"], ray["parent"], ray["kind"], ray["depth"], ray["ends"], ray["hit"]) != \
+           (seg["id"], seg["parent"], seg["kind"], seg["depth"], seg["end_reason"], seg["hit"]):
+            fail("%s: ray %d differs: %s against %s" % (where, ray["id"], ray, seg))
+        for a, b in zip(ray["origin"] + ray["end"], seg["origin"] + seg["end_point"]):
+            if abs(a - b) > 1e-6:
+                fail("%s: ray %d's ends differ by %g" % (where, ray["id"], abs(a - b)))
+    hits = [s for s in segments if s["hit"]]
+    if [h["ray"] for h in view["hits"]] != [s["id"] for s in hits]:
+        fail("%s: the exported hits are rays %s, trace's %s" %
+             (where, [h["ray"] for h in view["hits"]], [s["id"] for s in hits]))
+    for h, s in zip(view["hits"], hits):
+        if max(abs(a - b) for a, b in zip(h["point"], s["end_point"])) > 1e-6:
+            fail("%s: hit of ray %d is elsewhere" % (where, s["id"]))
+
+
 def compare_rays(out, lesson_id):
-    """The rays of `lesson_id`'s exported 3D steps against `raylab trace --json`: the number
-    of steps compared (steps that change the scene, choose a ray or draw a bundle aside)."""
+    """Every exported 3D step of `lesson_id` against `raylab trace --lesson`: a step with a
+    tree has the same rays; a step the stager traces nothing for exports no rays. Returns
+    (counts, lesson, source): counts of 3D steps compared, 3D steps without a traced pixel
+    (checked to have no tree), steps without a 3D view (pictures)."""
     _, lesson = load_call(os.path.join(out, "lessons", lesson_id + ".js"), "lesson")
-    with open(os.path.join(LESSONS, lesson_id + ".json"), encoding="utf-8") as f:
+    lesson_file = os.path.join(LESSONS, lesson_id + ".json")
+    with open(lesson_file, encoding="utf-8") as f:
         source = json.load(f)
+    if len(lesson["steps"]) != len(source["steps"]):
+        fail("%s: %d steps exported, the lesson has %d" %
+             (lesson_id, len(lesson["steps"]), len(source["steps"])))
+    traced = lesson_trees(lesson_file)
+    counts = {"compared": 0, "untraced": 0, "pictures": 0}
+    for step, trace in zip(lesson["steps"], traced):
+        view = step["view3d"]
+        where = "%s step %d" % (lesson_id, step["index"] + 1)
+        if trace["step"] != step["index"] + 1:
+            fail("%s: trace --lesson answered step %d" % (where, trace["step"]))
+        if view is None:
+            counts["pictures"] += 1
+            continue
+        # (The samples view shows a sampler's directions alone, as the window does.)
+        if step["layout"] != "samples" and (not view["objects"] or
+                                             not any(e["kind"] == "camera" for e in view["extras"])):
+            fail("%s: no objects or no camera glyph exported" % where)
+        if trace["tree"] is None:
+            if view["rays"] or view["hits"] or view["trace"]["pixel"] is not None:
+                fail("%s: rays exported, but the step traces none (%s)" % (where, trace["why"]))
+            counts["untraced"] += 1
+            continue
+        compare_tree(where, view, trace["tree"]["segments"])
+        counts["compared"] += 1
+    return counts, lesson, source
+
+
+def compare_plain_trace(out, lesson_id, source, lesson):
+    """The steps that change nothing (no scene change, value, chosen ray or bundle) also
+    against plain `raylab trace --scene --pixel`: the stager traces what the engine does."""
     scene = os.path.join(LESSONS, source["scene"])
     compared = 0
     for step, written in zip(lesson["steps"], source["steps"]):
         view = step["view3d"]
-        if view is None or view["trace"]["pixel"] is None:
+        if view is None or view["trace"]["pixel"] is None or view["trace"]["bundle"] > 1 or \
+           any(k in written for k in ("scene_changes", "try_value", "ray")):
             continue
-        if any(k in written for k in ("scene_changes", "try_value", "ray")) or view["trace"]["bundle"] > 1:
-            continue  # a changed scene: trace would need the same changes
         trace = view["trace"]
         dump = os.path.join(WORK, "web-rays-step.json")
         run(["trace", "--scene", scene, "--algorithm", trace["algorithm"], "--pixel",
@@ -82,37 +151,21 @@ def compare_rays(out, lesson_id):
              "--json", dump, "--out", os.path.join(WORK, "web-rays-step.png"),
              "--size", "160x120"])
         with open(dump) as f:
-            segments = json.load(f)["segments"]
-        rays = view["rays"]
-        where = "%s step %d" % (lesson_id, step["index"] + 1)
-        if len(rays) != len(segments):
-            fail("%s: %d rays exported, trace has %d" % (where, len(rays), len(segments)))
-        for ray, seg in zip(rays, segments):
-            if (ray["id"], ray["parent"], ray["kind"], ray["depth"], ray["ends"]) != \
-               (seg["id"], seg["parent"], seg["kind"], seg["depth"], seg["end_reason"]):
-                fail("%s: ray %d differs: %s against %s" % (where, ray["id"], ray, seg))
-            for a, b in zip(ray["origin"] + ray["end"], seg["origin"] + seg["end_point"]):
-                if abs(a - b) > 1e-6:
-                    fail("%s: ray %d's ends differ by %g" % (where, ray["id"], abs(a - b)))
-        hits = sum(1 for s in segments if s["hit"])
-        if len(view["hits"]) != hits:
-            fail("%s: %d hits exported, trace has %d" % (where, len(view["hits"]), hits))
-        if not view["objects"] or not any(e["kind"] == "camera" for e in view["extras"]):
-            fail("%s: no objects or no camera glyph exported" % where)
+            compare_tree("%s step %d (plain trace)" % (lesson_id, step["index"] + 1), view,
+                         json.load(f)["segments"])
         compared += 1
-    if len(lesson["steps"]) != len(source["steps"]):
-        fail("%s: %d steps exported, the lesson has %d" %
-             (lesson_id, len(lesson["steps"]), len(source["steps"])))
-    return compared, lesson, source
+    return compared
 
 
 def check_rays():
     out = os.path.join(WORK, "web-rays")
     lesson_id = "04-whitted"
     export(out, "--lang", "en", lesson_id)
-    compared, lesson, source = compare_rays(out, lesson_id)
-    if compared < 5:
-        fail("only %d steps compared with raylab trace" % compared)
+    counts, lesson, source = compare_rays(out, lesson_id)
+    plain = compare_plain_trace(out, lesson_id, source, lesson)
+    if counts["compared"] < 8 or plain < 5:
+        fail("only %d steps compared with trace --lesson, %d with plain trace" %
+             (counts["compared"], plain))
     # A question's hint (said with "try again", issue 33.6) reaches the page.
     hinted = 0
     for step, written in zip(lesson["steps"], source["steps"]):
@@ -124,7 +177,9 @@ def check_rays():
             hinted += 1
     if hinted == 0:
         fail("lesson 4 has no question with a hint to check")
-    print("%d steps' trees equal raylab trace's" % compared)
+    print("%d 3D steps' trees equal raylab trace --lesson's (%d of them also plain trace's); "
+          "%d 3D steps trace nothing and export no tree" %
+          (counts["compared"], plain, counts["untraced"]))
 
 
 def hostile_lesson():
@@ -146,23 +201,34 @@ def hostile_lesson():
 
 def check_course():
     """Every step of every shipped lesson is in the site, in both languages, and every 3D
-    step's tree (but those that change the scene) equals `raylab trace`'s."""
+    step's tree equals `raylab trace --lesson`'s (scene changes, tried values, chosen rays
+    and bundles included); 3D steps without a traced pixel export no tree."""
     out = os.path.join(WORK, "web-course")
+    started = time.time()
     export(out)
+    exported = time.time() - started
     _, course = load_call(os.path.join(out, "course.js"), "course")
     shipped = sorted(f[:-5] for f in os.listdir(LESSONS) if re.match(r"[0-9]{2}-.*\.json$", f))
     listed = [entry["id"] for entry in course["lessons"]]
     if listed != shipped:
         fail("the course lists %s, the lessons folder has %s" % (listed, shipped))
-    total = 0
+    total = {"compared": 0, "untraced": 0, "pictures": 0}
+    steps = 0
     for lesson_id in shipped:
-        compared, lesson, _ = compare_rays(out, lesson_id)
+        counts, lesson, _ = compare_rays(out, lesson_id)
         for step in lesson["steps"]:
             if not step["title"].get("en") or not step["title"].get("zh"):
                 fail("%s step %d: a title is missing in one language" %
                      (lesson_id, step["index"] + 1))
-        total += compared
-    print("%d lessons, %d 3D steps' trees equal raylab trace's" % (len(shipped), total))
+        steps += len(lesson["steps"])
+        for key in total:
+            total[key] += counts[key]
+    if total["compared"] == 0 or sum(total.values()) != steps:
+        fail("steps unaccounted for: %s of %d" % (total, steps))
+    print("%d lessons, %d steps: %d 3D steps' trees equal raylab trace --lesson's, %d 3D steps "
+          "trace no pixel (no tree exported), %d picture steps; export %.0f s, checks %.0f s" %
+          (len(shipped), steps, total["compared"], total["untraced"], total["pictures"],
+           exported, time.time() - started - exported))
 
 
 def check_hostile():

@@ -258,10 +258,23 @@ ComparisonResult smallComparison(const LessonStep& step, Scene& scene, bool plot
   return Comparison(scene, step.settings(), compare).run();
 }
 
-StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size, int maxSpp,
-                           Language language) {
+/// The comparison of a compare or plot step on its small scene (computed once, drawn in
+/// each language).
+struct SmallComparison {
   Scene scene;
-  const ComparisonResult result = smallComparison(step, scene, false, maxSpp);
+  ComparisonResult result;
+};
+
+SmallComparison compareOnce(const LessonStep& step, int maxSpp) {
+  SmallComparison c;
+  c.result = smallComparison(step, c.scene, step.view == LessonView::Plot, maxSpp);
+  return c;
+}
+
+StepPicture comparePicture(const LessonStep& step, const SmallComparison& c,
+                           std::pair<int, int> size, Language language) {
+  const Scene& scene = c.scene;
+  const ComparisonResult& result = c.result;
   vis::ComparisonViewOptions options;
   options.language = language;
   vis::ComparisonView view(result, options);
@@ -281,17 +294,23 @@ StepPicture comparePicture(const LessonStep& step, std::pair<int, int> size, int
   return picture;
 }
 
-StepPicture plotPicture(const LessonStep& step, std::pair<int, int> size, int maxSpp,
+StepPicture plotPicture(const LessonStep& step, const SmallComparison& c, std::pair<int, int> size,
                         Language language) {
-  Scene scene;
-  const ComparisonResult result = smallComparison(step, scene, true, maxSpp);
-  vis::ConvergencePlot plot(result,
+  vis::ConvergencePlot plot(c.result,
                             step.measure == LessonMeasure::Time ? vis::ConvergenceAxis::Time
                                                                 : vis::ConvergenceAxis::Samples,
                             language);
   StepPicture picture;
   picture.image = plot.renderOffscreen(size.first, size.second);
   return picture;
+}
+
+/// The figures of a compare or plot step.
+StepPicture figuresPicture(const LessonStep& step, const SmallComparison& c,
+                           const std::optional<std::pair<int, int>>& size, Language language) {
+  const auto picture = size.value_or(kDefaultFiguresPicture);
+  return step.view == LessonView::Plot ? plotPicture(step, c, picture, language)
+                                       : comparePicture(step, c, picture, language);
 }
 
 /// The picture of one step, by its view. A step needing a feature RayLab lacks (and the
@@ -315,9 +334,8 @@ StepPicture stepPicture(const LessonStep& step, const std::optional<std::pair<in
     case LessonView::Image:
       return imagePicture(step, size.value_or(kImageCap), maxSpp, language);
     case LessonView::Compare:
-      return comparePicture(step, size.value_or(kDefaultFiguresPicture), maxSpp, language);
     case LessonView::Plot:
-      return plotPicture(step, size.value_or(kDefaultFiguresPicture), maxSpp, language);
+      return figuresPicture(step, compareOnce(step, maxSpp), size, language);
     default:  // the 3D view: the scene, the inspector's ray, a sampler's directions
       return scenePicture(step, picture, language);
   }
@@ -437,6 +455,24 @@ StepPicture lessonStepPicture(const LessonStep& step,
                               const std::optional<std::pair<int, int>>& size, Language language,
                               int maxSpp) {
   return stepPicture(step, size, language, maxSpp);
+}
+
+std::vector<StepPicture> lessonStepPictures(const LessonStep& step,
+                                            const std::optional<std::pair<int, int>>& size,
+                                            const std::vector<Language>& languages, int maxSpp) {
+  std::vector<StepPicture> pictures;
+  const bool figures =
+      step.needs.empty() && (step.view == LessonView::Compare || step.view == LessonView::Plot);
+  if (!figures) {
+    for (Language language : languages)
+      pictures.push_back(stepPicture(step, size, language, maxSpp));
+    return pictures;
+  }
+  // One comparison (the costly part, seconds at equal time), drawn in each language.
+  const SmallComparison comparison = compareOnce(step, maxSpp);
+  for (Language language : languages)
+    pictures.push_back(figuresPicture(step, comparison, size, language));
+  return pictures;
 }
 
 Subcommand addLessonCommand(CLI::App& cli) {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace raylab::app {
 
@@ -54,5 +55,11 @@ StagedStep stageStep(const LessonStep& step, double aspect, Language language);
 StepPicture lessonStepPicture(const LessonStep& step,
                               const std::optional<std::pair<int, int>>& size, Language language,
                               int maxSpp);
+
+/// lessonStepPicture in each of `languages`, in order; a comparison or plot is computed once
+/// and drawn in each language (`raylab web`).
+std::vector<StepPicture> lessonStepPictures(const LessonStep& step,
+                                            const std::optional<std::pair<int, int>>& size,
+                                            const std::vector<Language>& languages, int maxSpp);
 
 }  // namespace raylab::app

@@ -178,14 +178,19 @@ json picturesJson(const Lesson& lesson, std::size_t index, const WebOptions& o, 
   const fs::path folder = fs::path(out.siteDir) / "lessons" / id;
   fs::create_directories(folder);
   json src, alt;
-  std::string shared;  // an image without words, written once
-  for (Language language : o.languages) {
+  // An image has no words drawn in: one picture for every language. A comparison or plot
+  // is computed once and drawn in each language.
+  const bool image = step.view == LessonView::Image;
+  const std::vector<StepPicture> pictures = lessonStepPictures(
+      step, std::nullopt, image ? std::vector<Language>{o.languages.front()} : o.languages,
+      o.maxSpp);
+  for (std::size_t k = 0; k < o.languages.size(); ++k) {
+    const Language language = o.languages[k];
     const std::string tag = languageTag(language);
-    std::string name = "s" + twoDigits(index + 1) + "-" + tag + ".png";
-    if (step.view == LessonView::Image && !shared.empty()) {
-      name = shared;
-    } else {
-      const StepPicture picture = lessonStepPicture(step, std::nullopt, language, o.maxSpp);
+    const std::string name = "s" + twoDigits(index + 1) + "-" +
+                             languageTag(image ? o.languages.front() : language) + ".png";
+    if (k < pictures.size()) {
+      const StepPicture& picture = pictures[k];
       const fs::path path = folder / name;
       vis::writePng(picture.image, path.string());
       out.written += std::size_t(fs::file_size(path));
@@ -195,7 +200,6 @@ json picturesJson(const Lesson& lesson, std::size_t index, const WebOptions& o, 
       out.files.push_back("lessons/" + id + "/" + name);
       textOf(caption, language) =
           picture.caption + (picture.note.empty() ? "" : "\n" + picture.note);
-      if (step.view == LessonView::Image) shared = name;
     }
     src[tag] = id + "/" + name;
     alt[tag] = step.title.in(language);
