@@ -438,5 +438,20 @@ TEST(RayTreeStyle, 12_SelectionOutlineIsAColourNoRayUses) {
   EXPECT_GT(outline.x, 60.0);
 }
 
+TEST(RayTreeStyle, 13_KindColoursDifferInLightness) {
+  // Issue 34: "colours that also differ in lightness". Any two ray kinds can be drawn
+  // together (a path-traced glass scene has all six), so every two kinds' CIE L* are at
+  // least 10 apart, and each is light enough to read on the dark view (L* about 13).
+  for (int a = 0; a < kRayKindCount; ++a) {
+    const double la = cieLab(kindColour(RayKind(a))).x;
+    EXPECT_GT(la, 40.0) << toString(RayKind(a));
+    for (int b = a + 1; b < kRayKindCount; ++b) {
+      const double lb = cieLab(kindColour(RayKind(b))).x;
+      EXPECT_GE(std::abs(la - lb), 10.0)
+          << toString(RayKind(a)) << " L* " << la << ", " << toString(RayKind(b)) << " L* " << lb;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace raylab::vis

@@ -71,20 +71,24 @@ Vec3 EnergyScale::colour(double position) {
 }
 
 Vec3 kindColour(RayKind kind) {
+  // Distinct hues that also differ in lightness, CIE L* 10 or more apart for every two
+  // kinds (issue 34: readers who see hues poorly tell them apart by lightness too; the
+  // legend names them in words): shadow 97, camera 87, refraction 77, diffuse 67,
+  // reflection 56, glossy 45, all light enough for the dark view (its L* is about 13).
   switch (kind) {
     case RayKind::Camera:
       return Vec3(0.55, 0.95, 0.35);  // lime, as the camera's frustum (not white: light
                                       // grey means "no energy" in the energy colouring)
     case RayKind::Reflection:
-      return Vec3(0.25, 0.6, 1.0);  // blue
+      return Vec3(0.12, 0.53, 0.93);  // blue
     case RayKind::Refraction:
-      return Vec3(0.2, 0.95, 0.9);  // cyan
+      return Vec3(0.05, 0.83, 0.78);  // cyan
     case RayKind::Diffuse:
-      return Vec3(1.0, 0.55, 0.15);  // orange
+      return Vec3(0.96, 0.52, 0.11);  // orange
     case RayKind::Glossy:
-      return Vec3(0.75, 0.5, 1.0);  // lavender
+      return Vec3(0.55, 0.29, 0.79);  // violet
     case RayKind::Shadow:
-      return Vec3(1.0, 0.9, 0.3);  // yellow
+      return Vec3(1.0, 1.0, 0.35);  // yellow
   }
   return Vec3(0.5);
 }

@@ -454,7 +454,13 @@ Subcommand addTraceCommand(CLI::App& cli) {
   command->footer(
       "Exit codes: 0 ok, 1 runtime error (bad scene file, unwritable output),\n"
       "            2 usage error (e.g. a pixel outside the image), 3 internal error.\n"
-      "Rendering needs an X server, also headless: run under xvfb-run -a.");
+      "Rendering needs an X server, also headless: run under xvfb-run -a.\n"
+      "A lesson step's tree, staged as the window and `raylab web` stage it (no X server\n"
+      "needed for --json alone):\n"
+      "  raylab trace --lesson 04-whitted --step 15 --json step15.json\n"
+      "  raylab trace --lesson 04-whitted --step 15 --try-value 2 --json tried.json\n"
+      "  raylab trace --lesson lessons/04-whitted.json --step all --json steps.json\n"
+      "  xvfb-run -a raylab trace --lesson 04-whitted --step 3 --out step3.png");
   options->tree.add(command, "PNG file of the 3D view to write", "1024x768", false, false);
   command->get_option("--out")->check(endsIn(".png"));
   command
