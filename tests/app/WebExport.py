@@ -98,6 +98,9 @@ def compare_tree(where, view, segments):
             fail("%s: hit of ray %d is elsewhere" % (where, s["id"]))
 
 
+WHY = {}  # why 3D steps trace no tree (trace --lesson's words): how many
+
+
 def compare_rays(out, lesson_id):
     """Every exported 3D step of `lesson_id` against `raylab trace --lesson`: a step with a
     tree has the same rays; a step the stager traces nothing for exports no rays. Returns
@@ -128,6 +131,7 @@ def compare_rays(out, lesson_id):
             if view["rays"] or view["hits"] or view["trace"]["pixel"] is not None:
                 fail("%s: rays exported, but the step traces none (%s)" % (where, trace["why"]))
             counts["untraced"] += 1
+            WHY[trace["why"]] = WHY.get(trace["why"], 0) + 1
             continue
         compare_tree(where, view, trace["tree"]["segments"])
         counts["compared"] += 1
@@ -229,6 +233,8 @@ def check_course():
           "trace no pixel (no tree exported), %d picture steps; export %.0f s, checks %.0f s" %
           (len(shipped), steps, total["compared"], total["untraced"], total["pictures"],
            exported, time.time() - started - exported))
+    for why, count in sorted(WHY.items()):
+        print("  %d 3D steps without a tree: %s" % (count, why))
 
 
 def check_hostile():
