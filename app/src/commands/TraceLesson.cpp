@@ -200,18 +200,21 @@ void LessonTraceOptions::add(CLI::App* command) {
                        "Trace a step of this lesson (a file, or a lesson id such as 04-whitted) "
                        "as the window and `raylab web` stage it: its scene after its changes, "
                        "its algorithm, pixel, sample, bundle or chosen ray")
+          ->type_name("FILE")
           ->group("Lesson");
   command
       ->add_option("--step", steps,
                    "With --lesson: the step (1 = the first); several (2,5,7) or all write one "
                    "JSON document with every step's tree (--json; no picture)")
       ->needs(lessonOption)
+      ->type_name("N|N,M|all")
       ->group("Lesson");
   command
       ->add_option("--try-value", tryValue,
                    "With --lesson: set the step's try_value to V first, as the student does "
                    "in the window (default: the scene as the step shows it before the answer)")
       ->needs(lessonOption)
+      ->type_name("V")
       ->group("Lesson");
 }
 
