@@ -224,6 +224,12 @@ def check_course():
             if not step["title"].get("en") or not step["title"].get("zh"):
                 fail("%s step %d: a title is missing in one language" %
                      (lesson_id, step["index"] + 1))
+            # Words under a picture or view (a capped spp, a mesh's search speed, the
+            # inspector) in both languages or in neither.
+            for key in ("caption", "inspector"):
+                if bool(step[key]["en"]) != bool(step[key]["zh"]):
+                    fail("%s step %d: the %s is in one language only: %s" %
+                         (lesson_id, step["index"] + 1, key, step[key]))
         steps += len(lesson["steps"])
         for key in total:
             total[key] += counts[key]

@@ -197,40 +197,62 @@ std::string cappedNote(int used, int asked, Language language) {
                 {{"used", std::to_string(used)}, {"asked", std::to_string(asked)}});
 }
 
+/// An image step's render, and what its words (in any language) are made of.
+struct ImageRender {
+  SrgbImage image;
+  RenderSettings settings;
+  int askedSpp = 0;  ///< The spp the step asks for, when --max-spp capped it (0: not capped).
+  bool meshes = false;
+  std::uint64_t rays = 0;
+  double seconds = 0.0;
+};
+
 /// The step's algorithm's image: the scene's size fitted inside `cap`, at most 64 spp
 /// unless the step sets the render block itself.
-StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int maxSpp,
-                         Language language) {
+ImageRender renderImage(const LessonStep& step, std::pair<int, int> cap, int maxSpp) {
   Scene scene = *step.scene;
   std::tie(scene.camera.width, scene.camera.height) =
       fitInside({scene.camera.width, scene.camera.height}, cap);
-  RenderSettings settings = step.settings();
+  ImageRender r;
+  r.settings = step.settings();
   const bool stepSetsRender =
       std::any_of(step.sceneChanges.begin(), step.sceneChanges.end(),
                   [](const std::string& c) { return c.find("\"render\"") != std::string::npos; });
-  if (!stepSetsRender) settings.samplesPerPixel = std::min(settings.samplesPerPixel, kImageSppCap);
-  StepPicture result;
-  if (maxSpp > 0 && maxSpp < settings.samplesPerPixel) {
-    result.note = cappedNote(maxSpp, settings.samplesPerPixel, language);
-    settings.samplesPerPixel = maxSpp;
+  if (!stepSetsRender)
+    r.settings.samplesPerPixel = std::min(r.settings.samplesPerPixel, kImageSppCap);
+  if (maxSpp > 0 && maxSpp < r.settings.samplesPerPixel) {
+    r.askedSpp = r.settings.samplesPerPixel;
+    r.settings.samplesPerPixel = maxSpp;
   }
-  Renderer renderer(scene, settings);
-  const FloatImage image = renderer.render();
-  result.image = imageio::toSrgb(image);
+  Renderer renderer(scene, r.settings);
+  r.image = imageio::toSrgb(renderer.render());
   // A tiny render (a quarter of the picture or less: lesson 5's stair steps at 80x60) is
   // shown enlarged, each pixel a block; a merely smaller one (lesson 8's, to save time) not.
-  if (4 * result.image.width <= cap.first && 4 * result.image.height <= cap.second)
-    result.image = vis::enlargedToFit(result.image, cap.first, cap.second);
-  // How the meshes were searched, and how fast (lesson 8 measures it live).
-  const bool meshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const auto& o) {
-    return o.shape->kind() == ShapeKind::TriangleMesh;
-  });
-  if (meshes)
+  if (4 * r.image.width <= cap.first && 4 * r.image.height <= cap.second)
+    r.image = vis::enlargedToFit(r.image, cap.first, cap.second);
+  r.meshes = std::any_of(scene.objects.begin(), scene.objects.end(),
+                         [](const auto& o) { return o.shape->kind() == ShapeKind::TriangleMesh; });
+  r.rays = renderer.stats().rays.total();
+  r.seconds = renderer.stats().seconds;
+  return r;
+}
+
+/// The picture of an image step with its words in `language`: a capped spp's note, and how
+/// the meshes were searched and how fast (lesson 8 measures it live).
+StepPicture imageWords(const ImageRender& r, Language language) {
+  StepPicture result;
+  result.image = r.image;
+  if (r.askedSpp > 0) result.note = cappedNote(r.settings.samplesPerPixel, r.askedSpp, language);
+  if (r.meshes)
     result.caption = phrase("lesson.handout.search_speed", language,
-                            {{"search", vis::searchCaption(settings, language)},
-                             {"speed", vis::speedCaption(renderer.stats().rays.total(),
-                                                         renderer.stats().seconds, language)}});
+                            {{"search", vis::searchCaption(r.settings, language)},
+                             {"speed", vis::speedCaption(r.rays, r.seconds, language)}});
   return result;
+}
+
+StepPicture imagePicture(const LessonStep& step, std::pair<int, int> cap, int maxSpp,
+                         Language language) {
+  return imageWords(renderImage(step, cap, maxSpp), language);
 }
 
 /// The four algorithms on a small copy of the step's scene (its pixel scaled with it).
@@ -461,6 +483,12 @@ std::vector<StepPicture> lessonStepPictures(const LessonStep& step,
                                             const std::optional<std::pair<int, int>>& size,
                                             const std::vector<Language>& languages, int maxSpp) {
   std::vector<StepPicture> pictures;
+  if (step.needs.empty() && step.view == LessonView::Image) {
+    // One render; its words (a capped spp, the meshes' search speed) in each language.
+    const ImageRender render = renderImage(step, size.value_or(kImageCap), maxSpp);
+    for (Language language : languages) pictures.push_back(imageWords(render, language));
+    return pictures;
+  }
   const bool figures =
       step.needs.empty() && (step.view == LessonView::Compare || step.view == LessonView::Plot);
   if (!figures) {

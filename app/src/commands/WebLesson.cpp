@@ -181,16 +181,15 @@ json picturesJson(const Lesson& lesson, std::size_t index, const WebOptions& o, 
   // An image has no words drawn in: one picture for every language. A comparison or plot
   // is computed once and drawn in each language.
   const bool image = step.view == LessonView::Image;
-  const std::vector<StepPicture> pictures = lessonStepPictures(
-      step, std::nullopt, image ? std::vector<Language>{o.languages.front()} : o.languages,
-      o.maxSpp);
+  const std::vector<StepPicture> pictures =
+      lessonStepPictures(step, std::nullopt, o.languages, o.maxSpp);
   for (std::size_t k = 0; k < o.languages.size(); ++k) {
     const Language language = o.languages[k];
     const std::string tag = languageTag(language);
     const std::string name = "s" + twoDigits(index + 1) + "-" +
                              languageTag(image ? o.languages.front() : language) + ".png";
-    if (k < pictures.size()) {
-      const StepPicture& picture = pictures[k];
+    const StepPicture& picture = pictures[k];
+    if (k == 0 || !image) {  // an image's picture is the same in every language
       const fs::path path = folder / name;
       vis::writePng(picture.image, path.string());
       out.written += std::size_t(fs::file_size(path));
@@ -198,9 +197,8 @@ json picturesJson(const Lesson& lesson, std::size_t index, const WebOptions& o, 
         throw WebError(path.string() + ": the site would be larger than " +
                        std::to_string(o.limits.siteBytes >> 20) + " MB");
       out.files.push_back("lessons/" + id + "/" + name);
-      textOf(caption, language) =
-          picture.caption + (picture.note.empty() ? "" : "\n" + picture.note);
     }
+    textOf(caption, language) = picture.caption + (picture.note.empty() ? "" : "\n" + picture.note);
     src[tag] = id + "/" + name;
     alt[tag] = step.title.in(language);
   }
