@@ -9,7 +9,8 @@
 #   need no display (`app.*` but the labels render, python and lessons);
 # - the libFuzzer targets of tests/fuzz (scene, lesson and ray-tree readers, the OBJ, OFF,
 #   PLY and STL readers, the reference cache and --set) on the same instrumented library, each fuzzed for
-#   RAYLAB_FUZZ_SECONDS (30 by default) from its seeds (CTest label `fuzz`).
+#   RAYLAB_FUZZ_SECONDS (10 by default: its seeds and a few thousand mutations; depth is the
+#   nightly run's, doc/dev/TESTING.md "Fuzzing") from its seeds (CTest label `fuzz`).
 # A subset, so the whole of scripts/test.sh stays well under 30 minutes on 2 cores: the
 # full `asan` preset (VTK views, the window, Python) takes about 10 minutes more to build.
 # scripts/test.sh runs it after the main tests; run alone: scripts/test-asan.sh [ctest args]
@@ -28,7 +29,7 @@ targets=(raylab_asan_tests raylab raylab_check_render raylab_check_picture
 # RAYLAB_BUILD_FUZZERS adds libFuzzer's coverage to every library (Clang only).
 CC=clang CXX=clang++ cmake --preset asan -B "$build" -DRAYLAB_BUILD_GUI=OFF \
   -DRAYLAB_BUILD_PYTHON=OFF -DRAYLAB_ENABLE_RENDERING_TESTS=OFF -DRAYLAB_BUILD_FUZZERS=ON \
-  -DRAYLAB_FUZZ_SECONDS="${RAYLAB_FUZZ_SECONDS:-30}" \
+  -DRAYLAB_FUZZ_SECONDS="${RAYLAB_FUZZ_SECONDS:-10}" \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" > /dev/null
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
 # Any report aborts the test (-fno-sanitize-recover); leaks count too.

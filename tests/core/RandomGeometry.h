@@ -11,6 +11,24 @@ namespace raylab::testing {
 
 using Rng = std::mt19937_64;
 
+/// How many of a property test's `count` seeded cases to run: all of them in the main suite;
+/// a quarter under AddressSanitizer (the ASan + UBSan stage, scripts/test-asan.sh, where a
+/// case costs about three times as much), which looks for memory errors and undefined
+/// behaviour on the same code paths: the first quarter of the same seeds.
+constexpr long casesToRun(long count) {
+#if defined(__SANITIZE_ADDRESS__)
+  return count / 4 > 0 ? count / 4 : 1;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  return count / 4 > 0 ? count / 4 : 1;
+#else
+  return count;
+#endif
+#else
+  return count;
+#endif
+}
+
 inline double uniform(Rng& rng, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(rng);
 }

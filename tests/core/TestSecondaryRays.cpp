@@ -192,6 +192,7 @@ TEST(SecondaryRays, 01_OffsetRuleMovesAlongTheNormalToTheSideOfW) {
 
 /// Spawns `count` rays on the side `sign` of the normal and expects no hit on the shape.
 void expectNoRehit(ShapeKind kind, double sign, long count, std::uint64_t salt) {
+  count = testing::casesToRun(count);
   SCOPED_TRACE(::testing::Message() << "base seed " << kSeed << ", salt " << salt);
   long checked = 0, failures = 0, grazing = 0;
   for (long i = 0; i < count; ++i) {
@@ -235,6 +236,7 @@ TEST(SecondaryRays, 04_RaysLeavingAFlatShapeNeverRehitIt) {
 /// Refraction-like rays into a solid: they start inside, and the next hit is the far side,
 /// as the exact oracle says, never the entry point again.
 void expectFarSideHit(ShapeKind kind, long count, std::uint64_t salt) {
+  count = testing::casesToRun(count);
   SCOPED_TRACE(::testing::Message() << "base seed " << kSeed << ", salt " << salt);
   long checked = 0, failures = 0;
   double worstRelative = 0.0, nearest = kInfinity;
@@ -417,9 +419,11 @@ TEST(SecondaryRays, 07_NoRehitThroughTheOriginAtAnyScale) {
   for (ShapeKind kind :
        {ShapeKind::Sphere, ShapeKind::Box, ShapeKind::Quad, ShapeKind::TriangleMesh}) {
     const int placements = kind == ShapeKind::TriangleMesh ? 20 : 200;
-    const int rays = (kind == ShapeKind::Quad ? 1000000 / 2 : 1000000 / 3) / (12 * placements) + 1;
+    const long million = testing::casesToRun(1000000);
+    const int rays =
+        int((kind == ShapeKind::Quad ? million / 2 : million / 3) / (12 * placements) + 1);
     const RehitCounts counts = countRehits(kind, placements, rays, 30 + int(kind));
-    EXPECT_GE(counts.spawned, 900000);
+    EXPECT_GE(counts.spawned, testing::casesToRun(900000));
     EXPECT_EQ(counts.rehits, 0) << toString(kind);
   }
 }
