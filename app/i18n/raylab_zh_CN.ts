@@ -639,6 +639,42 @@ Processing order: ray after ray, as the engine&apos;s queue takes them.</source>
         <source>  error: %1</source>
         <translation>  错误：%1</translation>
     </message>
+    <message>
+        <source>Yours</source>
+        <translation>你的结果</translation>
+    </message>
+    <message>
+        <source>Reference</source>
+        <translation>参考结果</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>没有击中物体</translation>
+    </message>
+    <message>
+        <source>Ray</source>
+        <translation>光线</translation>
+    </message>
+    <message>
+        <source>t (the function&apos;s answer)</source>
+        <translation>t（函数的返回值）</translation>
+    </message>
+    <message>
+        <source>Hits</source>
+        <translation>击中的物体</translation>
+    </message>
+    <message>
+        <source>Ends at</source>
+        <translation>终点</translation>
+    </message>
+    <message>
+        <source>Normal</source>
+        <translation>法线</translation>
+    </message>
+    <message>
+        <source>How it ends</source>
+        <translation>结束方式</translation>
+    </message>
 </context>
 <context>
     <name>raylab::app::ComparePanel</name>

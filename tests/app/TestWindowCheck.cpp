@@ -11,6 +11,7 @@
 
 #include <QPainter>
 #include <QSignalSpy>
+#include <QTableWidget>
 
 #include <cstdlib>
 
@@ -122,6 +123,26 @@ TEST_F(WindowCheck, 03_AWrongRootIsNamedAndItsRaysAreColouredAsWrongHits) {
       << report.toStdString();
   EXPECT_TRUE(report.contains(QStringLiteral("yours: t = ")));
   EXPECT_TRUE(report.contains(QStringLiteral("exact: t = ")));
+  // The inspector of that ray: the student's value beside the reference's, row by row; the
+  // wrong root is a different t and a different point on the same sphere.
+  const QTableWidget* table = dialog->firstRayTable();
+  ASSERT_EQ(table->rowCount(), 6);
+  ASSERT_EQ(table->columnCount(), 2);
+  const auto cell = [table](int row, int column) {
+    return table->item(row, column) ? table->item(row, column)->text() : QString();
+  };
+  EXPECT_EQ(cell(0, 0), cell(0, 1));  // the same ray, "#1 camera"
+  EXPECT_TRUE(cell(0, 0).startsWith(QStringLiteral("#%1 ").arg(o.firstRay)))
+      << cell(0, 0).toStdString();
+  EXPECT_NE(cell(1, 0), cell(1, 1));  // t: yours against the exact one
+  const auto tip = [table](int row, int column) { return table->item(row, column)->toolTip(); };
+  EXPECT_TRUE(report.contains(QStringLiteral("yours: t = ") + tip(1, 0)))
+      << tip(1, 0).toStdString();
+  EXPECT_TRUE(report.contains(QStringLiteral("exact: t = ") + tip(1, 1)))
+      << tip(1, 1).toStdString();
+  EXPECT_NEAR(cell(1, 0).toDouble(), tip(1, 0).toDouble(), 1e-9 * tip(1, 0).toDouble());
+  EXPECT_EQ(cell(2, 0), cell(2, 1));  // the same sphere,
+  EXPECT_NE(cell(3, 0), cell(3, 1));  // another point on it
   // Its tree by verdict shows wrong-hit red; the engine's tree (by ray kind) does not.
   const Vec3 red = vis::verdictColour(int(Verdict::WrongHit));
   const int studentRed = pixelsOf(dialog, red, QStringLiteral("WindowCheck-wrong-root-view.png"));

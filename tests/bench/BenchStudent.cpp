@@ -4,6 +4,11 @@
 // sample (path tracing) of each, with and without judging every call against the exact
 // oracle. items = rays. A Python hook adds the interpreter's call on top (measured by
 // tests/python/test_student.py and reported in doc/dev/perf/student-hooks.md).
+// RenderFault/F: the engine's bug-hunt branch (Tracer.cpp, plantFault): the default scene
+// at 160 x 120, Whitted, one sample per pixel through Tracer::trace, with F = 0 Fault::None
+// (the fast path: one compare per hit) and F = 1 Fault::SchlickWrongSign, which the scene
+// has no Schlick material for: the branch is taken at every hit and plants nothing (the
+// same image), so /1 - /0 is the whole cost of the fault code. items = rays.
 //
 //   build/ci/tests/bench/raylab_bench_student --benchmark_counters_tabular=true
 
@@ -93,6 +98,29 @@ void BM_TracePixel_StudentJudged(benchmark::State& state) {
     benchmark::DoNotOptimize(traceStudent(scene, settings, hooks(), 120, 150, 0));
 }
 BENCHMARK(BM_TracePixel_StudentJudged)->Unit(benchmark::kMicrosecond);
+
+void BM_RenderFault(benchmark::State& state) {
+  Scene scene = defaultScene();
+  scene.camera.width = 160;
+  scene.camera.height = 120;
+  RenderSettings settings = scene.render;
+  settings.algorithm = Algorithm::Whitted;
+  settings.fault = state.range(0) == 0 ? Fault::None : Fault::SchlickWrongSign;
+  // Tracer::trace on this thread (the Renderer's per-sample call), so CPU time is the
+  // engine's alone.
+  const Tracer tracer(scene, settings);
+  std::uint64_t rays = 0;
+  for (auto _ : state) {
+    RayCounts counts;
+    Vec3 sum(0.0);
+    for (int y = 0; y < 120; ++y)
+      for (int x = 0; x < 160; ++x) sum += tracer.trace(x, y, 0, &counts);
+    benchmark::DoNotOptimize(sum);
+    rays += counts.total();
+  }
+  state.SetItemsProcessed(std::int64_t(rays));
+}
+BENCHMARK(BM_RenderFault)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace raylab

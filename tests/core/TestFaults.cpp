@@ -3,9 +3,11 @@
 // asked for.
 #include "LessonFixture.h"
 
+#include "raylab/core/Fresnel.h"
 #include "raylab/core/Lesson.h"
 #include "raylab/core/Phrases.h"
 #include "raylab/core/PixelTrace.h"
+#include "raylab/core/RayInspector.h"
 #include "raylab/core/RenderSettings.h"
 #include "raylab/core/Renderer.h"
 #include "raylab/core/Scene.h"
@@ -207,6 +209,53 @@ TEST(Faults, 11_AnUnknownFaultNamesThePlaceAndTheFaults) {
   EXPECT_NE(message.find("/steps/0/fault"), std::string::npos) << message;
   EXPECT_NE(message.find("unknown fault \"no_cos\""), std::string::npos) << message;
   EXPECT_NE(message.find("roulette_uncompensated"), std::string::npos) << message;
+}
+
+TEST(Faults, 12_SchlickWithTheWrongSignReflectsEverythingButOnlyWhereSchlickIsUsed) {
+  // Schlick 1994: F0 + (1 - F0)(1 - cos)^5 with cos = -d.n >= 0: 0.04 for glass seen head-on.
+  // With d.n (< 0) the curve starts at 1 + |cos|, so R = 1 at every angle.
+  EXPECT_NEAR(fresnel::schlickDielectric(1.0, 1.0 / 1.5), 0.04, 1e-12);
+  EXPECT_EQ(fresnel::schlickWrongSign(1.0, 1.0 / 1.5), 1.0);
+  EXPECT_EQ(fresnel::schlickWrongSign(0.2, 1.0 / 1.5), 1.0);
+  // The red sphere of the default scene reflects kr R and refracts kt (1 - R) by `model`.
+  // The camera ray's children at pixels on it: the weight of the refracted ray, the R the
+  // inspector explains for the reflected one (-1: no such child).
+  const auto children = [](FresnelModel model, Fault fault, int x, int y) {
+    Scene scene = defaultScene();
+    scene
+        .materials[std::size_t(scene.objects[std::size_t(scene.findObject("red sphere"))].material)]
+        .rateFresnel = model;
+    scene.render.algorithm = Algorithm::Whitted;
+    scene.render.fault = fault;
+    const RayTree tree = tracePixel(Tracer(scene, scene.render), x, y).tree;
+    std::pair<double, double> found{-1.0, -1.0};
+    if (tree.segments[0].object != scene.findObject("red sphere")) return found;
+    for (int c = 0; c < tree.segments[0].childCount; ++c) {
+      const int id = tree.segments[0].firstChild + c;
+      const RaySegment& child = tree.segments[std::size_t(id)];
+      if (child.kind == RayKind::Refraction) found.first = child.weight.x;
+      if (child.kind == RayKind::Reflection)
+        found.second = RayInspector::inspect(scene, tree, id, false).rateWeight->share;
+    }
+    return found;
+  };
+  int checked = 0;
+  for (int y = 0; y < 240 && checked < 4; y += 9)
+    for (int x = 0; x < 320 && checked < 4; x += 9) {
+      const auto [refracted, R] = children(FresnelModel::Schlick, Fault::None, x, y);
+      if (refracted < 0.0) continue;
+      EXPECT_GT(refracted, 0.1) << x << ", " << y;  // kt (1 - R), R small away from grazing
+      EXPECT_LT(R, 0.5) << x << ", " << y;
+      // The fault: no refracted ray, and the inspector's R is 1.
+      const auto [none, one] = children(FresnelModel::Schlick, Fault::SchlickWrongSign, x, y);
+      EXPECT_EQ(none, -1.0) << x << ", " << y;
+      EXPECT_EQ(one, 1.0) << x << ", " << y;
+      // The exact Fresnel equations are not Schlick's: the fault leaves them alone.
+      EXPECT_EQ(children(FresnelModel::Exact, Fault::SchlickWrongSign, x, y),
+                children(FresnelModel::Exact, Fault::None, x, y));
+      ++checked;
+    }
+  EXPECT_EQ(checked, 4);
 }
 
 }  // namespace

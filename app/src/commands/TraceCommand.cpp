@@ -243,7 +243,10 @@ void printTrace(const TraceOptions& options, const RayTreeOptions& o, const Scen
 int runTrace(const TraceOptions& options, const std::string& topLevelScene) {
   // Step 1: the scene, the settings and the pixel (or the grid, or the bundle).
   RayTreeOptions o = options.tree;  // a copy: --ray may give it a pixel
-  const Scene scene = o.loadScene(topLevelScene);
+  Scene scene = o.loadScene(topLevelScene);
+  // --fault: the scene's render block carries it, so --inspect explains what the faulty
+  // engine computed (a Schlick-weighted kr R with schlick_wrong_sign).
+  if (o.common.fault) scene.render.fault = *o.common.fault;
   std::optional<Ray> root;
   if (const auto problem = rayError(options, root)) return usageError(*problem);
   if (!options.grid.empty()) {

@@ -6,6 +6,7 @@
 #include "words/Language.h"
 
 #include "raylab/core/RayTreeJson.h"
+#include "raylab/core/RayWords.h"
 #include "raylab/core/SceneIO.h"
 #include "raylab/core/StudentHooks.h"
 #include "raylab/vis/RayTreeStyle.h"
@@ -25,6 +26,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QHeaderView>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -35,6 +37,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QSplitter>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTimer>
@@ -181,8 +184,19 @@ void CheckDialog::buildControls() {
   treeLayout->setContentsMargins(0, 0, 0, 0);
   treeLayout->addWidget(m_which);
   treeLayout->addWidget(m_vtkWidget, 1);
+  m_firstRayTable = new QTableWidget(0, 2);
+  m_firstRayTable->setObjectName(QStringLiteral("firstRayTable"));
+  m_firstRayTable->setHorizontalHeaderLabels({tr("Yours"), tr("Reference")});
+  m_firstRayTable->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  m_firstRayTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_firstRayTable->setWordWrap(true);  // vectors wrap at their commas
+  auto* reportSide = new QSplitter(Qt::Vertical);
+  reportSide->addWidget(m_report);
+  reportSide->addWidget(m_firstRayTable);
+  reportSide->setStretchFactor(0, 1);
+  reportSide->setStretchFactor(1, 1);
   auto* splitter = new QSplitter(Qt::Horizontal);
-  splitter->addWidget(m_report);
+  splitter->addWidget(reportSide);
   splitter->addWidget(treeSide);
   splitter->setStretchFactor(0, 1);
   splitter->setStretchFactor(1, 1);
@@ -303,6 +317,7 @@ void CheckDialog::done(const QString& status) {
 void CheckDialog::readReport(const QJsonObject& report) {
   m_outcome = Outcome{};
   m_trees.reset();
+  m_firstRayTable->setRowCount(0);
   m_outcome.ran = report.value("status").toString() == QLatin1String("ran");
   m_outcome.passes = report.value("passes").toBool();
   for (const QJsonValue& bug : report.value("bugs").toArray())
@@ -338,6 +353,7 @@ void CheckDialog::readReport(const QJsonObject& report) {
         RayTreeJson::load(m_work->filePath(reference).toStdString()));
     for (const QString& v : m_outcome.verdicts) trees->verdicts.push_back(verdictIndex(v));
     m_trees = std::move(trees);
+    fillFirstRay(tree.value("call").toObject());
   } catch (const std::exception& e) {
     m_report->append(QStringLiteral("\n") +
                      tr("The tree could not be read: %1").arg(QString::fromUtf8(e.what())));
@@ -416,6 +432,47 @@ QString CheckDialog::firstRayText(const QJsonObject& tree) const {
   if (!call.value("error").toString().isEmpty())
     text += tr("  error: %1").arg(call.value("error").toString()) + QLatin1Char('\n');
   return text;
+}
+
+void CheckDialog::fillFirstRay(const QJsonObject& call) {
+  const int id = m_outcome.firstRay;
+  if (!m_trees || id < 0) return;
+  const Language language = chinese() ? Language::Chinese : Language::English;
+  const SceneNames names = sceneNames(m_trees->scene, language);
+  // The ray of one tree as the inspector's rows; "—" for a ray that tree does not have.
+  const auto column = [&](const RayTree& tree, const QJsonValue& t) {
+    QStringList rows;
+    for (int row = 0; row < 6; ++row) rows << QStringLiteral("—");
+    // Twelve digits fit the column; the tooltip has all 17 (the report's).
+    rows[1] = t.isDouble() ? QString::number(t.toDouble(), 'g', 12) : valueText(t);
+    if (id >= int(tree.segments.size())) return rows;
+    const RaySegment& s = tree.segments[std::size_t(id)];
+    const bool named = s.hit && s.object >= 0 && s.object < int(names.objects.size());
+    rows[0] =
+        QStringLiteral("#%1 ").arg(id) + QString::fromStdString(rayKindWord(s.kind, language));
+    rows[2] = named ? QString::fromStdString(names.objects[std::size_t(s.object)]) : tr("nothing");
+    rows[3] = QString::fromStdString(vectorWords(s.endPoint));
+    rows[4] = s.hit ? QString::fromStdString(vectorWords(s.normal)) : QStringLiteral("—");
+    rows[5] = QString::fromStdString(endReasonLabel(s.endReason, language));
+    return rows;
+  };
+  const QStringList yours = column(*m_trees->student, call.value("student"));
+  const QStringList reference = column(*m_trees->reference, call.value("reference"));
+  const QStringList labels{tr("Ray"),    tr("t (the function's answer)"),
+                           tr("Hits"),   tr("Ends at"),
+                           tr("Normal"), tr("How it ends")};
+  m_firstRayTable->setRowCount(int(labels.size()));
+  m_firstRayTable->setVerticalHeaderLabels(labels);
+  for (int row = 0; row < int(labels.size()); ++row) {
+    const QStringList full{row == 1 ? valueText(call.value("student")) : yours[row],
+                           row == 1 ? valueText(call.value("reference")) : reference[row]};
+    for (int c = 0; c < 2; ++c) {
+      auto* item = new QTableWidgetItem(c == 0 ? yours[row] : reference[row]);
+      item->setToolTip(full[c]);
+      m_firstRayTable->setItem(row, c, item);
+    }
+  }
+  m_firstRayTable->resizeRowsToContents();
 }
 
 bool CheckDialog::showsReference() const { return m_which->currentIndex() == 1; }

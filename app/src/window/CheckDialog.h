@@ -11,6 +11,7 @@ class QLabel;
 class QLineEdit;
 class QProcess;
 class QPushButton;
+class QTableWidget;
 class QTemporaryDir;
 class QTextBrowser;
 class QTimer;
@@ -29,7 +30,9 @@ namespace raylab::app {
  * runs in a child process, never blocking the window, and the dialog shows its report (each
  * case passed or failed, the typical bug it names, the first ray that differs with the
  * student's and the exact value) and the student's tree of the checked pixel coloured by
- * verdict, with its legend, beside which the engine's tree can be shown.
+ * verdict, with its legend, beside which the engine's tree can be shown. Under the report,
+ * the inspector of the first ray that differs: the student's value and the reference's
+ * side by side (the function's t, what the ray hits, where, its normal, how it ends).
  *
  * The student's code runs under the child's time and memory limits; a crash, a hang or an
  * exception in it (or a check that does not end at all) is a message in the dialog, and the
@@ -67,6 +70,9 @@ class CheckDialog : public QDialog {
   QString reportText() const;
   /// The view of the student's tree (for tests: a screenshot of it).
   QVTKOpenGLNativeWidget* viewWidget() const { return m_vtkWidget; }
+  /// The inspector of the first ray that differs: one row per quantity, columns "yours" and
+  /// "reference" (empty when every ray agrees).
+  QTableWidget* firstRayTable() const { return m_firstRayTable; }
   /// True while the view shows the engine's tree (by ray kind) in place of the student's.
   bool showsReference() const;
   void setShowsReference(bool reference);
@@ -86,6 +92,8 @@ class CheckDialog : public QDialog {
   QString casesText(const QJsonObject& report);
   QString firstRayText(const QJsonObject& tree) const;
   QString bugsText(const QJsonObject& report) const;
+  /// Fills firstRayTable from the first ray that differs of both trees and its call.
+  void fillFirstRay(const QJsonObject& call);
   /// The scene and the student's (or the engine's) tree of the report, in the view.
   void showTrees();
   void done(const QString& status);
@@ -95,6 +103,7 @@ class CheckDialog : public QDialog {
   QPushButton* m_check = nullptr;
   QLabel* m_status = nullptr;
   QTextBrowser* m_report = nullptr;
+  QTableWidget* m_firstRayTable = nullptr;  ///< Yours | reference, the first ray that differs.
   QComboBox* m_which = nullptr;  ///< The student's tree by verdict | the engine's by kind.
   QVTKOpenGLNativeWidget* m_vtkWidget = nullptr;
   std::unique_ptr<vis::SceneView> m_view;

@@ -191,6 +191,28 @@ RAYLAB_STEP_INLINE void dropInvalidChildren(const SurfaceInteraction& si,
   children.erase(std::remove_if(children.begin(), children.end(), leaks), children.end());
 }
 
+/// The hit or material a planted bug (Fault) makes the rule see, written into `flipped` or
+/// `swapped`; both stay empty for the faults that live elsewhere. Off the fast path.
+[[gnu::noinline]] void plantFault(Fault fault, const SceneHit& hit, const Material& material,
+                                  std::optional<SceneHit>& flipped,
+                                  std::optional<Material>& swapped) {
+  if (fault == Fault::FlippedNormal) {
+    flipped = hit;
+    flipped->si.frontFace = !hit.si.frontFace;
+  } else if (fault == Fault::EtaInverted) {
+    swapped = material;
+    std::swap(swapped->ior, swapped->iorOutside);
+  } else if (fault == Fault::SchlickWrongSign) {
+    // Only the Schlick paths: a dielectric's Fresnel or the Fresnel weights of kr and kt.
+    const bool rates = material.rateFresnel == FresnelModel::Schlick;
+    const bool own = material.fresnel == FresnelModel::Schlick;
+    if (!rates && !own) return;
+    swapped = material;
+    if (rates) swapped->rateFresnel = FresnelModel::SchlickWrongSign;
+    if (own) swapped->fresnel = FresnelModel::SchlickWrongSign;
+  }
+}
+
 /// Step 2c: asks the algorithm what the hit spawns into `children` (at a volume's surface,
 /// with the indices of the media on its two sides); sets `emitted`, returns how the ray ends.
 template <bool Nested>
@@ -205,16 +227,12 @@ RAYLAB_STEP_INLINE EndReason spawnAtHit(const Tracer& tracer, const QueuedRay& r
   const Material& own = plain.texture.active() ? texturedMaterial(plain, hit) : plain;
   const Material& material = Nested && crossing.real ? nestedMaterial(own, hit, crossing) : own;
   // A planted bug (RenderSettings::fault, bug hunt; never on unless asked for): the rule
-  // sees the normal flipped or the indices of refraction swapped (eta inverted).
+  // sees the normal flipped, the indices of refraction swapped (eta inverted) or Schlick's
+  // Fresnel with the wrong sign of cos theta.
   std::optional<SceneHit> flipped;
   std::optional<Material> swapped;
-  if (tracer.settings().fault == Fault::FlippedNormal) {
-    flipped = hit;
-    flipped->si.frontFace = !hit.si.frontFace;
-  } else if (tracer.settings().fault == Fault::EtaInverted) {
-    swapped = material;
-    std::swap(swapped->ior, swapped->iorOutside);
-  }
+  if (tracer.settings().fault != Fault::None)
+    plantFault(tracer.settings().fault, hit, material, flipped, swapped);
   const HitContext context{
       tracer.intersector(),          tracer.settings(), ray,   flipped ? *flipped : hit,
       swapped ? *swapped : material, sampler,           spawns};

@@ -71,9 +71,26 @@ double schlickDielectric(double cosThetaI, double eta) {
   return schlick(cosine, normalIncidence(eta));
 }
 
+double schlickWrongSign(double cosThetaI, double eta) {
+  // The student's cosine: d.n with d pointing at the surface, so -|cos theta_i|.
+  const double cosine = -std::min(1.0, std::abs(cosThetaI));
+  const double m = 1.0 - cosine;  // 1 + |cos theta_i|, in [1, 2]
+  const double m2 = m * m;
+  const double f0 = normalIncidence(eta);
+  return std::min(1.0, f0 + (1.0 - f0) * m2 * m2 * m);
+}
+
 double reflectance(FresnelModel model, double cosThetaI, double eta) {
-  return model == FresnelModel::Schlick ? schlickDielectric(cosThetaI, eta)
-                                        : dielectric(cosThetaI, eta);
+  switch (model) {
+    case FresnelModel::Schlick:
+      return schlickDielectric(cosThetaI, eta);
+    case FresnelModel::SchlickWrongSign:
+      return schlickWrongSign(cosThetaI, eta);
+    case FresnelModel::Exact:
+    case FresnelModel::None:
+      break;
+  }
+  return dielectric(cosThetaI, eta);
 }
 
 double brewsterAngle(double eta) { return std::atan(1.0 / eta); }

@@ -74,6 +74,8 @@ const char* toString(FresnelModel model) {
       return "schlick";
     case FresnelModel::None:
       return "none";
+    case FresnelModel::SchlickWrongSign:
+      return "schlick_wrong_sign";
     case FresnelModel::Exact:
       break;
   }
@@ -138,7 +140,8 @@ const char* toString(Fault fault) {
                                                  "eta_inverted",
                                                  "flipped_normal",
                                                  "pdf_forgotten",
-                                                 "roulette_uncompensated"};
+                                                 "roulette_uncompensated",
+                                                 "schlick_wrong_sign"};
   const int i = int(fault);
   return i >= 0 && i < kFaultCount ? words[i] : "none";
 }

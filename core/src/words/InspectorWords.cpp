@@ -95,8 +95,8 @@ std::string rateWeightWords(const RateWeight& w, Language language) {
                  {"share", number(w.share, 4)},
                  {"product", number(w.rate * w.share, 4)},
                  {"tint", w.timesTint ? phrase("inspector.weight.tint", language) : ""},
-                 {"fresnel", phrase(w.model == FresnelModel::Schlick ? "inspector.weight.schlick"
-                                                                     : "inspector.weight.exact",
+                 {"fresnel", phrase(w.model != FresnelModel::Exact ? "inspector.weight.schlick"
+                                                                   : "inspector.weight.exact",
                                     language)},
                  {"degrees", number(w.incidence, 4)}});
 }

@@ -37,6 +37,12 @@ Vec3 schlick(double cosTheta, const Vec3& f0);
 /// cosine on the less dense side (cos theta_t when eta > 1, where the light leaves the
 /// denser medium), 1 on total internal reflection. Symmetric, as the exact one is.
 double schlickDielectric(double cosThetaI, double eta);
+/// Fault::SchlickWrongSign (bug hunt): Schlick's curve as students often write it, with
+/// cos theta = d.n of the incoming direction d (negative) in place of -d.n (Ray Tracing in One
+/// Weekend's `dot(-unit_direction, normal)` without its minus). 1 - cos theta becomes
+/// 1 + |cos theta| >= 1, so F0 + (1 - F0)(1 + |cos|)^5 >= 1 at every angle; kept at 1, as a
+/// tracer that compares R with a random number behaves: everything is reflected.
+double schlickWrongSign(double cosThetaI, double eta);
 /// Reflectance of a dielectric interface by the chosen model.
 double reflectance(FresnelModel model, double cosThetaI, double eta);
 /// Brewster's angle in radians, atan(1 / eta) = atan(eta_t / eta_i): the incidence at which

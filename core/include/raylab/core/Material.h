@@ -36,6 +36,9 @@ enum class FresnelModel {
   Exact,    ///< The Fresnel equations for unpolarised light, (R_s + R_p) / 2.
   Schlick,  ///< Schlick's approximation F0 + (1 - F0) (1 - cos)^5 (Schlick 1994).
   None,     ///< No Fresnel: the constant rates kr, kt (Mirror, Phong, BlinnPhong only).
+  /// Fault::SchlickWrongSign (bug hunt): Schlick's curve with the sign of cos theta wrong
+  /// (fresnel::schlickWrongSign). Never read from a scene; the engine swaps it in.
+  SchlickWrongSign,
 };
 const char* toString(FresnelModel model);
 

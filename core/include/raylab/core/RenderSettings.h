@@ -33,10 +33,12 @@ enum class Fault {
   FlippedNormal,          ///< The facing normal points into the surface.
   PdfForgotten,           ///< Path tracing: f cos / pdf estimated as f cos.
   RouletteUncompensated,  ///< Path tracing: Russian roulette survivors not weighted by 1 / q.
+  SchlickWrongSign,       ///< Schlick's Fresnel with cos theta = d.n of the incoming d (< 0):
+                          ///< (1 + |cos|)^5, R >= 1; only where a material uses Schlick.
 };
-constexpr int kFaultCount = 7;
+constexpr int kFaultCount = 8;
 /// "none", "no_offset", "no_cosine", "eta_inverted", "flipped_normal", "pdf_forgotten",
-/// "roulette_uncompensated".
+/// "roulette_uncompensated", "schlick_wrong_sign".
 const char* toString(Fault fault);
 /// Parses the names above; nothing for an unknown name.
 std::optional<Fault> parseFault(const std::string& name);
