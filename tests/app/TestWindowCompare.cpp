@@ -42,14 +42,11 @@ class WindowCompareTest : public WindowTest {
     WindowTest::SetUp();
   }
 
-  /// Runs the event loop until the comparison stops; false after two minutes.
+  /// Runs the event loop until the comparison stops; false after two minutes. Asleep between
+  /// events (qWaitFor): a loop of processEvents alone would keep one of the two cores busy,
+  /// and the renders waited for would take longer.
   static bool waitUntilStopped(const ComparePanel& panel) {
-    const auto start = std::chrono::steady_clock::now();
-    while (panel.running()) {
-      QApplication::processEvents(QEventLoop::AllEvents, 20);
-      if (std::chrono::steady_clock::now() - start > std::chrono::minutes(2)) return false;
-    }
-    return true;
+    return QTest::qWaitFor([&panel] { return !panel.running(); }, 120000);
   }
 
   /// The default scene at the size every comparison renders it (fitCompareSize: 160x120).
@@ -191,7 +188,7 @@ TEST_F(WindowCompareTest, 04_AnotherSceneDropsTheStaleRenderAndComparison) {
   const auto start = std::chrono::steady_clock::now();
   while (render.progress().samplesPerPixel < 1 &&
          std::chrono::steady_clock::now() - start < std::chrono::minutes(2))
-    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QTest::qWait(5);
   ASSERT_GE(render.progress().samplesPerPixel, 1);
   render.setSamplesPerPixel(1);
   compare.compare();
@@ -213,7 +210,7 @@ TEST_F(WindowCompareTest, 04_AnotherSceneDropsTheStaleRenderAndComparison) {
   const auto begin = std::chrono::steady_clock::now();
   while ((compare.running() || render.rendering()) &&
          std::chrono::steady_clock::now() - begin < std::chrono::minutes(3)) {
-    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QTest::qWait(5);
     if (compare.result() && compare.result()->algorithms.front().image.width != newWidth)
       ++shownOld;
   }
@@ -243,7 +240,7 @@ TEST_F(WindowCompareTest, 05_PicturesComeFirstMarkedProvisional) {
   const auto watch = [&panel](int target, std::string& earlyText, QStringList& statuses) {
     int early = 0;
     while (panel.running()) {
-      QApplication::processEvents(QEventLoop::AllEvents, 5);
+      QTest::qWait(5);
       if (!statuses.contains(panel.statusLabel()->text())) statuses << panel.statusLabel()->text();
       const ComparisonResult* shown = panel.result();
       if (!shown || shown->algorithms.size() != 4 || shown->reference.samplesPerPixel >= target)
