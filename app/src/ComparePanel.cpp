@@ -20,6 +20,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -29,6 +30,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -41,6 +43,9 @@ namespace {
 
 /// The smallest text of the comparison in the window, in screen pixels.
 constexpr double kMinimumFontPx = 12.0;
+/// The shortest time between two passes drawn, ms: each draw takes the UI thread (and,
+/// without a GPU, the GL rasteriser's threads) away from the renders on a 2-core machine.
+constexpr qint64 kDrawIntervalMs = 250;
 
 /// A VTK widget with its own render window.
 QVTKOpenGLNativeWidget* vtkWidget() {
@@ -182,6 +187,7 @@ void ComparePanel::setScene(const Scene& scene) {
 }
 
 void ComparePanel::clearResult() {
+  ++*m_newestPass;
   clearRenderers(m_widget);
   clearRenderers(m_plotWidget);
   m_result.reset();
@@ -247,13 +253,24 @@ void ComparePanel::startJob(const std::shared_ptr<Comparison>& comparison) {
       });
     });
     // Only the newest pass is drawn: one still queued when a newer one is posted is skipped,
-    // so a slow redraw never makes the pictures lag behind the renders.
+    // so a slow redraw never makes the pictures lag behind the renders; and at most one
+    // every kDrawIntervalMs (the first at once), the newest when the interval is over.
+    auto lastDraw = std::make_shared<QElapsedTimer>();
     comparison->setPassCallback(
-        [this, post, scene, newest](const ComparisonResult& soFar, int, double fraction) {
+        [this, post, scene, newest, lastDraw](const ComparisonResult& soFar, int, double fraction) {
           auto copy = std::make_shared<const ComparisonResult>(soFar);
           const int number = ++*newest;
-          post([this, copy, scene, fraction, newest, number] {
-            if (number == newest->load()) showPass(copy, scene, fraction);
+          post([this, copy, scene, fraction, newest, number, lastDraw] {
+            const auto draw = [this, copy, scene, fraction, newest, number, lastDraw] {
+              if (number != newest->load()) return;
+              lastDraw->start();
+              showPass(copy, scene, fraction);
+            };
+            const qint64 wait = lastDraw->isValid() ? kDrawIntervalMs - lastDraw->elapsed() : 0;
+            if (wait <= 0)
+              draw();
+            else
+              QTimer::singleShot(int(wait), this, draw);
           });
         });
     std::shared_ptr<const ComparisonResult> result;
@@ -264,6 +281,7 @@ void ComparePanel::startJob(const std::shared_ptr<Comparison>& comparison) {
     }
     return std::function<void()>([this, result, scene] { ended(result, scene); });
   };
+  ++*m_newestPass;  // a pass of an earlier comparison still waiting to be drawn never is
   m_task->start(std::move(job));
 }
 
@@ -295,6 +313,7 @@ void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& resul
 void ComparePanel::ended(const std::shared_ptr<const ComparisonResult>& result,
                          const std::shared_ptr<const Scene>& scene) {
   ++m_ended;
+  ++*m_newestPass;  // the end is drawn now: no pass waiting for its turn comes after it
   const bool cancelled = !result || result->cancelled;
   if (result && !result->algorithms.empty()) showPass(result, scene, 1.0);
   if (!cancelled) m_progress->setValue(1000);
