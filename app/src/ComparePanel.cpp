@@ -4,6 +4,7 @@
 #include "words/Language.h"
 #include "words/UiWords.h"
 
+#include "raylab/core/CompareSize.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/ReferenceCache.h"
 #include "raylab/vis/ComparisonView.h"
@@ -19,6 +20,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -28,10 +30,12 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QSplitter>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace raylab::app {
 
@@ -39,6 +43,9 @@ namespace {
 
 /// The smallest text of the comparison in the window, in screen pixels.
 constexpr double kMinimumFontPx = 12.0;
+/// The shortest time between two passes drawn, ms: each draw takes the UI thread (and,
+/// without a GPU, the GL rasteriser's threads) away from the renders on a 2-core machine.
+constexpr qint64 kDrawIntervalMs = 250;
 
 /// A VTK widget with its own render window.
 QVTKOpenGLNativeWidget* vtkWidget() {
@@ -180,6 +187,7 @@ void ComparePanel::setScene(const Scene& scene) {
 }
 
 void ComparePanel::clearResult() {
+  ++*m_newestPass;
   clearRenderers(m_widget);
   clearRenderers(m_plotWidget);
   m_result.reset();
@@ -199,9 +207,18 @@ void ComparePanel::clearResult() {
 
 void ComparePanel::compare() {
   if (!m_scene) return;
+  // At the size `raylab compare` uses (the scene's, fitted inside 160x120): the panels show
+  // no more pixels than that, the CLI's figures and cached reference are the window's, and
+  // the comparison takes a quarter of the time at the default scene's 320x240.
+  // The comparison keeps a reference to its scene: the copy lives as long as it does.
+  auto compared = std::make_shared<Scene>(*m_scene);
+  std::tie(compared->camera.width, compared->camera.height) =
+      fitCompareSize(compared->camera.width, compared->camera.height);
   std::shared_ptr<Comparison> comparison;
   try {
-    comparison = std::make_shared<Comparison>(*m_scene, m_scene->render, settings());
+    comparison =
+        std::shared_ptr<Comparison>(new Comparison(*compared, compared->render, settings()),
+                                    [compared](Comparison* c) { delete c; });
   } catch (const std::exception& e) {
     m_status->setText(QString::fromStdString(e.what()));
     return;
@@ -236,13 +253,24 @@ void ComparePanel::startJob(const std::shared_ptr<Comparison>& comparison) {
       });
     });
     // Only the newest pass is drawn: one still queued when a newer one is posted is skipped,
-    // so a slow redraw never makes the pictures lag behind the renders.
+    // so a slow redraw never makes the pictures lag behind the renders; and at most one
+    // every kDrawIntervalMs (the first at once), the newest when the interval is over.
+    auto lastDraw = std::make_shared<QElapsedTimer>();
     comparison->setPassCallback(
-        [this, post, scene, newest](const ComparisonResult& soFar, int, double fraction) {
+        [this, post, scene, newest, lastDraw](const ComparisonResult& soFar, int, double fraction) {
           auto copy = std::make_shared<const ComparisonResult>(soFar);
           const int number = ++*newest;
-          post([this, copy, scene, fraction, newest, number] {
-            if (number == newest->load()) showPass(copy, scene, fraction);
+          post([this, copy, scene, fraction, newest, number, lastDraw] {
+            const auto draw = [this, copy, scene, fraction, newest, number, lastDraw] {
+              if (number != newest->load()) return;
+              lastDraw->start();
+              showPass(copy, scene, fraction);
+            };
+            const qint64 wait = lastDraw->isValid() ? kDrawIntervalMs - lastDraw->elapsed() : 0;
+            if (wait <= 0)
+              draw();
+            else
+              QTimer::singleShot(int(wait), this, draw);
           });
         });
     std::shared_ptr<const ComparisonResult> result;
@@ -253,6 +281,7 @@ void ComparePanel::startJob(const std::shared_ptr<Comparison>& comparison) {
     }
     return std::function<void()>([this, result, scene] { ended(result, scene); });
   };
+  ++*m_newestPass;  // a pass of an earlier comparison still waiting to be drawn never is
   m_task->start(std::move(job));
 }
 
@@ -284,6 +313,7 @@ void ComparePanel::showPass(const std::shared_ptr<const ComparisonResult>& resul
 void ComparePanel::ended(const std::shared_ptr<const ComparisonResult>& result,
                          const std::shared_ptr<const Scene>& scene) {
   ++m_ended;
+  ++*m_newestPass;  // the end is drawn now: no pass waiting for its turn comes after it
   const bool cancelled = !result || result->cancelled;
   if (result && !result->algorithms.empty()) showPass(result, scene, 1.0);
   if (!cancelled) m_progress->setValue(1000);
@@ -363,14 +393,16 @@ std::optional<std::pair<int, int>> ComparePanel::pixelAt(const QPoint& p) const 
   const int w = int(m_widget->width() * ratio), h = int(m_widget->height() * ratio);
   const int x = int(p.x() * ratio), y = int(p.y() * ratio);
   const vis::PixelRect r = m_view->imageRect(panel, w, h);
-  const FloatImage& image = m_result->algorithms[std::size_t(panel)].image;
-  if (image.width <= 0) return std::nullopt;
-  return std::pair{std::min(image.width - 1, (x - r.x) * image.width / r.width),
-                   std::min(image.height - 1, (y - r.y) * image.height / r.height)};
+  // The scene camera's pixel under the cursor (the window's pixels), not the smaller
+  // compared image's: the same pixel as a click on the Render tab's image.
+  if (!m_resultScene || r.width <= 0 || r.height <= 0) return std::nullopt;
+  const int width = m_resultScene->camera.width, height = m_resultScene->camera.height;
+  return std::pair{std::min(width - 1, (x - r.x) * width / r.width),
+                   std::min(height - 1, (y - r.y) * height / r.height)};
 }
 
 bool ComparePanel::traceAll(int x, int y) {
-  if (!m_result || !m_resultScene || !m_view) return false;
+  if (!m_result || m_result->algorithms.empty() || !m_resultScene || !m_view) return false;
   const Scene& scene = *m_resultScene;
   if (x < 0 || y < 0 || x >= scene.camera.width || y >= scene.camera.height) return false;
   m_trees.clear();
@@ -380,7 +412,10 @@ bool ComparePanel::traceAll(int x, int y) {
     m_trees.push_back(tracePixel(scene, settings, x, y, 0).tree);
   }
   m_traced = {x, y};
-  m_view->setRayTrees(scene, m_trees, x, y);
+  // Marked on the compared image, which may be smaller than the scene camera's.
+  const FloatImage& image = m_result->algorithms.front().image;
+  m_view->setRayTrees(scene, m_trees, x * image.width / scene.camera.width,
+                      y * image.height / scene.camera.height);
   redraw();
   emit statusChanged(tr("Pixel (%1, %2) traced with every algorithm: the trees are beside the "
                         "images")

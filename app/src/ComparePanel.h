@@ -36,14 +36,17 @@ class BackgroundTask;
  * or equal time, each panel with its figures, the error figure explained in the picture's
  * bottom band, and the convergence plot.
  *
- * The comparison (core Comparison, with the reference cache of the environment) runs as a
- * BackgroundTask job, pictures first (Comparison::setPicturesFirst): each panel fills in as
- * its first pass ends and refines, the figures marked provisional while the reference is
- * still rendering (its progress in the header and the status line); only the newest pass
- * waiting is drawn, so drawing never falls behind the renders. Cancel keeps what is done;
- * Compare while one runs supersedes it (never two at once). A new scene clears the
- * comparison shown at once: no picture or figure of an older scene stays on screen.
- * Clicking a pixel of any panel traces that pixel with all four algorithms, shows the four
+ * The comparison (core Comparison, with the reference cache of the environment) renders
+ * the scene at the size `raylab compare` uses (fitCompareSize: fitted inside 160x120, about
+ * the size a panel is shown at), so the window's figures are the CLI's and either one's
+ * cached reference serves the other; pixels (clicks, the current pixel, traceWhenDone) stay
+ * the scene camera's. It runs as a BackgroundTask job, pictures first
+ * (Comparison::setPicturesFirst): each panel fills in as its first pass ends and refines, the
+ * figures marked provisional while the reference is still rendering (its progress in the header and
+ * the status line); only the newest pass waiting is drawn, so drawing never falls behind the
+ * renders. Cancel keeps what is done; Compare while one runs supersedes it (never two at once). A
+ * new scene clears the comparison shown at once: no picture or figure of an older scene stays on
+ * screen. Clicking a pixel of any panel traces that pixel with all four algorithms, shows the four
  * trees beside the images and makes it the window's one current pixel (pixelChosen: the
  * ray-tree dock and the 3D view); when the current pixel changes elsewhere, the trees
  * follow it (followPixel).

@@ -14,6 +14,7 @@
 
 #include "raylab/core/InspectorWords.h"
 #include "raylab/core/Lesson.h"
+#include "raylab/core/Phrases.h"
 #include "raylab/core/RayInspector.h"
 #include "raylab/core/Scene.h"
 #include "raylab/vis/SceneView.h"
@@ -172,8 +173,12 @@ void RayTreePanel::showFrame(int frame) {
   if (!m_trace) return;
   // The picture and the status line: functions of the frame number only.
   m_view.setReveal(vis::revealFrame(m_trace->tree, animation(), frame));
-  setStatus(QString::fromStdString(vis::stepCaption(*m_trace, animation(), frame,
-                                                    shownNames(m_document.scene()), uiLanguage())));
+  std::string caption =
+      vis::stepCaption(*m_trace, animation(), frame, shownNames(m_document.scene()), uiLanguage());
+  // Frame 0 in the window says what to press; a video's frame 0 (animate) only what it shows.
+  if (frame <= 0 && !m_trace->tree.segments.empty())
+    caption = phrase("caption.frame_zero.window", uiLanguage(), {{"caption", caption}});
+  setStatus(QString::fromStdString(caption));
   emit viewChanged();
 }
 

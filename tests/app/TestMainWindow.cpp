@@ -95,6 +95,9 @@ TEST_F(MainWindowTest, 06_PlayAdvancesFramesWithTheTimer) {
   EXPECT_EQ(panel.frame(), 0);
   const QImage empty = grabView();
   EXPECT_TRUE(panel.statusText().startsWith(QStringLiteral("Frame 0")));
+  // The window says what to press (a video's frame 0, raylab animate, does not).
+  EXPECT_TRUE(panel.statusText().endsWith(QStringLiteral("Press Play or Step.")))
+      << panel.statusText().toStdString();
 
   // One tick by hand moves on by the speed (frames per tick).
   panel.setSpeed(3.0);

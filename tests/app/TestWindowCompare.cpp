@@ -1,7 +1,9 @@
 // The window's Compare tab: the four algorithms on the open scene, progressive on a worker
-// thread; the figures equal core's Comparison (what `raylab compare` reports) for the same
-// settings; a click on a panel's pixel traces it with all four algorithms; Cancel and a
-// second request (never two at once). The reference cache is a folder of the test's own.
+// thread, at the size `raylab compare` uses (the scene's fitted inside 160x120); the figures
+// equal core's Comparison (what `raylab compare` reports) for the same settings, and the
+// CLI's cached reference serves the window; a click on a panel's pixel traces it with all four
+// algorithms; Cancel and a second request (never two at once). The reference cache is a folder of
+// the test's own.
 #include "WindowTest.h"
 
 #include "ComparePanel.h"
@@ -9,6 +11,7 @@
 #include "RenderPanel.h"
 #include "words/Language.h"
 
+#include "raylab/core/CompareSize.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/RayTreeJson.h"
 #include "raylab/core/ReferenceCache.h"
@@ -17,7 +20,14 @@
 #include <QLabel>
 #include <QTabWidget>
 
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+
 #include <chrono>
+#include <tuple>
 
 namespace raylab::app {
 namespace {
@@ -32,14 +42,19 @@ class WindowCompareTest : public WindowTest {
     WindowTest::SetUp();
   }
 
-  /// Runs the event loop until the comparison stops; false after two minutes.
+  /// Runs the event loop until the comparison stops; false after two minutes. Asleep between
+  /// events (qWaitFor): a loop of processEvents alone would keep one of the two cores busy,
+  /// and the renders waited for would take longer.
   static bool waitUntilStopped(const ComparePanel& panel) {
-    const auto start = std::chrono::steady_clock::now();
-    while (panel.running()) {
-      QApplication::processEvents(QEventLoop::AllEvents, 20);
-      if (std::chrono::steady_clock::now() - start > std::chrono::minutes(2)) return false;
-    }
-    return true;
+    return QTest::qWaitFor([&panel] { return !panel.running(); }, 120000);
+  }
+
+  /// The default scene at the size every comparison renders it (fitCompareSize: 160x120).
+  static Scene comparedScene() {
+    Scene scene = defaultScene();
+    std::tie(scene.camera.width, scene.camera.height) =
+        fitCompareSize(scene.camera.width, scene.camera.height);
+    return scene;
   }
 };
 
@@ -57,7 +72,8 @@ TEST_F(WindowCompareTest, 01_FiguresEqualCoresComparison) {
 
   ComparisonSettings compare;
   compare.samplesPerPixel = 2;
-  const Scene scene = defaultScene();
+  const Scene scene = comparedScene();
+  ASSERT_EQ(std::pair(scene.camera.width, scene.camera.height), std::pair(160, 120));
   const ComparisonResult expected = Comparison(scene, scene.render, compare).run();
   ASSERT_EQ(shown.algorithms.size(), expected.algorithms.size());
   EXPECT_EQ(shown.reference.samplesPerPixel, expected.reference.samplesPerPixel);
@@ -66,6 +82,7 @@ TEST_F(WindowCompareTest, 01_FiguresEqualCoresComparison) {
     const AlgorithmFigures& b = expected.algorithms[i];
     EXPECT_EQ(a.algorithm, b.algorithm);
     EXPECT_EQ(a.stats.samplesPerPixel, 2);
+    EXPECT_EQ(std::pair(a.image.width, a.image.height), std::pair(160, 120));
     EXPECT_EQ(a.stats.rays.byKind, b.stats.rays.byKind) << algorithmTitle(a.algorithm);
     EXPECT_EQ(a.rmse, b.rmse) << algorithmTitle(a.algorithm);
     EXPECT_EQ(a.image.pixels, b.image.pixels);
@@ -171,7 +188,7 @@ TEST_F(WindowCompareTest, 04_AnotherSceneDropsTheStaleRenderAndComparison) {
   const auto start = std::chrono::steady_clock::now();
   while (render.progress().samplesPerPixel < 1 &&
          std::chrono::steady_clock::now() - start < std::chrono::minutes(2))
-    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QTest::qWait(5);
   ASSERT_GE(render.progress().samplesPerPixel, 1);
   render.setSamplesPerPixel(1);
   compare.compare();
@@ -193,7 +210,7 @@ TEST_F(WindowCompareTest, 04_AnotherSceneDropsTheStaleRenderAndComparison) {
   const auto begin = std::chrono::steady_clock::now();
   while ((compare.running() || render.rendering()) &&
          std::chrono::steady_clock::now() - begin < std::chrono::minutes(3)) {
-    QApplication::processEvents(QEventLoop::AllEvents, 20);
+    QTest::qWait(5);
     if (compare.result() && compare.result()->algorithms.front().image.width != newWidth)
       ++shownOld;
   }
@@ -223,7 +240,7 @@ TEST_F(WindowCompareTest, 05_PicturesComeFirstMarkedProvisional) {
   const auto watch = [&panel](int target, std::string& earlyText, QStringList& statuses) {
     int early = 0;
     while (panel.running()) {
-      QApplication::processEvents(QEventLoop::AllEvents, 5);
+      QTest::qWait(5);
       if (!statuses.contains(panel.statusLabel()->text())) statuses << panel.statusLabel()->text();
       const ComparisonResult* shown = panel.result();
       if (!shown || shown->algorithms.size() != 4 || shown->reference.samplesPerPixel >= target)
@@ -255,7 +272,7 @@ TEST_F(WindowCompareTest, 05_PicturesComeFirstMarkedProvisional) {
 
   ComparisonSettings compare;
   compare.samplesPerPixel = 1;
-  const Scene scene = defaultScene();
+  const Scene scene = comparedScene();
   const ComparisonResult expected = Comparison(scene, scene.render, compare).run();
   ASSERT_EQ(panel.result()->algorithms.size(), expected.algorithms.size());
   for (std::size_t i = 0; i < expected.algorithms.size(); ++i) {
@@ -346,6 +363,47 @@ TEST_F(WindowCompareTest, 07_AClickMakesOneCurrentPixelEverywhere) {
   EXPECT_EQ(RayTreeJson::serialize(panel.trees()[0], scene, settings),
             RayTreeJson::serialize(tracePixel(scene, settings, other.first, other.second, 0).tree,
                                    scene, settings));
+}
+
+// The window compares what `raylab compare` compares (issue 33: "the window's cached
+// comparison as fast as the CLI's"): after the CLI's comparison, the window's takes the
+// reference from the same cache entry and renders none, its figures the CLI's. The pixel
+// clicked is the scene camera's, marked on the smaller compared image.
+TEST_F(WindowCompareTest, 08_TheClisCachedReferenceServesTheWindow) {
+  const QString dir = scratch(QStringLiteral("cli"));
+  QProcess cli;
+  cli.setProcessEnvironment(QProcessEnvironment::systemEnvironment());
+  cli.start(QString::fromUtf8(RAYLAB_EXECUTABLE),
+            {QStringLiteral("compare"), QStringLiteral("--spp"), QStringLiteral("1"),
+             QStringLiteral("--out"), dir + QStringLiteral("/c.png")});
+  ASSERT_TRUE(cli.waitForFinished(120000));
+  ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+  QFile json(dir + QStringLiteral("/c.json"));
+  ASSERT_TRUE(json.open(QIODevice::ReadOnly));
+  const QJsonArray cliFigures = QJsonDocument::fromJson(json.readAll())
+                                    .object()
+                                    .value(QStringLiteral("algorithms"))
+                                    .toArray();
+
+  ComparePanel& panel = *m_window->comparePanel();
+  m_window->showImageTab(&panel);
+  panel.setEqualTime(false);
+  panel.setSamplesPerPixel(1);
+  panel.compare();
+  ASSERT_TRUE(waitUntilStopped(panel));
+  ASSERT_NE(panel.result(), nullptr);
+  EXPECT_TRUE(panel.result()->reference.cached) << "the window rendered the reference again";
+  ASSERT_EQ(std::size_t(cliFigures.size()), panel.result()->algorithms.size());
+  for (std::size_t i = 0; i < panel.result()->algorithms.size(); ++i) {
+    const AlgorithmFigures& a = panel.result()->algorithms[i];
+    EXPECT_EQ(std::pair(a.image.width, a.image.height), std::pair(160, 120));
+    // The same error as the CLI's JSON says.
+    EXPECT_DOUBLE_EQ(a.rmse, cliFigures[int(i)].toObject().value(QStringLiteral("rmse")).toDouble())
+        << algorithmTitle(a.algorithm);
+  }
+  // Pixel (300, 200) of the 320x240 camera: traced there, marked at (150, 100).
+  ASSERT_TRUE(panel.traceAll(300, 200));
+  EXPECT_EQ(panel.tracedPixel(), std::pair(300, 200));
 }
 
 }  // namespace

@@ -92,6 +92,10 @@ TEST(BounceAnimation, 03_CaptionsTellWhatEachStepDoes) {
     return narrateStep(trace.steps[std::size_t(id)], names, Language::English);
   };
   EXPECT_NE(stepCaption(trace, processing, 0).find("nothing revealed"), std::string::npos);
+  // Frame 0 of a video (raylab animate) narrates itself: no window hint (issue 33).
+  EXPECT_EQ(stepCaption(trace, processing, 0).find("Press"), std::string::npos);
+  EXPECT_EQ(vis::stepCaption(trace, processing, 0, names, Language::Chinese).find("播放"),
+            std::string::npos);
   EXPECT_EQ(stepCaption(trace, processing, 1),
             "Step 1 of " + std::to_string(last / 4) + ": " + said(0) + ".");
   EXPECT_EQ(said(0).rfind("camera ray #0 hit '", 0), 0u) << said(0);

@@ -21,6 +21,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -116,11 +117,8 @@ int runCompare(const CompareOptions& options, const std::string& topLevelScene) 
 
 void fitDefaultCompareSize(const CommonOptions& common, Scene& scene) {
   if (common.size) return;
-  const double scale =
-      std::min({1.0, double(kDefaultCompareWidth) / std::max(1, scene.camera.width),
-                double(kDefaultCompareHeight) / std::max(1, scene.camera.height)});
-  scene.camera.width = std::max(1, int(scene.camera.width * scale + 0.5));
-  scene.camera.height = std::max(1, int(scene.camera.height * scale + 0.5));
+  std::tie(scene.camera.width, scene.camera.height) =
+      fitCompareSize(scene.camera.width, scene.camera.height);
 }
 
 std::optional<FloatImage> ReferenceOptions::load() const {

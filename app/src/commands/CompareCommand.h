@@ -2,6 +2,7 @@
 
 #include "commands/Subcommand.h"
 
+#include "raylab/core/CompareSize.h"
 #include "raylab/core/Comparison.h"
 #include "raylab/core/Scene.h"
 
@@ -43,9 +44,9 @@ struct ReferenceOptions {
 };
 
 /// The image size `compare` and `plot` render at when --size is not given: the scene's
-/// size fitted inside 160x120 (aspect ratio kept), so a first comparison, reference
-/// included, takes seconds; the picture shows each pixel enlarged.
-constexpr int kDefaultCompareWidth = 160, kDefaultCompareHeight = 120;
+/// size fitted inside 160x120 (fitCompareSize, the window's rule too), so a first
+/// comparison, reference included, takes seconds; the picture shows each pixel enlarged.
+constexpr int kDefaultCompareWidth = kCompareWidth, kDefaultCompareHeight = kCompareHeight;
 /// Fits `scene`'s camera inside the default size unless `common` has a --size.
 void fitDefaultCompareSize(const CommonOptions& common, Scene& scene);
 

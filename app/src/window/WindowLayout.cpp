@@ -91,37 +91,39 @@ void MainWindow::buildCentralArea() {
 }
 
 void MainWindow::buildDocks() {
-  // On the left the objects, and the selection's operations and values as tabs.
-  m_objectList = new QListWidget;
-  m_objectList->setToolTip(tr("The scene's objects: select one to edit it (Esc: none)"));
-  QDockWidget* objects =
-      addDock(tr("Objects"), QStringLiteral("objects"), m_objectList, Qt::LeftDockWidgetArea);
-  m_editPanel = new EditPanel(*m_document);
-  QDockWidget* edit =
-      addDock(tr("Edit"), QStringLiteral("edit"), scrolling(m_editPanel), Qt::LeftDockWidgetArea);
-  m_properties = new PropertiesPanel(*m_document);
-  QDockWidget* properties = addDock(tr("Properties"), QStringLiteral("properties"),
-                                    scrolling(m_properties, false), Qt::LeftDockWidgetArea);
-  tabifyDockWidget(edit, properties);
-  edit->raise();
-  m_leftDocks = {objects, edit, properties};
-
-  // On the right the ray-tree panel, scrolling when the window is low.
+  // Every dock in one column on the right, as tabs, the ray-tree panel in front: the 3D
+  // view keeps the rest of the width, at least half the window (issue 33: a column on each
+  // side left it 476 px of 1400). The ray-tree panel scrolls when the window is low.
   m_rayPanel = new RayTreePanel(*m_view, *m_document);
   m_raysDock = addDock(tr("Ray tree"), QStringLiteral("raytree"), scrolling(m_rayPanel),
                        Qt::RightDockWidgetArea);
-  // The inspector, in a tab beside the ray-tree panel (raised when a ray is chosen): the 3D
-  // view keeps the whole height.
+  // The inspector beside it (raised when a ray is chosen).
   m_inspector = new InspectorPanel(*m_document, *m_rayPanel);
   m_inspectorDock = addDock(tr("Ray inspector"), QStringLiteral("inspector"), m_inspector,
                             Qt::RightDockWidgetArea);
   tabifyDockWidget(m_raysDock, m_inspectorDock);
+  // The objects, and the selection's operations and values.
+  m_objectList = new QListWidget;
+  m_objectList->setToolTip(tr("The scene's objects: select one to edit it (Esc: none)"));
+  QDockWidget* objects =
+      addDock(tr("Objects"), QStringLiteral("objects"), m_objectList, Qt::RightDockWidgetArea);
+  tabifyDockWidget(m_inspectorDock, objects);
+  m_editPanel = new EditPanel(*m_document);
+  QDockWidget* edit =
+      addDock(tr("Edit"), QStringLiteral("edit"), scrolling(m_editPanel), Qt::RightDockWidgetArea);
+  tabifyDockWidget(objects, edit);
+  m_properties = new PropertiesPanel(*m_document);
+  QDockWidget* properties = addDock(tr("Properties"), QStringLiteral("properties"),
+                                    scrolling(m_properties, false), Qt::RightDockWidgetArea);
+  tabifyDockWidget(edit, properties);
   // The lesson panel, in a tab beside them, shown when a lesson is opened.
   m_lessonPanel = new LessonPanel;
   m_lessonDock =
       addDock(tr("Lesson"), QStringLiteral("lesson"), m_lessonPanel, Qt::RightDockWidgetArea);
-  tabifyDockWidget(m_inspectorDock, m_lessonDock);
+  tabifyDockWidget(properties, m_lessonDock);
   m_lessonDock->hide();
+  // Sized once, when first shown (showEvent).
+  m_leftDocks = {m_raysDock};
 }
 
 QDockWidget* MainWindow::addDock(const QString& title, const QString& name, QWidget* widget,
@@ -263,11 +265,10 @@ void MainWindow::showEvent(QShowEvent* event) {
       m_lessonDock->raise();
     else
       (m_rayPanel->selectedSegment() >= 0 ? m_inspectorDock : m_raysDock)->raise();
-    // The 3D view gets the width: the left docks as narrow as their contents allow
-    // (unless the settings gave the layout of last time).
+    // The 3D view gets the width: the dock column as narrow as its panels allow (unless
+    // the settings gave the layout of last time).
     if (!m_leftDocks.isEmpty() && !m_layoutRestored) {
-      resizeDocks(m_leftDocks, {300, 300, 300}, Qt::Horizontal);
-      resizeDocks({m_leftDocks[0], m_leftDocks[1]}, {200, 600}, Qt::Vertical);
+      resizeDocks(m_leftDocks, {1}, Qt::Horizontal);
       m_leftDocks.clear();
     }
   });
