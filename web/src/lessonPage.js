@@ -89,7 +89,7 @@ function questionBox(page, step, state, treeBox) {
   const draw = () => {
     box.replaceChildren(questionSection(step.question, state, () => {
       saveProgress(page.lesson.id, page.progress);
-      if (step.view3d?.hidden && state.tries === 1) fillTree(page, treeBox, step, state);
+      if ((step.view3d?.hidden || step.view3d?.verdicts) && (state.tries === 1 || state.revealed)) fillTree(page, treeBox, step, state);
       draw();
       (box.querySelector('input:not([disabled])') ?? box.querySelector('.feedback')).focus?.();
     }));
@@ -113,14 +113,54 @@ function fillTree(page, box, step, state) {
     const container = el('div', { class: 'view', tabindex: '0', role: 'application', 'aria-label': t('web.view3d'), title: t('web.view3d') });
     box.append(container, el('div', { class: 'view-tools' },
       el('button', { type: 'button', class: 'reset-view', text: t('web.reset_view'), onclick: () => page.view?.resetCamera() })));
-    page.view = createView(container, view3d);
+    page.view = createView(container, page.verdictsOn?.[step.index] && answered(state) ? withVerdicts(view3d) : view3d);
     container.addEventListener('keydown', (event) => viewKeys(page.view, event));
     window.raylabTimings.firstView ??= performance.now();
   }
-  if (view3d.legend.length) box.append(legendList(view3d.legend));
+  const verdicts = verdictControl(page, box, step, state);
+  if (view3d.legend.length) box.append(verdicts.on ? legendList(verdictLegend(view3d)) : legendList(view3d.legend));
+  if (verdicts.element) box.append(verdicts.element);
   const show = (depth) => page.view?.showDepth(waiting ? -1 : depth);
   if (!waiting) box.append(depthControl(view3d, step.narration, show));
   else show(-1);
+}
+
+/// Whether a step's question is answered or its answer revealed (a step without one: always).
+function answered(state) {
+  return !state || state.tries > 0 || state.revealed;
+}
+
+/// A bug-hunt step's choice "colour by verdict", offered once its question is answered or
+/// revealed (the verdicts show where the trees part, never which bug); before that, a note.
+function verdictControl(page, box, step, state) {
+  if (!step.view3d.verdicts) return { on: false, element: null };
+  if (!answered(state)) return { on: false, element: el('p', { class: 'verdict-later', text: t('web.verdict_later') }) };
+  page.verdictsOn ??= {};
+  const on = Boolean(page.verdictsOn[step.index]);
+  const toggle = el('input', { type: 'checkbox', id: 'verdicts', checked: on, onchange: () => {
+    page.verdictsOn[step.index] = toggle.checked;
+    fillTree(page, box, step, state);
+    box.querySelector('#verdicts')?.focus();
+  } });
+  const element = el('section', { class: 'verdicts' },
+    el('label', { for: 'verdicts' }, toggle, ` ${t('web.verdict_toggle')}`),
+    on ? el('p', { class: 'verdict-note', text: t('web.verdict_note') }) : null);
+  return { on, element };
+}
+
+const kReferenceGrey = [0.62, 0.62, 0.62];
+
+/// The step's tree coloured by verdict, the correct engine's tree thin and grey beside it.
+function withVerdicts(view3d) {
+  const { verdicts } = view3d;
+  const rays = view3d.rays.map((ray, i) => ({ ...ray, color: verdicts.colors[i] ?? ray.color }));
+  const reference = verdicts.reference.map((ray) => ({ ...ray, id: -1 - ray.id, color: kReferenceGrey, width: 1 }));
+  return { ...view3d, rays: [...reference, ...rays] };
+}
+
+function verdictLegend(view3d) {
+  const label = { en: t('web.verdict_reference'), zh: t('web.verdict_reference') };
+  return [...view3d.verdicts.legend, { kind: 'reference', color: kReferenceGrey, label }];
 }
 
 /// Keyboard for the 3D view: arrows rotate, + and - zoom, 0 resets.
