@@ -104,8 +104,9 @@ function fillTree(page, box, step, state) {
   page.view?.delete();
   page.view = null;
   box.replaceChildren();
-  const view3d = step.view3d;
-  if (!view3d) return;
+  if (!step.view3d) return;
+  const verdicts = verdictControl(page, box, step, state);
+  const view3d = verdicts.on ? withVerdicts(step.view3d) : step.view3d;
   const waiting = view3d.hidden && !(state && state.tries > 0);
   if (!webglAvailable()) {
     box.append(el('p', { class: 'note', text: t('web.webgl_missing') }));
@@ -113,12 +114,11 @@ function fillTree(page, box, step, state) {
     const container = el('div', { class: 'view', tabindex: '0', role: 'application', 'aria-label': t('web.view3d'), title: t('web.view3d') });
     box.append(container, el('div', { class: 'view-tools' },
       el('button', { type: 'button', class: 'reset-view', text: t('web.reset_view'), onclick: () => page.view?.resetCamera() })));
-    page.view = createView(container, page.verdictsOn?.[step.index] && answered(state) ? withVerdicts(view3d) : view3d);
+    page.view = createView(container, view3d);
     container.addEventListener('keydown', (event) => viewKeys(page.view, event));
     window.raylabTimings.firstView ??= performance.now();
   }
-  const verdicts = verdictControl(page, box, step, state);
-  if (view3d.legend.length) box.append(verdicts.on ? legendList(verdictLegend(view3d)) : legendList(view3d.legend));
+  if (view3d.legend.length) box.append(legendList(view3d.legend));
   if (verdicts.element) box.append(verdicts.element);
   const show = (depth) => page.view?.showDepth(waiting ? -1 : depth);
   if (!waiting) box.append(depthControl(view3d, step.narration, show));
@@ -150,17 +150,19 @@ function verdictControl(page, box, step, state) {
 
 const kReferenceGrey = [0.62, 0.62, 0.62];
 
-/// The step's tree coloured by verdict, the correct engine's tree thin and grey beside it.
+/// The step's tree coloured by verdict, the correct engine's tree thin and grey beside it
+/// (the depth slider reaching the deeper of the two), the legend naming the verdicts.
 function withVerdicts(view3d) {
   const { verdicts } = view3d;
   const rays = view3d.rays.map((ray, i) => ({ ...ray, color: verdicts.colors[i] ?? ray.color }));
   const reference = verdicts.reference.map((ray) => ({ ...ray, id: -1 - ray.id, color: kReferenceGrey, width: 1 }));
-  return { ...view3d, rays: [...reference, ...rays] };
-}
-
-function verdictLegend(view3d) {
   const label = { en: t('web.verdict_reference'), zh: t('web.verdict_reference') };
-  return [...view3d.verdicts.legend, { kind: 'reference', color: kReferenceGrey, label }];
+  return {
+    ...view3d,
+    rays: [...reference, ...rays],
+    legend: [...verdicts.legend, { kind: 'reference', color: kReferenceGrey, label }],
+    maxDepth: Math.max(view3d.maxDepth, ...reference.map((ray) => ray.depth)),
+  };
 }
 
 /// Keyboard for the 3D view: arrows rotate, + and - zoom, 0 resets.
