@@ -60,7 +60,7 @@ TEST(TreeDiff, 03_TheFirstRayAndFieldWithBothValues) {
             std::string::npos)
       << en;
   const std::string zh = describe(*d, Language::Chinese);
-  EXPECT_NE(zh.find("第 2 条光线的 direction 不同"), std::string::npos) << zh;
+  EXPECT_NE(zh.find("#2 号光线的 direction 不同"), std::string::npos) << zh;
   EXPECT_NE(zh.find(d->theirs), std::string::npos) << zh;
 }
 
