@@ -9,7 +9,9 @@ intersect_sphere)``). Give yours to :func:`use`; then
 * :func:`trace` traces one pixel sample with your intersection functions *in place of* the
   engine's (the tree is your tree) and, beside it, with the engine's own; every call of
   your code is judged against the exact (CGAL) oracle: ``agrees``, ``off_by_ulps``,
-  ``wrong_hit``, ``missed_hit``, ``spurious_hit``, ``non_finite`` or ``exception``;
+  ``wrong_hit``, ``missed_hit``, ``spurious_hit``, ``non_finite`` or ``exception``
+  (a recorded tree judged ray by ray, as the web export's bug-hunt steps are, can also say
+  ``wrong_weight``: right geometry, wrong weight);
 * :func:`render` renders an image with your intersection functions;
 * :func:`judge` runs one optics or sampling piece (reflect, refract, Fresnel, Schlick,
   Lambert, Phong, Blinn-Phong, cosine-weighted hemisphere sampling, the spawn offset) on

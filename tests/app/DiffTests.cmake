@@ -40,7 +40,7 @@ if(RAYLAB_ENABLE_RENDERING_TESTS)
          --out ${out}/diff_example.png --size 320x240)
   # The far root of the quadratic: ray 0's end point named with both values, in en and zh.
   raylab_add_diff_test(app.DiffExampleWriterFarRoot CODE 1
-    STDOUT "Ray 0: end_point differs: RayLab \\[0, 0, -2\\], yours \\[0, 0, -4\\].*第 0 条光线的 end_point 不同"
+    STDOUT "Ray 0: end_point differs: RayLab \\[0, 0, -2\\], yours \\[0, 0, -4\\].*#0 号光线的 end_point 不同"
     PRODUCER $<TARGET_FILE:raylab_example_tree_writer> far STDOUT_TO ${out}/diff_far.json
     DIFF ${RAYLAB_WITH_DISPLAY} ${raylab_exe} diff ${out}/diff_far.json --scene ${one_sphere}
          --out ${out}/diff_far.png --size 320x240)
@@ -52,7 +52,7 @@ if(RAYLAB_ENABLE_RENDERING_TESTS)
   # A tree with its first refraction ray bent (BendRay.py): that ray named, not ray 0; the
   # picture shows the bent ray red and dashed beside the engine's.
   raylab_add_diff_test(app.DiffBentRefraction CODE 1
-    STDOUT "Ray [1-9][0-9]*: direction differs: RayLab \\[.*\\], yours \\[.*\\]\\..*第 [1-9][0-9]* 条光线的 direction 不同"
+    STDOUT "Ray [1-9][0-9]*: direction differs: RayLab \\[.*\\], yours \\[.*\\]\\..*#[1-9][0-9]* 号光线的 direction 不同"
     PRODUCER /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/BendRay.py ${RAYLAB_WITH_DISPLAY}
              ${raylab_exe} ${out}/diff_bent.json
     DIFF ${RAYLAB_WITH_DISPLAY} ${raylab_exe} diff ${out}/diff_bent.json

@@ -7,7 +7,8 @@ CHECK is one of: course (every step of every lesson exported, in both languages;
 step's tree equal to `raylab trace --lesson`'s, 3D steps without a traced pixel with no tree),
 rays (lesson 4's 3D steps' rays equal `raylab trace --lesson --json`'s tree, and plain
 `raylab trace --pixel`'s where the step changes nothing: count, ids, kinds, depths, end
-reasons, end points to 1e-6, hits), hostile (a lesson's title `</script><script>...` and
+reasons, end points to 1e-6, hits; the bug-hunt step 16's verdicts against the correct
+engine's tree), hostile (a lesson's title `</script><script>...` and
 names with quotes stay text), survive (an export that fails leaves the old site intact,
 names what failed, exits 1), student (--student: no notes, no answer key), bounded
 (--max-size refuses a site beyond it), interrupt (Ctrl-C leaves the old site), fulldisk (a
@@ -161,6 +162,43 @@ def compare_plain_trace(out, lesson_id, source, lesson):
     return compared
 
 
+def check_verdicts(lesson, source):
+    """The bug-hunt step (lesson 4 step 16, Schlick with the wrong sign) carries the correct
+    engine's tree and its own tree's verdicts: the camera ray agrees, the reflected ray
+    (ray #1) has the right geometry and the wrong weight (1, not 0.04); steps without a
+    fault carry none, and the fault's name (the answer) is not in the data."""
+    faulty = [i for i, s in enumerate(source["steps"]) if "fault" in s]
+    if faulty != [15]:
+        fail("lesson 4's bug-hunt steps are %s, expected step 16 alone" % [i + 1 for i in faulty])
+    for step in lesson["steps"]:
+        view = step["view3d"]
+        if view is not None and step["index"] != 15 and view.get("verdicts") is not None:
+            fail("step %d has no fault but exports verdicts" % (step["index"] + 1))
+    view = lesson["steps"][15]["view3d"]
+    verdicts = view.get("verdicts")
+    if not verdicts:
+        fail("step 16 (a fault) exports no verdicts")
+    names, reference = verdicts["verdict"], verdicts["reference"]
+    if len(names) != len(view["rays"]) or len(verdicts["colors"]) != len(view["rays"]):
+        fail("step 16: %d verdicts, %d colours for %d rays" %
+             (len(names), len(verdicts["colors"]), len(view["rays"])))
+    if names[0] != "agrees" or names[1] != "wrong_weight":
+        fail("step 16: camera ray %s, reflected ray %s (expected agrees, wrong_weight)" %
+             (names[0], names[1]))
+    if view["rays"][1]["kind"] != "reflection" or reference[1]["kind"] != "reflection":
+        fail("step 16: ray 1 is not the reflected ray in both trees")
+    if len(reference) <= len(view["rays"]) or not any(r["kind"] == "refraction" for r in reference):
+        fail("step 16: the correct tree (%d rays) lacks the refracted ray the fault loses "
+             "(faulty tree %d rays)" % (len(reference), len(view["rays"])))
+    labels = [e["label"]["en"] for e in verdicts["legend"]]
+    if "wrong weight" not in labels or "agrees" not in labels:
+        fail("step 16: the verdict legend says %s" % labels)
+    if "schlick" in json.dumps(verdicts).lower():
+        fail("step 16: the fault's name (the answer) is in the verdict data")
+    print("step 16: verdicts %s; the correct tree has %d rays, the faulty %d" %
+          (names, len(reference), len(view["rays"])))
+
+
 def check_rays():
     out = os.path.join(WORK, "web-rays")
     lesson_id = "04-whitted"
@@ -170,6 +208,7 @@ def check_rays():
     if counts["compared"] < 8 or plain < 5:
         fail("only %d steps compared with trace --lesson, %d with plain trace" %
              (counts["compared"], plain))
+    check_verdicts(lesson, source)
     # A question's hint (said with "try again", issue 33.6) reaches the page.
     hinted = 0
     for step, written in zip(lesson["steps"], source["steps"]):

@@ -238,6 +238,26 @@ TEST(ClassicShading, 06_MonteCarloCounterpartNeverCreatesEnergy) {
   }
 }
 
+TEST(ClassicShading, 07_NoCosineFaultLeavesOutNLOfTheDiffuseTermOnly) {
+  // The bug hunt's no_cosine (issue 35) on the floor of test 04: the diffuse term loses its
+  // N.L, the highlight (which has none in Phong's model) stays as it is:
+  // I = 0.1 colour + 5 f_att (0.7 colour + 0.3 highlight^10).
+  const Vec3 L = Vec3(1, 2, 0) / std::sqrt(5.0), V = Vec3(0, 4, 1) / std::sqrt(17.0);
+  const double fAtt = 1.0 / (1.0 + 0.5 * std::sqrt(5.0) + 0.25 * 5.0);
+  for (MaterialType type : {MaterialType::Phong, MaterialType::BlinnPhong}) {
+    Material m = classicMaterial(type);
+    m.ambient = Vec3(0.1);
+    m.attenuation = Vec3(1.0, 0.5, 0.25);
+    const double highlight = type == MaterialType::Phong ? std::pow(8.0 / std::sqrt(85.0), 10.0)
+                                                         : std::pow(glm::normalize(L + V).y, 10.0);
+    const Vec3 expected = 0.1 * m.colour + 5.0 * fAtt * (0.7 * m.colour + Vec3(0.3 * highlight));
+    RenderSettings settings = settingsFor(Algorithm::RayCasting, 1);
+    settings.fault = Fault::NoCosine;
+    const Vec3 I = Tracer(floorScene(m), settings).trace(0, 0, 0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(I[c], expected[c], 1e-12) << toString(type);
+  }
+}
+
 TEST(Fresnel, 01_BrewsterAngleAndPolarisations) {
   // Air to glass (eta = 1 / 1.5): Brewster's angle atan(1.5) = 56.30993 degrees; there R_p
   // vanishes and, since theta_i + theta_t = 90 degrees,

@@ -60,7 +60,7 @@ TEST(TreeDiff, 03_TheFirstRayAndFieldWithBothValues) {
             std::string::npos)
       << en;
   const std::string zh = describe(*d, Language::Chinese);
-  EXPECT_NE(zh.find("第 2 条光线的 direction 不同"), std::string::npos) << zh;
+  EXPECT_NE(zh.find("#2 号光线的 direction 不同"), std::string::npos) << zh;
   EXPECT_NE(zh.find(d->theirs), std::string::npos) << zh;
 }
 
@@ -101,6 +101,119 @@ TEST(TreeDiff, 06_NaNNeverAgrees) {
   ASSERT_TRUE(d);
   EXPECT_EQ(d->field, "pdf");
   EXPECT_EQ(d->theirs, "nan");
+}
+
+bool sameVecForTest(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/// A hand-made Whitted tree: the camera ray hits object 0; a reflected ray (weight 0.04,
+/// Schlick's F0 for glass) hits object 1; a shadow ray from the first hit reaches the light.
+RayTree handMade() {
+  RayTree tree;
+  RaySegment camera;
+  camera.id = 0;
+  camera.direction = Vec3(0.0, 0.0, -1.0);
+  camera.hit = true;
+  camera.endPoint = Point3(0.0, 0.0, -2.0);
+  camera.object = 0;
+  camera.normal = Normal3(0.0, 0.0, 1.0);
+  camera.firstChild = 1;
+  camera.childCount = 2;
+  RaySegment reflected = camera;
+  reflected.id = 1;
+  reflected.parent = 0;
+  reflected.firstChild = -1;
+  reflected.childCount = 0;
+  reflected.kind = RayKind::Reflection;
+  reflected.depth = 1;
+  reflected.origin = camera.endPoint;
+  reflected.direction = Vec3(0.0, 0.0, 1.0);
+  reflected.endPoint = Point3(0.0, 0.0, 3.0);
+  reflected.object = 1;
+  reflected.normal = Normal3(0.0, 0.0, -1.0);
+  reflected.weight = Vec3(0.04);
+  reflected.throughput = Vec3(0.04);
+  reflected.emitted = Vec3(2.0);
+  RaySegment shadow = reflected;
+  shadow.id = 2;
+  shadow.kind = RayKind::Shadow;
+  shadow.direction = Vec3(0.0, 1.0, 0.0);
+  shadow.hit = false;
+  shadow.endPoint = Point3(0.0, 1.0, -2.0);
+  shadow.object = -1;
+  shadow.normal = Normal3(0.0);
+  shadow.weight = Vec3(1.0);
+  shadow.throughput = Vec3(1.0);
+  shadow.emitted = Vec3(0.5);
+  tree.segments = {camera, reflected, shadow};
+  tree.propagate();
+  return tree;
+}
+
+TEST(TreeDiff, 07_JudgeTreeAgreesWithItselfAndWithinTheTolerance) {
+  const RayTree ours = handMade();
+  EXPECT_EQ(judgeTree(ours, ours), std::vector<Verdict>(3, Verdict::Agrees));
+  RayTree theirs = ours;
+  theirs.segments[1].weight.x *= 1.0 + 0.5 * kTreeDiffTolerance;
+  EXPECT_EQ(judgeTree(ours, theirs), std::vector<Verdict>(3, Verdict::Agrees));
+  EXPECT_STREQ(toString(Verdict::WrongWeight), "wrong_weight");
+  EXPECT_EQ(kVerdictCount, int(Verdict::WrongWeight) + 1);
+}
+
+TEST(TreeDiff, 08_AWrongWeightIsJudgedWhereItIsNotAboveOrBelow) {
+  const RayTree ours = handMade();
+  RayTree theirs = ours;
+  theirs.segments[1].weight = Vec3(1.0);  // Schlick with the wrong sign: R = 1, not 0.04
+  theirs.segments[1].throughput = Vec3(1.0);
+  theirs.propagate();  // the camera ray gathers more: inherited, not its fault
+  ASSERT_FALSE(sameVecForTest(ours.segments[0].radiance, theirs.segments[0].radiance));
+  EXPECT_EQ(judgeTree(ours, theirs),
+            (std::vector<Verdict>{Verdict::Agrees, Verdict::WrongWeight, Verdict::Agrees}));
+  theirs = ours;
+  theirs.segments[2].pdf = 0.5;  // a pdf alone
+  EXPECT_EQ(judgeTree(ours, theirs)[2], Verdict::WrongWeight);
+  theirs = ours;
+  theirs.segments[0].radiance *= 2.0;  // a radiance that its children do not explain
+  EXPECT_EQ(judgeTree(ours, theirs)[0], Verdict::WrongWeight);
+  theirs = ours;
+  theirs.segments[0].throughput = Vec3(0.5);  // the root's throughput is its own
+  EXPECT_EQ(judgeTree(ours, theirs)[0], Verdict::WrongWeight);
+  EXPECT_EQ(judgeTree(ours, theirs)[1], Verdict::Agrees);  // its child's only inherits
+}
+
+TEST(TreeDiff, 09_WrongMissedAndSpuriousHits) {
+  const RayTree ours = handMade();
+  RayTree theirs = ours;
+  theirs.segments[1].object = 0;  // the other object
+  EXPECT_EQ(judgeTree(ours, theirs)[1], Verdict::WrongHit);
+  theirs = ours;
+  theirs.segments[1].endPoint.z = 5.0;  // the far root
+  EXPECT_EQ(judgeTree(ours, theirs)[1], Verdict::WrongHit);
+  theirs = ours;
+  theirs.segments[2].direction = Vec3(1.0, 0.0, 0.0);  // a ray sent elsewhere
+  EXPECT_EQ(judgeTree(ours, theirs)[2], Verdict::WrongHit);
+  theirs = ours;
+  theirs.segments[1].hit = false;
+  theirs.segments[1].object = -1;
+  EXPECT_EQ(judgeTree(ours, theirs)[1], Verdict::MissedHit);
+  theirs = ours;
+  theirs.segments[2].hit = true;  // a blocked shadow ray where the light is visible
+  theirs.segments[2].object = 1;
+  EXPECT_EQ(judgeTree(ours, theirs)[2], Verdict::SpuriousHit);
+  EXPECT_EQ(judgeTree(ours, theirs)[0], Verdict::Agrees);
+}
+
+TEST(TreeDiff, 10_ExtraAndMissingRays) {
+  const RayTree ours = handMade();
+  RayTree theirs = ours;
+  theirs.segments.push_back(ours.segments[2]);  // a ray the reference does not have
+  theirs.segments[3].id = 3;
+  EXPECT_EQ(judgeTree(ours, theirs), (std::vector<Verdict>{Verdict::Agrees, Verdict::Agrees,
+                                                           Verdict::Agrees, Verdict::SpuriousHit}));
+  theirs = ours;
+  theirs.segments.pop_back();  // the shadow ray missing: the camera ray gathers less
+  theirs.segments[0].childCount = 1;
+  theirs.propagate();
+  EXPECT_EQ(judgeTree(ours, theirs), (std::vector<Verdict>{Verdict::WrongWeight, Verdict::Agrees}));
 }
 
 }  // namespace

@@ -395,6 +395,11 @@ TEST(RayTreeStyle, 11_VerdictColouringColoursEachRayByItsVerdict) {
   EXPECT_NE(verdictColour(int(Verdict::Agrees)), verdictColour(int(Verdict::WrongHit)));
   EXPECT_EQ(verdictLabel(int(Verdict::MissedHit), Language::English), "missed hit");
   EXPECT_EQ(verdictLabel(int(Verdict::MissedHit), Language::Chinese), "漏掉的交点");
+  // The verdict of a whole judged tree (judgeTree): its own colour and words, not "not judged".
+  for (int v = 0; v < int(Verdict::WrongWeight); ++v)
+    EXPECT_NE(verdictColour(int(Verdict::WrongWeight)), verdictColour(v)) << v;
+  EXPECT_EQ(verdictLabel(int(Verdict::WrongWeight), Language::English), "wrong weight");
+  EXPECT_EQ(verdictLabel(int(Verdict::WrongWeight), Language::Chinese), "权重错误");
 }
 
 /// CIELAB (D65) of a linear-RGB-in-[0,1] colour as the view draws it (sRGB-encoded), for

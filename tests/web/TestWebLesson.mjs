@@ -155,6 +155,7 @@ try {
   check(shallower.changed > 0.002, `depth slider at 0: only the camera ray is left (${(100 * shallower.changed).toFixed(2)}% of pixels change)`);
 
   await answerQuestions(page, text, check, phrase, lesson);
+  await checkVerdicts(page, text, check, phrase, lesson);
   const stepEn = lesson.steps.find((step) => step.view3d && step.question);
   await screenshot(page, `${args.prefix}_step_en`, stepEn, null);
 
@@ -249,4 +250,34 @@ async function answerQuestions(page, text, check, phrase, lesson) {
     check((await text('.feedback')).includes(phrase('web.answer_is', 'en', { answer })),
       'predict step: "Show the answer" reveals it');
   }
+}
+
+/// A bug-hunt step (view3d.verdicts): before an answer only a note, no verdicts (they would
+/// point at the bug); once answered, "colour by verdict" redraws the tree by verdict beside
+/// the correct engine's, with the verdicts named in the legend.
+async function checkVerdicts(page, text, check, phrase, lesson) {
+  const hunt = lesson.steps.find((step) => step.view3d?.verdicts && step.question);
+  if (!hunt || hunt.question.answer === null) return;  // the fixture has none
+  await page.click(`nav.steps li:nth-child(${hunt.index + 1}) button`);
+  check(!(await page.$('#verdicts')) && await text('.verdict-later') === phrase('web.verdict_later', 'en'),
+    'bug hunt: before an answer, a note and no verdict colouring');
+  const q = hunt.question;
+  if (q.type === 'choice') await page.click(`.question input[value="${q.answer}"]`);
+  else await page.type('.question input', String(q.answer));
+  await page.click('.question .check');
+  await page.waitForSelector('#verdicts');
+  await page.evaluate(() => document.activeElement?.blur());
+  const before = await (await page.$('.view canvas')).screenshot();
+  await page.click('#verdicts');
+  await page.waitForSelector('.verdict-note');
+  await page.evaluate(() => document.activeElement?.blur());
+  const legend = await text('.legend');
+  check(legend.includes('wrong weight') && legend.includes(phrase('web.verdict_reference', 'en')),
+    `bug hunt: the verdict legend in words (${legend})`);
+  const after = await (await page.$('.view canvas')).screenshot();
+  const redrawn = await compareScreenshot(page.browser(), before, after);
+  console.log(`measure: colour by verdict changes ${(100 * redrawn.changed).toFixed(2)}% of the view's pixels`);
+  check(redrawn.changed > 0.001, 'bug hunt: the tree is redrawn by verdict');
+  await page.evaluate(() => window.scrollTo(0, document.querySelector('.tree-box').getBoundingClientRect().top + window.scrollY - 8));
+  writeFileSync(join(args.out, `${args.prefix}_verdicts_en.png`), await page.screenshot({ fullPage: false }));
 }

@@ -39,10 +39,11 @@ const char* toString(RayColouring colouring) {
 
 Vec3 verdictColour(int verdict) {
   // Indexed by raylab::Verdict: not judged, agrees, off by ulps, spurious, missed, wrong hit,
-  // NaN / Inf, exception.
+  // NaN / Inf, exception, wrong weight (blue: the geometry is right, the energy is not).
   static const Vec3 colours[kVerdictCount] = {
-      {0.55, 0.55, 0.55}, {0.20, 0.80, 0.25}, {0.75, 0.85, 0.20}, {1.00, 0.60, 0.10},
-      {0.95, 0.40, 0.10}, {0.90, 0.10, 0.10}, {0.60, 0.20, 0.90}, {0.95, 0.20, 0.85}};
+      {0.55, 0.55, 0.55}, {0.20, 0.80, 0.25}, {0.75, 0.85, 0.20},
+      {1.00, 0.60, 0.10}, {0.95, 0.40, 0.10}, {0.90, 0.10, 0.10},
+      {0.60, 0.20, 0.90}, {0.95, 0.20, 0.85}, {0.15, 0.45, 1.00}};
   return verdict >= 0 && verdict < kVerdictCount ? colours[verdict] : colours[0];
 }
 

@@ -89,7 +89,7 @@ function questionBox(page, step, state, treeBox) {
   const draw = () => {
     box.replaceChildren(questionSection(step.question, state, () => {
       saveProgress(page.lesson.id, page.progress);
-      if (step.view3d?.hidden && state.tries === 1) fillTree(page, treeBox, step, state);
+      if ((step.view3d?.hidden || step.view3d?.verdicts) && (state.tries === 1 || state.revealed)) fillTree(page, treeBox, step, state);
       draw();
       (box.querySelector('input:not([disabled])') ?? box.querySelector('.feedback')).focus?.();
     }));
@@ -104,8 +104,9 @@ function fillTree(page, box, step, state) {
   page.view?.delete();
   page.view = null;
   box.replaceChildren();
-  const view3d = step.view3d;
-  if (!view3d) return;
+  if (!step.view3d) return;
+  const verdicts = verdictControl(page, box, step, state);
+  const view3d = verdicts.on ? withVerdicts(step.view3d) : step.view3d;
   const waiting = view3d.hidden && !(state && state.tries > 0);
   if (!webglAvailable()) {
     box.append(el('p', { class: 'note', text: t('web.webgl_missing') }));
@@ -118,9 +119,50 @@ function fillTree(page, box, step, state) {
     window.raylabTimings.firstView ??= performance.now();
   }
   if (view3d.legend.length) box.append(legendList(view3d.legend));
+  if (verdicts.element) box.append(verdicts.element);
   const show = (depth) => page.view?.showDepth(waiting ? -1 : depth);
   if (!waiting) box.append(depthControl(view3d, step.narration, show));
   else show(-1);
+}
+
+/// Whether a step's question is answered or its answer revealed (a step without one: always).
+function answered(state) {
+  return !state || state.tries > 0 || state.revealed;
+}
+
+/// A bug-hunt step's choice "colour by verdict", offered once its question is answered or
+/// revealed (the verdicts show where the trees part, never which bug); before that, a note.
+function verdictControl(page, box, step, state) {
+  if (!step.view3d.verdicts) return { on: false, element: null };
+  if (!answered(state)) return { on: false, element: el('p', { class: 'verdict-later', text: t('web.verdict_later') }) };
+  page.verdictsOn ??= {};
+  const on = Boolean(page.verdictsOn[step.index]);
+  const toggle = el('input', { type: 'checkbox', id: 'verdicts', checked: on, onchange: () => {
+    page.verdictsOn[step.index] = toggle.checked;
+    fillTree(page, box, step, state);
+    box.querySelector('#verdicts')?.focus();
+  } });
+  const element = el('section', { class: 'verdicts' },
+    el('label', { for: 'verdicts' }, toggle, ` ${t('web.verdict_toggle')}`),
+    on ? el('p', { class: 'verdict-note', text: t('web.verdict_note') }) : null);
+  return { on, element };
+}
+
+const kReferenceGrey = [0.62, 0.62, 0.62];
+
+/// The step's tree coloured by verdict, the correct engine's tree thin and grey beside it
+/// (the depth slider reaching the deeper of the two), the legend naming the verdicts.
+function withVerdicts(view3d) {
+  const { verdicts } = view3d;
+  const rays = view3d.rays.map((ray, i) => ({ ...ray, color: verdicts.colors[i] ?? ray.color }));
+  const reference = verdicts.reference.map((ray) => ({ ...ray, id: -1 - ray.id, color: kReferenceGrey, width: 1 }));
+  const label = { en: t('web.verdict_reference'), zh: t('web.verdict_reference') };
+  return {
+    ...view3d,
+    rays: [...reference, ...rays],
+    legend: [...verdicts.legend, { kind: 'reference', color: kReferenceGrey, label }],
+    maxDepth: Math.max(view3d.maxDepth, ...reference.map((ray) => ray.depth)),
+  };
 }
 
 /// Keyboard for the 3D view: arrows rotate, + and - zoom, 0 resets.

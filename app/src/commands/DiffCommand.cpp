@@ -32,18 +32,18 @@ constexpr int kDashes = 12;
 /// Above this many rays theirs are drawn solid: the picture stays within 12 x this many lines.
 constexpr std::size_t kMostDashedRays = 50000;
 
-/// One drawing of both trees: the engine's rays as they are, then each of theirs cut into
-/// kDashes pieces (extra roots) so it reads as dashed. The verdict colours say which is
-/// which: the engine's grey, theirs green up to the first difference, that ray red, the
-/// rays after it (not compared) orange.
-RayTree bothTrees(const RayTree& ours, const RayTree& theirs, int differing,
-                  std::vector<int>& verdicts) {
+/// One drawing of both trees: the engine's rays as they are (grey: not judged), then each of
+/// theirs cut into kDashes pieces (extra roots) so it reads as dashed, coloured by its verdict
+/// against the engine's ray of the same id (judgeTree): green agrees, red goes elsewhere (a
+/// wrong hit), orange hits or misses where the engine's does not (or does not exist there),
+/// blue has the right geometry and the wrong weight.
+RayTree bothTrees(const RayTree& ours, const RayTree& theirs, std::vector<int>& verdicts) {
   RayTree both = ours;
   verdicts.assign(ours.segments.size(), int(Verdict::NotJudged));
+  const std::vector<Verdict> judged = judgeTree(ours, theirs);
   const int dashes = theirs.segments.size() > kMostDashedRays ? 1 : kDashes;
-  for (const RaySegment& s : theirs.segments) {
-    const bool wrong = s.id == differing;
-    const bool before = differing < 0 || s.id < differing;
+  for (std::size_t i = 0; i < theirs.segments.size(); ++i) {
+    const RaySegment& s = theirs.segments[i];
     for (int d = 0; d < dashes; ++d) {
       RaySegment piece = s;
       piece.id = int(both.segments.size());
@@ -56,9 +56,7 @@ RayTree bothTrees(const RayTree& ours, const RayTree& theirs, int differing,
       piece.hit = s.hit && d == dashes - 1;
       piece.kind = s.kind == RayKind::Shadow ? RayKind::Camera : s.kind;  // no blocked tail
       both.segments.push_back(piece);
-      verdicts.push_back(int(wrong    ? Verdict::WrongHit
-                             : before ? Verdict::Agrees
-                                      : Verdict::SpuriousHit));  // orange: not compared
+      verdicts.push_back(int(judged[i]));
     }
   }
   return both;
@@ -72,7 +70,7 @@ void drawBoth(const DiffOptions& o, const Scene& scene, const RayTree& ours, con
   style.lineWidth = 3.0;
   style.showLegend = false;  // the verdict legend's words are a student check's: a caption says
                              // what the colours mean here
-  const RayTree both = bothTrees(ours, theirs, differing, style.verdicts);
+  const RayTree both = bothTrees(ours, theirs, style.verdicts);
   const auto [width, height] = o.common.size.value_or(std::make_pair(1024, 768));
   vis::SceneView view(scene);
   view.setRayTree(both, style);

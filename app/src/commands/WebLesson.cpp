@@ -7,6 +7,7 @@
 #include "raylab/core/Phrases.h"
 #include "raylab/core/PixelTrace.h"
 #include "raylab/core/RayWords.h"
+#include "raylab/core/TreeDiff.h"
 #include "raylab/vis/BounceAnimation.h"
 #include "raylab/vis/ImageIO.h"
 #include "raylab/vis/ViewExport.h"
@@ -107,6 +108,41 @@ json legendJson(const RayTree& tree, const vis::RayTreeStyle& style, const WebOp
   return out;
 }
 
+/// A bug-hunt step (its scene plants a fault): the correct engine's tree, traced through the
+/// same stager with the fault taken out, and the faulty tree judged against it ray by ray
+/// (judgeTree), with the verdict colours and legend; null for a step without a fault. The
+/// page offers this colouring once the step's question is answered or revealed.
+json verdictsJson(const LessonStep& step, const RayTree& faulty, const vis::RayTreeStyle& shown,
+                  const WebOptions& o) {
+  if (step.scene->render.fault == Fault::None || faulty.segments.empty()) return nullptr;
+  LessonStep correct = step;
+  auto scene = std::make_shared<Scene>(*step.scene);
+  scene->render.fault = Fault::None;
+  correct.scene = scene;
+  const StagedTree reference = stageTree(correct, Language::English);
+  static const RayTree kNone;
+  const RayTree& ours = reference.tree ? *reference.tree : kNone;
+  if (ours.segments.size() > o.limits.raysPerStep)
+    throw std::length_error(
+        "its correct engine's tree has " + std::to_string(ours.segments.size()) +
+        " rays, more than the web export's " + std::to_string(o.limits.raysPerStep));
+  vis::RayTreeStyle style = shown;
+  style.colouring = vis::RayColouring::Verdict;
+  json names = json::array();
+  for (const Verdict v : judgeTree(ours, faulty)) {
+    style.verdicts.push_back(int(v));
+    names.push_back(toString(v));
+  }
+  json colours = json::array();
+  for (const vis::ExportedRay& r : vis::exportRays(faulty, style))
+    colours.push_back(vec3(r.colour));
+  // (The fault's name stays out: it is the answer a --student site withholds.)
+  return {{"verdict", names},
+          {"colors", colours},
+          {"legend", legendJson(faulty, style, o)},
+          {"reference", raysJson(ours, reference.state.style)["rays"]}};
+}
+
 /// The staged 3D view of a step (view3d), the words beside it filled into `words`.
 json view3dJson(const LessonStep& step, const WebOptions& o, LocalText& caption,
                 LocalText& inspector, json& narration) {
@@ -163,6 +199,7 @@ json view3dJson(const LessonStep& step, const WebOptions& o, LocalText& caption,
     const bool predict = step.question && step.question->predict;
     view["hidden"] = predict && vis::stepViewState(step, true, Language::English).hidden;
     narration = narrationJson(step, tree, o);
+    view["verdicts"] = verdictsJson(step, tree, state.style, o);
   }
   return view;
 }

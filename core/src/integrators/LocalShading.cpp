@@ -27,9 +27,14 @@ Vec3 localFactor(const HitContext& context, const Vec3& wi, Lobes lobes) {
                                : bsdf::plastic::evalBase(context.material, context.hit.si, wo, wi);
   const Normal3 n = context.hit.si.facingShadingNormal();
   const Vec3 f = classicShading(context.material, n, wo, wi, lobes);
-  // Fault::NoCosine (bug hunt): the classic model without its N.L factor.
+  // Fault::NoCosine (bug hunt): the N.L factor left out where the model has one: the whole
+  // BRDF times cos of a Lambert or glossy surface, only the diffuse term of the classic
+  // Phong and Blinn-Phong models (their highlight carries no N.L).
   const double cosThetaI = glm::dot(n, wi);
-  return context.settings.fault == Fault::NoCosine && cosThetaI > 0.0 ? f / cosThetaI : f;
+  if (context.settings.fault != Fault::NoCosine || cosThetaI <= 0.0) return f;
+  if (!context.material.isClassic()) return f / cosThetaI;
+  const Vec3 diffuse = classic::diffuseTerm(context.material, n, wi);
+  return f + diffuse * (1.0 / cosThetaI - 1.0);
 }
 
 /// The radiance a light of intensity `I` times `scale` (1, or a flat light's projected

@@ -109,4 +109,59 @@ std::string describe(const TreeDifference& d, Language language) {
       {{"ray", std::to_string(d.ray)}, {"field", d.field}, {"ours", d.ours}, {"theirs", d.theirs}});
 }
 
+namespace {
+
+bool sameVec(const Vec3& u, const Vec3& v) {
+  return close(u.x, v.x) && close(u.y, v.y) && close(u.z, v.z);
+}
+
+/// The verdict of a ray from its own geometry and energy, leaving out what it may inherit
+/// from its parent (throughput) or its children (radiance).
+Verdict judgeGeometry(const RaySegment& a, const RaySegment& b) {
+  if (a.kind != b.kind || a.parent != b.parent || a.depth != b.depth ||
+      !sameVec(a.origin, b.origin) || !sameVec(a.direction, b.direction))
+    return Verdict::WrongHit;
+  if (a.hit != b.hit) return a.hit ? Verdict::MissedHit : Verdict::SpuriousHit;
+  if (a.object != b.object || !sameVec(a.endPoint, b.endPoint) ||
+      (a.hit && !sameVec(a.normal, b.normal)))
+    return Verdict::WrongHit;
+  const bool ownEnergy = sameVec(a.weight, b.weight) && close(a.pdf, b.pdf) &&
+                         sameVec(a.emitted, b.emitted) && a.endReason == b.endReason;
+  return ownEnergy ? Verdict::Agrees : Verdict::WrongWeight;
+}
+
+}  // namespace
+
+std::vector<Verdict> judgeTree(const RayTree& reference, const RayTree& theirs) {
+  const std::size_t n = theirs.segments.size();
+  const std::size_t common = std::min(n, reference.segments.size());
+  std::vector<Verdict> verdicts(n, Verdict::SpuriousHit);  // rays the reference lacks
+  const auto valid = [n](int id) { return id >= 0 && std::size_t(id) < n; };
+  for (std::size_t i = 0; i < common; ++i) {
+    const RaySegment &a = reference.segments[i], &b = theirs.segments[i];
+    Verdict v = judgeGeometry(a, b);
+    // Throughput is inherited: it is this ray's fault only when its parent's agrees.
+    const bool parentThroughputAgrees =
+        !valid(b.parent) || std::size_t(b.parent) >= common ||
+        sameVec(reference.segments[std::size_t(b.parent)].throughput,
+                theirs.segments[std::size_t(b.parent)].throughput);
+    if (v == Verdict::Agrees && parentThroughputAgrees && !sameVec(a.throughput, b.throughput))
+      v = Verdict::WrongWeight;
+    verdicts[i] = v;
+  }
+  // Radiance is gathered from the children: it is this ray's fault only when all of them
+  // agree. Children come after parents, so a pass in reverse id order sees them first. A ray
+  // whose children theirs lacks keeps its own radiance difference: no ray of theirs can
+  // carry it.
+  std::vector<bool> childDiffers(n, false);
+  for (std::size_t j = n; j-- > 0;) {
+    if (j < common && verdicts[j] == Verdict::Agrees && !childDiffers[j] &&
+        !sameVec(reference.segments[j].radiance, theirs.segments[j].radiance))
+      verdicts[j] = Verdict::WrongWeight;
+    const int parent = theirs.segments[j].parent;
+    if (verdicts[j] != Verdict::Agrees && valid(parent)) childDiffers[std::size_t(parent)] = true;
+  }
+  return verdicts;
+}
+
 }  // namespace raylab

@@ -30,6 +30,8 @@ const char* toString(Verdict verdict) {
       return "non_finite";
     case Verdict::Exception:
       return "exception";
+    case Verdict::WrongWeight:
+      return "wrong_weight";
   }
   return "?";
 }

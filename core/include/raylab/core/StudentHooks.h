@@ -66,7 +66,9 @@ struct StudentHooks {
   }
 };
 
-/// How a student's answer for one ray compares with the reference, worst last.
+/// How a student's answer for one ray compares with the reference. The hook verdicts run from
+/// best to worst (StudentTrace keeps a ray's worst call); WrongWeight, appended last so the
+/// numbers stay, is judgeTree's (TreeDiff.h): a whole ray of a recorded tree.
 enum class Verdict {
   NotJudged,    ///< No student piece was asked for this ray.
   Agrees,       ///< Within the tolerance (kAgreeUlps, or the engine's own error if larger).
@@ -76,8 +78,9 @@ enum class Verdict {
   WrongHit,     ///< Both hit, but t differs by more than kOffUlps ulps (a wrong root, ...).
   NonFinite,    ///< The student returned NaN or an infinity.
   Exception,    ///< The student's code failed (raised, wrong type): StudentHooks::Failure.
+  WrongWeight,  ///< The same geometry, but the weight, pdf, throughput or radiance differ.
 };
-constexpr int kVerdictCount = 8;
+constexpr int kVerdictCount = 9;
 /// The JSON / Python name of a verdict: "agrees", "off_by_ulps", "wrong_hit", ...
 const char* toString(Verdict verdict);
 /// Whether a verdict counts as correct (Agrees, OffByUlps, NotJudged).
