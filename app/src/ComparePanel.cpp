@@ -179,11 +179,14 @@ bool ComparePanel::running() const { return m_task->busy(); }
 
 void ComparePanel::setScene(const Scene& scene) {
   m_scene = std::make_shared<const Scene>(scene);
-  // A comparison of an older scene is never left on screen: gone now, the new one follows.
+  // A comparison of an older scene is never left on screen: gone now, and the new scene's
+  // follows while the panel is shown. A hidden panel (a lesson's 3D step after its
+  // comparison step) starts none: a comparison runs only on its own step (issue 33).
   if (!running() && !m_result) return;
   m_task->drop();
   clearResult();
-  compare();
+  if (isVisible()) compare();
+  updateControls();
 }
 
 void ComparePanel::clearResult() {
