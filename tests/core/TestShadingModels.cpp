@@ -128,25 +128,38 @@ Scene floorScene(const Material& m) {
   return scene;
 }
 
+/// Test 04's floor: a `type` material with ambient 0.1 and attenuation [1, 0.5, 0.25] seen at
+/// the origin of floorScene, and what the textbook's model gives there with the diffuse
+/// term's N.L taken as `nDotL`: 0.1 colour + 5 f_att (0.7 colour N.L + 0.3 highlight^10).
+struct TextbookFloor {
+  Material material;
+  Vec3 expected;
+};
+
+TextbookFloor textbookFloor(MaterialType type, double nDotL) {
+  const Vec3 L = Vec3(1, 2, 0) / std::sqrt(5.0), V = Vec3(0, 4, 1) / std::sqrt(17.0);
+  const double fAtt = 1.0 / (1.0 + 0.5 * std::sqrt(5.0) + 0.25 * 5.0);
+  TextbookFloor floor{classicMaterial(type), Vec3(0.0)};
+  Material& m = floor.material;
+  m.ambient = Vec3(0.1);
+  m.attenuation = Vec3(1.0, 0.5, 0.25);
+  const double highlight = type == MaterialType::Phong ? std::pow(8.0 / std::sqrt(85.0), 10.0)
+                                                       : std::pow(glm::normalize(L + V).y, 10.0);
+  floor.expected = 0.1 * m.colour + 5.0 * fAtt * (0.7 * m.colour * nDotL + Vec3(0.3 * highlight));
+  return floor;
+}
+
 TEST(ClassicShading, 04_RayCastingWhittedAndDistributedShadeByTheTextbook) {
   // At the origin: L = (1, 2, 0) / sqrt 5, N.L = 2 / sqrt 5 = 0.8944272, d = sqrt 5;
   // V = (0, 4, 1) / sqrt 17; R = (-1, 2, 0) / sqrt 5, R.V = 8 / sqrt 85 = 0.8677218;
   // H = (L + V) / |L + V|. With attenuation [1, 0.5, 0.25]:
   // f_att = 1 / (1 + 0.5 sqrt 5 + 0.25 * 5) = 0.2969091. Ambient (0.1, 0.1, 0.1).
   // I = 0.1 colour + 5 f_att (0.7 colour 0.8944272 + 0.3 highlight^10).
-  const Vec3 L = Vec3(1, 2, 0) / std::sqrt(5.0), V = Vec3(0, 4, 1) / std::sqrt(17.0);
-  const double fAtt = 1.0 / (1.0 + 0.5 * std::sqrt(5.0) + 0.25 * 5.0);
-  EXPECT_NEAR(fAtt, 0.2969091, 1e-7);
+  EXPECT_NEAR(1.0 / (1.0 + 0.5 * std::sqrt(5.0) + 0.25 * 5.0), 0.2969091, 1e-7);
   for (MaterialType type : {MaterialType::Phong, MaterialType::BlinnPhong}) {
-    Material m = classicMaterial(type);
-    m.ambient = Vec3(0.1);
-    m.attenuation = Vec3(1.0, 0.5, 0.25);
-    const double highlight = type == MaterialType::Phong ? std::pow(8.0 / std::sqrt(85.0), 10.0)
-                                                         : std::pow(glm::normalize(L + V).y, 10.0);
-    const Vec3 expected =
-        0.1 * m.colour +
-        5.0 * fAtt * (0.7 * m.colour * (2.0 / std::sqrt(5.0)) + Vec3(0.3 * highlight));
-    const Scene scene = floorScene(m);
+    const TextbookFloor floor = textbookFloor(type, 2.0 / std::sqrt(5.0));
+    const Vec3& expected = floor.expected;
+    const Scene scene = floorScene(floor.material);
     for (Algorithm algorithm :
          {Algorithm::RayCasting, Algorithm::Whitted, Algorithm::Distributed}) {
       const Vec3 I = Tracer(scene, settingsFor(algorithm, 1)).trace(0, 0, 0);
@@ -242,19 +255,12 @@ TEST(ClassicShading, 07_NoCosineFaultLeavesOutNLOfTheDiffuseTermOnly) {
   // The bug hunt's no_cosine (issue 35) on the floor of test 04: the diffuse term loses its
   // N.L, the highlight (which has none in Phong's model) stays as it is:
   // I = 0.1 colour + 5 f_att (0.7 colour + 0.3 highlight^10).
-  const Vec3 L = Vec3(1, 2, 0) / std::sqrt(5.0), V = Vec3(0, 4, 1) / std::sqrt(17.0);
-  const double fAtt = 1.0 / (1.0 + 0.5 * std::sqrt(5.0) + 0.25 * 5.0);
   for (MaterialType type : {MaterialType::Phong, MaterialType::BlinnPhong}) {
-    Material m = classicMaterial(type);
-    m.ambient = Vec3(0.1);
-    m.attenuation = Vec3(1.0, 0.5, 0.25);
-    const double highlight = type == MaterialType::Phong ? std::pow(8.0 / std::sqrt(85.0), 10.0)
-                                                         : std::pow(glm::normalize(L + V).y, 10.0);
-    const Vec3 expected = 0.1 * m.colour + 5.0 * fAtt * (0.7 * m.colour + Vec3(0.3 * highlight));
+    const TextbookFloor floor = textbookFloor(type, 1.0);
     RenderSettings settings = settingsFor(Algorithm::RayCasting, 1);
     settings.fault = Fault::NoCosine;
-    const Vec3 I = Tracer(floorScene(m), settings).trace(0, 0, 0);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(I[c], expected[c], 1e-12) << toString(type);
+    const Vec3 I = Tracer(floorScene(floor.material), settings).trace(0, 0, 0);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(I[c], floor.expected[c], 1e-12) << toString(type);
   }
 }
 

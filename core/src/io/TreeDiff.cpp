@@ -19,6 +19,10 @@ bool close(double a, double b) {
   return std::abs(a - b) <= kTreeDiffTolerance * std::max({1.0, std::abs(a), std::abs(b)});
 }
 
+bool sameVec(const Vec3& u, const Vec3& v) {
+  return close(u.x, v.x) && close(u.y, v.y) && close(u.z, v.z);
+}
+
 std::string number(double x) {
   std::ostringstream out;
   out.precision(17);
@@ -38,12 +42,10 @@ struct FieldCheck {
 };
 
 FieldCheck vecField(const char* name, Vec3 RaySegment::*member) {
-  return {name,
-          [member](const RaySegment& a, const RaySegment& b) {
-            const Vec3 &u = a.*member, &v = b.*member;
-            return close(u.x, v.x) && close(u.y, v.y) && close(u.z, v.z);
-          },
-          [member](const RaySegment& s) { return vector(s.*member); }};
+  return {
+      name,
+      [member](const RaySegment& a, const RaySegment& b) { return sameVec(a.*member, b.*member); },
+      [member](const RaySegment& s) { return vector(s.*member); }};
 }
 
 template <typename T>
@@ -110,10 +112,6 @@ std::string describe(const TreeDifference& d, Language language) {
 }
 
 namespace {
-
-bool sameVec(const Vec3& u, const Vec3& v) {
-  return close(u.x, v.x) && close(u.y, v.y) && close(u.z, v.z);
-}
 
 /// The verdict of a ray from its own geometry and energy, leaving out what it may inherit
 /// from its parent (throughput) or its children (radiance).
